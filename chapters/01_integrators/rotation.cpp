@@ -1,0 +1,64 @@
+#include "01_integrators/rotation.h"
+
+namespace stepwise {
+
+Quat quaternionDerivative(const Quat& rotation, const Vec3& angularVelocity) {
+    const Quat spin(0, angularVelocity.x(), angularVelocity.y(), angularVelocity.z());
+    Quat derivative = spin * rotation;
+    derivative.coeffs() *= Real(0.5);
+    return derivative;
+}
+
+Quat addScaledDerivative(const Quat& rotation, const Quat& derivative, Real h) {
+    Quat result;
+    result.coeffs() = rotation.coeffs() + h * derivative.coeffs();
+    // A unit quaternion moved along its tangent leaves the unit sphere by O(h^2); projecting
+    // back keeps it a rotation. The norm is ~1, never 0, for any finite step.
+    result.normalize();
+    return result;
+}
+
+// [ch01-quaternion-update]
+Quat integrateRotation(const Quat& rotation, const Vec3& angularVelocity, Real h) {
+    // q1 = q0 + h dq/dt = q0 + h/2 (0, w) q0, then back onto the unit sphere. First order,
+    // as accurate as the Euler step around it, and cheap: no trigonometry.
+    return addScaledDerivative(rotation, quaternionDerivative(rotation, angularVelocity), h);
+}
+// [ch01-quaternion-update]
+
+// [ch01-exact-rotation]
+Quat rotateExactly(const Quat& rotation, const Vec3& angularVelocity, Real h) {
+    // For constant w the orientation turns by the angle h |w| about w / |w|.
+    const Real speed = angularVelocity.norm();
+    if (!(speed * h > Real(1e-12))) return rotation;
+    const Quat turn(Eigen::AngleAxis<Real>(speed * h, angularVelocity / speed));
+    return (turn * rotation).normalized();
+}
+// [ch01-exact-rotation]
+
+Vec3 gyroscopicStepExplicit(const Vec3& angularVelocity, const Mat3& worldInertia, const Mat3& worldInverseInertia,
+                            Real h) {
+    return angularVelocity - h * (worldInverseInertia * angularVelocity.cross(worldInertia * angularVelocity));
+}
+
+// [ch01-gyroscopic-implicit]
+Vec3 gyroscopicStepImplicit(const Vec3& angularVelocity, const Quat& rotation, const Mat3& inertiaLocal, Real h) {
+    // Body axes: the inertia tensor is constant there.
+    const Vec3 omega0 = rotation.conjugate() * angularVelocity;
+
+    // Residual of backward Euler, f(w) = I (w - w0) + h w x (I w), at the first guess w = w0.
+    const Vec3 residual = h * omega0.cross(inertiaLocal * omega0);
+
+    // Jacobian df/dw = I + h ([w]x I - [I w]x).
+    const Mat3 jacobian = inertiaLocal + h * (skew(omega0) * inertiaLocal - skew(inertiaLocal * omega0));
+
+    // One Newton step, w1 = w0 - J^-1 f(w0). A massless (zero-inertia) body has nothing to solve.
+    Eigen::FullPivLU<Mat3> lu(jacobian);
+    if (!lu.isInvertible()) return angularVelocity;
+    const Vec3 omega1 = omega0 - lu.solve(residual);
+
+    return rotation * omega1;
+}
+// [ch01-gyroscopic-implicit]
+
+}  // namespace stepwise

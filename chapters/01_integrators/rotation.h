@@ -1,0 +1,31 @@
+#pragma once
+// Orientation updates and the gyroscopic term. A rigid body's orientation q (body to world)
+// changes as dq/dt = 1/2 (0, w) q with w the world-frame angular velocity; Euler's equation
+// I dw/dt = torque - w x I w holds the gyroscopic term that makes spinning bodies precess and
+// tumble (the Dzhanibekov effect).
+
+#include "math/math.h"
+
+namespace stepwise {
+
+/// dq/dt = 1/2 (0, w) q, as quaternion coefficients (not a unit quaternion).
+Quat quaternionDerivative(const Quat& rotation, const Vec3& angularVelocity);
+
+/// One first-order step q + h/2 (0, w) q, renormalised. What semi-implicit Euler uses.
+Quat integrateRotation(const Quat& rotation, const Vec3& angularVelocity, Real h);
+
+/// The exact rotation for a constant angular velocity over h: exp(h w / 2) q.
+Quat rotateExactly(const Quat& rotation, const Vec3& angularVelocity, Real h);
+
+/// q + h * derivative, renormalised (the building block of RK4's stages).
+Quat addScaledDerivative(const Quat& rotation, const Quat& derivative, Real h);
+
+/// Explicit gyroscopic step: w - h I^-1 (w x I w), with I and I^-1 in world axes.
+Vec3 gyroscopicStepExplicit(const Vec3& angularVelocity, const Mat3& worldInertia, const Mat3& worldInverseInertia,
+                            Real h);
+
+/// Implicit gyroscopic step (Catto, "Numerical Methods", GDC 2015): one Newton step on the
+/// backward-Euler equation I (w1 - w0) + h w1 x I w1 = 0, in body axes where I is constant.
+Vec3 gyroscopicStepImplicit(const Vec3& angularVelocity, const Quat& rotation, const Mat3& inertiaLocal, Real h);
+
+}  // namespace stepwise

@@ -1,0 +1,60 @@
+#include "app/registry.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace stepwise {
+
+void Registry::addScene(SceneEntry entry) {
+    if (findScene(entry.name)) throw std::logic_error("scene registered twice: " + entry.name);
+    scenes_.push_back(std::move(entry));
+}
+
+void Registry::addPipeline(PipelineEntry entry) { pipelines_.push_back(std::move(entry)); }
+
+void Registry::addBench(BenchEntry entry) {
+    if (findBench(entry.name)) throw std::logic_error("bench registered twice: " + entry.name);
+    benches_.push_back(std::move(entry));
+}
+
+void Registry::addCommand(CommandEntry entry) { commands_.push_back(std::move(entry)); }
+
+void Registry::setPenetrationProbe(PenetrationProbe probe) { probes_.push_back(std::move(probe)); }
+
+const SceneEntry* Registry::findScene(const std::string& name) const {
+    for (const SceneEntry& entry : scenes_)
+        if (entry.name == name) return &entry;
+    return nullptr;
+}
+
+const BenchEntry* Registry::findBench(const std::string& name) const {
+    for (const BenchEntry& entry : benches_)
+        if (entry.name == name) return &entry;
+    return nullptr;
+}
+
+// Later chapters register later, but a program may ask for an earlier chapter's engine
+// (`stepwise run --chapter 2`), so pick by chapter number rather than registration order.
+Pipeline Registry::makePipeline(const World& world, int maxChapter) const {
+    const PipelineEntry* best = nullptr;
+    for (const PipelineEntry& entry : pipelines_)
+        if (entry.chapter <= maxChapter && (!best || entry.chapter >= best->chapter)) best = &entry;
+    if (!best) throw std::runtime_error("no chapter up to " + std::to_string(maxChapter) + " provides a pipeline");
+    return best->make(world);
+}
+
+const PenetrationProbe* Registry::penetrationProbe(int maxChapter) const {
+    const PenetrationProbe* best = nullptr;
+    for (const PenetrationProbe& probe : probes_)
+        if (probe.chapter <= maxChapter && (!best || probe.chapter >= best->chapter)) best = &probe;
+    return best;
+}
+
+int Registry::lastChapter() const {
+    int last = 0;
+    for (const PipelineEntry& entry : pipelines_) last = std::max(last, entry.chapter);
+    for (const SceneEntry& entry : scenes_) last = std::max(last, entry.chapter);
+    return last;
+}
+
+}  // namespace stepwise

@@ -1,0 +1,31 @@
+#pragma once
+// Headless runs: step a world through a pipeline, collect RunStats, print a summary.
+// Used by `stepwise run`, the headless chNN_demo programs, tests and benchmarks.
+
+#include "app/registry.h"
+#include "world/report.h"
+
+#include <iosfwd>
+#include <string>
+
+namespace stepwise {
+
+struct RunOptions {
+    long frames = 600;
+    int maxChapter = 99;           // use the pipeline of this chapter (default: the latest)
+    bool progress = false;         // progress line on stderr (only when it is a terminal)
+};
+
+/// Runs `frames` frames and measures them. The world is advanced in place.
+RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry, const RunOptions& options);
+
+/// Prints the short summary: frames, median ms/step, stages, max penetration, energy.
+void printSummary(std::ostream& out, const World& world, const RunStats& stats);
+
+/// Resolves "<file.json>" or a built-in scene name. Throws SceneError when neither.
+World loadSceneOrBuiltin(const Registry& registry, const std::string& nameOrPath);
+
+/// "stepwise 0.1.0 (float)".
+std::string engineVersion();
+
+}  // namespace stepwise

@@ -1,0 +1,75 @@
+#pragma once
+// The engine's number type and small geometric types, on top of Eigen.
+// Real is float by default (what games ship); -DSTEPWISE_DOUBLE=ON switches the whole engine
+// to double so the suites can check that nothing depends on the precision by accident.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+
+namespace stepwise {
+
+#ifdef STEPWISE_DOUBLE
+using Real = double;
+#else
+using Real = float;
+#endif
+
+using Vec3 = Eigen::Matrix<Real, 3, 1>;
+using Mat3 = Eigen::Matrix<Real, 3, 3>;
+using Quat = Eigen::Quaternion<Real>;
+
+constexpr Real kPi = Real(3.14159265358979323846);
+constexpr Real kRealMax = std::numeric_limits<Real>::max();
+constexpr Real kEpsilon = std::numeric_limits<Real>::epsilon();
+
+/// A rigid transform: rotate, then translate. Maps body-local points to world points.
+struct Transform {
+    Vec3 position = Vec3::Zero();
+    Quat rotation = Quat::Identity();
+
+    Vec3 apply(const Vec3& local) const { return position + rotation * local; }
+    Vec3 applyInverse(const Vec3& world) const { return rotation.conjugate() * (world - position); }
+    Vec3 rotate(const Vec3& local) const { return rotation * local; }
+    Vec3 rotateInverse(const Vec3& world) const { return rotation.conjugate() * world; }
+};
+
+/// Axis-aligned bounding box in world space.
+struct Aabb {
+    Vec3 min = Vec3::Constant(kRealMax);
+    Vec3 max = Vec3::Constant(-kRealMax);
+
+    bool overlaps(const Aabb& other) const {
+        return (min.array() <= other.max.array()).all() && (other.min.array() <= max.array()).all();
+    }
+    void grow(const Vec3& point) {
+        min = min.cwiseMin(point);
+        max = max.cwiseMax(point);
+    }
+    void grow(const Aabb& other) {
+        min = min.cwiseMin(other.min);
+        max = max.cwiseMax(other.max);
+    }
+    Vec3 center() const { return Real(0.5) * (min + max); }
+    Vec3 extents() const { return Real(0.5) * (max - min); }
+};
+
+inline bool isFinite(Real value) { return std::isfinite(value); }
+inline bool isFinite(const Vec3& v) { return v.allFinite(); }
+
+/// The skew-symmetric matrix [v]x with [v]x w = v x w.
+inline Mat3 skew(const Vec3& v) {
+    Mat3 m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+}
+
+/// Any unit vector perpendicular to a unit vector (Box2D/Erin Catto's branch-free choice).
+inline Vec3 anyPerpendicular(const Vec3& unit) {
+    const Vec3 helper = std::abs(unit.x()) >= Real(0.57735) ? Vec3(unit.y(), -unit.x(), 0) : Vec3(0, unit.z(), -unit.y());
+    return helper.normalized();
+}
+
+}  // namespace stepwise

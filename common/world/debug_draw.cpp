@@ -1,0 +1,80 @@
+#include "world/debug_draw.h"
+
+#include "world/world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+void drawBody(DebugDraw& draw, const Body& body, Color color, Fill fill) {
+    const Shape& shape = body.shape;
+    switch (shape.type) {
+        case ShapeType::Box: draw.box(body.transform, shape.halfExtents, color, fill); break;
+        case ShapeType::Sphere: draw.sphere(body.transform.position, shape.radius, color, fill); break;
+        case ShapeType::Capsule: draw.capsule(body.transform, shape.radius, shape.halfHeight, color, fill); break;
+        case ShapeType::Convex: draw.hull(body.transform, *shape.hull, color, fill); break;
+    }
+}
+
+Color bodyColor(int bodyIndex) {
+    // Golden-ratio hue steps keep neighbouring indices apart; fixed saturation and value
+    // keep every colour readable on the grey ground.
+    const float hue = std::fmod(0.12f + 0.618034f * static_cast<float>(bodyIndex), 1.0f) * 6.0f;
+    const float chroma = 0.65f, value = 0.92f, low = value - chroma;
+    const float x = chroma * (1 - std::abs(std::fmod(hue, 2.0f) - 1));
+    const int sector = static_cast<int>(hue);
+    float r = low, g = low, b = low;
+    switch (sector) {
+        case 0: r += chroma, g += x; break;
+        case 1: r += x, g += chroma; break;
+        case 2: g += chroma, b += x; break;
+        case 3: g += x, b += chroma; break;
+        case 4: r += x, b += chroma; break;
+        default: r += chroma, b += x; break;
+    }
+    return Color{r, g, b, 1};
+}
+
+void drawWorld(DebugDraw& draw, const World& world) {
+    for (size_t i = 0; i < world.bodies.size(); ++i) {
+        const Body& body = world.bodies[i];
+        const Color color = body.type == BodyType::Static      ? colors::kGrey
+                            : body.type == BodyType::Kinematic ? colors::kBlue
+                                                               : bodyColor(static_cast<int>(i));
+        drawBody(draw, body, color);
+    }
+}
+
+void RecordingDraw::line(const Vec3& from, const Vec3& to, Color color) {
+    commands_.push_back({Kind::Line, from, to, color, {}});
+}
+void RecordingDraw::point(const Vec3& at, float, Color color) { commands_.push_back({Kind::Point, at, at, color, {}}); }
+void RecordingDraw::arrow(const Vec3& from, const Vec3& to, Color color) {
+    commands_.push_back({Kind::Arrow, from, to, color, {}});
+}
+void RecordingDraw::box(const Transform& pose, const Vec3& halfExtents, Color color, Fill) {
+    commands_.push_back({Kind::Box, pose.position, halfExtents, color, {}});
+}
+void RecordingDraw::sphere(const Vec3& center, Real radius, Color color, Fill) {
+    commands_.push_back({Kind::Sphere, center, Vec3::Constant(radius), color, {}});
+}
+void RecordingDraw::capsule(const Transform& pose, Real radius, Real halfHeight, Color color, Fill) {
+    commands_.push_back({Kind::Capsule, pose.position, Vec3(radius, halfHeight, 0), color, {}});
+}
+void RecordingDraw::hull(const Transform& pose, const ConvexHull&, Color color, Fill) {
+    commands_.push_back({Kind::Hull, pose.position, pose.position, color, {}});
+}
+void RecordingDraw::triangle(const Vec3& a, const Vec3& b, const Vec3& c, Color color) {
+    commands_.push_back({Kind::Triangle, a, b, color, {}});
+    (void)c;
+}
+void RecordingDraw::text(const Vec3& at, const std::string& message, Color color) {
+    commands_.push_back({Kind::Text, at, at, color, message});
+}
+
+int RecordingDraw::count(Kind kind) const {
+    return static_cast<int>(std::count_if(commands_.begin(), commands_.end(), [&](const Command& c) { return c.kind == kind; }));
+}
+
+}  // namespace stepwise

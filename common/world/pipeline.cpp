@@ -1,0 +1,71 @@
+#include "world/pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace stepwise {
+
+std::string stageGroup(const std::string& stageName) {
+    return stageName.substr(0, stageName.find(':'));
+}
+
+static bool matches(const Stage& stage, const std::string& nameOrGroup) {
+    return stage.name == nameOrGroup || stageGroup(stage.name) == nameOrGroup;
+}
+
+void Pipeline::add(Stage stage) { stages_.push_back(std::move(stage)); }
+
+void Pipeline::insertBefore(const std::string& group, Stage stage) {
+    auto at = std::find_if(stages_.begin(), stages_.end(), [&](const Stage& s) { return matches(s, group); });
+    stages_.insert(at, std::move(stage));
+}
+
+Stage* Pipeline::find(const std::string& nameOrGroup) {
+    for (Stage& stage : stages_)
+        if (matches(stage, nameOrGroup)) return &stage;
+    return nullptr;
+}
+
+const Stage* Pipeline::find(const std::string& nameOrGroup) const {
+    return const_cast<Pipeline*>(this)->find(nameOrGroup);
+}
+
+bool Pipeline::remove(const std::string& nameOrGroup) {
+    auto at = std::find_if(stages_.begin(), stages_.end(), [&](const Stage& s) { return matches(s, nameOrGroup); });
+    if (at == stages_.end()) return false;
+    stages_.erase(at);
+    return true;
+}
+
+void Pipeline::step(World& world) {
+    using Clock = std::chrono::steady_clock;
+    const int substeps = std::max(1, world.settings.substeps);
+    const Real dt = world.settings.dt / static_cast<Real>(substeps);
+    for (Stage& stage : stages_) stage.lastMs = 0;
+    const auto frameStart = Clock::now();
+    for (int substep = 0; substep < substeps; ++substep) {
+        for (Stage& stage : stages_) {
+            if (!stage.enabled) continue;
+            const auto stageStart = Clock::now();
+            stage.run(world, dt);
+            stage.lastMs += std::chrono::duration<double, std::milli>(Clock::now() - stageStart).count();
+        }
+    }
+    for (Stage& stage : stages_) {
+        if (!stage.enabled) continue;
+        stage.totalMs += stage.lastMs;
+        ++stage.runs;
+    }
+    lastStepMs_ = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
+    world.time += world.settings.dt;
+    ++world.frame;
+}
+
+std::vector<std::string> Pipeline::enabledStageNames() const {
+    std::vector<std::string> names;
+    for (const Stage& stage : stages_)
+        if (stage.enabled) names.push_back(stage.name);
+    return names;
+}
+
+}  // namespace stepwise

@@ -1,0 +1,35 @@
+#pragma once
+// Run reports (docs/scene-format.md, "Run report"): what a headless run measured, and every
+// body's final state. Byte-identical for identical runs except the timing_ms object.
+
+#include "world/world.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace stepwise {
+
+struct RunStats {
+    long frames = 0;
+    std::vector<std::string> pipeline;            // stages that ran, in order
+    std::vector<double> stepMs;                   // one per frame
+    std::map<std::string, double> stageMeanMs;    // per stage group, mean per frame
+    double maxPenetration = 0;                    // m, deepest overlap at the end of any step
+    bool penetrationMeasured = false;             // false before a chapter can measure overlap
+    int maxContacts = 0;
+    Energy initialEnergy;
+    Energy finalEnergy;
+    std::vector<std::string> warnings;            // e.g. joints no stage handles yet
+};
+
+double median(std::vector<double> values);
+
+/// The report as JSON text (2-space indent, keys in contract order).
+std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion);
+
+/// Writes the report; throws std::runtime_error naming the path when the file cannot be written.
+void writeReport(const std::string& path, const World& world, const RunStats& stats,
+                 const std::string& engineVersion);
+
+}  // namespace stepwise

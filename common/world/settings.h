@@ -1,0 +1,39 @@
+#pragma once
+// Every tuning constant of a world, in one struct, with its unit. Scene files set them through
+// the "settings" object (see docs/scene-format.md); the defaults follow the scene contract.
+
+#include "math/math.h"
+
+#include <string>
+
+namespace stepwise {
+
+enum class IntegratorKind { SemiImplicitEuler, Rk4, Verlet };
+enum class GyroscopicMode { Off, Explicit, Implicit };
+enum class BroadphaseMode { Auto, Sap, Brute };
+enum class CcdMode { Auto, On, Off };
+enum class SolverKind { GaussSeidel, Jacobi };
+
+struct Settings {
+    Vec3 gravity = Vec3(0, Real(-9.81), 0);          // m/s^2
+    Real dt = Real(1.0 / 60.0);                       // s per frame
+    int substeps = 1;                                 // stage passes per frame
+    int solverIterations = 10;                        // velocity iterations per substep
+    Real baumgarte = Real(0.2);                       // fraction of the position error fed back per step
+    Real slop = Real(0.005);                          // m of penetration left uncorrected
+    Real restitutionThreshold = Real(1.0);            // m/s closing speed below which contacts do not bounce
+    bool warmStarting = true;
+    BroadphaseMode broadphase = BroadphaseMode::Auto;
+    CcdMode ccd = CcdMode::Auto;
+    IntegratorKind integrator = IntegratorKind::SemiImplicitEuler;
+    GyroscopicMode gyroscopic = GyroscopicMode::Implicit;
+    SolverKind solver = SolverKind::GaussSeidel;
+};
+
+const char* toString(IntegratorKind kind);
+const char* toString(GyroscopicMode mode);
+const char* toString(BroadphaseMode mode);
+const char* toString(CcdMode mode);
+const char* toString(SolverKind kind);
+
+}  // namespace stepwise

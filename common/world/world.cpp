@@ -1,0 +1,113 @@
+#include "world/world.h"
+
+#include <stdexcept>
+
+namespace stepwise {
+
+const char* toString(BodyType type) {
+    switch (type) {
+        case BodyType::Static: return "static";
+        case BodyType::Kinematic: return "kinematic";
+        case BodyType::Dynamic: return "dynamic";
+    }
+    return "?";
+}
+
+int World::findBody(const std::string& bodyName) const {
+    for (size_t i = 0; i < bodies.size(); ++i)
+        if (bodies[i].name == bodyName) return static_cast<int>(i);
+    return -1;
+}
+
+Motion* World::motionOf(int bodyIndex) {
+    const int motionIndex = bodies[bodyIndex].motionIndex;
+    return motionIndex < 0 ? nullptr : &motions[motionIndex];
+}
+
+const Motion* World::motionOf(int bodyIndex) const {
+    const int motionIndex = bodies[bodyIndex].motionIndex;
+    return motionIndex < 0 ? nullptr : &motions[motionIndex];
+}
+
+int World::dynamicBodyCount() const {
+    int count = 0;
+    for (const Body& body : bodies) count += body.type == BodyType::Dynamic;
+    return count;
+}
+
+int addBody(World& world, const BodyDef& def) {
+    Body body;
+    body.name = def.name.empty() ? "body" + std::to_string(world.bodies.size()) : def.name;
+    body.type = def.type;
+    body.shape = def.shape;
+    body.transform = def.transform;
+    body.transform.rotation.normalize();
+    body.material = def.material;
+    body.bullet = def.bullet;
+    const int bodyIndex = static_cast<int>(world.bodies.size());
+
+    if (def.type != BodyType::Static) {
+        Motion motion;
+        motion.bodyIndex = bodyIndex;
+        motion.linearVelocity = def.linearVelocity;
+        motion.angularVelocity = def.angularVelocity;
+        motion.integrator = def.integrator;
+        if (def.type == BodyType::Dynamic) {
+            const Real volume = shapeVolume(def.shape);
+            if (!(volume > 0)) throw std::invalid_argument("body '" + body.name + "': shape has no volume");
+            const Real density = def.mass ? *def.mass / volume : def.density;
+            if (!(density > 0) || !std::isfinite(density))
+                throw std::invalid_argument("body '" + body.name + "': mass and density must be > 0");
+            const MassProperties props = computeMassProperties(def.shape, density);
+            motion.mass = props.mass;
+            motion.inverseMass = 1 / props.mass;
+            motion.localCenter = props.localCenter;
+            motion.inertiaLocal = props.inertia;
+            motion.inverseInertiaLocal = props.inertia.inverse();
+        }
+        body.motionIndex = static_cast<int>(world.motions.size());
+        world.motions.push_back(motion);
+    }
+    world.bodies.push_back(std::move(body));
+    return bodyIndex;
+}
+
+Vec3 worldCenterOfMass(const World& world, int bodyIndex) {
+    const Body& body = world.bodies[bodyIndex];
+    const Motion* motion = world.motionOf(bodyIndex);
+    return motion ? body.transform.apply(motion->localCenter) : body.transform.position;
+}
+
+Mat3 worldInverseInertia(const Body& body, const Motion& motion) {
+    const Mat3 rotation = body.transform.rotation.toRotationMatrix();
+    return rotation * motion.inverseInertiaLocal * rotation.transpose();
+}
+
+Vec3 pointVelocity(const World& world, int bodyIndex, const Vec3& worldPoint) {
+    const Motion* motion = world.motionOf(bodyIndex);
+    if (!motion) return Vec3::Zero();
+    const Vec3 arm = worldPoint - worldCenterOfMass(world, bodyIndex);
+    return motion->linearVelocity + motion->angularVelocity.cross(arm);
+}
+
+Energy computeEnergy(const World& world) {
+    Energy energy;
+    for (const Motion& motion : world.motions) {
+        const Body& body = world.bodies[motion.bodyIndex];
+        if (body.type != BodyType::Dynamic) continue;
+        const Mat3 rotation = body.transform.rotation.toRotationMatrix();
+        const Vec3 angularLocal = rotation.transpose() * motion.angularVelocity;
+        energy.kinetic += 0.5 * motion.mass * motion.linearVelocity.squaredNorm() +
+                          0.5 * angularLocal.dot(motion.inertiaLocal * angularLocal);
+        energy.gravity -= motion.mass * world.settings.gravity.dot(body.transform.apply(motion.localCenter));
+    }
+    for (const Spring& spring : world.springs) {
+        const Vec3 endA = world.bodies[spring.bodyA].transform.apply(spring.localAnchorA);
+        const Vec3 endB = spring.bodyB < 0 ? spring.anchorB : world.bodies[spring.bodyB].transform.apply(spring.anchorB);
+        const double stretch = (endB - endA).norm() - spring.restLength;
+        energy.springs += 0.5 * spring.stiffness * stretch * stretch;
+    }
+    return energy;
+}
+
+}  // namespace stepwise

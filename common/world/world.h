@@ -1,0 +1,107 @@
+#pragma once
+// The whole simulation state as plain data. Stages (chapters) read and write it; nothing in
+// here knows which stages exist.
+
+#include "world/body.h"
+#include "world/contact.h"
+#include "world/settings.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stepwise {
+
+/// A damped spring between an anchor on body A and either a world point or an anchor on B.
+struct Spring {
+    int bodyA = -1;
+    int bodyB = -1;                      // -1: anchored to the world point anchorB
+    Vec3 localAnchorA = Vec3::Zero();    // body A frame
+    Vec3 anchorB = Vec3::Zero();         // body B frame, or world frame when bodyB == -1
+    Real restLength = 0;                 // m
+    Real stiffness = 0;                  // N/m
+    Real damping = 0;                    // N s/m along the spring
+};
+
+/// Velocity-proportional drag, F = -linear * m * v and T = -angular * I * w.
+struct Damping {
+    int body = -1;                       // -1: every dynamic body
+    Real linear = 0;                     // 1/s
+    Real angular = 0;                    // 1/s
+};
+
+/// A joint as the scene describes it; chapter 8 turns these into constraint rows.
+struct JointDesc {
+    std::string type;                    // distance, ball_socket, hinge, cone_twist, fixed
+    int bodyA = -1;
+    int bodyB = -1;
+    Vec3 localAnchorA = Vec3::Zero();
+    Vec3 localAnchorB = Vec3::Zero();
+    Vec3 axis = Vec3::UnitY();
+    std::optional<Real> length;
+    std::optional<std::pair<Real, Real>> limits;
+    Real coneAngle = 0;
+    std::optional<std::pair<Real, Real>> twistLimits;
+};
+
+/// Everything needed to create one body: what a scene file's bodies[] entry says.
+struct BodyDef {
+    std::string name;
+    BodyType type = BodyType::Dynamic;
+    Shape shape;
+    Transform transform;
+    Vec3 linearVelocity = Vec3::Zero();
+    Vec3 angularVelocity = Vec3::Zero();
+    std::optional<Real> mass;            // kg; wins over density when set
+    Real density = 1000;                 // kg/m^3
+    Material material;
+    bool bullet = false;
+    std::optional<IntegratorKind> integrator;
+};
+
+struct World {
+    std::string name = "untitled";
+    Settings settings;
+    std::vector<Body> bodies;
+    std::vector<Motion> motions;         // one per kinematic or dynamic body
+    std::vector<Spring> springs;
+    std::vector<Damping> dampings;
+    std::vector<JointDesc> joints;
+
+    // Per-step results, rebuilt by the stages that own them.
+    std::vector<BodyPair> pairs;         // broadphase / narrowphase candidates or hits
+    std::vector<Contact> contacts;       // narrowphase output
+
+    double time = 0;                     // s simulated
+    long frame = 0;
+
+    int findBody(const std::string& bodyName) const;  // -1 when absent
+    Motion* motionOf(int bodyIndex);
+    const Motion* motionOf(int bodyIndex) const;
+    int dynamicBodyCount() const;
+};
+
+/// Adds a body and, for moving bodies, its Motion with mass properties from the shape.
+/// Returns the body index. Static bodies get no Motion.
+int addBody(World& world, const BodyDef& def);
+
+/// Centre of mass of a body in world space.
+Vec3 worldCenterOfMass(const World& world, int bodyIndex);
+
+/// Inverse inertia in world axes: R I^-1 R^T. Zero for static and kinematic bodies.
+Mat3 worldInverseInertia(const Body& body, const Motion& motion);
+
+/// Velocity of the body's material point at a world position.
+Vec3 pointVelocity(const World& world, int bodyIndex, const Vec3& worldPoint);
+
+struct Energy {
+    double kinetic = 0;
+    double gravity = 0;    // potential, relative to y = 0
+    double springs = 0;    // potential
+    double total() const { return kinetic + gravity + springs; }
+};
+
+/// Mechanical energy of the dynamic bodies (kinematic and static bodies carry none).
+Energy computeEnergy(const World& world);
+
+}  // namespace stepwise
