@@ -9,6 +9,14 @@
 
 namespace stepwise {
 
+/// The time derivative of a MotionState: (dx/dt, dq/dt, dv/dt, dw/dt).
+struct StateRate {
+    Vec3 center = Vec3::Zero();
+    Quat rotation = Quat(0, 0, 0, 0);   // not a unit quaternion: a tangent
+    Vec3 linearVelocity = Vec3::Zero();
+    Vec3 angularVelocity = Vec3::Zero();
+};
+
 /// Buffers one step needs, one entry per Motion; kept between steps so stepping allocates nothing.
 struct StepBuffers {
     std::vector<MotionState> start;   // the state at the beginning of the step
@@ -16,7 +24,10 @@ struct StepBuffers {
     std::vector<MotionState> next;    // the state at the end of the step
     std::vector<MotionState> trial;   // an intermediate state (RK4 stages, Verlet's end point)
     std::vector<Wrench> trialForces;
-    std::vector<MotionState> derivatives[4];  // RK4 slopes, stored as rates of each field
+    std::vector<StateRate> slopes[4];  // RK4's k1..k4, one per group member
+    std::vector<Quat> rawRotations;    // RK4 stage quaternions before normalisation
+    std::vector<int> verletGroup;      // motion indices of the bodies each method advances
+    std::vector<int> rk4Group;
 };
 
 /// Generators at `states` plus the forces a user put into Motion::force/torque.

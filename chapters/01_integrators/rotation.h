@@ -17,7 +17,7 @@ Quat integrateRotation(const Quat& rotation, const Vec3& angularVelocity, Real h
 /// The exact rotation for a constant angular velocity over h: exp(h w / 2) q.
 Quat rotateExactly(const Quat& rotation, const Vec3& angularVelocity, Real h);
 
-/// q + h * derivative, renormalised (the building block of RK4's stages).
+/// q + h * derivative, renormalised.
 Quat addScaledDerivative(const Quat& rotation, const Quat& derivative, Real h);
 
 /// Explicit gyroscopic step: w - h I^-1 (w x I w), with I and I^-1 in world axes.

@@ -35,6 +35,7 @@ const BenchEntry* Registry::findBench(const std::string& name) const {
 
 // Later chapters register later, but a program may ask for an earlier chapter's engine
 // (`stepwise run --chapter 2`), so pick by chapter number rather than registration order.
+// [foundation-make-pipeline]
 Pipeline Registry::makePipeline(const World& world, int maxChapter) const {
     const PipelineEntry* best = nullptr;
     for (const PipelineEntry& entry : pipelines_)
@@ -42,6 +43,7 @@ Pipeline Registry::makePipeline(const World& world, int maxChapter) const {
     if (!best) throw std::runtime_error("no chapter up to " + std::to_string(maxChapter) + " provides a pipeline");
     return best->make(world);
 }
+// [foundation-make-pipeline]
 
 const PenetrationProbe* Registry::penetrationProbe(int maxChapter) const {
     const PenetrationProbe* best = nullptr;

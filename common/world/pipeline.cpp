@@ -37,6 +37,7 @@ bool Pipeline::remove(const std::string& nameOrGroup) {
     return true;
 }
 
+// [foundation-pipeline-step]
 void Pipeline::step(World& world) {
     using Clock = std::chrono::steady_clock;
     const int substeps = std::max(1, world.settings.substeps);
@@ -60,6 +61,7 @@ void Pipeline::step(World& world) {
     world.time += world.settings.dt;
     ++world.frame;
 }
+// [foundation-pipeline-step]
 
 std::vector<std::string> Pipeline::enabledStageNames() const {
     std::vector<std::string> names;

@@ -1,0 +1,170 @@
+// Run reports (docs/scene-format.md, "Run report"). Two runs of the same scene must give the
+// same bytes outside timing_ms, so other tools can diff reports: keys keep the contract's
+// order (ordered_json), every Real prints as the shortest decimal that reads back to the same
+// value, and arrays of numbers stay on one line so a body's state reads like the scene file.
+
+#include "world/report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+#include <type_traits>
+
+namespace stepwise {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// The shortest decimal that reads back as the same Real: 0.5f prints 0.5, not 0.5000000000.
+/// Non-finite values become null (JSON has no NaN), and the report adds a warning for them.
+Json number(Real value) {
+    if (!std::isfinite(value)) return nullptr;
+    if (value == 0) return 0.0;  // also turns -0 into 0
+    if constexpr (std::is_same_v<Real, float>) {
+        char text[32];
+        for (int digits = 6; digits <= 9; ++digits) {
+            std::snprintf(text, sizeof text, "%.*g", digits, double(value));
+            const double parsed = std::strtod(text, nullptr);
+            if (Real(parsed) == value) return parsed;
+        }
+    }
+    return double(value);
+}
+
+/// Statistics that are double already (energies): as is, but finite or null.
+Json statistic(double value) { return std::isfinite(value) ? Json(value == 0 ? 0.0 : value) : Json(nullptr); }
+
+/// Timings in ms, rounded to 0.1 microsecond: more digits would be noise.
+Json milliseconds(double value) { return std::isfinite(value) ? std::round(value * 1e4) / 1e4 : 0.0; }
+
+Json vec3(const Vec3& v) { return Json::array({number(v.x()), number(v.y()), number(v.z())}); }
+Json quat(const Quat& q) { return Json::array({number(q.x()), number(q.y()), number(q.z()), number(q.w())}); }
+
+bool isScalar(const Json& value) { return !value.is_object() && !value.is_array(); }
+
+/// Like dump(2), but an array of scalars stays on one line: "position": [0, 0.5, 0].
+void print(const Json& value, int indent, std::string& out) {
+    const bool isObject = value.is_object();
+    if (isScalar(value)) {
+        out += value.dump();
+        return;
+    }
+    if (value.empty()) {
+        out += isObject ? "{}" : "[]";
+        return;
+    }
+    if (!isObject && std::all_of(value.begin(), value.end(), isScalar)) {
+        out += "[";
+        for (auto it = value.begin(); it != value.end(); ++it) out += (it == value.begin() ? "" : ", ") + it->dump();
+        out += "]";
+        return;
+    }
+    const std::string inner(std::size_t(indent + 2), ' ');
+    out += isObject ? "{\n" : "[\n";
+    bool first = true;
+    for (const auto& item : value.items()) {
+        out += (first ? "" : ",\n") + inner;
+        if (isObject) out += Json(item.key()).dump() + ": ";
+        print(item.value(), indent + 2, out);
+        first = false;
+    }
+    out += "\n" + std::string(std::size_t(indent), ' ') + (isObject ? "}" : "]");
+}
+
+Json energyJson(const Energy& initial, const Energy& final) {
+    Json energy;
+    energy["initial"] = statistic(initial.total());
+    energy["final"] = statistic(final.total());
+    // Extension: the parts, so a reader can tell a spring losing energy from a body falling.
+    energy["kinetic_initial"] = statistic(initial.kinetic);
+    energy["kinetic_final"] = statistic(final.kinetic);
+    energy["gravity_initial"] = statistic(initial.gravity);
+    energy["gravity_final"] = statistic(final.gravity);
+    energy["springs_initial"] = statistic(initial.springs);
+    energy["springs_final"] = statistic(final.springs);
+    return energy;
+}
+
+Json bodyJson(const World& world, std::size_t index) {
+    const Body& body = world.bodies[index];
+    const Motion* motion = world.motionOf(int(index));
+    Json out;
+    out["name"] = body.name;
+    out["position"] = vec3(body.transform.position);
+    out["orientation"] = quat(body.transform.rotation);
+    out["velocity"] = vec3(motion ? motion->linearVelocity : Vec3::Zero());
+    out["angular_velocity"] = vec3(motion ? motion->angularVelocity : Vec3::Zero());
+    return out;
+}
+
+}  // namespace
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    const std::size_t middle = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(middle), values.end());
+    const double upper = values[middle];
+    if (values.size() % 2 == 1) return upper;
+    const double lower = *std::max_element(values.begin(), values.begin() + std::ptrdiff_t(middle));
+    return 0.5 * (lower + upper);
+}
+
+std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {
+    Json report;
+    report["format"] = "stepwise-report";
+    report["version"] = 1;
+    report["scene"] = world.name;
+    report["engine"] = engineVersion;
+    report["frames"] = stats.frames;
+    report["dt"] = number(world.settings.dt);
+    report["pipeline"] = stats.pipeline;
+
+    double sum = 0;
+    double slowest = 0;
+    for (double ms : stats.stepMs) sum += ms, slowest = std::max(slowest, ms);
+    Json timing;
+    timing["step_mean"] = milliseconds(stats.stepMs.empty() ? 0.0 : sum / double(stats.stepMs.size()));
+    timing["step_median"] = milliseconds(median(stats.stepMs));
+    timing["step_max"] = milliseconds(slowest);
+    timing["stages"] = Json::object();
+    for (const auto& [group, ms] : stats.stageMeanMs) timing["stages"][group] = milliseconds(ms);
+    report["timing_ms"] = timing;
+
+    report["max_penetration"] = statistic(stats.maxPenetration);
+    report["penetration_measured"] = stats.penetrationMeasured;
+    report["max_contacts"] = stats.maxContacts;
+    report["energy"] = energyJson(stats.initialEnergy, stats.finalEnergy);
+
+    std::vector<std::string> warnings = stats.warnings;
+    Json bodies = Json::array();
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        bodies.push_back(bodyJson(world, i));
+        const Motion* motion = world.motionOf(int(i));
+        const Transform& pose = world.bodies[i].transform;
+        const bool finite = isFinite(pose.position) && pose.rotation.coeffs().allFinite() &&
+                            (!motion || (isFinite(motion->linearVelocity) && isFinite(motion->angularVelocity)));
+        if (!finite) warnings.push_back("body \"" + world.bodies[i].name + "\" ended with a non-finite state (written as null)");
+    }
+    report["bodies"] = bodies;
+    report["warnings"] = warnings;
+
+    std::string text;
+    print(report, 0, text);
+    return text + "\n";
+}
+
+void writeReport(const std::string& path, const World& world, const RunStats& stats, const std::string& engineVersion) {
+    const std::string text = reportToJson(world, stats, engineVersion);
+    std::ofstream file(path, std::ios::binary);
+    if (!file) throw std::runtime_error("cannot write report file " + path);
+    file << text;
+    file.close();
+    if (!file) throw std::runtime_error("cannot write report file " + path);
+}
+
+}  // namespace stepwise

@@ -35,6 +35,7 @@ int World::dynamicBodyCount() const {
     return count;
 }
 
+// [foundation-add-body]
 int addBody(World& world, const BodyDef& def) {
     Body body;
     body.name = def.name.empty() ? "body" + std::to_string(world.bodies.size()) : def.name;
@@ -71,6 +72,7 @@ int addBody(World& world, const BodyDef& def) {
     world.bodies.push_back(std::move(body));
     return bodyIndex;
 }
+// [foundation-add-body]
 
 Vec3 worldCenterOfMass(const World& world, int bodyIndex) {
     const Body& body = world.bodies[bodyIndex];

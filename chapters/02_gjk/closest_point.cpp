@@ -1,0 +1,175 @@
+// Closest point of a simplex to the origin by Voronoi regions (Ericson, Real-Time Collision
+// Detection, 2005: 5.1.2 segment, 5.1.5 triangle, 5.1.6 tetrahedron), with the query point
+// fixed at the origin so p - x becomes -x.
+
+#include "02_gjk/closest_point.h"
+
+#include <cmath>
+
+namespace stepwise {
+namespace {
+
+// Relative size below which a length, area or volume counts as zero: a few hundred rounding
+// errors, so that Real = float and Real = double both classify real slivers as slivers.
+constexpr Real kDegenerateFraction = Real(256) * kEpsilon;
+
+SimplexClosest vertexResult(const Vec3* points, int i) {
+    SimplexClosest result;
+    result.point = points[i];
+    result.weights[i] = 1;
+    result.kept[0] = i;
+    result.keptCount = 1;
+    return result;
+}
+
+// Point a + t (b - a) of edge ij.
+SimplexClosest edgeResult(const Vec3* points, int i, int j, Real t) {
+    SimplexClosest result;
+    result.point = points[i] + t * (points[j] - points[i]);
+    result.weights[i] = 1 - t;
+    result.weights[j] = t;
+    result.kept[0] = i;
+    result.kept[1] = j;
+    result.keptCount = 2;
+    return result;
+}
+
+SimplexClosest closestOnSegment(const Vec3* points, int i, int j, Real scale) {
+    const Vec3& a = points[i];
+    const Vec3 ab = points[j] - a;
+    const Real lengthSquared = ab.squaredNorm();
+    if (lengthSquared <= kDegenerateFraction * kDegenerateFraction * scale * scale) {
+        // Both points coincide: the segment is a point; keep the nearer one.
+        SimplexClosest result = vertexResult(points, points[j].squaredNorm() < a.squaredNorm() ? j : i);
+        result.degenerate = true;
+        return result;
+    }
+    const Real t = -a.dot(ab);                 // projection of the origin, times |ab|^2
+    if (t <= 0) return vertexResult(points, i);                 // region of A
+    if (t >= lengthSquared) return vertexResult(points, j);     // region of B
+    return edgeResult(points, i, j, t / lengthSquared);         // region of the edge
+}
+
+// [ch02-triangle]
+// Ericson 5.1.5 with p = 0. Each test is one Voronoi region: the three vertex regions, the
+// three edge regions, and the face. d1..d6 are the projections of the origin onto the two edges
+// from each vertex; va, vb, vc are (twice) the signed areas that give the barycentric
+// coordinates of the origin's projection onto the plane.
+SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Real scale) {
+    const Vec3& a = points[ia];
+    const Vec3& b = points[ib];
+    const Vec3& c = points[ic];
+    const Vec3 ab = b - a;
+    const Vec3 ac = c - a;
+
+    const Real d1 = -ab.dot(a);
+    const Real d2 = -ac.dot(a);
+    if (d1 <= 0 && d2 <= 0) return vertexResult(points, ia);             // vertex A
+
+    const Real d3 = -ab.dot(b);
+    const Real d4 = -ac.dot(b);
+    if (d3 >= 0 && d4 <= d3) return vertexResult(points, ib);            // vertex B
+
+    const Real vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return edgeResult(points, ia, ib, d1 / (d1 - d3));  // edge AB
+
+    const Real d5 = -ab.dot(c);
+    const Real d6 = -ac.dot(c);
+    if (d6 >= 0 && d5 <= d6) return vertexResult(points, ic);            // vertex C
+
+    const Real vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return edgeResult(points, ia, ic, d2 / (d2 - d6));  // edge AC
+
+    const Real va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)                     // edge BC
+        return edgeResult(points, ib, ic, (d4 - d3) / ((d4 - d3) + (d5 - d6)));
+
+    // Face region. va + vb + vc = |ab x ac|^2; when that is ~0 the triangle is a sliver whose
+    // "face" has no well-defined plane: fall back to the best of its three edges.
+    const Real denominator = va + vb + vc;
+    if (!(denominator > kDegenerateFraction * ab.squaredNorm() * ac.squaredNorm())) {
+        SimplexClosest best = closestOnSegment(points, ia, ib, scale);
+        for (const SimplexClosest& edge : {closestOnSegment(points, ia, ic, scale), closestOnSegment(points, ib, ic, scale)})
+            if (edge.point.squaredNorm() < best.point.squaredNorm()) best = edge;
+        best.degenerate = true;
+        return best;
+    }
+    const Real v = vb / denominator;
+    const Real w = vc / denominator;
+    SimplexClosest result;
+    result.point = a + v * ab + w * ac;
+    result.weights[ia] = 1 - v - w;
+    result.weights[ib] = v;
+    result.weights[ic] = w;
+    result.kept[0] = ia;
+    result.kept[1] = ib;
+    result.kept[2] = ic;
+    result.keptCount = 3;
+    return result;
+}
+// [ch02-triangle]
+
+// [ch02-tetrahedron]
+// Ericson 5.1.6: the origin is outside the tetrahedron exactly when it lies on the far side of
+// some face plane (opposite the fourth vertex). The closest point is then on one of those faces,
+// and the nearest face answer wins. Inside every face plane means inside the tetrahedron.
+SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale) {
+    // Each face, listed with the vertex opposite it.
+    static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
+    SimplexClosest best;
+    Real bestDistanceSquared = kRealMax;
+    bool anyOutside = false;
+    bool degenerate = false;
+    Real originSide[4] = {0, 0, 0, 0};
+    Real oppositeSide[4] = {0, 0, 0, 0};
+    for (int f = 0; f < 4; ++f) {
+        const Vec3& a = points[kFaces[f][0]];
+        const Vec3 ab = points[kFaces[f][1]] - a;
+        const Vec3 ac = points[kFaces[f][2]] - a;
+        const Vec3 ad = points[kFaces[f][3]] - a;
+        const Vec3 normal = ab.cross(ac);
+        originSide[f] = -a.dot(normal);
+        oppositeSide[f] = ad.dot(normal);
+        // A flat tetrahedron has no inside; test every face instead of trusting the signs.
+        const bool flat = std::abs(oppositeSide[f]) <= kDegenerateFraction * ab.norm() * ac.norm() * ad.norm();
+        degenerate = degenerate || flat;
+        const bool outside = flat || (originSide[f] > 0 && oppositeSide[f] < 0) || (originSide[f] < 0 && oppositeSide[f] > 0);
+        if (!outside) continue;
+        anyOutside = true;
+        SimplexClosest onFace = closestOnTriangle(points, kFaces[f][0], kFaces[f][1], kFaces[f][2], scale);
+        const Real distanceSquared = onFace.point.squaredNorm();
+        if (distanceSquared < bestDistanceSquared) {
+            bestDistanceSquared = distanceSquared;
+            best = onFace;
+        }
+    }
+    if (anyOutside) {
+        best.degenerate = best.degenerate || degenerate;
+        return best;
+    }
+    // Inside (or on the boundary): the origin is its own closest point. Its barycentric weight
+    // for each vertex is the volume of the tetrahedron with that vertex replaced by the origin,
+    // over the whole volume: originSide / oppositeSide of the face opposite the vertex.
+    SimplexClosest inside;
+    inside.inside = true;
+    inside.keptCount = 4;
+    for (int f = 0; f < 4; ++f) {
+        inside.kept[f] = f;
+        inside.weights[kFaces[f][3]] = originSide[f] / oppositeSide[f];
+    }
+    return inside;
+}
+// [ch02-tetrahedron]
+
+}  // namespace
+
+SimplexClosest closestPointToOrigin(const Vec3* points, int count, Real scale) {
+    switch (count) {
+        case 1: return vertexResult(points, 0);
+        case 2: return closestOnSegment(points, 0, 1, scale);
+        case 3: return closestOnTriangle(points, 0, 1, 2, scale);
+        default: return closestOnTetrahedron(points, scale);
+    }
+}
+
+}  // namespace stepwise

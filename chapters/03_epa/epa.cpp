@@ -1,0 +1,396 @@
+// The Expanding Polytope Algorithm (see epa.h for sources). The file reads top to bottom as the
+// algorithm runs: seed a tetrahedron, pick the closest face, ask for a support point beyond it,
+// cut the faces that point can see and stitch new ones across the horizon, and finally map the
+// origin's projection on the closest face back to a point on each shape.
+#include "03_epa/epa.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+const char* toString(EpaExit exit) {
+    switch (exit) {
+        case EpaExit::Converged: return "converged";
+        case EpaExit::IterationCap: return "iteration_cap";
+        case EpaExit::StepLimit: return "step_limit";
+        case EpaExit::NoProgress: return "no_progress";
+        case EpaExit::Degenerate: return "degenerate";
+    }
+    return "unknown";
+}
+
+namespace {
+
+// Round-off thresholds, all relative to `scale`, the size of the Minkowski difference. A float
+// dot product of vectors of that size is only good to a few ulps of it, so nothing finer than
+// kRoundOff * scale can be decided: the code treats smaller gaps as zero instead of chasing them.
+constexpr Real kRoundOff = 8 * kEpsilon;
+// A face is too thin to have a trustworthy normal when its cross product is within this factor
+// of the round-off the cross product itself carries (the normal would be off by > 1/64 rad).
+constexpr Real kThinFace = 64;
+
+struct EpaContext {
+    const ConvexProxy& a;
+    const ConvexProxy& b;
+    Real scale = 1;
+};
+
+// [ch03-seed]
+/// The polytope's first faces need a tetrahedron around the origin. GJK often stops earlier:
+/// with a triangle or an edge through the origin (touching or shallow contact) or a single
+/// point. Following Bullet's EncloseOrigin, add support points in directions the current points
+/// do not span until four points bound a volume that holds the origin.
+bool containsOrigin(const SupportPoint points[4], Real slack);
+
+bool growToTetrahedron(const EpaContext& context, SupportPoint points[4], int count) {
+    const Vec3 axes[3] = {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
+    const auto tryDirection = [&](const Vec3& direction) {
+        points[count] = minkowskiSupport(context.a, context.b, direction);
+        return growToTetrahedron(context, points, count + 1);
+    };
+    switch (count) {
+        case 1:  // a single point: try the six axis directions for a second one
+            for (const Vec3& axis : axes) {
+                if (tryDirection(axis) || tryDirection(-axis)) return true;
+            }
+            return false;
+        case 2: {  // an edge: try directions perpendicular to it
+            const Vec3 edge = points[1].w - points[0].w;
+            for (const Vec3& axis : axes) {
+                const Vec3 side = edge.cross(axis);
+                if (side.squaredNorm() <= Real(0)) continue;
+                if (tryDirection(side) || tryDirection(-side)) return true;
+            }
+            return false;
+        }
+        case 3: {  // a triangle: try both sides of its plane
+            const Vec3 normal = (points[1].w - points[0].w).cross(points[2].w - points[0].w);
+            if (normal.squaredNorm() <= Real(0)) return false;
+            return tryDirection(normal) || tryDirection(-normal);
+        }
+        default: {
+            const Vec3 e1 = points[1].w - points[0].w, e2 = points[2].w - points[0].w,
+                       e3 = points[3].w - points[0].w;
+            const Real volume = std::abs(e1.cross(e2).dot(e3));
+            const Real scale = context.scale;
+            return volume > kRoundOff * scale * scale * scale && containsOrigin(points, kRoundOff * scale);
+        }
+    }
+}
+// [ch03-seed]
+
+/// GJK's points normally seed the tetrahedron directly. When they cannot (four points on one
+/// plane, three on one line), fewer of them can: try the seed with each point left out in turn.
+bool seedTetrahedron(const EpaContext& context, SupportPoint points[4], int count) {
+    SupportPoint trial[4];
+    std::copy(points, points + count, trial);
+    if (growToTetrahedron(context, trial, count)) {
+        std::copy(trial, trial + 4, points);
+        return true;
+    }
+    for (int skip = 0; skip < count && count > 1; ++skip) {
+        int kept = 0;
+        for (int i = 0; i < count; ++i) {
+            if (i != skip) trial[kept++] = points[i];
+        }
+        if (seedTetrahedron(context, trial, kept)) {
+            std::copy(trial, trial + 4, points);
+            return true;
+        }
+    }
+    return false;
+}
+
+/// True when the origin is inside the tetrahedron or within `slack` of it.
+bool containsOrigin(const SupportPoint points[4], Real slack) {
+    static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
+    for (const auto& face : kFaces) {
+        const Vec3& p0 = points[face[0]].w;
+        Vec3 normal = (points[face[1]].w - p0).cross(points[face[2]].w - p0);
+        const Real length = normal.norm();
+        if (!(length > Real(0))) return false;
+        normal /= length;
+        // Orient the plane away from the fourth vertex, then the origin must not be beyond it.
+        if (normal.dot(points[face[3]].w - p0) > 0) normal = -normal;
+        if (normal.dot(-p0) > slack) return false;
+    }
+    return true;
+}
+
+/// Fills a face's plane. False when the triangle is too thin for its normal to mean anything.
+bool setPlane(const EpaPolytope& polytope, EpaFace& face, Real scale) {
+    const Vec3& p0 = polytope.vertices[face.vertices[0]].w;
+    const Vec3& p1 = polytope.vertices[face.vertices[1]].w;
+    const Vec3& p2 = polytope.vertices[face.vertices[2]].w;
+    const Vec3 normal = (p1 - p0).cross(p2 - p0);
+    const Real length = normal.norm();
+    const Real longestEdge =
+        std::sqrt(std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()}));
+    if (!(length > kThinFace * kRoundOff * scale * longestEdge)) return false;
+    face.normal = normal / length;
+    // The mean of the three vertices' offsets: no vertex's round-off is favoured.
+    face.distance = face.normal.dot(p0 + p1 + p2) / 3;
+    face.removed = false;
+    return true;
+}
+
+/// Index of `vertex` among the face's corners, so that the edge starting there is known.
+int cornerOf(const EpaFace& face, int vertex) {
+    for (int i = 0; i < 3; ++i) {
+        if (face.vertices[i] == vertex) return i;
+    }
+    return -1;
+}
+
+/// Builds the four faces of a tetrahedron, ordered so that every face's normal points out.
+bool initPolytope(EpaPolytope& polytope, SupportPoint points[4], Real scale) {
+    const Vec3 e1 = points[1].w - points[0].w, e2 = points[2].w - points[0].w, e3 = points[3].w - points[0].w;
+    if (e1.cross(e2).dot(e3) > 0) std::swap(points[0], points[1]);  // vertex 3 behind face 012
+    polytope.vertices.assign(points, points + 4);
+    static const int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    polytope.faces.resize(4);
+    for (int f = 0; f < 4; ++f) {
+        std::copy(kFaces[f], kFaces[f] + 3, polytope.faces[f].vertices);
+        if (!setPlane(polytope, polytope.faces[f], scale)) return false;
+    }
+    // Each edge a->b of one face is b->a of exactly one other: that face is its neighbour.
+    for (int f = 0; f < 4; ++f) {
+        for (int edge = 0; edge < 3; ++edge) {
+            const int from = polytope.faces[f].vertices[edge], to = polytope.faces[f].vertices[(edge + 1) % 3];
+            for (int g = 0; g < 4; ++g) {
+                const int corner = cornerOf(polytope.faces[g], to);
+                if (g != f && corner >= 0 && polytope.faces[g].vertices[(corner + 1) % 3] == from) {
+                    polytope.faces[f].neighbours[edge] = g;
+                }
+            }
+        }
+    }
+    return true;
+}
+
+int closestFace(const EpaPolytope& polytope) {
+    int best = -1;
+    for (int f = 0; f < static_cast<int>(polytope.faces.size()); ++f) {
+        const EpaFace& face = polytope.faces[f];
+        if (!face.removed && (best < 0 || face.distance < polytope.faces[best].distance)) best = f;
+    }
+    return best;
+}
+
+// [ch03-horizon]
+/// One edge of the horizon: the border between the faces the new point sees and those it does
+/// not. `from -> to` runs the way the removed face ran it; `outside` keeps the edge as `to -> from`.
+struct HorizonEdge {
+    int from = 0, to = 0;
+    int outside = -1;
+};
+
+/// Depth-first walk over the faces visible from `point`, entered from a removed neighbour
+/// across the face's edge `edge`. Visible faces are removed; the first invisible face met across
+/// an edge contributes that edge to the horizon. Walking each face's remaining two edges in
+/// order yields the horizon as one closed loop, in order (Bullet's gjkepa2 `expand`).
+void walkHorizon(EpaPolytope& polytope, int faceIndex, int edge, const Vec3& point, Real slack,
+                 std::vector<HorizonEdge>& horizon, std::vector<int>& removed) {
+    EpaFace& face = polytope.faces[faceIndex];
+    if (face.removed) return;
+    if (face.normal.dot(point) - face.distance <= slack) {  // cannot see the point: horizon
+        horizon.push_back({face.vertices[(edge + 1) % 3], face.vertices[edge], faceIndex});
+        return;
+    }
+    face.removed = true;
+    removed.push_back(faceIndex);
+    for (int step = 1; step <= 2; ++step) {
+        const int next = (edge + step) % 3;
+        const int neighbour = face.neighbours[next];
+        walkHorizon(polytope, neighbour, cornerOf(polytope.faces[neighbour], face.vertices[(next + 1) % 3]),
+                    point, slack, horizon, removed);
+    }
+}
+
+/// Adds `point` to the polytope: removes the faces it sees, starting with `seenFace`, and fans
+/// new faces from it to the horizon. On round-off trouble (a horizon that is not one simple loop,
+/// or a sliver face) the polytope is left as it was and false is returned.
+bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& point, Real scale) {
+    std::vector<HorizonEdge> horizon;
+    std::vector<int> removed;
+    const Real slack = kRoundOff * scale;
+    EpaFace& seen = polytope.faces[seenFace];
+    seen.removed = true;
+    removed.push_back(seenFace);
+    for (int edge = 0; edge < 3; ++edge) {
+        const int neighbour = seen.neighbours[edge];
+        walkHorizon(polytope, neighbour, cornerOf(polytope.faces[neighbour], seen.vertices[(edge + 1) % 3]),
+                    point.w, slack, horizon, removed);
+    }
+
+    const auto undo = [&] {
+        for (int f : removed) polytope.faces[f].removed = false;
+        return false;
+    };
+    // The horizon must be one loop that passes each vertex once, or the fan would not close.
+    const int count = static_cast<int>(horizon.size());
+    if (count < 3) return undo();
+    std::vector<int> visits(polytope.vertices.size(), 0);
+    for (int i = 0; i < count; ++i) {
+        if (horizon[i].to != horizon[(i + 1) % count].from || ++visits[horizon[i].from] > 1) return undo();
+    }
+
+    // New faces reuse the removed slots first; build them aside so a sliver can still be undone.
+    const int newVertex = static_cast<int>(polytope.vertices.size());
+    polytope.vertices.push_back(point);
+    std::vector<int> slots(count);
+    std::vector<EpaFace> fan(count);
+    for (int i = 0; i < count; ++i) {
+        slots[i] = i < static_cast<int>(removed.size()) ? removed[i]
+                                                      : static_cast<int>(polytope.faces.size()) + i - static_cast<int>(removed.size());
+        fan[i].vertices[0] = horizon[i].from;
+        fan[i].vertices[1] = horizon[i].to;
+        fan[i].vertices[2] = newVertex;
+        if (!setPlane(polytope, fan[i], scale)) {
+            polytope.vertices.pop_back();
+            return undo();
+        }
+    }
+    // Stitch: edge 0 borders the face outside the horizon, edges 1 and 2 the fan's neighbours.
+    for (int i = 0; i < count; ++i) {
+        fan[i].neighbours[0] = horizon[i].outside;
+        fan[i].neighbours[1] = slots[(i + 1) % count];
+        fan[i].neighbours[2] = slots[(i + count - 1) % count];
+        EpaFace& outside = polytope.faces[horizon[i].outside];
+        outside.neighbours[cornerOf(outside, horizon[i].to)] = slots[i];
+    }
+    if (count > static_cast<int>(removed.size())) polytope.faces.resize(polytope.faces.size() + count - removed.size());
+    for (int i = 0; i < count; ++i) polytope.faces[slots[i]] = fan[i];
+    return true;
+}
+// [ch03-horizon]
+
+bool isDuplicate(const EpaPolytope& polytope, const Vec3& point, Real scale) {
+    const Real limit = kRoundOff * scale;
+    for (const SupportPoint& vertex : polytope.vertices) {
+        if ((vertex.w - point).squaredNorm() <= limit * limit) return true;
+    }
+    return false;
+}
+
+// [ch03-contact]
+/// The origin projects onto the closest face at depth * normal. Its barycentric coordinates in
+/// that face (ratios of signed sub-triangle areas, Ericson 3.4) weight the shapes' own support
+/// points, giving a point on A and a point on B with pointA - pointB = depth * normal.
+void contactFromFace(const EpaPolytope& polytope, const EpaFace& face, EpaResult& result) {
+    const SupportPoint& s0 = polytope.vertices[face.vertices[0]];
+    const SupportPoint& s1 = polytope.vertices[face.vertices[1]];
+    const SupportPoint& s2 = polytope.vertices[face.vertices[2]];
+    const Vec3 projection = face.normal * face.distance;
+    const Real area = face.normal.dot((s1.w - s0.w).cross(s2.w - s0.w));
+    Vec3 weights(face.normal.dot((s1.w - projection).cross(s2.w - projection)) / area,
+                 face.normal.dot((s2.w - projection).cross(s0.w - projection)) / area,
+                 face.normal.dot((s0.w - projection).cross(s1.w - projection)) / area);
+    // Round-off (or a polytope stopped early) can put the projection a hair outside the face:
+    // clamp to the triangle so the points stay on the shapes.
+    weights = weights.cwiseMax(Real(0));
+    const Real sum = weights.sum();
+    weights = sum > 0 && isFinite(sum) ? Vec3(weights / sum) : Vec3(Real(1) / 3, Real(1) / 3, Real(1) / 3);
+
+    result.depth = std::max(face.distance, Real(0));
+    result.normal = face.normal;
+    result.pointA = weights[0] * s0.onA + weights[1] * s1.onA + weights[2] * s2.onA;
+    result.pointB = weights[0] * s0.onB + weights[1] * s1.onB + weights[2] * s2.onB;
+    result.barycentric = weights;
+    result.closestFace[0] = s0;
+    result.closestFace[1] = s1;
+    result.closestFace[2] = s2;
+}
+// [ch03-contact]
+
+/// Touching shapes: GJK's simplex holds the origin but spans no volume around it, so the depth
+/// is zero. The normal follows the centres (any direction is exact for zero depth) and the
+/// contact is the simplex point nearest the origin.
+EpaResult touchingResult(const ConvexProxy& a, const ConvexProxy& b, const Simplex& simplex) {
+    EpaResult result;
+    result.exit = EpaExit::Degenerate;
+    const Vec3 between = b.center() - a.center();
+    const Real length = between.norm();
+    result.normal = length > 0 && isFinite(length) ? Vec3(between / length) : Vec3(Vec3::UnitY());
+    int nearest = -1;
+    for (int i = 0; i < simplex.count; ++i) {
+        if (isFinite(simplex.vertices[i].w) &&
+            (nearest < 0 || simplex.vertices[i].w.squaredNorm() < simplex.vertices[nearest].w.squaredNorm())) {
+            nearest = i;
+        }
+    }
+    if (nearest >= 0) {
+        result.pointA = simplex.vertices[nearest].onA;
+        result.pointB = simplex.vertices[nearest].onB;
+        for (SupportPoint& corner : result.closestFace) corner = simplex.vertices[nearest];
+    } else {
+        result.pointA = result.pointB = Real(0.5) * (a.center() + b.center());
+    }
+    if (!isFinite(result.pointA) || !isFinite(result.pointB)) result.pointA = result.pointB = Vec3::Zero();
+    return result;
+}
+
+}  // namespace
+
+// [ch03-loop]
+EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simplex& simplex,
+                         const EpaSettings& settings) {
+    if (simplex.count < 1 || simplex.count > 4) return touchingResult(a, b, simplex);
+
+    // The tolerance is relative to the size of A - B, measured on GJK's points; below a few
+    // ulps of that size a float cannot tell a gap from round-off, so it never asks for less.
+    EpaContext context{a, b, 0};
+    for (int i = 0; i < simplex.count; ++i) context.scale = std::max(context.scale, simplex.vertices[i].w.norm());
+    context.scale = std::max(context.scale, (b.center() - a.center()).norm());
+    if (!(context.scale > 0) || !isFinite(context.scale)) return touchingResult(a, b, simplex);
+    const Real tolerance = std::max(settings.relativeTolerance, kRoundOff) * context.scale;
+
+    SupportPoint points[4];
+    std::copy(simplex.vertices, simplex.vertices + simplex.count, points);
+    EpaPolytope polytope;
+    if (!seedTetrahedron(context, points, simplex.count) || !initPolytope(polytope, points, context.scale)) {
+        return touchingResult(a, b, simplex);
+    }
+
+    EpaResult result;
+    int closest = closestFace(polytope);
+    for (;;) {
+        if (result.iterations >= settings.maxIterations) {
+            result.exit = EpaExit::IterationCap;
+            break;
+        }
+        if (settings.maxExpansions >= 0 && result.iterations >= settings.maxExpansions) {
+            result.exit = EpaExit::StepLimit;
+            break;
+        }
+        // Ask A - B for its furthest point along the closest face's normal. If it is no further
+        // out than the face (within the tolerance), that face lies on the boundary: done.
+        const EpaFace& face = polytope.faces[closest];
+        const SupportPoint support = minkowskiSupport(a, b, face.normal);
+        if (!isFinite(support.w)) {
+            result.exit = EpaExit::NoProgress;
+            break;
+        }
+        if (face.normal.dot(support.w) - face.distance <= tolerance) {
+            result.exit = EpaExit::Converged;
+            break;
+        }
+        // A point already in the polytope, or a horizon broken by round-off, means the polytope
+        // has stopped growing: the current face is as good as this precision allows.
+        if (isDuplicate(polytope, support.w, context.scale) ||
+            !expandPolytope(polytope, closest, support, context.scale)) {
+            result.exit = EpaExit::NoProgress;
+            break;
+        }
+        ++result.iterations;
+        closest = closestFace(polytope);
+    }
+
+    contactFromFace(polytope, polytope.faces[closest], result);
+    if (settings.keepPolytope) result.polytope = std::move(polytope);
+    return result;
+}
+// [ch03-loop]
+
+}  // namespace stepwise

@@ -1,0 +1,186 @@
+#include "04_pgs/contact_constraints.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+Real combinedFriction(const Material& a, const Material& b) {
+    return std::sqrt(std::max(Real(0), a.friction) * std::max(Real(0), b.friction));
+}
+
+Real combinedRestitution(const Material& a, const Material& b) {
+    return std::max(a.restitution, b.restitution);
+}
+
+void frictionDirections(const Vec3& normal, const Vec3& relativeVelocity, Vec3& tangent1, Vec3& tangent2) {
+    const Vec3 sliding = relativeVelocity - normal.dot(relativeVelocity) * normal;
+    const Real slidingSpeed = sliding.norm();
+    // Below ~1e-5 m/s the direction is round-off; any perpendicular will do.
+    tangent1 = slidingSpeed > Real(1e-5) ? Vec3(sliding / slidingSpeed) : anyPerpendicular(normal);
+    tangent2 = normal.cross(tangent1);
+}
+
+static bool pointIsFinite(const Contact& contact, const ContactPoint& point) {
+    return contact.normal.allFinite() && std::abs(contact.normal.norm() - 1) < Real(1e-3) &&
+           point.pointA.allFinite() && point.pointB.allFinite() && std::isfinite(point.depth);
+}
+
+// A row along a unit direction at a contact point: J v = direction . (velocity of B's material
+// point - velocity of A's material point), the relative velocity along the direction.
+static ConstraintRow contactRow(int bodyA, int bodyB, const Vec3& direction, const Vec3& armA, const Vec3& armB) {
+    ConstraintRow row;
+    row.bodyA = bodyA;
+    row.bodyB = bodyB;
+    row.linearA = -direction;
+    row.angularA = -armA.cross(direction);
+    row.linearB = direction;
+    row.angularB = armB.cross(direction);
+    return row;
+}
+
+ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt) {
+    const Settings& settings = world.settings;
+    const Real inverseDt = dt > 0 ? 1 / dt : 0;
+    ContactRows result;
+    for (size_t contactIndex = 0; contactIndex < world.contacts.size(); ++contactIndex) {
+        const Contact& contact = world.contacts[contactIndex];
+        const SolverBody& bodyA = bodies[contact.bodyA];
+        const SolverBody& bodyB = bodies[contact.bodyB];
+        if (bodyA.inverseMass == 0 && bodyB.inverseMass == 0) continue;  // nothing here can move
+        const Material& materialA = world.bodies[contact.bodyA].material;
+        const Material& materialB = world.bodies[contact.bodyB].material;
+        const Real friction = combinedFriction(materialA, materialB);
+        const Real restitution = combinedRestitution(materialA, materialB);
+
+        for (int pointIndex = 0; pointIndex < contact.pointCount; ++pointIndex) {
+            const ContactPoint& point = contact.points[pointIndex];
+            if (!pointIsFinite(contact, point)) {
+                ++result.invalidSkipped;
+                continue;
+            }
+            const Vec3& normal = contact.normal;
+            // The impulse acts halfway between the two deepest points, on both bodies.
+            const Vec3 at = Real(0.5) * (point.pointA + point.pointB);
+            const Vec3 armA = at - bodyA.center;
+            const Vec3 armB = at - bodyB.center;
+            const Vec3 relativeVelocity = bodyB.linearVelocity + bodyB.angularVelocity.cross(armB) -
+                                          bodyA.linearVelocity - bodyA.angularVelocity.cross(armA);
+            const Real normalVelocity = normal.dot(relativeVelocity);
+
+            // [ch04-normal-target]
+            // Baumgarte: ask for a separating speed that removes the fraction beta of the
+            // penetration beyond the slop in this step. A point still apart (depth < 0, if the
+            // narrowphase reports one) may approach by the gap and no faster.
+            Real target = 0;
+            if (point.depth > settings.slop)
+                target = settings.baumgarte * inverseDt * (point.depth - settings.slop);
+            else if (point.depth < 0)
+                target = point.depth * inverseDt;
+            // Restitution from the approach speed before the solve (Box2D's "relax" velocity), and
+            // only above the threshold, so resting bodies do not bounce on gravity's own speed.
+            // The larger of the two targets wins: adding them would bounce a deep contact higher
+            // than the restitution law allows.
+            if (normalVelocity < -settings.restitutionThreshold)
+                target = std::max(target, -restitution * normalVelocity);
+            // [ch04-normal-target]
+
+            // [ch04-drop-separating]
+            // A point whose bodies already move apart faster than the target needs no impulse on
+            // its own; it gets no rows at all.
+            if (normalVelocity > target) {
+                ++result.separatingDropped;
+                continue;
+            }
+            // [ch04-drop-separating]
+
+            ContactRowRef ref;
+            ref.contactIndex = static_cast<int>(contactIndex);
+            ref.pointIndex = pointIndex;
+            frictionDirections(normal, relativeVelocity, ref.tangent[0], ref.tangent[1]);
+
+            // Friction rows first, then the normal row they refer to (Box2D's order: the normal
+            // row, solved last, has the final word on penetration within each sweep).
+            const int firstRow = static_cast<int>(result.rows.size());
+            ref.normalRow = firstRow + 2;
+            for (int k = 0; k < 2; ++k) {
+                ConstraintRow row = contactRow(contact.bodyA, contact.bodyB, ref.tangent[k], armA, armB);
+                row.boundRow = ref.normalRow;
+                row.boundScale = friction;
+                ref.tangentRow[k] = firstRow + k;
+                result.rows.push_back(row);
+            }
+            ConstraintRow normalRow = contactRow(contact.bodyA, contact.bodyB, normal, armA, armB);
+            normalRow.bias = target;
+            normalRow.lower = 0;
+            normalRow.upper = kRealMax;
+            result.rows.push_back(normalRow);
+            result.points.push_back(ref);
+        }
+    }
+    computeEffectiveMasses(result.rows, bodies);
+    return result;
+}
+
+int storeContactImpulses(World& world, const ContactRows& contactRows) {
+    // Points without rows (separating, invalid) carried no impulse.
+    for (Contact& contact : world.contacts)
+        for (int i = 0; i < contact.pointCount; ++i) {
+            contact.points[i].normalImpulse = 0;
+            contact.points[i].tangentImpulse[0] = contact.points[i].tangentImpulse[1] = 0;
+        }
+    for (const ContactRowRef& ref : contactRows.points) {
+        Contact& contact = world.contacts[ref.contactIndex];
+        ContactPoint& point = contact.points[ref.pointIndex];
+        point.normalImpulse = contactRows.rows[ref.normalRow].impulse;
+        const Vec3 frictionImpulse = contactRows.rows[ref.tangentRow[0]].impulse * ref.tangent[0] +
+                                     contactRows.rows[ref.tangentRow[1]].impulse * ref.tangent[1];
+        const Vec3 fixed1 = anyPerpendicular(contact.normal);
+        const Vec3 fixed2 = contact.normal.cross(fixed1);
+        point.tangentImpulse[0] = frictionImpulse.dot(fixed1);
+        point.tangentImpulse[1] = frictionImpulse.dot(fixed2);
+    }
+
+    // [ch04-drop-weak]
+    // Keep a point only if its impulse changed the approach speed by at least
+    // kDropVelocityChange; what is left is the set of contacts that actually held something.
+    std::vector<Real> effectiveMass(world.contacts.size() * 4, 0);
+    for (const ContactRowRef& ref : contactRows.points)
+        effectiveMass[static_cast<size_t>(ref.contactIndex) * 4 + ref.pointIndex] =
+            contactRows.rows[ref.normalRow].effectiveMass;
+    int removed = 0;
+    size_t kept = 0;
+    for (size_t c = 0; c < world.contacts.size(); ++c) {
+        Contact contact = world.contacts[c];
+        int keptPoints = 0;
+        for (int i = 0; i < contact.pointCount; ++i) {
+            const Real mass = effectiveMass[c * 4 + i];
+            const bool carried = mass > 0 && contact.points[i].normalImpulse >= kDropVelocityChange * mass;
+            if (carried)
+                contact.points[keptPoints++] = contact.points[i];
+            else
+                ++removed;
+        }
+        contact.pointCount = keptPoints;
+        if (keptPoints > 0) world.contacts[kept++] = contact;
+    }
+    world.contacts.resize(kept);
+    // [ch04-drop-weak]
+    return removed;
+}
+
+SolveStats solveContacts(World& world, Real dt) {
+    SolveStats stats;
+    for (const Contact& contact : world.contacts) stats.contactPoints += contact.pointCount;
+    std::vector<SolverBody> bodies = gatherSolverBodies(world);
+    ContactRows contactRows = buildContactRows(world, bodies, dt);
+    solveRows(contactRows.rows, bodies, world.settings.solver, std::max(0, world.settings.solverIterations));
+    stats.rows = static_cast<int>(contactRows.rows.size());
+    stats.separatingDropped = contactRows.separatingDropped;
+    stats.residual = measureResidual(contactRows.rows, bodies);
+    scatterSolverBodies(world, bodies);
+    stats.weakDropped = storeContactImpulses(world, contactRows);
+    return stats;
+}
+
+}  // namespace stepwise
