@@ -1,5 +1,18 @@
-// Placeholder while chapter 01 is written; replaced by the chapter's real registration.
+// Chapter 1 registers its demo scenes, its pipeline (the first one: just the integrator) and
+// the integrator bench.
+#include "01_integrators/bench_integrators.h"
+#include "01_integrators/chapter.h"
+#include "01_integrators/scenes.h"
 #include "app/registry.h"
+
 namespace stepwise {
-void registerChapter01(Registry&) {}
+
+void registerChapter01(Registry& registry) {
+    addChapter01Scenes(registry);
+    registry.addPipeline(PipelineEntry{1, makeChapter01Pipeline});
+    registry.addBench(BenchEntry{"integrators", 1,
+                                 "integrator error against run time on a spring oscillator (work-precision)",
+                                 runIntegratorsBench});
+}
+
 }  // namespace stepwise

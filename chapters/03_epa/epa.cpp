@@ -29,6 +29,10 @@ constexpr Real kRoundOff = 8 * kEpsilon;
 // A face is too thin to have a trustworthy normal when its cross product is within this factor
 // of the round-off the cross product itself carries (the normal would be off by > 1/64 rad).
 constexpr Real kThinFace = 64;
+// Two faces whose normals agree this well (2.6 degrees) are taken as lying in one plane.
+constexpr Real kCoplanar = Real(0.999);
+// Chapter 2's GJK reports "intersect" for shapes this close (relative to their size).
+constexpr Real kTouching = 128 * kEpsilon;
 
 struct EpaContext {
     const ConvexProxy& a;
@@ -74,7 +78,9 @@ bool growToTetrahedron(const EpaContext& context, SupportPoint points[4], int co
                        e3 = points[3].w - points[0].w;
             const Real volume = std::abs(e1.cross(e2).dot(e3));
             const Real scale = context.scale;
-            return volume > kRoundOff * scale * scale * scale && containsOrigin(points, kRoundOff * scale);
+            // GJK calls shapes within its touching tolerance (about 100 ulps of the size) of each
+            // other intersecting, so the origin may lie that far outside their simplex.
+            return volume > kRoundOff * scale * scale * scale && containsOrigin(points, kTouching * scale);
         }
     }
 }
@@ -274,19 +280,50 @@ bool isDuplicate(const EpaPolytope& polytope, const Vec3& point, Real scale) {
     return false;
 }
 
+/// Barycentric coordinates of the origin's projection onto a face's plane (ratios of signed
+/// sub-triangle areas, Ericson 3.4). All >= 0 when the projection lies inside the face.
+Vec3 projectionWeights(const EpaPolytope& polytope, const EpaFace& face) {
+    const Vec3& p0 = polytope.vertices[face.vertices[0]].w;
+    const Vec3& p1 = polytope.vertices[face.vertices[1]].w;
+    const Vec3& p2 = polytope.vertices[face.vertices[2]].w;
+    const Vec3 projection = face.normal * face.distance;
+    const Real area = face.normal.dot((p1 - p0).cross(p2 - p0));
+    return Vec3(face.normal.dot((p1 - projection).cross(p2 - projection)) / area,
+                face.normal.dot((p2 - projection).cross(p0 - projection)) / area,
+                face.normal.dot((p0 - projection).cross(p1 - projection)) / area);
+}
+
+/// The face the contact comes from. A face of A - B that EPA has split into several coplanar
+/// triangles gives them all the same distance up to round-off, and the smallest of those may
+/// well be a triangle the origin does not project into. Among the faces within `tolerance` of
+/// the closest and in its plane (only that plane is known to bound A - B), take the one whose
+/// projection lies deepest inside its triangle.
+int contactFace(const EpaPolytope& polytope, int closest, Real tolerance) {
+    const EpaFace& closestFace = polytope.faces[closest];
+    const Real limit = closestFace.distance + tolerance;
+    int best = closest;
+    Real bestInside = projectionWeights(polytope, closestFace).minCoeff();
+    for (int f = 0; f < static_cast<int>(polytope.faces.size()) && bestInside < 0; ++f) {
+        const EpaFace& face = polytope.faces[f];
+        if (face.removed || face.distance > limit || face.normal.dot(closestFace.normal) < kCoplanar) continue;
+        const Real inside = projectionWeights(polytope, face).minCoeff();
+        if (inside > bestInside) {
+            best = f;
+            bestInside = inside;
+        }
+    }
+    return best;
+}
+
 // [ch03-contact]
 /// The origin projects onto the closest face at depth * normal. Its barycentric coordinates in
-/// that face (ratios of signed sub-triangle areas, Ericson 3.4) weight the shapes' own support
-/// points, giving a point on A and a point on B with pointA - pointB = depth * normal.
+/// that face weight the shapes' own support points, giving a point on A and a point on B with
+/// pointA - pointB = depth * normal.
 void contactFromFace(const EpaPolytope& polytope, const EpaFace& face, EpaResult& result) {
     const SupportPoint& s0 = polytope.vertices[face.vertices[0]];
     const SupportPoint& s1 = polytope.vertices[face.vertices[1]];
     const SupportPoint& s2 = polytope.vertices[face.vertices[2]];
-    const Vec3 projection = face.normal * face.distance;
-    const Real area = face.normal.dot((s1.w - s0.w).cross(s2.w - s0.w));
-    Vec3 weights(face.normal.dot((s1.w - projection).cross(s2.w - projection)) / area,
-                 face.normal.dot((s2.w - projection).cross(s0.w - projection)) / area,
-                 face.normal.dot((s0.w - projection).cross(s1.w - projection)) / area);
+    Vec3 weights = projectionWeights(polytope, face);
     // Round-off (or a polytope stopped early) can put the projection a hair outside the face:
     // clamp to the triangle so the points stay on the shapes.
     weights = weights.cwiseMax(Real(0));
@@ -338,11 +375,10 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
                          const EpaSettings& settings) {
     if (simplex.count < 1 || simplex.count > 4) return touchingResult(a, b, simplex);
 
-    // The tolerance is relative to the size of A - B, measured on GJK's points; below a few
-    // ulps of that size a float cannot tell a gap from round-off, so it never asks for less.
-    EpaContext context{a, b, 0};
-    for (int i = 0; i < simplex.count; ++i) context.scale = std::max(context.scale, simplex.vertices[i].w.norm());
-    context.scale = std::max(context.scale, (b.center() - a.center()).norm());
+    // The tolerance is relative to the pair's size (GJK's scale: the sum of the bounding radii);
+    // below a few ulps of that size a float cannot tell a gap from round-off, so it never asks
+    // for less.
+    EpaContext context{a, b, gjkTolerances(a, b).scale};
     if (!(context.scale > 0) || !isFinite(context.scale)) return touchingResult(a, b, simplex);
     const Real tolerance = std::max(settings.relativeTolerance, kRoundOff) * context.scale;
 
@@ -387,7 +423,7 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
         closest = closestFace(polytope);
     }
 
-    contactFromFace(polytope, polytope.faces[closest], result);
+    contactFromFace(polytope, polytope.faces[contactFace(polytope, closest, tolerance)], result);
     if (settings.keepPolytope) result.polytope = std::move(polytope);
     return result;
 }

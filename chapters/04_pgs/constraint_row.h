@@ -30,9 +30,9 @@ struct ConstraintRow {
     Real effectiveMass = 0;              // 1 / (J M^-1 J^T), kg (or kg m^2); 0 when no body can move
     Real bias = 0;                       // target of J v, m/s (or rad/s)
 
-    // Bounds on the accumulated impulse. A row with boundRow >= 0 ignores lower/upper and uses
-    // [-boundScale * rows[boundRow].impulse, +boundScale * rows[boundRow].impulse] instead: a
-    // friction row is bounded by mu times the impulse its normal row carries right now.
+    // Bounds on the accumulated impulse. A row with boundRow >= 0 ignores lower/upper and is
+    // bounded by plus or minus boundScale * rows[boundRow].impulse instead: a friction row is
+    // bounded by mu times the impulse its normal row carries right now.
     Real lower = -kRealMax;
     Real upper = kRealMax;
     int boundRow = -1;

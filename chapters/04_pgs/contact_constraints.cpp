@@ -13,6 +13,7 @@ Real combinedRestitution(const Material& a, const Material& b) {
     return std::max(a.restitution, b.restitution);
 }
 
+// [ch04-friction-directions]
 void frictionDirections(const Vec3& normal, const Vec3& relativeVelocity, Vec3& tangent1, Vec3& tangent2) {
     const Vec3 sliding = relativeVelocity - normal.dot(relativeVelocity) * normal;
     const Real slidingSpeed = sliding.norm();
@@ -20,12 +21,14 @@ void frictionDirections(const Vec3& normal, const Vec3& relativeVelocity, Vec3& 
     tangent1 = slidingSpeed > Real(1e-5) ? Vec3(sliding / slidingSpeed) : anyPerpendicular(normal);
     tangent2 = normal.cross(tangent1);
 }
+// [ch04-friction-directions]
 
 static bool pointIsFinite(const Contact& contact, const ContactPoint& point) {
     return contact.normal.allFinite() && std::abs(contact.normal.norm() - 1) < Real(1e-3) &&
            point.pointA.allFinite() && point.pointB.allFinite() && std::isfinite(point.depth);
 }
 
+// [ch04-contact-row]
 // A row along a unit direction at a contact point: J v = direction . (velocity of B's material
 // point - velocity of A's material point), the relative velocity along the direction.
 static ConstraintRow contactRow(int bodyA, int bodyB, const Vec3& direction, const Vec3& armA, const Vec3& armB) {
@@ -38,6 +41,7 @@ static ConstraintRow contactRow(int bodyA, int bodyB, const Vec3& direction, con
     row.angularB = armB.cross(direction);
     return row;
 }
+// [ch04-contact-row]
 
 ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt) {
     const Settings& settings = world.settings;
@@ -179,7 +183,7 @@ SolveStats solveContacts(World& world, Real dt) {
     stats.separatingDropped = contactRows.separatingDropped;
     stats.residual = measureResidual(contactRows.rows, bodies);
     scatterSolverBodies(world, bodies);
-    stats.weakDropped = storeContactImpulses(world, contactRows);
+    stats.pointsRemoved = storeContactImpulses(world, contactRows);
     return stats;
 }
 

@@ -55,7 +55,8 @@ struct SolveStats {
     int contactPoints = 0;      // in World::contacts before the solve
     int rows = 0;
     int separatingDropped = 0;
-    int weakDropped = 0;        // removed after the solve: impulse below the threshold
+    int pointsRemoved = 0;      // taken out of World::contacts after the solve (no rows, or an
+                                // impulse below kDropVelocityChange times the effective mass)
     Residual residual;          // after the last iteration, m/s
 };
 

@@ -94,6 +94,11 @@ int runCli(int argc, char** argv, const Registry& registry) {
 
     for (const CommandEntry& command : registry.commands()) command.install(app, exitCode);
 
+    const auto known = app.get_subcommands([&](CLI::App* command) { return argc > 1 && command->check_name(argv[1]); });
+    if (argc > 1 && argv[1][0] != '-' && known.empty()) {
+        std::cerr << "error: unknown command '" << argv[1] << "'\n\n" << app.help();
+        return kExitBadInput;
+    }
     try {
         app.parse(argc, argv);  // a chapter's command runs here, from its callback
         if (run->parsed()) return commandRun(registry, runArgs);

@@ -56,18 +56,18 @@ std::vector<int> orderFacePolygon(const std::vector<Vec3d>& points, const std::v
 // simplicity buys exact coplanar-face merging, which quickhull needs extra care for.
 ConvexHull buildConvexHull(const std::vector<Vec3>& inputPoints) {
     const int count = static_cast<int>(inputPoints.size());
-    if (count < 4) throw HullError{"needs at least 4 points, got " + std::to_string(count)};
+    if (count < 4) throw HullError("needs at least 4 points, got " + std::to_string(count));
     if (count > kMaxHullPoints)
-        throw HullError{"has " + std::to_string(count) + " points; at most " + std::to_string(kMaxHullPoints) + " are supported"};
+        throw HullError("has " + std::to_string(count) + " points; at most " + std::to_string(kMaxHullPoints) + " are supported");
     std::vector<Vec3d> points;
     for (int i = 0; i < count; ++i) {
-        if (!inputPoints[i].allFinite()) throw HullError{"point " + std::to_string(i) + " is not finite"};
+        if (!inputPoints[i].allFinite()) throw HullError("point " + std::to_string(i) + " is not finite");
         points.push_back(inputPoints[i].cast<double>());
     }
     Vec3d low = points[0], high = points[0];
     for (const Vec3d& point : points) low = low.cwiseMin(point), high = high.cwiseMax(point);
     const double size = (high - low).maxCoeff();
-    if (!(size > 0)) throw HullError{"all points coincide"};
+    if (!(size > 0)) throw HullError("all points coincide");
     const double tolerance = 1e-6 * size;
 
     std::vector<Plane> planes;
@@ -85,14 +85,14 @@ ConvexHull buildConvexHull(const std::vector<Vec3>& inputPoints) {
                     anyBelow |= distance < -tolerance;
                 }
                 if (anyAbove && anyBelow) continue;
-                if (!anyAbove && !anyBelow) throw HullError{"points are coplanar: they span no volume"};
+                if (!anyAbove && !anyBelow) throw HullError("points are coplanar: they span no volume");
                 const Plane plane = anyAbove ? Plane{-normal, -offset} : Plane{normal, offset};
                 const bool known = std::any_of(planes.begin(), planes.end(), [&](const Plane& other) {
                     return other.normal.dot(plane.normal) > 1 - 1e-9 && std::abs(other.offset - plane.offset) < tolerance;
                 });
                 if (!known) planes.push_back(plane);
             }
-    if (planes.size() < 4) throw HullError{"points are coplanar: they span no volume"};
+    if (planes.size() < 4) throw HullError("points are coplanar: they span no volume");
 
     ConvexHull hull;
     std::vector<int> remap(count, -1);

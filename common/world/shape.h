@@ -5,6 +5,7 @@
 #include "math/math.h"
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ struct ConvexHull {
 
 constexpr int kMaxHullPoints = 128;
 
-struct HullError {
+struct HullError : std::runtime_error {
+    explicit HullError(const std::string& reason) : std::runtime_error(reason), message(reason) {}
     std::string message;
 };
 

@@ -1,0 +1,181 @@
+// The work-precision bench of chapter 1 (Hairer & Wanner's "work-precision diagram"): for each
+// integrator and step size, how far from the exact answer it ends and how long it took.
+// The system is eight bodies, each on a zero-rest-length spring to its own world anchor and
+// without gravity: an isotropic harmonic oscillator with the closed form
+//   x(t) = anchor + d0 cos(w t) + (v0 / w) sin(w t),   w = sqrt(k / m).
+#include "01_integrators/bench_integrators.h"
+
+#include "01_integrators/integrate.h"
+#include "app/bench_util.h"
+
+#include <cmath>
+#include <exception>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace stepwise {
+
+namespace {
+
+constexpr double kOmega = 2 * 3.14159265358979323846;  // rad/s: one oscillation per second
+constexpr double kDuration = 2.3;                      // s; not a whole number of periods, so
+                                                       // no error term happens to vanish there
+constexpr int kBodies = 8;
+
+struct Oscillator {
+    Vec3 anchor;
+    Vec3 offset;     // initial displacement from the anchor, m
+    Vec3 velocity;   // initial velocity, m/s
+};
+
+// Seeded, with our own mapping to [-1, 1] so every standard library gives the same numbers.
+std::vector<Oscillator> makeOscillators() {
+    std::mt19937 random(20240601u);
+    auto uniform = [&] { return Real(2.0 * (random() / 4294967295.0) - 1.0); };
+    std::vector<Oscillator> oscillators(kBodies);
+    for (int i = 0; i < kBodies; ++i) {
+        oscillators[i].anchor = Vec3(Real(3 * i), 0, 0);
+        oscillators[i].offset = Vec3(uniform(), uniform(), uniform());
+        oscillators[i].velocity = Real(kOmega) * Vec3(uniform(), uniform(), uniform());
+    }
+    return oscillators;
+}
+
+World makeOscillatorWorld(const std::vector<Oscillator>& oscillators, IntegratorKind method) {
+    World world;
+    world.settings.gravity = Vec3::Zero();
+    world.settings.integrator = method;
+    for (const Oscillator& oscillator : oscillators) {
+        BodyDef def;
+        def.shape = Shape::sphere(Real(0.1));
+        def.transform.position = oscillator.anchor + oscillator.offset;
+        def.linearVelocity = oscillator.velocity;
+        def.mass = Real(1);
+        Spring spring;
+        spring.bodyA = addBody(world, def);
+        spring.anchorB = oscillator.anchor;
+        spring.stiffness = Real(kOmega * kOmega);  // k = m w^2
+        world.springs.push_back(spring);
+    }
+    return world;
+}
+
+double maxErrorAgainstExact(const World& world, const std::vector<Oscillator>& oscillators, double t) {
+    double worst = 0;
+    for (size_t i = 0; i < oscillators.size(); ++i) {
+        const Oscillator& o = oscillators[i];
+        const Eigen::Vector3d exact = o.anchor.cast<double>() + o.offset.cast<double>() * std::cos(kOmega * t) +
+                                      o.velocity.cast<double>() * (std::sin(kOmega * t) / kOmega);
+        worst = std::max(worst, (world.bodies[i].transform.position.cast<double>() - exact).norm());
+    }
+    return worst;
+}
+
+struct Measurement {
+    IntegratorKind method;
+    int steps;
+    double dt;
+    double error;
+    double seconds;   // median wall time of one run to kDuration
+};
+
+// Runs one configuration often enough that the timer sees real numbers: at least five runs
+// and at least `minimumSeconds` of stepping in total; reports the median run.
+Measurement measure(const std::vector<Oscillator>& oscillators, IntegratorKind method, int steps, double minimumSeconds) {
+    const World initial = makeOscillatorWorld(oscillators, method);
+    const Real dt = Real(kDuration / steps);
+    Measurement result{method, steps, kDuration / steps, 0, 0};
+    std::vector<double> runSeconds;
+    double total = 0;
+    while (runSeconds.size() < 5 || total < minimumSeconds) {
+        World world = initial;
+        Stopwatch stopwatch;
+        for (int step = 0; step < steps; ++step) integrate(world, dt);
+        const double seconds = stopwatch.seconds();
+        runSeconds.push_back(seconds);
+        total += seconds;
+        if (runSeconds.size() == 1) result.error = maxErrorAgainstExact(world, oscillators, kDuration);
+    }
+    result.seconds = medianOf(runSeconds);
+    return result;
+}
+
+// Least-squares slope of log(error) against log(dt) over the points above the round-off
+// floor and below the pre-asymptotic range: the observed order of the method.
+double observedOrder(const std::vector<Measurement>& rows, IntegratorKind method) {
+    const double floor = 1000 * std::numeric_limits<Real>::epsilon();
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const Measurement& row : rows) {
+        if (row.method != method || row.error <= floor || row.error >= 1e-1) continue;
+        const double x = std::log(row.dt), y = std::log(row.error);
+        n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    if (n < 2) return std::nan("");
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+std::string withSuffix(const std::string& path, const std::string& suffix) {
+    const std::string extension = ".svg";
+    if (path.size() > extension.size() && path.compare(path.size() - extension.size(), extension.size(), extension) == 0)
+        return path.substr(0, path.size() - extension.size()) + suffix + extension;
+    return path + suffix + extension;
+}
+
+}  // namespace
+
+int runIntegratorsBench(const BenchOptions& options) {
+    std::ostream& out = options.out ? *options.out : std::cout;
+    const std::vector<Oscillator> oscillators = makeOscillators();
+    const IntegratorKind methods[] = {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Rk4};
+    const std::vector<int> stepCounts = options.quick ? std::vector<int>{16, 32, 64, 128, 256, 512, 1024}
+                                                      : std::vector<int>{16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192};
+    const double minimumSeconds = options.quick ? 0.01 : 0.2;
+
+    // [ch01-bench]
+    std::vector<Measurement> rows;
+    for (IntegratorKind method : methods)
+        for (int steps : stepCounts) rows.push_back(measure(oscillators, method, steps, minimumSeconds));
+    // [ch01-bench]
+
+    CsvTable table({"method", "steps", "dt_s", "h_omega", "error_m", "run_ms", "ns_per_body_step"});
+    PlotSpec workPrecision{"Work-precision: " + std::to_string(kBodies) + " oscillators to t = 2.3 s (Real = " +
+                               (sizeof(Real) == 4 ? "float" : "double") + ")",
+                           "run time (s)", "max position error (m)", true, true, {}};
+    PlotSpec errorByStep{"Error against step size", "dt (s)", "max position error (m)", true, true, {}};
+    for (IntegratorKind method : methods) {
+        PlotSeries byTime{toString(method), {}, {}, false};
+        PlotSeries byStep{toString(method), {}, {}, false};
+        for (const Measurement& row : rows) {
+            if (row.method != method) continue;
+            table.addRow({toString(method), std::to_string(row.steps), formatNumber(row.dt), formatNumber(row.dt * kOmega),
+                          formatNumber(row.error), formatNumber(row.seconds * 1e3),
+                          formatNumber(row.seconds * 1e9 / (double(row.steps) * kBodies))});
+            byTime.x.push_back(row.seconds);
+            byTime.y.push_back(row.error);
+            byStep.x.push_back(row.dt);
+            byStep.y.push_back(row.error);
+        }
+        workPrecision.series.push_back(byTime);
+        errorByStep.series.push_back(byStep);
+    }
+
+    out << table.toText() << "\nobserved order (slope of log error against log dt):\n";
+    for (IntegratorKind method : methods)
+        out << "  " << toString(method) << "  " << formatNumber(observedOrder(rows, method), 3) << "\n";
+
+    try {
+        if (!options.csvPath.empty()) table.write(options.csvPath);
+        if (!options.plotPath.empty()) {
+            writeSvgPlot(options.plotPath, workPrecision);
+            writeSvgPlot(withSuffix(options.plotPath, "-dt"), errorByStep);
+        }
+    } catch (const std::exception& error) {
+        std::cerr << "error: bench integrators: " << error.what() << "\n";
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace stepwise

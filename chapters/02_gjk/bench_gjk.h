@@ -1,0 +1,11 @@
+#pragma once
+// `stepwise bench gjk` (see bench_gjk.cpp).
+
+#include "app/registry.h"
+
+namespace stepwise {
+
+/// Runs the GJK bench; returns the process exit code.
+int runGjkBench(const BenchOptions& options);
+
+}  // namespace stepwise

@@ -1,0 +1,72 @@
+#include "02_gjk/random_pairs.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+Quat PairRandom::rotation() {
+    const double u1 = uniform();
+    const double u2 = uniform() * 2 * 3.14159265358979323846;
+    const double u3 = uniform() * 2 * 3.14159265358979323846;
+    const double a = std::sqrt(1 - u1);
+    const double b = std::sqrt(u1);
+    Quat q(Real(b * std::cos(u3)), Real(a * std::sin(u2)), Real(a * std::cos(u2)), Real(b * std::sin(u3)));
+    q.normalize();
+    return q;
+}
+
+Vec3 PairRandom::unitVector() {
+    const double z = uniform(-1, 1);
+    const double angle = uniform() * 2 * 3.14159265358979323846;
+    const double r = std::sqrt(std::max(0.0, 1 - z * z));
+    return Vec3(Real(r * std::cos(angle)), Real(r * std::sin(angle)), Real(z));
+}
+
+BoxPair randomBoxPair(PairRandom& random, double minSize, double maxSize, const Vec3& origin) {
+    BoxPair pair;
+    auto halfExtents = [&] {
+        return Vec3(Real(0.5 * random.uniform(minSize, maxSize)), Real(0.5 * random.uniform(minSize, maxSize)),
+                    Real(0.5 * random.uniform(minSize, maxSize)));
+    };
+    pair.halfExtentsA = halfExtents();
+    pair.halfExtentsB = halfExtents();
+    pair.poseA.rotation = random.rotation();
+    pair.poseB.rotation = random.rotation();
+    const double reach = pair.halfExtentsA.cast<double>().norm() + pair.halfExtentsB.cast<double>().norm();
+    const Vec3 offset = random.unitVector() * Real(random.uniform(0, 1.2 * reach));
+    pair.poseA.position = origin;
+    pair.poseB.position = origin + offset;
+    return pair;
+}
+
+BoxPair nearContactBoxPair(PairRandom& random, double gap) {
+    BoxPair pair;
+    pair.halfExtentsA = Vec3(Real(random.uniform(0.5, 1.0)), Real(random.uniform(0.5, 1.0)), Real(random.uniform(0.5, 1.0)));
+    pair.halfExtentsB = Vec3(Real(random.uniform(0.05, 0.2)), Real(random.uniform(0.05, 0.2)), Real(random.uniform(0.05, 0.2)));
+    pair.poseB.rotation = random.rotation();
+    // B's corners in double, from the rounded rotation and half extents (the stored pose is
+    // what both GJK and this construction must agree on).
+    const Eigen::Matrix3d rotationB = pair.poseB.rotation.cast<double>().normalized().toRotationMatrix();
+    auto lowestCorner = [&] {
+        Eigen::Vector3d lowest(1e300, 0, 0);
+        for (int corner = 0; corner < 8; ++corner) {
+            const Eigen::Vector3d local((corner & 1) ? pair.halfExtentsB.x() : -pair.halfExtentsB.x(),
+                                        (corner & 2) ? pair.halfExtentsB.y() : -pair.halfExtentsB.y(),
+                                        (corner & 4) ? pair.halfExtentsB.z() : -pair.halfExtentsB.z());
+            const Eigen::Vector3d arm = rotationB * local;
+            if (arm.x() < lowest.x()) lowest = arm;
+        }
+        return lowest;
+    };
+    const Eigen::Vector3d arm = lowestCorner();
+    // The corner lands on A's +X face at (hA.x + gap, y, z) with y, z in the middle half of it.
+    const Eigen::Vector3d target(double(pair.halfExtentsA.x()) + gap, random.uniform(-0.5, 0.5) * pair.halfExtentsA.y(),
+                                 random.uniform(-0.5, 0.5) * pair.halfExtentsA.z());
+    pair.poseB.position = (target - arm).cast<Real>();
+    // Rounding the position moved the corner by up to half an ulp: measure the gap again.
+    pair.exactGap = pair.poseB.position.cast<double>().x() + arm.x() - double(pair.halfExtentsA.x());
+    return pair;
+}
+
+}  // namespace stepwise

@@ -1,0 +1,227 @@
+// The chapter 2 demo scenes and their overlay: two boxes, and a sphere against a diamond.
+
+#include "02_gjk/scenes.h"
+
+#include "02_gjk/chapter.h"
+#include "app/panel.h"
+#include "app/registry.h"
+#include "world/debug_draw.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace stepwise {
+
+World buildGjkTwoBoxes() {
+    World world;
+    world.name = "gjk-two-boxes";
+    world.settings.gravity = Vec3::Zero();
+    BodyDef cube;
+    cube.name = "cube";
+    cube.type = BodyType::Kinematic;
+    cube.shape = Shape::box(Vec3(0.5, 0.5, 0.5));
+    cube.angularVelocity = Vec3(Real(0.25), Real(0.15), 0);
+    addBody(world, cube);
+    BodyDef plank;
+    plank.name = "plank";
+    plank.type = BodyType::Kinematic;
+    plank.shape = Shape::box(Vec3(Real(1.2), Real(0.2), Real(0.3)));
+    plank.transform.position = Vec3(Real(1.6), Real(0.3), 0);
+    plank.angularVelocity = Vec3(0, Real(0.9), Real(0.3));
+    addBody(world, plank);
+    return world;
+}
+
+World buildGjkSphereDiamond() {
+    World world;
+    world.name = "gjk-sphere-diamond";
+    world.settings.gravity = Vec3::Zero();
+    BodyDef ball;
+    ball.name = "sphere";
+    ball.type = BodyType::Static;
+    ball.shape = Shape::sphere(Real(0.5));
+    addBody(world, ball);
+    BodyDef diamond;
+    diamond.name = "diamond";
+    diamond.type = BodyType::Kinematic;
+    const Real tip = Real(0.7);
+    diamond.shape = Shape::convex({Vec3(tip, 0, 0), Vec3(-tip, 0, 0), Vec3(0, tip, 0), Vec3(0, -tip, 0),
+                                   Vec3(0, 0, Real(0.45)), Vec3(0, 0, Real(-0.45))});
+    diamond.transform.position = Vec3(Real(1.1), 0, 0);
+    diamond.angularVelocity = Vec3(0, Real(0.2), Real(0.8));
+    addBody(world, diamond);
+    return world;
+}
+
+namespace {
+
+// Corners of a polytope body in world space (empty for round shapes).
+std::vector<Vec3> worldCorners(const Body& body) {
+    std::vector<Vec3> corners;
+    if (body.shape.type == ShapeType::Box) {
+        const Vec3& h = body.shape.halfExtents;
+        for (int corner = 0; corner < 8; ++corner)
+            corners.push_back(body.transform.apply(
+                Vec3((corner & 1) ? h.x() : -h.x(), (corner & 2) ? h.y() : -h.y(), (corner & 4) ? h.z() : -h.z())));
+    } else if (body.shape.type == ShapeType::Convex && body.shape.hull) {
+        for (const Vec3& vertex : body.shape.hull->vertices) corners.push_back(body.transform.apply(vertex));
+    }
+    return corners;
+}
+
+// The demo's own UI state: which support map the overlay uses, and the user's hold on body 1.
+struct DemoControls {
+    int supportMode = 0;            // 0 extents, 1 vertices
+    bool animate = true;
+    Vec3 savedLinear = Vec3::Zero();
+    Vec3 savedAngular = Vec3::Zero();
+    std::string worldName;
+};
+DemoControls& controls() {
+    static DemoControls state;
+    return state;
+}
+SupportMode currentMode() { return controls().supportMode == 0 ? SupportMode::Extents : SupportMode::Vertices; }
+
+std::string describe(const GjkResult& result) {
+    char text[160];
+    std::snprintf(text, sizeof text, "GJK: %s after %d iterations (exit %s, simplex of %d)",
+                  result.intersect ? "INTERSECT" : "separated", result.iterations, toString(result.exit), result.simplex.count);
+    return text;
+}
+
+// Support mode, and position / rotation sliders that take body 1 over from its spin.
+void gjkPanel(World& world, Panel& panel) {
+    if (world.bodies.size() < 2) return;
+    DemoControls& state = controls();
+    if (state.worldName != world.name) state = DemoControls{0, true, Vec3::Zero(), Vec3::Zero(), world.name};
+    static const char* const kModes[] = {"extents (3 sign tests)", "vertices (loop over 8)"};
+    panel.combo("box support map", state.supportMode, kModes, 2);
+    panel.text(describe(gjkIntersect(makeProxy(world.bodies[0], currentMode()), makeProxy(world.bodies[1], currentMode()))));
+
+    Body& body = world.bodies[1];
+    Motion* motion = world.motionOf(1);
+    const bool wasAnimating = state.animate;
+    panel.checkbox("animate body 1", state.animate);
+    bool moved = false;
+    float position[3] = {float(body.transform.position.x()), float(body.transform.position.y()), float(body.transform.position.z())};
+    const char* const axes[3] = {"body 1 x (m)", "body 1 y (m)", "body 1 z (m)"};
+    for (int axis = 0; axis < 3; ++axis)
+        if (panel.sliderFloat(axes[axis], position[axis], -3.0f, 3.0f)) {
+            body.transform.position[axis] = Real(position[axis]);
+            moved = true;
+        }
+    // Rotation as yaw (Y), pitch (X), roll (Z) in degrees, applied in that order.
+    const Vec3 euler = body.transform.rotation.toRotationMatrix().eulerAngles(1, 0, 2) * Real(180 / kPi);
+    float angles[3] = {float(euler[0]), float(euler[1]), float(euler[2])};
+    const char* const names[3] = {"body 1 yaw (deg)", "body 1 pitch (deg)", "body 1 roll (deg)"};
+    bool turned = false;
+    for (int i = 0; i < 3; ++i) turned = panel.sliderFloat(names[i], angles[i], -180.0f, 180.0f) || turned;
+    if (turned) {
+        const Real toRadians = kPi / 180;
+        body.transform.rotation = Quat(Eigen::AngleAxis<Real>(Real(angles[0]) * toRadians, Vec3::UnitY()) *
+                                       Eigen::AngleAxis<Real>(Real(angles[1]) * toRadians, Vec3::UnitX()) *
+                                       Eigen::AngleAxis<Real>(Real(angles[2]) * toRadians, Vec3::UnitZ()));
+        moved = true;
+    }
+    if (moved) state.animate = false;
+    if (!motion) return;
+    // Pausing keeps the scripted velocities to give back when the user lets go.
+    if (wasAnimating && !state.animate) {
+        state.savedLinear = motion->linearVelocity;
+        state.savedAngular = motion->angularVelocity;
+        motion->linearVelocity.setZero();
+        motion->angularVelocity.setZero();
+    } else if (!wasAnimating && state.animate) {
+        motion->linearVelocity = state.savedLinear;
+        motion->angularVelocity = state.savedAngular;
+    }
+}
+
+}  // namespace
+
+std::vector<Vec3> minkowskiPoints(const Body& a, const Body& b, SupportMode mode) {
+    std::vector<Vec3> points;
+    const std::vector<Vec3> cornersA = worldCorners(a);
+    const std::vector<Vec3> cornersB = worldCorners(b);
+    if (!cornersA.empty() && !cornersB.empty()) {
+        for (const Vec3& onA : cornersA)
+            for (const Vec3& onB : cornersB) points.push_back(onA - onB);
+        return points;
+    }
+    // Round shapes: sample the support map on a Fibonacci sphere of directions.
+    const ConvexProxy proxyA = makeProxy(a, mode);
+    const ConvexProxy proxyB = makeProxy(b, mode);
+    const int count = 162;
+    const Real golden = kPi * (3 - std::sqrt(Real(5)));
+    for (int i = 0; i < count; ++i) {
+        const Real y = 1 - 2 * (Real(i) + Real(0.5)) / Real(count);
+        const Real r = std::sqrt(std::max(Real(0), 1 - y * y));
+        const Vec3 direction(r * std::cos(golden * Real(i)), y, r * std::sin(golden * Real(i)));
+        points.push_back(minkowskiSupport(proxyA, proxyB, direction).w);
+    }
+    return points;
+}
+
+// [ch02-overlay]
+void drawGjkOverlay(const World& world, DebugDraw& draw, SupportMode mode, const Vec3& anchor) {
+    if (world.bodies.size() < 2) return;
+    const Body& a = world.bodies[0];
+    const Body& b = world.bodies[1];
+    const GjkResult result = gjkIntersect(makeProxy(a, mode), makeProxy(b, mode));
+    const Color pairColor = result.intersect ? colors::kRed : colors::kGreen;
+    drawBody(draw, a, pairColor, Fill::Wire);
+    drawBody(draw, b, pairColor, Fill::Wire);
+
+    // A - B around the anchor: its points, its hull, and the origin it may or may not hold.
+    const std::vector<Vec3> points = minkowskiPoints(a, b, mode);
+    for (const Vec3& point : points) draw.point(anchor + point, 4, colors::kGrey);
+    try {
+        draw.hull(Transform{anchor, Quat::Identity()}, buildConvexHull(points), pairColor, Fill::Wire);
+    } catch (const HullError&) {
+        // A flat difference (a zero-size shape) has no hull to draw; the points still show it.
+    }
+    const Real mark = Real(0.15);
+    for (int axis = 0; axis < 3; ++axis)
+        draw.line(anchor - mark * Vec3::Unit(axis), anchor + mark * Vec3::Unit(axis), colors::kWhite);
+    draw.text(anchor + Vec3(0, -mark, 0), "origin", colors::kWhite);
+
+    // The final simplex: its vertices and every edge between them.
+    const Simplex& simplex = result.simplex;
+    for (int i = 0; i < simplex.count; ++i) {
+        draw.point(anchor + simplex.vertices[i].w, 8, colors::kYellow);
+        for (int j = i + 1; j < simplex.count; ++j)
+            draw.line(anchor + simplex.vertices[i].w, anchor + simplex.vertices[j].w, colors::kYellow);
+    }
+    draw.text(anchor + Vec3(0, Real(1.8), 0), describe(result), pairColor);
+}
+// [ch02-overlay]
+
+void addChapter02Scenes(Registry& registry) {
+    SceneEntry twoBoxes;
+    twoBoxes.name = "gjk-two-boxes";
+    twoBoxes.chapter = 2;
+    twoBoxes.category = "GJK";
+    twoBoxes.observe = "The plank's end sweeps through the cube: both turn red exactly while they overlap, and above "
+                       "them the origin (white cross) enters the Minkowski difference A - B, caught by a yellow tetrahedron.";
+    twoBoxes.build = buildGjkTwoBoxes;
+    twoBoxes.draw = [](const World& world, DebugDraw& draw) { drawGjkOverlay(world, draw, currentMode(), Vec3(0, Real(4.5), 0)); };
+    twoBoxes.panel = gjkPanel;
+    registry.addScene(std::move(twoBoxes));
+
+    SceneEntry sphereDiamond;
+    sphereDiamond.name = "gjk-sphere-diamond";
+    sphereDiamond.chapter = 2;
+    sphereDiamond.category = "GJK";
+    sphereDiamond.observe = "Each tip of the spinning diamond dips into the sphere; A - B is a rounded diamond, and "
+                            "GJK needs more iterations near the round parts than for two boxes.";
+    sphereDiamond.build = buildGjkSphereDiamond;
+    sphereDiamond.draw = [](const World& world, DebugDraw& draw) {
+        drawGjkOverlay(world, draw, currentMode(), Vec3(0, Real(3), 0));
+    };
+    sphereDiamond.panel = gjkPanel;
+    registry.addScene(std::move(sphereDiamond));
+}
+
+}  // namespace stepwise

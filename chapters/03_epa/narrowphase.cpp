@@ -1,0 +1,122 @@
+// Picks the routine for a pair of shapes and runs it: a closed form when the pair has one,
+// otherwise GJK for the yes/no answer and EPA for the depth.
+#include "03_epa/narrowphase.h"
+
+#include "03_epa/closed_form.h"
+
+#include <cmath>
+
+namespace stepwise {
+
+bool hasClosedForm(ShapeType a, ShapeType b) {
+    const auto isRound = [](ShapeType type) { return type == ShapeType::Sphere || type == ShapeType::Capsule; };
+    if (isRound(a) && isRound(b)) return true;
+    return (a == ShapeType::Sphere && b == ShapeType::Box) || (a == ShapeType::Box && b == ShapeType::Sphere);
+}
+
+bool isValidShape(const Shape& shape) {
+    const auto positive = [](Real value) { return isFinite(value) && value > 0; };
+    switch (shape.type) {
+        case ShapeType::Box:
+            return positive(shape.halfExtents.x()) && positive(shape.halfExtents.y()) && positive(shape.halfExtents.z());
+        case ShapeType::Sphere: return positive(shape.radius);
+        case ShapeType::Capsule: return positive(shape.radius) && isFinite(shape.halfHeight) && shape.halfHeight >= 0;
+        case ShapeType::Convex: return shape.hull != nullptr && !shape.hull->vertices.empty();
+    }
+    return false;
+}
+
+namespace {
+
+bool isValidPose(const Transform& transform) {
+    return isFinite(transform.position) && transform.rotation.coeffs().allFinite() &&
+           std::abs(transform.rotation.norm() - Real(1)) < Real(1e-2);
+}
+
+/// The pairs with a closed form, with A and B in the order the routines expect them.
+ContactQuery collideClosedForm(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb) {
+    const ShapeType typeA = a.type, typeB = b.type;
+    if (typeA == ShapeType::Sphere && typeB == ShapeType::Sphere) {
+        return collideSpheres(ta.position, a.radius, tb.position, b.radius);
+    }
+    if (typeA == ShapeType::Box) return collideBoxSphere(a.halfExtents, ta, tb.position, b.radius);
+    if (typeB == ShapeType::Box) return swapped(collideBoxSphere(b.halfExtents, tb, ta.position, a.radius));
+    if (typeA == ShapeType::Capsule && typeB == ShapeType::Capsule) {
+        return collideCapsules(a.radius, a.halfHeight, ta, b.radius, b.halfHeight, tb);
+    }
+    if (typeA == ShapeType::Capsule) return collideCapsuleSphere(a.radius, a.halfHeight, ta, tb.position, b.radius);
+    return swapped(collideCapsuleSphere(b.radius, b.halfHeight, tb, ta.position, a.radius));
+}
+
+// [ch03-gjk-epa]
+ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
+                           const CollideOptions& options) {
+    ContactQuery query;
+    query.routine = "gjk_epa";
+    const ConvexProxy proxyA{&a, ta, options.supportMode};
+    const ConvexProxy proxyB{&b, tb, options.supportMode};
+    const GjkResult gjk = gjkIntersect(proxyA, proxyB);
+    query.gjkIterations = gjk.iterations;
+    if (gjk.intersect) {
+        const EpaResult epa = epaPenetration(proxyA, proxyB, gjk.simplex, options.epa);
+        query.intersect = true;
+        query.depth = epa.depth;
+        query.normal = epa.normal;
+        query.pointA = epa.pointA;
+        query.pointB = epa.pointB;
+        query.epaIterations = epa.iterations;
+        return query;
+    }
+    if (!options.separationDistance) return query;
+    // Separated: the contract reports minus the distance, with the closest points.
+    const GjkDistanceResult distance = gjkDistance(proxyA, proxyB);
+    query.gjkIterations += distance.iterations;
+    const Vec3 gap = distance.pointB - distance.pointA;
+    const Real length = gap.norm();
+    if (distance.separated && length > 0 && isFinite(length)) {
+        query.depth = -distance.distance;
+        query.normal = gap / length;
+    } else {
+        // GJK's two answers disagree only for shapes within round-off of touching.
+        const Vec3 centres = tb.position - ta.position;
+        query.normal = centres.norm() > 0 ? Vec3(centres.normalized()) : Vec3(Vec3::UnitY());
+    }
+    query.pointA = distance.pointA;
+    query.pointB = distance.pointB;
+    return query;
+}
+// [ch03-gjk-epa]
+
+}  // namespace
+
+// [ch03-dispatch]
+ContactQuery collideShapes(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
+                           const CollideOptions& options) {
+    if (!isValidShape(a) || !isValidShape(b) || !isValidPose(ta) || !isValidPose(tb)) {
+        ContactQuery invalid;
+        invalid.routine = "invalid";
+        return invalid;
+    }
+    // Work in a frame centred on A: world coordinates far from the origin would otherwise eat
+    // the float mantissa before the shapes' small differences are ever formed.
+    const Vec3 origin = ta.position;
+    const Transform localA{Vec3::Zero(), ta.rotation.normalized()};
+    const Transform localB{tb.position - origin, tb.rotation.normalized()};
+    ContactQuery query = options.closedForms && hasClosedForm(a.type, b.type)
+                             ? collideClosedForm(a, localA, b, localB)
+                             : collideGjkEpa(a, localA, b, localB, options);
+    query.pointA += origin;
+    query.pointB += origin;
+    // The last line of defence of "never NaN": a non-finite answer becomes "no contact".
+    if (!isFinite(query.depth) || !isFinite(query.normal) || !isFinite(query.pointA) || !isFinite(query.pointB)) {
+        ContactQuery failed;
+        failed.routine = "invalid";
+        failed.gjkIterations = query.gjkIterations;
+        failed.epaIterations = query.epaIterations;
+        return failed;
+    }
+    return query;
+}
+// [ch03-dispatch]
+
+}  // namespace stepwise

@@ -1,0 +1,172 @@
+// `stepwise bench solver`: constraint error against run time as the iterations go from 1 to 50,
+// Gauss-Seidel against Jacobi, on the sphere pit (a settled pile with many coupled contacts).
+//
+// Two measurements, both in the CSV and the plot:
+//   fixed_set   one frame's rows, frozen, solved from zero impulses with k iterations: the
+//               velocity residual left (m/s) against the time of the solve. This isolates the
+//               iteration itself: same rows, same starting point, only k and the method change.
+//   simulation  the scene run with k iterations per step: the deepest penetration the
+//               narrowphase finds (m, mean over the settled half of the run) against the solve
+//               stage's time per frame. This is what a user sees.
+#include "04_pgs/benches.h"
+
+#include "04_pgs/chapter.h"
+#include "04_pgs/contact_constraints.h"
+#include "04_pgs/scenes.h"
+#include "app/bench_util.h"
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+namespace stepwise {
+
+namespace {
+
+const char* solverLabel(SolverKind kind) { return kind == SolverKind::Jacobi ? "jacobi" : "gauss_seidel"; }
+
+struct FrozenRows {
+    std::vector<ConstraintRow> rows;
+    std::vector<SolverBody> bodies;
+};
+
+// Runs `frames` frames of the pit with the default solver, then the next frame's stages up to the
+// narrowphase, and freezes the rows the solver would get.
+FrozenRows freezeSettledRows(int sphereCount, int frames) {
+    World world = buildSpherePitScene(sphereCount);
+    Pipeline pipeline = makeChapter04Pipeline(world);
+    for (int frame = 0; frame < frames; ++frame) pipeline.step(world);
+    const Real dt = world.settings.dt / static_cast<Real>(std::max(1, world.settings.substeps));
+    for (Stage& stage : pipeline.stages()) {
+        if (stageGroup(stage.name) == "solve") break;
+        if (stage.enabled) stage.run(world, dt);
+    }
+    FrozenRows frozen;
+    frozen.bodies = gatherSolverBodies(world);
+    frozen.rows = buildContactRows(world, frozen.bodies, dt).rows;
+    return frozen;
+}
+
+struct FixedSetResult {
+    double solveMs = 0;
+    double residual = 0;
+};
+
+FixedSetResult solveFrozen(const FrozenRows& frozen, SolverKind kind, int iterations, int repeats) {
+    FixedSetResult result;
+    std::vector<double> times;
+    for (int repeat = 0; repeat < repeats; ++repeat) {
+        std::vector<ConstraintRow> rows = frozen.rows;
+        std::vector<SolverBody> bodies = frozen.bodies;
+        Stopwatch watch;
+        solveRows(rows, bodies, kind, iterations);
+        times.push_back(watch.seconds() * 1e3);
+        result.residual = measureResidual(rows, bodies).rms;
+    }
+    result.solveMs = medianOf(times);
+    return result;
+}
+
+struct SimulationResult {
+    double solveMs = 0;        // per frame
+    double penetration = 0;    // mean over the settled half of the deepest contact, m
+    double residual = 0;       // mean over the settled half of the residual rms, m/s
+};
+
+SimulationResult simulatePit(int sphereCount, int frames, SolverKind kind, int iterations) {
+    World world = buildSpherePitScene(sphereCount);
+    world.settings.solver = kind;
+    world.settings.solverIterations = iterations;
+    Pipeline pipeline = makeChapter04Pipeline(world);
+    Stage* solve = pipeline.find("solve");
+    if (!solve) throw std::logic_error("chapter 4 pipeline has no solve stage");
+    double deepest = 0;
+    double residual = 0;
+    solve->run = [&](World& stepWorld, Real dt) {
+        for (const Contact& contact : stepWorld.contacts)
+            for (int i = 0; i < contact.pointCount; ++i)
+                deepest = std::max(deepest, static_cast<double>(contact.points[i].depth));
+        residual = std::max(residual, static_cast<double>(solveContacts(stepWorld, dt).residual.rms));
+    };
+    SimulationResult result;
+    int measured = 0;
+    for (int frame = 0; frame < frames; ++frame) {
+        deepest = 0;
+        residual = 0;
+        pipeline.step(world);
+        if (frame < frames / 2) continue;
+        result.penetration += deepest;
+        result.residual += residual;
+        ++measured;
+    }
+    result.penetration /= std::max(1, measured);
+    result.residual /= std::max(1, measured);
+    result.solveMs = solve->totalMs / static_cast<double>(std::max(1L, solve->runs));
+    return result;
+}
+
+}  // namespace
+
+bool benchOutputsWritable(const BenchOptions& options, const std::string& suite) {
+    for (const std::string& path : {options.csvPath, options.plotPath}) {
+        if (path.empty()) continue;
+        if (!std::ofstream(path, std::ios::binary | std::ios::app)) {
+            std::cerr << "error: bench " << suite << ": cannot write '" << path << "'\n";
+            return false;
+        }
+    }
+    return true;
+}
+
+int runSolverBench(const BenchOptions& options) {
+    if (!benchOutputsWritable(options, "solver")) return 2;
+    std::ostream& out = options.out ? *options.out : std::cout;
+    const std::vector<int> iterationCounts = options.quick ? std::vector<int>{1, 2, 4, 8, 16, 32, 50}
+                                                           : std::vector<int>{1, 2, 3, 4, 6, 8, 10, 12, 16, 20, 25, 30, 40, 50};
+    const int sphereCount = 40;
+    const int settleFrames = options.quick ? 90 : 150;
+    const int simulationFrames = options.quick ? 90 : 240;
+    const int repeats = options.quick ? 20 : 100;
+
+    CsvTable table({"part", "solver", "iterations", "solve_ms", "velocity_residual", "max_penetration"});
+    PlotSpec plot;
+    plot.title = "Sequential impulses: error against solve time, iterations 1 to 50";
+    plot.xLabel = "solve time (ms; fixed set: one solve, simulation: per frame)";
+    plot.yLabel = "velocity residual (m/s) or penetration (m)";
+
+    const FrozenRows frozen = freezeSettledRows(sphereCount, settleFrames);
+    out << "fixed set: " << frozen.rows.size() << " rows from the settled pit of " << sphereCount << " spheres\n";
+    for (SolverKind kind : {SolverKind::GaussSeidel, SolverKind::Jacobi}) {
+        PlotSeries residualSeries{std::string(kind == SolverKind::Jacobi ? "Jacobi" : "Gauss-Seidel") +
+                                      ": residual on a fixed set (m/s)", {}, {}, false};
+        PlotSeries penetrationSeries{std::string(kind == SolverKind::Jacobi ? "Jacobi" : "Gauss-Seidel") +
+                                         ": max penetration in the simulation (m)", {}, {}, false};
+        for (int iterations : iterationCounts) {
+            const FixedSetResult fixed = solveFrozen(frozen, kind, iterations, repeats);
+            table.addRow({"fixed_set", solverLabel(kind), std::to_string(iterations), formatNumber(fixed.solveMs),
+                          formatNumber(fixed.residual), ""});
+            residualSeries.x.push_back(fixed.solveMs);
+            residualSeries.y.push_back(fixed.residual);
+
+            const SimulationResult simulation = simulatePit(sphereCount, simulationFrames, kind, iterations);
+            table.addRow({"simulation", solverLabel(kind), std::to_string(iterations), formatNumber(simulation.solveMs),
+                          formatNumber(simulation.residual), formatNumber(simulation.penetration)});
+            penetrationSeries.x.push_back(simulation.solveMs);
+            penetrationSeries.y.push_back(simulation.penetration);
+        }
+        plot.series.push_back(residualSeries);
+        plot.series.push_back(penetrationSeries);
+    }
+    out << table.toText();
+    try {
+        if (!options.csvPath.empty()) table.write(options.csvPath);
+        if (!options.plotPath.empty()) writeSvgPlot(options.plotPath, plot);
+    } catch (const std::runtime_error& error) {
+        std::cerr << "error: bench solver: " << error.what() << "\n";
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace stepwise

@@ -1,0 +1,240 @@
+// chNN_demo: the DirectX 12 demo shell of chapters 01..NN (STEPWISE_DEMO_CHAPTER).
+//   chNN_demo [--scene NAME|FILE.json]                      window with the ImGui shell
+//   chNN_demo --scene NAME --frames N --screenshot F.png --hidden   frame N offscreen, exit
+//   chNN_demo --frames N                                    window, exit after N presents
+// Console subsystem on purpose: errors and --list go to stdout/stderr on every platform.
+#include "frame.h"
+#include "targets.h"
+#include "ui_shell.h"
+
+#include "app/runner.h"
+#include "world/scene.h"
+
+#include <CLI/CLI.hpp>
+#include <imgui.h>
+#include <imgui_impl_dx12.h>
+#include <imgui_impl_win32.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#ifndef STEPWISE_DEMO_CHAPTER
+#define STEPWISE_DEMO_CHAPTER 99
+#endif
+
+extern IMGUI_IMPL_API LRESULT ImGui_ImplWin32_WndProcHandler(HWND window, UINT message, WPARAM wParam, LPARAM lParam);
+
+namespace stepwise::render {
+namespace {
+
+struct Options {
+    std::string scene;
+    long frames = -1;
+    std::string screenshot;
+    bool hidden = false;
+    bool list = false;
+    int width = 1280;
+    int height = 720;
+};
+
+std::string title() { return "Stepwise chapter " + std::to_string(STEPWISE_DEMO_CHAPTER) + " demo (Direct3D 12)"; }
+
+int pendingWidth = 0, pendingHeight = 0;
+
+LRESULT CALLBACK windowProc(HWND window, UINT message, WPARAM wParam, LPARAM lParam) {
+    if (ImGui_ImplWin32_WndProcHandler(window, message, wParam, lParam)) return 1;
+    switch (message) {
+        case WM_SIZE:
+            if (wParam != SIZE_MINIMIZED) {
+                pendingWidth = LOWORD(lParam);
+                pendingHeight = HIWORD(lParam);
+            }
+            return 0;
+        case WM_DESTROY: PostQuitMessage(0); return 0;
+        default: return DefWindowProcW(window, message, wParam, lParam);
+    }
+}
+
+ShellInfo shellInfo(const Device& device, float fps) { return {title(), device.adapterName(), fps}; }
+
+/// Offscreen: N fixed steps, then the frame is drawn, read back and written as a PNG.
+int runOffscreen(DemoState& state, const Options& options) {
+    Device device;
+    OffscreenTarget target(device, options.width, options.height);
+    SceneRenderer renderer(device);
+    initImGui(device);
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(static_cast<float>(options.width), static_cast<float>(options.height));
+    io.DeltaTime = 1.0f / 60.0f;
+    Camera camera;
+    const float aspect = float(options.width) / float(options.height);
+    camera.frame(state.framingBounds(), aspect);
+    ViewOptions view;
+    const long frames = std::max(0L, options.frames);
+    for (long i = 0; i < frames; ++i) state.step();
+    DrawList list;
+    // Dear ImGui lays auto-sized windows out over a couple of frames: build three, draw the last.
+    for (int uiFrame = 0; uiFrame < 3; ++uiFrame) {
+        ImGui_ImplDX12_NewFrame();
+        ImGui::NewFrame();
+        drawShell(state, view, camera, shellInfo(device, 60));
+        state.buildDrawList(list, view);
+        drawLabels(list, camera, io.DisplaySize.x, io.DisplaySize.y);
+        ImGui::Render();
+    }
+    device.beginFrame();
+    recordFrame(device, renderer, target.view(), frameConstants(camera, view, options.width, options.height), list,
+                ImGui::GetDrawData(), &target);
+    device.endFrame();
+    device.waitIdle();
+    if (!options.screenshot.empty()) {
+        target.savePng(options.screenshot);
+        writeExpectations(options.screenshot + ".txt", state, camera, options.width, options.height);
+        std::cout << "wrote " << options.screenshot << " (" << options.width << "x" << options.height << ", scene '"
+                  << state.world.name << "', frame " << state.world.frame << ")\n";
+    }
+    shutdownImGui();
+    return 0;
+}
+
+int runWindow(DemoState& state, const Options& options) {
+    const HINSTANCE instance = GetModuleHandleW(nullptr);
+    WNDCLASSEXW windowClass = {};
+    windowClass.cbSize = sizeof windowClass;
+    windowClass.style = CS_CLASSDC;
+    windowClass.lpfnWndProc = windowProc;
+    windowClass.hInstance = instance;
+    windowClass.hCursor = LoadCursor(nullptr, IDC_ARROW);
+    windowClass.lpszClassName = L"StepwiseDemo";
+    RegisterClassExW(&windowClass);
+    RECT rect = {0, 0, options.width, options.height};
+    AdjustWindowRect(&rect, WS_OVERLAPPEDWINDOW, FALSE);
+    const std::string name = title();
+    const HWND window = CreateWindowA("StepwiseDemo", name.c_str(), WS_OVERLAPPEDWINDOW, 40, 40, rect.right - rect.left,
+                                      rect.bottom - rect.top, nullptr, nullptr, instance, nullptr);
+    if (!window) throw std::runtime_error("CreateWindow failed");
+
+    int exitCode = 0;
+    {
+        Device device;
+        RECT client = {};
+        GetClientRect(window, &client);
+        SwapChainTarget target(device, window, client.right - client.left, client.bottom - client.top);
+        SceneRenderer renderer(device);
+        initImGui(device);
+        ImGui_ImplWin32_Init(window);
+        ShowWindow(window, SW_SHOWDEFAULT);
+        UpdateWindow(window);
+
+        Camera camera;
+        ViewOptions view;
+        DrawList list;
+        camera.frame(state.framingBounds(), float(target.width()) / float(target.height()));
+        auto last = std::chrono::steady_clock::now();
+        const auto start = last;
+        float fps = 60;
+        long presented = 0;
+        bool running = true;
+        while (running) {
+            MSG message;
+            while (PeekMessageW(&message, nullptr, 0, 0, PM_REMOVE)) {
+                TranslateMessage(&message);
+                DispatchMessageW(&message);
+                if (message.message == WM_QUIT) running = false;
+            }
+            if (!running) break;
+            if (pendingWidth > 0) {
+                target.resize(pendingWidth, pendingHeight);
+                pendingWidth = pendingHeight = 0;
+            }
+            const auto now = std::chrono::steady_clock::now();
+            const float seconds = std::chrono::duration<float>(now - last).count();
+            last = now;
+            fps = 0.95f * fps + 0.05f * (seconds > 0 ? 1.0f / seconds : fps);
+
+            ImGui_ImplDX12_NewFrame();
+            ImGui_ImplWin32_NewFrame();
+            ImGui::NewFrame();
+            const float width = float(target.width()), height = float(target.height());
+            if (handleInput(state, view, camera, height, seconds)) camera.frame(state.framingBounds(), width / height);
+            state.advance(seconds);
+            drawShell(state, view, camera, shellInfo(device, fps));
+            state.buildDrawList(list, view);
+            drawLabels(list, camera, width, height);
+            ImGui::Render();
+
+            device.beginFrame();
+            const TargetView view3d = target.current();
+            recordFrame(device, renderer, view3d, frameConstants(camera, view, view3d.width, view3d.height), list,
+                        ImGui::GetDrawData(), nullptr);
+            device.endFrame();
+            target.present(true);
+            if (options.frames >= 0 && ++presented >= options.frames) {
+                const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                std::cout << "presented " << presented << " frames of " << view3d.width << "x" << view3d.height << " in "
+                          << total << " s (" << 1000.0 * total / double(presented) << " ms per frame)" << std::endl;
+                running = false;
+            }
+        }
+        device.waitIdle();
+        ImGui_ImplWin32_Shutdown();
+        shutdownImGui();
+    }
+    DestroyWindow(window);
+    return exitCode;
+}
+
+int run(int argc, char** argv) {
+    CLI::App app{title()};
+    Options options;
+    app.add_option("--scene", options.scene, "built-in scene name or scene JSON file (default: the first scene)");
+    app.add_option("--frames", options.frames, "offscreen: the frame to draw; window: exit after N frames")
+        ->check(CLI::Range(0L, 1000000L));
+    app.add_option("--screenshot", options.screenshot, "draw offscreen and write this PNG (plus FILE.png.txt)");
+    app.add_flag("--hidden", options.hidden, "no window: draw offscreen");
+    app.add_option("--width", options.width, "image or window width")->check(CLI::Range(16, 8192));
+    app.add_option("--height", options.height, "image or window height")->check(CLI::Range(16, 8192));
+    app.add_flag("--list", options.list, "list the scenes and exit");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int code = app.exit(error);
+        return code == 0 ? 0 : 2;
+    }
+
+    Registry registry;
+    registerChapters(registry);
+    DemoState state(registry, STEPWISE_DEMO_CHAPTER);
+    if (options.list) {
+        for (const SceneEntry* scene : state.scenes())
+            std::cout << scene->name << "  [chapter " << scene->chapter << ", " << scene->category << "]\n";
+        return 0;
+    }
+    try {
+        if (!options.scene.empty()) state.loadByName(options.scene);
+        else if (!state.scenes().empty()) state.loadScene(0);
+    } catch (const std::exception& error) {
+        std::cerr << "error: --scene '" << options.scene << "': " << error.what() << '\n';
+        return 2;
+    }
+    if (!state.loadError.empty()) {
+        std::cerr << "error: " << state.loadError << '\n';
+        return 2;
+    }
+    if (options.hidden || !options.screenshot.empty()) return runOffscreen(state, options);
+    return runWindow(state, options);
+}
+
+}  // namespace
+}  // namespace stepwise::render
+
+int main(int argc, char** argv) {
+    try {
+        return stepwise::render::run(argc, argv);
+    } catch (const std::exception& error) {
+        std::cerr << "error: " << error.what() << '\n';
+        return 1;
+    }
+}

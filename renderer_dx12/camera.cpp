@@ -1,0 +1,106 @@
+#include "camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise::render {
+
+namespace {
+constexpr float kMaxPitch = 1.5f;  // just short of straight up/down, where look-at degenerates
+
+Vec3f fromEyeToTarget(float yaw, float pitch) {
+    // Unit vector from the target towards the eye, reversed.
+    return -Vec3f(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+}
+}  // namespace
+
+Vec3f Camera::forward() const { return fromEyeToTarget(yaw, pitch); }
+
+Vec3f Camera::right() const { return forward().cross(Vec3f::UnitY()).normalized(); }
+
+Vec3f Camera::eye() const { return mode == Mode::Orbit ? Vec3f(target - distance * forward()) : position; }
+
+Mat4f Camera::view() const {
+    // Right-handed look-at: the camera looks down its -Z axis.
+    const Vec3f eyePoint = eye();
+    const Vec3f z = -forward();
+    const Vec3f x = Vec3f::UnitY().cross(z).normalized();
+    const Vec3f y = z.cross(x);
+    Mat4f m = Mat4f::Identity();
+    m.block<1, 3>(0, 0) = x.transpose();
+    m.block<1, 3>(1, 0) = y.transpose();
+    m.block<1, 3>(2, 0) = z.transpose();
+    m(0, 3) = -x.dot(eyePoint);
+    m(1, 3) = -y.dot(eyePoint);
+    m(2, 3) = -z.dot(eyePoint);
+    return m;
+}
+
+Mat4f Camera::projection(float aspect) const {
+    // D3D-style right-handed perspective: clip w = view depth, z/w in [0, 1].
+    const float f = 1.0f / std::tan(0.5f * fovY);
+    Mat4f m = Mat4f::Zero();
+    m(0, 0) = f / std::max(aspect, 1e-3f);
+    m(1, 1) = f;
+    m(2, 2) = farPlane / (nearPlane - farPlane);
+    m(2, 3) = nearPlane * farPlane / (nearPlane - farPlane);
+    m(3, 2) = -1;
+    return m;
+}
+
+void Camera::frame(const Aabb& box, float aspect) {
+    if (!box.min.allFinite() || !box.max.allFinite() || (box.min.array() > box.max.array()).any()) return;
+    const Vec3f center = box.center().cast<float>();
+    const float radius = std::max(0.5f, static_cast<float>(box.extents().norm()));
+    // Fit the bounding sphere in the narrower of the two fields of view.
+    const float halfFov = 0.5f * fovY * std::min(1.0f, std::max(aspect, 0.2f));
+    distance = std::min(1.15f * radius / std::sin(halfFov), 0.5f * farPlane);
+    target = center;
+    position = target - distance * forward();
+}
+
+void Camera::orbit(float deltaYaw, float deltaPitch) {
+    const Vec3f pivot = mode == Mode::Orbit ? target : position;
+    yaw += deltaYaw;
+    pitch = std::clamp(pitch + deltaPitch, -kMaxPitch, kMaxPitch);
+    if (mode == Mode::Orbit) target = pivot;
+}
+
+void Camera::pan(float dxPixels, float dyPixels, float viewportHeight) {
+    const float metresPerPixel = 2 * distance * std::tan(0.5f * fovY) / std::max(viewportHeight, 1.0f);
+    const Vec3f up = right().cross(forward());
+    const Vec3f shift = (-dxPixels * right() + dyPixels * up) * metresPerPixel;
+    target += shift;
+    position += shift;
+}
+
+void Camera::zoom(float wheelSteps) {
+    if (mode == Mode::Orbit) {
+        distance = std::clamp(distance * std::pow(0.85f, wheelSteps), 0.1f, 0.5f * farPlane);
+    } else {
+        position += forward() * wheelSteps * 0.5f;
+    }
+}
+
+void Camera::move(float alongForward, float alongRight, float alongUp) {
+    const Vec3f shift = alongForward * forward() + alongRight * right() + alongUp * Vec3f::UnitY();
+    if (mode == Mode::Orbit) target += shift;
+    else position += shift;
+}
+
+void Camera::setMode(Mode next) {
+    if (next == mode) return;
+    if (next == Mode::Fly) position = eye();
+    else target = position + distance * forward();
+    mode = next;
+}
+
+bool Camera::project(const Vec3f& world, float width, float height, float& x, float& y) const {
+    const Eigen::Vector4f clip = viewProjection(width / std::max(height, 1.0f)) * world.homogeneous();
+    if (clip.w() <= nearPlane) return false;
+    x = (clip.x() / clip.w() * 0.5f + 0.5f) * width;
+    y = (0.5f - clip.y() / clip.w() * 0.5f) * height;
+    return true;
+}
+
+}  // namespace stepwise::render

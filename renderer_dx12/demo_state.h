@@ -1,0 +1,74 @@
+#pragma once
+// What the demo shell simulates and shows, without any Direct3D: the chosen scene, its world
+// and pipeline, run/pause/step and time scale, per-stage timing history, and view options.
+
+#include "app/registry.h"
+#include "draw_list.h"
+
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace stepwise::render {
+
+struct ViewOptions {
+    bool wireframe = false;
+    float lineWidth = 2.0f;       // pixels
+    bool showGrid = true;
+    bool showContacts = true;
+    bool showLabels = true;
+    bool showHelp = false;        // F1 overlay
+    bool showPanel = true;        // F2 hides the whole ImGui shell
+};
+
+class DemoState {
+public:
+    static constexpr int kHistory = 180;  // frames of stage timings kept for the graph
+
+    DemoState(const Registry& registry, int chapter);
+
+    /// Scenes this demo offers: those of chapters <= chapter, in registration order.
+    const std::vector<const SceneEntry*>& scenes() const { return scenes_; }
+    int sceneIndex() const { return sceneIndex_; }
+    const SceneEntry* scene() const { return sceneIndex_ >= 0 ? scenes_[sceneIndex_] : nullptr; }
+    void loadScene(int index);
+    /// A built-in scene name or a scene JSON file. Throws (SceneError, runtime_error) when neither.
+    void loadByName(const std::string& nameOrPath);
+    void reload();
+
+    /// Advances by wall-clock time (scaled), in whole fixed steps of settings.dt.
+    void advance(double wallSeconds);
+    /// One fixed step, whatever the pause state; records stage timings.
+    void step();
+
+    /// Bodies, the scene's own drawing, contacts, and the ground grid.
+    void buildDrawList(DrawList& list, const ViewOptions& options) const;
+    /// Box to frame: the moving bodies when there are any (a huge ground would dwarf them).
+    Aabb framingBounds() const;
+    /// Height of the ground: top of the widest static body, else the lowest body bottom, else 0.
+    Real groundLevel() const;
+
+    World world;
+    Pipeline pipeline;
+    bool paused = false;
+    float timeScale = 1.0f;
+    std::string pipelineError;     // when no chapter provides a pipeline
+    std::string loadError;
+    std::map<std::string, std::deque<float>> stageHistory;  // stage name -> ms per frame
+    std::deque<float> frameHistory;                          // whole step, ms
+
+    const Registry& registry() const { return registry_; }
+    int chapter() const { return chapter_; }
+
+private:
+    void setWorld(World next);
+    const Registry& registry_;
+    int chapter_;
+    std::vector<const SceneEntry*> scenes_;
+    int sceneIndex_ = -1;
+    std::string loadedFile_;
+    double accumulator_ = 0;
+};
+
+}  // namespace stepwise::render

@@ -1,0 +1,245 @@
+#include "ui_shell.h"
+
+#include "dx_common.h"
+#include "world/settings.h"
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+// Dear ImGui 1.86 (Debian, the mingw build) names keys by their native (VK_) codes; 1.87+
+// (vcpkg on Windows) has named ImGuiKey values. The shell works with both.
+#if IMGUI_VERSION_NUM >= 18700
+#define STEPWISE_KEY(vk, named) named
+#else
+#define STEPWISE_KEY(vk, named) vk
+#endif
+
+namespace stepwise::render {
+
+namespace {
+
+const char* const kMainWindow = "Stepwise";
+
+bool pressed(int key) { return ImGui::IsKeyPressed(static_cast<decltype(ImGuiKey_Tab)>(key), false); }
+bool down(int key) { return ImGui::IsKeyDown(static_cast<decltype(ImGuiKey_Tab)>(key)); }
+
+template <class Enum>
+bool enumCombo(const char* label, Enum& value, std::initializer_list<Enum> options) {
+    std::vector<const char*> names;
+    int index = 0, i = 0;
+    for (Enum option : options) {
+        names.push_back(toString(option));
+        if (option == value) index = i;
+        ++i;
+    }
+    if (!ImGui::Combo(label, &index, names.data(), static_cast<int>(names.size()))) return false;
+    value = *(options.begin() + index);
+    return true;
+}
+
+void settingsSection(World& world) {
+    if (!ImGui::CollapsingHeader("Solver and integrator")) return;
+    Settings& s = world.settings;
+    enumCombo("integrator", s.integrator, {IntegratorKind::SemiImplicitEuler, IntegratorKind::Rk4, IntegratorKind::Verlet});
+    enumCombo("solver", s.solver, {SolverKind::GaussSeidel, SolverKind::Jacobi});
+    enumCombo("gyroscopic", s.gyroscopic, {GyroscopicMode::Off, GyroscopicMode::Explicit, GyroscopicMode::Implicit});
+    enumCombo("broadphase", s.broadphase, {BroadphaseMode::Auto, BroadphaseMode::Sap, BroadphaseMode::Brute});
+    enumCombo("ccd", s.ccd, {CcdMode::Auto, CcdMode::On, CcdMode::Off});
+    ImGui::SliderInt("iterations", &s.solverIterations, 1, 100);
+    ImGui::SliderInt("substeps", &s.substeps, 1, 16);
+    float dtMs = static_cast<float>(s.dt) * 1000.0f;
+    if (ImGui::SliderFloat("dt (ms)", &dtMs, 1.0f, 50.0f, "%.2f")) s.dt = static_cast<Real>(dtMs / 1000.0f);
+    float baumgarte = static_cast<float>(s.baumgarte), slop = static_cast<float>(s.slop);
+    if (ImGui::SliderFloat("baumgarte", &baumgarte, 0.0f, 1.0f)) s.baumgarte = static_cast<Real>(baumgarte);
+    if (ImGui::SliderFloat("slop (m)", &slop, 0.0f, 0.05f, "%.4f")) s.slop = static_cast<Real>(slop);
+    ImGui::Checkbox("warm starting", &s.warmStarting);
+    float gravity = static_cast<float>(s.gravity.y());
+    if (ImGui::SliderFloat("gravity y", &gravity, -30.0f, 30.0f)) s.gravity.y() = static_cast<Real>(gravity);
+}
+
+void pipelineSection(DemoState& state) {
+    if (!ImGui::CollapsingHeader("Pipeline", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!state.pipelineError.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%s", state.pipelineError.c_str());
+    std::vector<float> samples;
+    for (Stage& stage : state.pipeline.stages()) {
+        ImGui::Checkbox(stage.name.c_str(), &stage.enabled);
+        ImGui::SameLine(230);
+        ImGui::Text("%6.3f ms", stage.lastMs);
+        auto found = state.stageHistory.find(stage.name);
+        if (found != state.stageHistory.end() && !found->second.empty()) {
+            samples.assign(found->second.begin(), found->second.end());
+            ImGui::PushID(stage.name.c_str());
+            ImGui::PlotLines("##history", samples.data(), static_cast<int>(samples.size()), 0, nullptr, 0.0f, FLT_MAX,
+                             ImVec2(-1, 22));
+            ImGui::PopID();
+        }
+    }
+    if (!state.frameHistory.empty()) {
+        samples.assign(state.frameHistory.begin(), state.frameHistory.end());
+        char overlay[48];
+        std::snprintf(overlay, sizeof overlay, "step %.3f ms", static_cast<double>(samples.back()));
+        ImGui::PlotLines("##step", samples.data(), static_cast<int>(samples.size()), 0, overlay, 0.0f, FLT_MAX, ImVec2(-1, 40));
+    }
+}
+
+void helpOverlay() {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(0.5f * size.x, 0.5f * size.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Hotkeys (F1)", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    const char* const rows[][2] = {{"F1", "this help"}, {"F2", "hide / show the panel"}, {"Space", "run / pause"},
+                                   {"N or Right", "single step (paused)"}, {"R", "restart the scene"},
+                                   {"PgUp / PgDn", "previous / next scene"}, {"F", "frame the scene"},
+                                   {"C", "orbit / fly camera"}, {"Z", "wireframe"}, {"G", "ground grid"},
+                                   {"W A S D Q E", "fly (or move the orbit centre)"},
+                                   {"Right mouse drag", "orbit / look"}, {"Middle drag", "pan"}, {"Wheel", "zoom"}};
+    for (const auto& row : rows) {
+        ImGui::TextUnformatted(row[0]);
+        ImGui::SameLine(150);
+        ImGui::TextUnformatted(row[1]);
+    }
+    ImGui::End();
+}
+
+}  // namespace
+
+void ImGuiPanel::text(const std::string& line) { ImGui::TextWrapped("%s", line.c_str()); }
+bool ImGuiPanel::checkbox(const std::string& label, bool& value) { return ImGui::Checkbox(label.c_str(), &value); }
+bool ImGuiPanel::sliderFloat(const std::string& label, float& value, float min, float max) {
+    return ImGui::SliderFloat(label.c_str(), &value, min, max);
+}
+bool ImGuiPanel::sliderInt(const std::string& label, int& value, int min, int max) {
+    return ImGui::SliderInt(label.c_str(), &value, min, max);
+}
+bool ImGuiPanel::button(const std::string& label) { return ImGui::Button(label.c_str()); }
+bool ImGuiPanel::combo(const std::string& label, int& index, const char* const* items, int count) {
+    return ImGui::Combo(label.c_str(), &index, items, count);
+}
+
+void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellInfo& info) {
+    if (view.showHelp) helpOverlay();
+    if (!view.showPanel) return;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(370, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin(kMainWindow, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextUnformatted(info.title.c_str());
+    ImGui::TextDisabled("%s  %.0f fps  (F1: hotkeys)", info.adapter.c_str(), static_cast<double>(info.framesPerSecond));
+
+    const auto& scenes = state.scenes();
+    const SceneEntry* current = state.scene();
+    if (ImGui::BeginCombo("scene", current ? current->name.c_str() : state.world.name.c_str())) {
+        std::string category;
+        for (size_t i = 0; i < scenes.size(); ++i) {
+            if (scenes[i]->category != category) {
+                category = scenes[i]->category;
+                ImGui::TextDisabled("%s", category.c_str());
+            }
+            if (ImGui::Selectable(scenes[i]->name.c_str(), static_cast<int>(i) == state.sceneIndex())) {
+                state.loadScene(static_cast<int>(i));
+                camera.frame(state.framingBounds(), ImGui::GetIO().DisplaySize.x / std::max(1.0f, ImGui::GetIO().DisplaySize.y));
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (current && !current->observe.empty()) ImGui::TextWrapped("Observe: %s", current->observe.c_str());
+    if (!state.loadError.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", state.loadError.c_str());
+
+    if (ImGui::Button(state.paused ? "Run" : "Pause")) state.paused = !state.paused;
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) {
+        state.paused = true;
+        state.step();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Restart")) state.reload();
+    ImGui::SliderFloat("time scale", &state.timeScale, 0.05f, 4.0f, "%.2fx");
+    ImGui::Text("t = %.2f s  frame %ld  bodies %d (%d dynamic)  contacts %d", state.world.time, state.world.frame,
+                static_cast<int>(state.world.bodies.size()), state.world.dynamicBodyCount(),
+                static_cast<int>(state.world.contacts.size()));
+
+    pipelineSection(state);
+    settingsSection(state.world);
+    if (ImGui::CollapsingHeader("View")) {
+        ImGui::Checkbox("wireframe (Z)", &view.wireframe);
+        ImGui::SliderFloat("line width (px)", &view.lineWidth, 1.0f, 8.0f, "%.1f");
+        ImGui::Checkbox("grid (G)", &view.showGrid);
+        ImGui::SameLine();
+        ImGui::Checkbox("contacts", &view.showContacts);
+        ImGui::SameLine();
+        ImGui::Checkbox("labels", &view.showLabels);
+        int mode = camera.mode == Camera::Mode::Orbit ? 0 : 1;
+        const char* const modes[] = {"orbit", "fly"};
+        if (ImGui::Combo("camera (C)", &mode, modes, 2)) camera.setMode(mode == 0 ? Camera::Mode::Orbit : Camera::Mode::Fly);
+    }
+    if (current && current->panel && ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGuiPanel panel;
+        current->panel(state.world, panel);
+    }
+    ImGui::End();
+}
+
+bool handleInput(DemoState& state, ViewOptions& view, Camera& camera, float viewportHeight, float seconds) {
+    ImGuiIO& io = ImGui::GetIO();
+    bool reframe = false;
+    if (!io.WantCaptureKeyboard) {
+        if (pressed(STEPWISE_KEY(VK_F1, ImGuiKey_F1))) view.showHelp = !view.showHelp;
+        if (pressed(STEPWISE_KEY(VK_F2, ImGuiKey_F2))) view.showPanel = !view.showPanel;
+        if (pressed(STEPWISE_KEY(VK_SPACE, ImGuiKey_Space))) state.paused = !state.paused;
+        if (pressed(STEPWISE_KEY('N', ImGuiKey_N)) || pressed(STEPWISE_KEY(VK_RIGHT, ImGuiKey_RightArrow))) {
+            state.paused = true;
+            state.step();
+        }
+        if (pressed(STEPWISE_KEY('R', ImGuiKey_R))) state.reload();
+        const int count = static_cast<int>(state.scenes().size());
+        if (count > 0 && pressed(STEPWISE_KEY(VK_NEXT, ImGuiKey_PageDown))) {
+            state.loadScene((state.sceneIndex() + 1) % count);
+            reframe = true;
+        }
+        if (count > 0 && pressed(STEPWISE_KEY(VK_PRIOR, ImGuiKey_PageUp))) {
+            state.loadScene((state.sceneIndex() + count - 1) % count);
+            reframe = true;
+        }
+        if (pressed(STEPWISE_KEY('F', ImGuiKey_F))) reframe = true;
+        if (pressed(STEPWISE_KEY('C', ImGuiKey_C))) {
+            camera.setMode(camera.mode == Camera::Mode::Orbit ? Camera::Mode::Fly : Camera::Mode::Orbit);
+        }
+        if (pressed(STEPWISE_KEY('Z', ImGuiKey_Z))) view.wireframe = !view.wireframe;
+        if (pressed(STEPWISE_KEY('G', ImGuiKey_G))) view.showGrid = !view.showGrid;
+        const float speed = std::max(2.0f, 0.5f * camera.distance) * seconds * (io.KeyShift ? 4.0f : 1.0f);
+        const float forward = (down(STEPWISE_KEY('W', ImGuiKey_W)) ? 1.0f : 0.0f) - (down(STEPWISE_KEY('S', ImGuiKey_S)) ? 1.0f : 0.0f);
+        const float right = (down(STEPWISE_KEY('D', ImGuiKey_D)) ? 1.0f : 0.0f) - (down(STEPWISE_KEY('A', ImGuiKey_A)) ? 1.0f : 0.0f);
+        const float up = (down(STEPWISE_KEY('E', ImGuiKey_E)) ? 1.0f : 0.0f) - (down(STEPWISE_KEY('Q', ImGuiKey_Q)) ? 1.0f : 0.0f);
+        if (forward != 0 || right != 0 || up != 0) camera.move(forward * speed, right * speed, up * speed);
+    }
+    if (!io.WantCaptureMouse) {
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f)) camera.orbit(-io.MouseDelta.x * 0.006f, io.MouseDelta.y * 0.006f);
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f)) camera.pan(io.MouseDelta.x, io.MouseDelta.y, viewportHeight);
+        if (io.MouseWheel != 0) camera.zoom(io.MouseWheel);
+    }
+    return reframe;
+}
+
+void drawLabels(const DrawList& list, const Camera& camera, float width, float height) {
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    for (const TextLabel& label : list.labels) {
+        float x = 0, y = 0;
+        if (!camera.project(label.at.cast<float>(), width, height, x, y)) continue;
+        draw->AddText(ImVec2(x, y), ImGui::GetColorU32(ImVec4(label.color.r, label.color.g, label.color.b, label.color.a)),
+                      label.message.c_str());
+    }
+}
+
+bool shellRect(float rect[4]) {
+    ImGuiWindow* window = ImGui::FindWindowByName(kMainWindow);
+    if (!window || !window->WasActive) return false;
+    rect[0] = window->Pos.x;
+    rect[1] = window->Pos.y;
+    rect[2] = window->Pos.x + window->Size.x;
+    rect[3] = window->Pos.y + window->Size.y;
+    return true;
+}
+
+}  // namespace stepwise::render

@@ -1,0 +1,150 @@
+// Chapter 1's demo scenes, through the registry as the demo and the CLI see them, and the
+// integrators bench in quick mode.
+#include "01_integrators/bench_integrators.h"
+#include "01_integrators/integrate.h"
+#include "01_integrators/scenes.h"
+#include "app/registry.h"
+#include "support/fixture.h"
+#include "world/debug_draw.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace stepwise;
+using namespace stepwise::test;
+
+namespace {
+
+const Registry& chapterRegistry() {
+    static const Registry registry = [] {
+        Registry r;
+        registerChapters(r);
+        return r;
+    }();
+    return registry;
+}
+
+}  // namespace
+
+TEST_CASE("chapter 1 registers its scenes, pipeline and bench", "[ch01][scenes]") {
+    const Registry& registry = chapterRegistry();
+    for (const char* name : {"integrators-side-by-side", "t-handle", "projectile"}) {
+        const SceneEntry* entry = registry.findScene(name);
+        REQUIRE(entry);
+        CHECK(entry->chapter == 1);
+        CHECK_FALSE(entry->observe.empty());
+        CHECK(entry->observe.find('\n') == std::string::npos);
+        REQUIRE(entry->draw);
+    }
+    const BenchEntry* bench = registry.findBench("integrators");
+    REQUIRE(bench);
+    CHECK(bench->chapter == 1);
+    const World world = registry.findScene("t-handle")->build();
+    const Pipeline pipeline = registry.makePipeline(world, 1);
+    CHECK(pipeline.enabledStageNames() == std::vector<std::string>{"integrate:semi_implicit_euler"});
+}
+
+TEST_CASE("every chapter 1 scene runs 10 s and stays finite, and its draw hook labels the bodies",
+          "[ch01][scenes]") {
+    const Registry& registry = chapterRegistry();
+    for (const SceneEntry& entry : registry.scenes()) {
+        if (entry.chapter != 1) continue;
+        INFO(entry.name);
+        World world = entry.build();
+        Pipeline pipeline = registry.makePipeline(world, 1);
+        simulate(world, pipeline, 10.0);
+        for (const Body& body : world.bodies) {
+            CHECK(body.transform.position.allFinite());
+            CHECK(body.transform.rotation.coeffs().allFinite());
+        }
+        RecordingDraw draw;
+        entry.draw(world, draw);
+        std::map<std::string, int> labels;
+        for (const RecordingDraw::Command& command : draw.commands())
+            if (command.kind == RecordingDraw::Kind::Text) ++labels[command.message];
+        for (const Motion& motion : world.motions)
+            CHECK(labels[toString(integratorOf(world, motion))] > 0);
+    }
+}
+
+TEST_CASE("side by side: the RK4 chain loses energy, Euler and Verlet keep theirs in a band", "[ch01][scenes]") {
+    World world = buildIntegratorsSideBySide();
+    Pipeline pipeline = chapterRegistry().makePipeline(world, 1);
+    CHECK(pipeline.stages().at(0).name == "integrate:mixed");
+    // Energy of each chain (kinetic + gravity + its springs), the same way the demo panel sums it.
+    auto chainEnergy = [](const World& w, IntegratorKind method) {
+        double energy = 0;
+        for (const Motion& motion : w.motions) {
+            if (integratorOf(w, motion) != method) continue;
+            energy += 0.5 * motion.mass * motion.linearVelocity.cast<double>().squaredNorm() -
+                      motion.mass * w.settings.gravity.cast<double>().dot(
+                                        worldCenterOfMass(w, motion.bodyIndex).cast<double>());
+        }
+        for (const Spring& spring : w.springs) {
+            if (integratorOf(w, *w.motionOf(spring.bodyA)) != method) continue;
+            const Vec3 endA = w.bodies[spring.bodyA].transform.apply(spring.localAnchorA);
+            const Vec3 endB = spring.bodyB < 0 ? spring.anchorB : w.bodies[spring.bodyB].transform.apply(spring.anchorB);
+            const double stretch = (endB - endA).cast<double>().norm() - spring.restLength;
+            energy += 0.5 * spring.stiffness * stretch * stretch;
+        }
+        return energy;
+    };
+    const IntegratorKind methods[] = {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Rk4};
+    std::map<IntegratorKind, double> initial, lowest, highest, last;
+    for (IntegratorKind method : methods) initial[method] = lowest[method] = highest[method] = chainEnergy(world, method);
+    simulate(world, pipeline, 20.0, [&](const World& w) {
+        for (IntegratorKind method : methods) {
+            const double energy = chainEnergy(w, method);
+            lowest[method] = std::min(lowest[method], energy);
+            highest[method] = std::max(highest[method], energy);
+            last[method] = energy;
+        }
+    });
+    // Energies are measured from the lowest point the chains can reach, so ratios make sense.
+    for (IntegratorKind method : methods)
+        INFO(toString(method) << " energy " << initial[method] << " -> " << last[method] << " band ["
+                              << lowest[method] << ", " << highest[method] << "]");
+    const double rk4Loss = initial[IntegratorKind::Rk4] - last[IntegratorKind::Rk4];
+    CHECK(rk4Loss > 0);
+    for (IntegratorKind method : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet}) {
+        INFO(toString(method));
+        CHECK(std::abs(last[method] - initial[method]) < 0.5 * rk4Loss);
+        CHECK(highest[method] - lowest[method] < rk4Loss);
+    }
+}
+
+TEST_CASE("the integrators bench runs in quick mode and writes its table and plots", "[ch01][bench]") {
+    const std::filesystem::path directory = std::filesystem::temp_directory_path();
+    const std::string csv = (directory / "ch01_bench_test.csv").string();
+    const std::string plot = (directory / "ch01_bench_test.svg").string();
+    const std::string dtPlot = (directory / "ch01_bench_test-dt.svg").string();
+    std::ostringstream out;
+    BenchOptions options;
+    options.csvPath = csv;
+    options.plotPath = plot;
+    options.quick = true;
+    options.out = &out;
+    REQUIRE(runIntegratorsBench(options) == 0);
+    std::ifstream table(csv);
+    std::string header;
+    std::getline(table, header);
+    CHECK(header == "method,steps,dt_s,h_omega,error_m,run_ms,ns_per_body_step");
+    int rows = 0;
+    for (std::string line; std::getline(table, line);) ++rows;
+    CHECK(rows == 3 * 7);
+    CHECK(std::ifstream(plot).good());
+    CHECK(std::ifstream(dtPlot).good());
+    CHECK(out.str().find("observed order") != std::string::npos);
+    std::remove(csv.c_str());
+    std::remove(plot.c_str());
+    std::remove(dtPlot.c_str());
+
+    options.csvPath = "/nonexistent-dir/x.csv";
+    options.plotPath.clear();
+    CHECK(runIntegratorsBench(options) == 2);
+}

@@ -1,0 +1,41 @@
+#pragma once
+// Small helpers shared by the chapter 2 suites: proxies and oracle boxes from a BoxPair.
+
+#include "02_gjk/gjk.h"
+#include "02_gjk/random_pairs.h"
+#include "support/box_oracle.h"
+
+namespace stepwise {
+namespace testing {
+
+/// The two shapes of a box pair and their proxies (the proxies point into this struct: keep it
+/// alive and do not copy it while they are used).
+struct BoxPairProxies {
+    Shape shapeA;
+    Shape shapeB;
+    ConvexProxy a;
+    ConvexProxy b;
+
+    BoxPairProxies(const BoxPair& pair, SupportMode mode)
+        : shapeA(Shape::box(pair.halfExtentsA)), shapeB(Shape::box(pair.halfExtentsB)) {
+        a = ConvexProxy{&shapeA, pair.poseA, mode};
+        b = ConvexProxy{&shapeB, pair.poseB, mode};
+    }
+    BoxPairProxies(const BoxPairProxies&) = delete;
+    BoxPairProxies& operator=(const BoxPairProxies&) = delete;
+};
+
+inline oracle::OracleBox oracleA(const BoxPair& pair) { return oracle::makeOracleBox(pair.halfExtentsA, pair.poseA); }
+inline oracle::OracleBox oracleB(const BoxPair& pair) { return oracle::makeOracleBox(pair.halfExtentsB, pair.poseB); }
+
+/// The tolerance a distance is checked to: 1e-4 relative, plus, when Real is float, an absolute
+/// term for the rounding of the support points themselves. A support point of boxes of size L
+/// (|w| <= L) carries about eps L of rounding from the rotation and the subtraction, and the
+/// closest point of a simplex amplifies that by a small factor (its condition); 64 eps L covers
+/// it with margin (about 8e-6 L for float, 1.4e-14 L for double, i.e. nothing).
+inline double distanceTolerance(double exact, double pairSize) {
+    return 1e-4 * exact + 64.0 * double(kEpsilon) * pairSize;
+}
+
+}  // namespace testing
+}  // namespace stepwise

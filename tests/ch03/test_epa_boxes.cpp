@@ -1,0 +1,133 @@
+// EPA against the exact separating-axis depth of overlapping boxes (tests/support/box_oracle.h).
+#include "03_epa/narrowphase.h"
+#include "ch03/random_pairs.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+using namespace stepwise;
+using stepwise::test::Random;
+
+namespace {
+
+struct BoxPair {
+    Vec3 halfA, halfB;
+    Transform poseA, poseB;
+    oracle::SatResult sat;
+};
+
+// Pairs are kept when they overlap by at least `minDepthFraction` of the smaller box's smallest
+// half extent: a relative depth error means little at a depth of a few ulps (the shallow end is
+// tested separately, with an absolute bound).
+std::vector<BoxPair> makeOverlappingBoxes(unsigned seed, int count, double minDepthFraction) {
+    Random random(seed);
+    std::vector<BoxPair> pairs;
+    while (static_cast<int>(pairs.size()) < count) {
+        BoxPair pair;
+        pair.halfA = Vec3(Real(random.range(0.05, 1)), Real(random.range(0.05, 1)), Real(random.range(0.05, 1)));
+        pair.halfB = Vec3(Real(random.range(0.05, 1)), Real(random.range(0.05, 1)), Real(random.range(0.05, 1)));
+        pair.poseA.position = Vec3(Real(random.range(-2, 2)), Real(random.range(-2, 2)), Real(random.range(-2, 2)));
+        pair.poseA.rotation = random.rotation();
+        pair.poseB.rotation = random.rotation();
+        const double reach = pair.halfA.norm() + pair.halfB.norm();
+        pair.poseB.position = pair.poseA.position + Real(random.range(0, reach)) * random.direction();
+        pair.sat = oracle::boxSat(oracle::makeOracleBox(pair.halfA, pair.poseA), oracle::makeOracleBox(pair.halfB, pair.poseB));
+        const double smallest = std::min(pair.halfA.minCoeff(), pair.halfB.minCoeff());
+        if (pair.sat.overlap && pair.sat.depth >= minDepthFraction * smallest) pairs.push_back(pair);
+    }
+    return pairs;
+}
+
+struct Errors {
+    std::vector<double> depth;     // relative
+    std::vector<double> angle;     // degrees
+    double worstSurface = 0;       // m, either point off its box's surface
+    double worstSeparation = 0;    // m, |pointA - pointB - depth * normal|
+    double worstAxisOverlap = 0;   // relative: overlap along EPA's normal vs the exact depth
+    int failures = 0;              // no contact, or non-finite values
+};
+
+Errors measure(const std::vector<BoxPair>& pairs, SupportMode mode) {
+    Errors errors;
+    CollideOptions options;
+    options.supportMode = mode;
+    for (const BoxPair& pair : pairs) {
+        const ContactQuery query =
+            collideShapes(Shape::box(pair.halfA), pair.poseA, Shape::box(pair.halfB), pair.poseB, options);
+        if (!query.intersect || !isFinite(query.depth) || !isFinite(query.normal) || !isFinite(query.pointA) ||
+            !isFinite(query.pointB)) {
+            ++errors.failures;
+            continue;
+        }
+        const double exact = pair.sat.depth;
+        errors.depth.push_back(std::abs(double(query.depth) - exact) / exact);
+        const double cosine = std::clamp(query.normal.cast<double>().normalized().dot(pair.sat.axis), -1.0, 1.0);
+        errors.angle.push_back(std::acos(cosine) * 180 / 3.141592653589793);
+        errors.worstSurface = std::max({errors.worstSurface,
+                                        std::abs(test::boxSurfaceDistance(query.pointA, pair.halfA, pair.poseA)),
+                                        std::abs(test::boxSurfaceDistance(query.pointB, pair.halfB, pair.poseB))});
+        const Vec3 gap = query.pointA - query.pointB - query.depth * query.normal;
+        errors.worstSeparation = std::max(errors.worstSeparation, double(gap.norm()));
+        // When two axes tie, EPA may pick the other one: its normal must still be a direction
+        // of least overlap, i.e. the boxes overlap along it by the exact depth.
+        const double along = test::boxOverlapAlong(query.normal, pair.halfA, pair.poseA, pair.halfB, pair.poseB);
+        errors.worstAxisOverlap = std::max(errors.worstAxisOverlap, std::abs(along - exact) / exact);
+    }
+    return errors;
+}
+
+void print(const char* label, const Errors& errors) {
+    std::printf("%s: %zu pairs, depth rel. error p50 %.2e p95 %.2e max %.2e; normal p95 %.3g deg max %.3g deg; "
+                "surface %.2e m; separation %.2e m; overlap along normal %.2e; failures %d\n",
+                label, errors.depth.size(), test::percentile(errors.depth, 0.5), test::percentile(errors.depth, 0.95),
+                test::percentile(errors.depth, 1.0), test::percentile(errors.angle, 0.95),
+                test::percentile(errors.angle, 1.0), errors.worstSurface, errors.worstSeparation,
+                errors.worstAxisOverlap, errors.failures);
+}
+
+}  // namespace
+
+TEST_CASE("EPA matches the exact SAT depth and axis of 20,000 random overlapping box pairs", "[ch03][epa]") {
+    const std::vector<BoxPair> pairs = makeOverlappingBoxes(20240603u, 20000, 0.02);
+    const Errors errors = measure(pairs, SupportMode::Extents);
+    print("boxes (extents support)", errors);
+    CHECK(errors.failures == 0);
+    CHECK(test::percentile(errors.depth, 0.95) <= 1e-5);
+    CHECK(test::percentile(errors.depth, 1.0) <= 1e-3);
+    CHECK(test::percentile(errors.angle, 0.95) <= 0.1);
+    CHECK(errors.worstSurface <= 1e-4);
+    CHECK(errors.worstSeparation <= 1e-4);
+    CHECK(errors.worstAxisOverlap <= 1e-3);
+}
+
+TEST_CASE("EPA gives the same answers with vertex support", "[ch03][epa]") {
+    const std::vector<BoxPair> pairs = makeOverlappingBoxes(77u, 2000, 0.02);
+    const Errors errors = measure(pairs, SupportMode::Vertices);
+    print("boxes (vertex support)", errors);
+    CHECK(errors.failures == 0);
+    CHECK(test::percentile(errors.depth, 0.95) <= 1e-5);
+    CHECK(test::percentile(errors.depth, 1.0) <= 1e-3);
+    CHECK(test::percentile(errors.angle, 0.95) <= 0.1);
+    CHECK(errors.worstSurface <= 1e-4);
+}
+
+TEST_CASE("Shallow box overlaps: the depth is right to an absolute bound", "[ch03][epa]") {
+    // Depths down to a millionth of the box size, where a relative error is dominated by the
+    // float resolution of the positions: hold them to a few ulps of the pair's size instead.
+    const std::vector<BoxPair> pairs = makeOverlappingBoxes(4242u, 3000, 0.0);
+    int failures = 0;
+    double worst = 0;
+    for (const BoxPair& pair : pairs) {
+        const ContactQuery query = collideShapes(Shape::box(pair.halfA), pair.poseA, Shape::box(pair.halfB), pair.poseB);
+        if (!isFinite(query.depth) || !isFinite(query.pointA) || !isFinite(query.pointB)) ++failures;
+        const double size = pair.halfA.norm() + pair.halfB.norm();
+        worst = std::max(worst, std::abs(double(query.depth) - pair.sat.depth) / size);
+    }
+    std::printf("shallow boxes: %zu pairs, worst |depth error| / size %.2e\n", pairs.size(), worst);
+    CHECK(failures == 0);
+    CHECK(worst <= 200 * double(kEpsilon));
+}

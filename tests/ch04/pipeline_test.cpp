@@ -1,0 +1,102 @@
+// The chapter as the programs see it: stage names, scenes, the draw hook, the benches.
+#include "04_pgs/benches.h"
+#include "04_pgs/chapter.h"
+#include "04_pgs/scenes.h"
+#include "app/registry.h"
+#include "support/fixture.h"
+#include "world/debug_draw.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace stepwise;
+
+TEST_CASE("the pipeline's stage names say what runs", "[ch04][pipeline]") {
+    World world = test::makeWorld();
+    test::addGround(world);
+    test::addSphere(world, Vec3(0, 1, 0), Real(0.5));
+    CHECK(makeChapter04Pipeline(world).enabledStageNames() ==
+          std::vector<std::string>{"integrate:velocities", "narrowphase:closed_form", "solve:pgs", "integrate:positions"});
+    test::addBox(world, Vec3(2, 1, 0), Vec3(Real(0.5), Real(0.5), Real(0.5)));
+    world.settings.solver = SolverKind::Jacobi;
+    CHECK(makeChapter04Pipeline(world).enabledStageNames() ==
+          std::vector<std::string>{"integrate:velocities", "narrowphase:gjk_epa", "solve:jacobi", "integrate:positions"});
+    // RK4 cannot be split: the seed's order, with chapter 1's whole-step stage.
+    world.settings.integrator = IntegratorKind::Rk4;
+    CHECK(chooseStepOrder(world) == StepOrder::IntegrateFirst);
+    CHECK(makeChapter04Pipeline(world).enabledStageNames() ==
+          std::vector<std::string>{"integrate:rk4", "narrowphase:gjk_epa", "solve:jacobi"});
+}
+
+TEST_CASE("the registry's chapter 4 pipeline is this chapter's", "[ch04][pipeline]") {
+    Registry registry;
+    registerChapters(registry);
+    const World world = buildDropScene();
+    CHECK(registry.makePipeline(world).enabledStageNames() == makeChapter04Pipeline(world).enabledStageNames());
+    CHECK(registry.findBench("solver") != nullptr);
+    CHECK(registry.findBench("resting") != nullptr);
+}
+
+TEST_CASE("every chapter 4 scene runs finite, comes to rest inside its bounds, and draws its impulses",
+          "[ch04][pipeline]") {
+    Registry registry;
+    registerChapters(registry);
+    int scenes = 0;
+    for (const SceneEntry& entry : registry.scenes()) {
+        if (entry.chapter != 4) continue;
+        ++scenes;
+        INFO("scene " << entry.name);
+        World world = entry.build();
+        Pipeline pipeline = registry.makePipeline(world, 4);
+        int arrows = 0;
+        RecordingDraw draw;
+        test::simulate(world, pipeline, 2, [&](const World& w) {
+            draw.clear();
+            entry.draw(w, draw);
+            arrows = std::max(arrows, draw.count(RecordingDraw::Kind::Arrow));
+        });
+        for (const Motion& motion : world.motions) {
+            CHECK(motion.linearVelocity.allFinite());
+            CHECK(world.bodies[motion.bodyIndex].transform.position.y() > -0.1);  // nothing fell through
+        }
+        CHECK(arrows > 0);
+        REQUIRE(entry.panel);
+    }
+    CHECK(scenes >= 4);
+}
+
+TEST_CASE("bench solver measures: more iterations, less residual; Gauss-Seidel below Jacobi", "[ch04][bench]") {
+    const std::string csv = "ch04_bench_solver_test.csv";
+    std::ostringstream out;
+    BenchOptions options;
+    options.quick = true;
+    options.csvPath = csv;
+    options.out = &out;
+    REQUIRE(runSolverBench(options) == 0);
+    std::ifstream file(csv);
+    REQUIRE(file.good());
+    std::string line;
+    std::getline(file, line);
+    CHECK(line == "part,solver,iterations,solve_ms,velocity_residual,max_penetration");
+    std::map<std::string, std::map<int, double>> residual;
+    while (std::getline(file, line)) {
+        std::stringstream cells(line);
+        std::string part, solver, iterations, ms, res;
+        std::getline(cells, part, ',');
+        std::getline(cells, solver, ',');
+        std::getline(cells, iterations, ',');
+        std::getline(cells, ms, ',');
+        std::getline(cells, res, ',');
+        if (part == "fixed_set") residual[solver][std::stoi(iterations)] = std::stod(res);
+    }
+    std::remove(csv.c_str());
+    CHECK(residual["gauss_seidel"][50] < residual["gauss_seidel"][1]);
+    CHECK(residual["gauss_seidel"][8] < residual["jacobi"][8]);
+    BenchOptions bad = options;
+    bad.csvPath = "/nonexistent-dir/x.csv";
+    CHECK(runSolverBench(bad) == 2);
+}
