@@ -43,6 +43,9 @@ if(STEPWISE_MINGW_PROJECT_HOOK)
     endforeach()
     find_package(nlohmann_json 3 QUIET)
     find_package(CLI11 QUIET)
+    # Header-only, so every target may see them, as natively through /usr/include (a chapter
+    # that includes <CLI/CLI.hpp> without linking CLI11 still builds the same on both).
+    include_directories(SYSTEM ${shadow})
     foreach(target nlohmann_json::nlohmann_json CLI11::CLI11)
       if(TARGET ${target})
         set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${shadow})

@@ -32,6 +32,7 @@ namespace {
 struct Options {
     std::string scene;
     long frames = -1;
+    long lingerFrames = 0;
     std::string screenshot;
     bool hidden = false;
     bool list = false;
@@ -136,6 +137,7 @@ int runWindow(DemoState& state, const Options& options) {
         const auto start = last;
         float fps = 60;
         long presented = 0;
+        long lingering = -1;
         bool running = true;
         while (running) {
             MSG message;
@@ -171,11 +173,13 @@ int runWindow(DemoState& state, const Options& options) {
                         ImGui::GetDrawData(), nullptr);
             device.endFrame();
             target.present(true);
-            if (options.frames >= 0 && ++presented >= options.frames) {
+            if (lingering >= 0 && ++lingering >= options.lingerFrames) running = false;
+            if (lingering < 0 && options.frames >= 0 && ++presented >= options.frames) {
                 const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 std::cout << "presented " << presented << " frames of " << view3d.width << "x" << view3d.height << " in "
                           << total << " s (" << 1000.0 * total / double(presented) << " ms per frame)" << std::endl;
-                running = false;
+                lingering = 0;
+                running = options.lingerFrames > 0;
             }
         }
         device.waitIdle();
@@ -189,10 +193,12 @@ int runWindow(DemoState& state, const Options& options) {
 int run(int argc, char** argv) {
     CLI::App app{title()};
     Options options;
-    app.add_option("--scene", options.scene, "built-in scene name or scene JSON file (default: the first scene)");
+    app.add_option("--scene", options.scene, "built-in scene name or scene JSON file (default: the chapter's first scene)");
     app.add_option("--frames", options.frames, "offscreen: the frame to draw; window: exit after N frames")
         ->check(CLI::Range(0L, 1000000L));
     app.add_option("--screenshot", options.screenshot, "draw offscreen and write this PNG (plus FILE.png.txt)");
+    app.add_option("--linger-frames", options.lingerFrames, "window: frames to keep presenting after --frames")
+        ->check(CLI::Range(0L, 100000L));
     app.add_flag("--hidden", options.hidden, "no window: draw offscreen");
     app.add_option("--width", options.width, "image or window width")->check(CLI::Range(16, 8192));
     app.add_option("--height", options.height, "image or window height")->check(CLI::Range(16, 8192));
@@ -214,7 +220,13 @@ int run(int argc, char** argv) {
     }
     try {
         if (!options.scene.empty()) state.loadByName(options.scene);
-        else if (!state.scenes().empty()) state.loadScene(0);
+        else if (!state.scenes().empty()) {
+            // A chapter's demo opens on that chapter's first scene.
+            int first = 0;
+            for (int i = static_cast<int>(state.scenes().size()) - 1; i >= 0; --i)
+                if (state.scenes()[i]->chapter == state.scenes().back()->chapter) first = i;
+            state.loadScene(first);
+        }
     } catch (const std::exception& error) {
         std::cerr << "error: --scene '" << options.scene << "': " << error.what() << '\n';
         return 2;

@@ -117,8 +117,10 @@ Aabb DemoState::framingBounds() const {
         result.min = Vec3(-2, 0, -2);
         result.max = Vec3(2, 2, 2);
     }
-    // Keep the ground in the picture: extend down to it.
-    result.min.y() = std::min(result.min.y(), groundLevel());
+    // Keep a static ground in the picture: extend down to it (not for bodies in free space).
+    bool hasStatic = false;
+    for (const Body& body : world.bodies) hasStatic = hasStatic || body.type == BodyType::Static;
+    if (hasStatic) result.min.y() = std::min(result.min.y(), groundLevel());
     return result;
 }
 

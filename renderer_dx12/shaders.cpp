@@ -10,6 +10,9 @@ namespace stepwise::render {
 namespace {
 
 const char kShaderSource[] = R"hlsl(
+// step() without step(), which wine 8's compiler lacks: 1 when x > edge, else 0.
+#define STEP(edge, x) saturate(((x) - (edge)) * 1e20)
+
 cbuffer Frame : register(b0) {
     float4 vpRow0; float4 vpRow1; float4 vpRow2; float4 vpRow3;
     float4 cameraPos;
@@ -52,7 +55,7 @@ Lit vsTriangle(TriangleIn v) {
 float4 psLit(Lit i) : SV_Target {
     float3 n = normalize(i.normal);
     float3 toEye = cameraPos.xyz - i.world;
-    n = dot(n, toEye) < 0.0 ? -n : n;
+    n = n * (2.0 * STEP(0.0, dot(n, toEye)) - 1.0);  // two-sided: face the eye
     float diffuse = saturate(dot(n, lightDir.xyz));
     float sky = 0.5 + 0.5 * n.y;
     float3 rgb = i.color.rgb * (0.30 + 0.20 * sky + 0.55 * diffuse);
@@ -68,18 +71,21 @@ Flat vsLine(LineIn v) {
     float4 pb = float4(v.b, 1.0);
     float4 ca = float4(dot(vpRow0, pa), dot(vpRow1, pa), dot(vpRow2, pa), dot(vpRow3, pa));
     float4 cb = float4(dot(vpRow0, pb), dot(vpRow1, pb), dot(vpRow2, pb), dot(vpRow3, pb));
+    // Clip each end to the near plane (ternaries and branches are avoided: wine's compiler).
     float nearW = viewport.w;
-    float4 ca2 = ca.w < nearW ? lerp(ca, cb, (nearW - ca.w) / (cb.w - ca.w)) : ca;
-    float4 cb2 = cb.w < nearW ? lerp(cb, ca, (nearW - cb.w) / (ca.w - cb.w)) : cb;
+    float behindA = 1.0 - STEP(nearW, ca.w);
+    float behindB = 1.0 - STEP(nearW, cb.w);
+    float4 ca2 = lerp(ca, lerp(ca, cb, saturate((nearW - ca.w) / max(cb.w - ca.w, 1e-6))), behindA);
+    float4 cb2 = lerp(cb, lerp(cb, ca, saturate((nearW - cb.w) / max(ca.w - cb.w, 1e-6))), behindB);
     float2 halfSize = viewport.xy * 0.5;
     float2 sa = ca2.xy / ca2.w * halfSize;
     float2 sb = cb2.xy / cb2.w * halfSize;
     float2 d = sb - sa;
-    float len = length(d);
-    float2 dir = len > 0.0001 ? d / max(len, 0.0001) : float2(1.0, 0.0);
+    float lengthSquared = dot(d, d);
+    float2 dir = lerp(float2(1.0, 0.0), normalize(d + float2(1e-7, 0.0)), STEP(1e-8, lengthSquared));
     float2 side = float2(-dir.y, dir.x);
-    float width = v.width > 0.0 ? v.width : viewport.z;
-    float4 c = v.corner.x < 0.5 ? ca2 : cb2;
+    float width = lerp(viewport.z, v.width, STEP(0.000001, v.width));
+    float4 c = lerp(ca2, cb2, STEP(0.5, v.corner.x));
     float2 offset = (side * v.corner.y + dir * (v.corner.x * 2.0 - 1.0)) * (width * 0.5);
     c.xy += offset / halfSize * c.w;
     Flat o;

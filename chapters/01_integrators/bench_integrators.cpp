@@ -143,7 +143,7 @@ int runIntegratorsBench(const BenchOptions& options) {
     PlotSpec workPrecision{"Work-precision: " + std::to_string(kBodies) + " oscillators to t = 2.3 s (Real = " +
                                (sizeof(Real) == 4 ? "float" : "double") + ")",
                            "run time (s)", "max position error (m)", true, true, {}};
-    PlotSpec errorByStep{"Error against step size", "dt (s)", "max position error (m)", true, true, {}};
+    PlotSpec errorByStep{std::string("Error against step size (Real = ") + (sizeof(Real) == 4 ? "float" : "double") + ")", "dt (s)", "max position error (m)", true, true, {}};
     for (IntegratorKind method : methods) {
         PlotSeries byTime{toString(method), {}, {}, false};
         PlotSeries byStep{toString(method), {}, {}, false};

@@ -13,10 +13,10 @@ namespace stepwise {
 
 namespace {
 
-// f(y) at a stage. The quaternion's rate is taken from the raw stage quaternion (dq/dt is
-// linear in q), while forces and inertia use the normalised one: RK4 then integrates the
-// smooth ODE f(q / |q|), which equals the true one on unit quaternions, and stays fourth order.
-// (Normalising the stages themselves would cost two orders in the orientation.)
+// f(y) at a stage. RK4 is defined on the raw stage values, so the quaternion's rate comes from
+// the raw stage quaternion (dq/dt is linear in q), while forces and inertia use its normalised
+// copy: RK4 then integrates the smooth ODE f(q / |q|), which equals the true one on unit
+// quaternions, and only the final result is projected back onto them.
 StateRate rateAt(const Motion& motion, const MotionState& state, const Quat& rawRotation, const Wrench& wrench,
                  bool gyroscopic) {
     const Acceleration acceleration = accelerationAt(motion, state, wrench, gyroscopic);

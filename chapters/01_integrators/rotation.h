@@ -24,8 +24,15 @@ Quat addScaledDerivative(const Quat& rotation, const Quat& derivative, Real h);
 Vec3 gyroscopicStepExplicit(const Vec3& angularVelocity, const Mat3& worldInertia, const Mat3& worldInverseInertia,
                             Real h);
 
-/// Implicit gyroscopic step (Catto, "Numerical Methods", GDC 2015): one Newton step on the
-/// backward-Euler equation I (w1 - w0) + h w1 x I w1 = 0, in body axes where I is constant.
+/// Catto's implicit gyroscopic step ("Numerical Methods", GDC 2015; also Bullet's
+/// computeGyroscopicImpulseImplicit_Body): one Newton step on backward Euler,
+/// I (w1 - w0) + h w1 x I w1 = 0, in body axes where I is constant. Unconditionally stable but
+/// dissipative: each step shrinks |L| by O((h |w x L| / |L|)^2).
+Vec3 gyroscopicStepBackwardEuler(const Vec3& angularVelocity, const Quat& rotation, const Mat3& inertiaLocal, Real h);
+
+/// The implicit gyroscopic step GyroscopicMode::Implicit uses: Catto's one Newton step, applied
+/// to the implicit midpoint rule I (w1 - w0) + h m x I m = 0, m = (w0 + w1) / 2, then rescaled
+/// to the old |L|. Keeps |L| and the rotational energy to round-off at any step size.
 Vec3 gyroscopicStepImplicit(const Vec3& angularVelocity, const Quat& rotation, const Mat3& inertiaLocal, Real h);
 
 }  // namespace stepwise

@@ -55,7 +55,7 @@ SimplexClosest closestOnSegment(const Vec3* points, int i, int j, Real scale) {
 // three edge regions, and the face. d1..d6 are the projections of the origin onto the two edges
 // from each vertex; va, vb, vc are (twice) the signed areas that give the barycentric
 // coordinates of the origin's projection onto the plane.
-SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Real scale) {
+SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Real scale, FacePoint facePoint) {
     const Vec3& a = points[ia];
     const Vec3& b = points[ib];
     const Vec3& c = points[ic];
@@ -97,7 +97,14 @@ SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Rea
     const Real v = vb / denominator;
     const Real w = vc / denominator;
     SimplexClosest result;
-    result.point = a + v * ab + w * ac;
+    // The point itself as the projection onto the plane, not as a + v ab + w ac: that sum
+    // carries an absolute rounding error of eps |a|, which near contact (|point| << |a|) turns
+    // its direction by up to eps |a| / |point|. The normal comes from the edges alone, so this
+    // form keeps the direction exact to rounding; the search direction GJK takes from it then
+    // still finds the separating plane at distances of 1e-4 of the shapes' size in float.
+    const Vec3 normal = ab.cross(ac);
+    result.point = facePoint == FacePoint::Projection ? Vec3(normal * (normal.dot(a) / normal.squaredNorm()))
+                                                      : Vec3(a + v * ab + w * ac);
     result.weights[ia] = 1 - v - w;
     result.weights[ib] = v;
     result.weights[ic] = w;
@@ -113,7 +120,7 @@ SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Rea
 // Ericson 5.1.6: the origin is outside the tetrahedron exactly when it lies on the far side of
 // some face plane (opposite the fourth vertex). The closest point is then on one of those faces,
 // and the nearest face answer wins. Inside every face plane means inside the tetrahedron.
-SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale) {
+SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale, FacePoint facePoint) {
     // Each face, listed with the vertex opposite it.
     static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
     SimplexClosest best;
@@ -136,7 +143,7 @@ SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale) {
         const bool outside = flat || (originSide[f] > 0 && oppositeSide[f] < 0) || (originSide[f] < 0 && oppositeSide[f] > 0);
         if (!outside) continue;
         anyOutside = true;
-        SimplexClosest onFace = closestOnTriangle(points, kFaces[f][0], kFaces[f][1], kFaces[f][2], scale);
+        SimplexClosest onFace = closestOnTriangle(points, kFaces[f][0], kFaces[f][1], kFaces[f][2], scale, facePoint);
         const Real distanceSquared = onFace.point.squaredNorm();
         if (distanceSquared < bestDistanceSquared) {
             bestDistanceSquared = distanceSquared;
@@ -163,12 +170,12 @@ SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale) {
 
 }  // namespace
 
-SimplexClosest closestPointToOrigin(const Vec3* points, int count, Real scale) {
+SimplexClosest closestPointToOrigin(const Vec3* points, int count, Real scale, FacePoint facePoint) {
     switch (count) {
         case 1: return vertexResult(points, 0);
         case 2: return closestOnSegment(points, 0, 1, scale);
-        case 3: return closestOnTriangle(points, 0, 1, 2, scale);
-        default: return closestOnTetrahedron(points, scale);
+        case 3: return closestOnTriangle(points, 0, 1, 2, scale, facePoint);
+        default: return closestOnTetrahedron(points, scale, facePoint);
     }
 }
 

@@ -9,6 +9,10 @@
 
 namespace stepwise {
 
+/// How the closest point on a triangle's face is formed. Projection (the default) is accurate;
+/// BarycentricSum is the textbook a + v ab + w ac, kept so the bench can show what it costs.
+enum class FacePoint { Projection, BarycentricSum };
+
 struct SimplexClosest {
     Vec3 point = Vec3::Zero();           // closest point of the simplex to the origin
     Real weights[4] = {0, 0, 0, 0};      // barycentric weights of the input points, summing to 1
@@ -21,6 +25,7 @@ struct SimplexClosest {
 /// Closest point to the origin of the simplex spanned by points[0..count-1] (1 <= count <= 4).
 /// `scale` (m) is the size of the shapes: lengths, areas and volumes below a few rounding
 /// errors of it count as zero, so the answer does not depend on units.
-SimplexClosest closestPointToOrigin(const Vec3* points, int count, Real scale);
+SimplexClosest closestPointToOrigin(const Vec3* points, int count, Real scale,
+                                    FacePoint facePoint = FacePoint::Projection);
 
 }  // namespace stepwise

@@ -94,12 +94,12 @@ bool alreadyInSimplex(const Simplex& simplex, const Vec3& w, Real tolerance) {
 // [ch02-reduce]
 // Adds a support point, finds the closest point of the grown simplex to the origin, and keeps
 // only the vertices of the feature that holds it (at most 4 survive; usually fewer).
-void addAndReduce(Walk& walk, const SupportPoint& point, Real scale) {
+void addAndReduce(Walk& walk, const SupportPoint& point, Real scale, FacePoint facePoint = FacePoint::Projection) {
     Simplex& simplex = walk.simplex;
     simplex.vertices[simplex.count++] = point;
     Vec3 points[4];
     for (int i = 0; i < simplex.count; ++i) points[i] = simplex.vertices[i].w;
-    const SimplexClosest closest = closestPointToOrigin(points, simplex.count, scale);
+    const SimplexClosest closest = closestPointToOrigin(points, simplex.count, scale, facePoint);
 
     const int newest = simplex.count - 1;
     bool keptNewest = false;
@@ -182,7 +182,7 @@ void toWorld(Simplex& simplex, const Vec3& offset) {
 
 }  // namespace
 
-GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterations) {
+GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterations, FacePoint facePoint) {
     GjkResult result;
     if (!isValidProxy(a) || !isValidProxy(b)) {
         result.exit = GjkExit::Degenerate;
@@ -220,7 +220,7 @@ GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterat
             break;
         }
         const Real previousSquared = walk.v.squaredNorm();
-        addAndReduce(walk, point, tolerances.scale);
+        addAndReduce(walk, point, tolerances.scale, facePoint);
         const Real distanceSquared = walk.v.squaredNorm();
         if (!std::isfinite(distanceSquared)) {
             exit = GjkExit::Degenerate;

@@ -7,6 +7,7 @@
 // Collision Detection of Convex Objects" (JGT 1999) for the loop and its termination tests,
 // Ericson, Real-Time Collision Detection (2005) 9.5 and 5.1 for the simplex sub-algorithm.
 
+#include "02_gjk/closest_point.h"
 #include "02_gjk/support.h"
 
 namespace stepwise {
@@ -41,8 +42,10 @@ struct GjkResult {
     int newestDropped = 0;
 };
 
-/// Boolean GJK: stops as soon as a separating plane or the origin is found.
-GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterations = 75);
+/// Boolean GJK: stops as soon as a separating plane or the origin is found. `facePoint` is for
+/// the bench's comparison only (FacePoint::BarycentricSum is the less accurate textbook form).
+GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterations = 75,
+                       FacePoint facePoint = FacePoint::Projection);
 
 struct GjkDistanceResult {
     bool separated = false;

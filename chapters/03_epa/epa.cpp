@@ -29,8 +29,8 @@ constexpr Real kRoundOff = 8 * kEpsilon;
 // A face is too thin to have a trustworthy normal when its cross product is within this factor
 // of the round-off the cross product itself carries (the normal would be off by > 1/64 rad).
 constexpr Real kThinFace = 64;
-// Two faces whose normals agree this well (2.6 degrees) are taken as lying in one plane.
-constexpr Real kCoplanar = Real(0.999);
+// Two faces whose normals agree this well (0.26 degrees) are taken as lying in one plane.
+constexpr Real kCoplanar = Real(0.99999);
 // Chapter 2's GJK reports "intersect" for shapes this close (relative to their size).
 constexpr Real kTouching = 128 * kEpsilon;
 
@@ -192,82 +192,99 @@ struct HorizonEdge {
     int outside = -1;
 };
 
+/// Memory one EPA query reuses for every expansion instead of allocating it each time.
+struct ExpansionScratch {
+    std::vector<HorizonEdge> horizon;
+    std::vector<int> removed;
+    std::vector<int> slots;
+    std::vector<EpaFace> fan;
+};
+
 /// Depth-first walk over the faces visible from `point`, entered from a removed neighbour
 /// across the face's edge `edge`. Visible faces are removed; the first invisible face met across
 /// an edge contributes that edge to the horizon. Walking each face's remaining two edges in
 /// order yields the horizon as one closed loop, in order (Bullet's gjkepa2 `expand`).
 void walkHorizon(EpaPolytope& polytope, int faceIndex, int edge, const Vec3& point, Real slack,
-                 std::vector<HorizonEdge>& horizon, std::vector<int>& removed) {
+                 ExpansionScratch& scratch) {
     EpaFace& face = polytope.faces[faceIndex];
     if (face.removed) return;
     if (face.normal.dot(point) - face.distance <= slack) {  // cannot see the point: horizon
-        horizon.push_back({face.vertices[(edge + 1) % 3], face.vertices[edge], faceIndex});
+        scratch.horizon.push_back({face.vertices[(edge + 1) % 3], face.vertices[edge], faceIndex});
         return;
     }
     face.removed = true;
-    removed.push_back(faceIndex);
+    scratch.removed.push_back(faceIndex);
     for (int step = 1; step <= 2; ++step) {
         const int next = (edge + step) % 3;
         const int neighbour = face.neighbours[next];
         walkHorizon(polytope, neighbour, cornerOf(polytope.faces[neighbour], face.vertices[(next + 1) % 3]),
-                    point, slack, horizon, removed);
+                    point, slack, scratch);
     }
 }
 
-/// Adds `point` to the polytope: removes the faces it sees, starting with `seenFace`, and fans
-/// new faces from it to the horizon. On round-off trouble (a horizon that is not one simple loop,
-/// or a sliver face) the polytope is left as it was and false is returned.
-bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& point, Real scale) {
-    std::vector<HorizonEdge> horizon;
-    std::vector<int> removed;
+/// Adds `point` to the polytope: removes the faces it sees, starting with the closest face
+/// `seenFace`, and fans new faces from it to the horizon. Round-off can make the polytope a hair
+/// non-convex, and then a horizon may not be one simple loop, a new face may be a sliver, or a
+/// new face may pass nearer the origin than the face it replaces (impossible for an exact
+/// convex polytope, which only grows). Any of these leaves the polytope as it was and returns
+/// false: EPA then stops with the best face it has rather than with a worse one.
+bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& point, Real scale,
+                    ExpansionScratch& scratch) {
+    scratch.horizon.clear();
+    scratch.removed.clear();
     const Real slack = kRoundOff * scale;
-    EpaFace& seen = polytope.faces[seenFace];
-    seen.removed = true;
-    removed.push_back(seenFace);
+    const Real closestDistance = polytope.faces[seenFace].distance;
+    polytope.faces[seenFace].removed = true;
+    scratch.removed.push_back(seenFace);
     for (int edge = 0; edge < 3; ++edge) {
+        const EpaFace& seen = polytope.faces[seenFace];
         const int neighbour = seen.neighbours[edge];
         walkHorizon(polytope, neighbour, cornerOf(polytope.faces[neighbour], seen.vertices[(edge + 1) % 3]),
-                    point.w, slack, horizon, removed);
+                    point.w, slack, scratch);
     }
-
     const auto undo = [&] {
-        for (int f : removed) polytope.faces[f].removed = false;
+        for (int f : scratch.removed) polytope.faces[f].removed = false;
         return false;
     };
     // The horizon must be one loop that passes each vertex once, or the fan would not close.
+    const std::vector<HorizonEdge>& horizon = scratch.horizon;
     const int count = static_cast<int>(horizon.size());
     if (count < 3) return undo();
-    std::vector<int> visits(polytope.vertices.size(), 0);
     for (int i = 0; i < count; ++i) {
-        if (horizon[i].to != horizon[(i + 1) % count].from || ++visits[horizon[i].from] > 1) return undo();
+        if (horizon[i].to != horizon[(i + 1) % count].from) return undo();
+        for (int j = 0; j < i; ++j) {
+            if (horizon[j].from == horizon[i].from) return undo();
+        }
     }
 
-    // New faces reuse the removed slots first; build them aside so a sliver can still be undone.
+    // New faces reuse the removed slots first; build them aside so that they can still be undone.
     const int newVertex = static_cast<int>(polytope.vertices.size());
+    const int removedCount = static_cast<int>(scratch.removed.size());
     polytope.vertices.push_back(point);
-    std::vector<int> slots(count);
-    std::vector<EpaFace> fan(count);
+    scratch.slots.resize(count);
+    scratch.fan.resize(count);
     for (int i = 0; i < count; ++i) {
-        slots[i] = i < static_cast<int>(removed.size()) ? removed[i]
-                                                      : static_cast<int>(polytope.faces.size()) + i - static_cast<int>(removed.size());
-        fan[i].vertices[0] = horizon[i].from;
-        fan[i].vertices[1] = horizon[i].to;
-        fan[i].vertices[2] = newVertex;
-        if (!setPlane(polytope, fan[i], scale)) {
+        scratch.slots[i] = i < removedCount ? scratch.removed[i] : static_cast<int>(polytope.faces.size()) + i - removedCount;
+        EpaFace& face = scratch.fan[i];
+        face.vertices[0] = horizon[i].from;
+        face.vertices[1] = horizon[i].to;
+        face.vertices[2] = newVertex;
+        if (!setPlane(polytope, face, scale) || face.distance < closestDistance - slack) {
             polytope.vertices.pop_back();
             return undo();
         }
     }
     // Stitch: edge 0 borders the face outside the horizon, edges 1 and 2 the fan's neighbours.
     for (int i = 0; i < count; ++i) {
-        fan[i].neighbours[0] = horizon[i].outside;
-        fan[i].neighbours[1] = slots[(i + 1) % count];
-        fan[i].neighbours[2] = slots[(i + count - 1) % count];
+        EpaFace& face = scratch.fan[i];
+        face.neighbours[0] = horizon[i].outside;
+        face.neighbours[1] = scratch.slots[(i + 1) % count];
+        face.neighbours[2] = scratch.slots[(i + count - 1) % count];
         EpaFace& outside = polytope.faces[horizon[i].outside];
-        outside.neighbours[cornerOf(outside, horizon[i].to)] = slots[i];
+        outside.neighbours[cornerOf(outside, horizon[i].to)] = scratch.slots[i];
     }
-    if (count > static_cast<int>(removed.size())) polytope.faces.resize(polytope.faces.size() + count - removed.size());
-    for (int i = 0; i < count; ++i) polytope.faces[slots[i]] = fan[i];
+    if (count > removedCount) polytope.faces.resize(polytope.faces.size() + (count - removedCount));
+    for (int i = 0; i < count; ++i) polytope.faces[scratch.slots[i]] = scratch.fan[i];
     return true;
 }
 // [ch03-horizon]
@@ -341,29 +358,51 @@ void contactFromFace(const EpaPolytope& polytope, const EpaFace& face, EpaResult
 }
 // [ch03-contact]
 
-/// Touching shapes: GJK's simplex holds the origin but spans no volume around it, so the depth
-/// is zero. The normal follows the centres (any direction is exact for zero depth) and the
-/// contact is the simplex point nearest the origin.
-EpaResult touchingResult(const ConvexProxy& a, const ConvexProxy& b, const Simplex& simplex) {
+/// No tetrahedron around the origin could be built: GJK's simplex holds the origin but A - B
+/// spans no volume around it within round-off, so the shapes touch (or the input is degenerate).
+/// The depth is then tiny, and the direction matters more than its value: try the directions the
+/// simplex and the centres suggest, and keep the one along which A - B reaches least far past
+/// the origin (the same min-over-axes idea as SAT, over a handful of candidate axes).
+EpaResult fallbackContact(const ConvexProxy& a, const ConvexProxy& b, const Simplex& simplex) {
+    Vec3 candidates[16];
+    int count = 0;
+    const auto add = [&](const Vec3& direction) {
+        const Real length = direction.norm();
+        if (count + 2 <= 16 && length > 0 && isFinite(length)) {
+            candidates[count++] = direction / length;
+            candidates[count++] = -direction / length;
+        }
+    };
+    if (simplex.count >= 3 && simplex.count <= 4) {
+        const Vec3& p0 = simplex.vertices[0].w;
+        add((simplex.vertices[1].w - p0).cross(simplex.vertices[2].w - p0));
+    }
+    if (simplex.count >= 2 && simplex.count <= 4) {
+        const Vec3 edge = simplex.vertices[1].w - simplex.vertices[0].w;
+        add(edge.cross(Vec3::UnitX()));
+        add(edge.cross(Vec3::UnitY()));
+    }
+    add(b.center() - a.center());
+    add(Vec3::UnitX());
+    add(Vec3::UnitY());
+    add(Vec3::UnitZ());
+
     EpaResult result;
     result.exit = EpaExit::Degenerate;
-    const Vec3 between = b.center() - a.center();
-    const Real length = between.norm();
-    result.normal = length > 0 && isFinite(length) ? Vec3(between / length) : Vec3(Vec3::UnitY());
-    int nearest = -1;
-    for (int i = 0; i < simplex.count; ++i) {
-        if (isFinite(simplex.vertices[i].w) &&
-            (nearest < 0 || simplex.vertices[i].w.squaredNorm() < simplex.vertices[nearest].w.squaredNorm())) {
-            nearest = i;
-        }
+    Real best = kRealMax;
+    for (int i = 0; i < count; ++i) {
+        const SupportPoint support = minkowskiSupport(a, b, candidates[i]);
+        const Real reach = candidates[i].dot(support.w);
+        if (!(reach < best) || !isFinite(support.w)) continue;
+        best = reach;
+        result.normal = candidates[i];
+        // Each shape's own extreme point: on its surface, apart only across the contact plane
+        // and, where the touching features are wide, along it.
+        result.pointA = support.onA;
+        result.pointB = support.onB;
+        for (SupportPoint& corner : result.closestFace) corner = support;
     }
-    if (nearest >= 0) {
-        result.pointA = simplex.vertices[nearest].onA;
-        result.pointB = simplex.vertices[nearest].onB;
-        for (SupportPoint& corner : result.closestFace) corner = simplex.vertices[nearest];
-    } else {
-        result.pointA = result.pointB = Real(0.5) * (a.center() + b.center());
-    }
+    result.depth = best < kRealMax ? std::max(best, Real(0)) : Real(0);
     if (!isFinite(result.pointA) || !isFinite(result.pointB)) result.pointA = result.pointB = Vec3::Zero();
     return result;
 }
@@ -373,21 +412,28 @@ EpaResult touchingResult(const ConvexProxy& a, const ConvexProxy& b, const Simpl
 // [ch03-loop]
 EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simplex& simplex,
                          const EpaSettings& settings) {
-    if (simplex.count < 1 || simplex.count > 4) return touchingResult(a, b, simplex);
+    if (simplex.count < 1 || simplex.count > 4) return fallbackContact(a, b, simplex);
 
     // The tolerance is relative to the pair's size (GJK's scale: the sum of the bounding radii);
     // below a few ulps of that size a float cannot tell a gap from round-off, so it never asks
     // for less.
     EpaContext context{a, b, gjkTolerances(a, b).scale};
-    if (!(context.scale > 0) || !isFinite(context.scale)) return touchingResult(a, b, simplex);
+    if (!(context.scale > 0) || !isFinite(context.scale)) return fallbackContact(a, b, simplex);
     const Real tolerance = std::max(settings.relativeTolerance, kRoundOff) * context.scale;
 
     SupportPoint points[4];
     std::copy(simplex.vertices, simplex.vertices + simplex.count, points);
     EpaPolytope polytope;
+    // Room for every vertex and face the iteration cap allows (each expansion adds one vertex
+    // and at most two faces net), so the loop never reallocates.
+    const int expansionLimit = std::max(0, settings.maxIterations);
+    polytope.vertices.reserve(4 + expansionLimit);
+    polytope.faces.reserve(4 + 2 * expansionLimit);
     if (!seedTetrahedron(context, points, simplex.count) || !initPolytope(polytope, points, context.scale)) {
-        return touchingResult(a, b, simplex);
+        return fallbackContact(a, b, simplex);
     }
+
+    ExpansionScratch scratch;
 
     EpaResult result;
     int closest = closestFace(polytope);
@@ -415,7 +461,7 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
         // A point already in the polytope, or a horizon broken by round-off, means the polytope
         // has stopped growing: the current face is as good as this precision allows.
         if (isDuplicate(polytope, support.w, context.scale) ||
-            !expandPolytope(polytope, closest, support, context.scale)) {
+            !expandPolytope(polytope, closest, support, context.scale, scratch)) {
             result.exit = EpaExit::NoProgress;
             break;
         }

@@ -1,5 +1,22 @@
-// Placeholder while chapter 03 is written; replaced by the chapter's real registration.
+// Chapter 3 registers its demo scenes, its pipeline (chapter 2's with a contact-making
+// narrowphase), the penetration probe of run reports, the EPA bench and `stepwise collide`.
+#include "03_epa/bench_epa.h"
+#include "03_epa/chapter.h"
+#include "03_epa/collide_command.h"
+#include "03_epa/scenes.h"
 #include "app/registry.h"
+
 namespace stepwise {
-void registerChapter03(Registry&) {}
+
+void registerChapter03(Registry& registry) {
+    addChapter03Scenes(registry);
+    registry.addPipeline(PipelineEntry{3, makeChapter03Pipeline});
+    registry.setPenetrationProbe(PenetrationProbe{3, measureDeepestPenetration});
+    registry.addBench(BenchEntry{"epa", 3,
+                                 "EPA depth error against run time as tolerance and iteration cap vary; extents "
+                                 "against vertex support (work-precision)",
+                                 runEpaBench});
+    registry.addCommand(CommandEntry{3, installCollideCommand});
+}
+
 }  // namespace stepwise

@@ -43,7 +43,15 @@ static ConstraintRow contactRow(int bodyA, int bodyB, const Vec3& direction, con
 }
 // [ch04-contact-row]
 
-ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt) {
+// The relative velocity of the two material points at `at`.
+static Vec3 relativeVelocityAt(const SolverBody& bodyA, const SolverBody& bodyB, const Vec3& at) {
+    return bodyB.linearVelocity + bodyB.angularVelocity.cross(at - bodyB.center) - bodyA.linearVelocity -
+           bodyA.angularVelocity.cross(at - bodyA.center);
+}
+
+ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt,
+                             const std::vector<SolverBody>* approachBodies) {
+    if (approachBodies && approachBodies->size() != bodies.size()) approachBodies = nullptr;
     const Settings& settings = world.settings;
     const Real inverseDt = dt > 0 ? 1 / dt : 0;
     ContactRows result;
@@ -68,9 +76,12 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
             const Vec3 at = Real(0.5) * (point.pointA + point.pointB);
             const Vec3 armA = at - bodyA.center;
             const Vec3 armB = at - bodyB.center;
-            const Vec3 relativeVelocity = bodyB.linearVelocity + bodyB.angularVelocity.cross(armB) -
-                                          bodyA.linearVelocity - bodyA.angularVelocity.cross(armA);
+            const Vec3 relativeVelocity = relativeVelocityAt(bodyA, bodyB, at);
             const Real normalVelocity = normal.dot(relativeVelocity);
+            const Real approachVelocity =
+                approachBodies ? normal.dot(relativeVelocityAt((*approachBodies)[contact.bodyA],
+                                                               (*approachBodies)[contact.bodyB], at))
+                               : normalVelocity;
 
             // [ch04-normal-target]
             // Baumgarte: ask for a separating speed that removes the fraction beta of the
@@ -81,12 +92,12 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
                 target = settings.baumgarte * inverseDt * (point.depth - settings.slop);
             else if (point.depth < 0)
                 target = point.depth * inverseDt;
-            // Restitution from the approach speed before the solve (Box2D's "relax" velocity), and
-            // only above the threshold, so resting bodies do not bounce on gravity's own speed.
-            // The larger of the two targets wins: adding them would bounce a deep contact higher
-            // than the restitution law allows.
-            if (normalVelocity < -settings.restitutionThreshold)
-                target = std::max(target, -restitution * normalVelocity);
+            // Restitution reverses the approach speed from before this step's forces (Box2D's
+            // "relax" velocity), and only above the threshold, so resting bodies do not bounce on
+            // gravity's own speed. The larger of the two targets wins: adding them would bounce a
+            // deep contact higher than the restitution law allows.
+            if (approachVelocity < -settings.restitutionThreshold)
+                target = std::max(target, -restitution * approachVelocity);
             // [ch04-normal-target]
 
             // [ch04-drop-separating]
@@ -103,22 +114,21 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
             ref.pointIndex = pointIndex;
             frictionDirections(normal, relativeVelocity, ref.tangent[0], ref.tangent[1]);
 
-            // Friction rows first, then the normal row they refer to (Box2D's order: the normal
-            // row, solved last, has the final word on penetration within each sweep).
-            const int firstRow = static_cast<int>(result.rows.size());
-            ref.normalRow = firstRow + 2;
-            for (int k = 0; k < 2; ++k) {
-                ConstraintRow row = contactRow(contact.bodyA, contact.bodyB, ref.tangent[k], armA, armB);
-                row.boundRow = ref.normalRow;
-                row.boundScale = friction;
-                ref.tangentRow[k] = firstRow + k;
-                result.rows.push_back(row);
-            }
+            // The normal row first, then the friction rows bounded by it, so friction already has
+            // this sweep's normal impulse to work with, even in the first sweep.
             ConstraintRow normalRow = contactRow(contact.bodyA, contact.bodyB, normal, armA, armB);
             normalRow.bias = target;
             normalRow.lower = 0;
             normalRow.upper = kRealMax;
+            ref.normalRow = static_cast<int>(result.rows.size());
             result.rows.push_back(normalRow);
+            for (int k = 0; k < 2; ++k) {
+                ConstraintRow row = contactRow(contact.bodyA, contact.bodyB, ref.tangent[k], armA, armB);
+                row.boundRow = ref.normalRow;
+                row.boundScale = friction;
+                ref.tangentRow[k] = static_cast<int>(result.rows.size());
+                result.rows.push_back(row);
+            }
             result.points.push_back(ref);
         }
     }
@@ -173,11 +183,11 @@ int storeContactImpulses(World& world, const ContactRows& contactRows) {
     return removed;
 }
 
-SolveStats solveContacts(World& world, Real dt) {
+SolveStats solveContacts(World& world, Real dt, const std::vector<SolverBody>* approachBodies) {
     SolveStats stats;
     for (const Contact& contact : world.contacts) stats.contactPoints += contact.pointCount;
     std::vector<SolverBody> bodies = gatherSolverBodies(world);
-    ContactRows contactRows = buildContactRows(world, bodies, dt);
+    ContactRows contactRows = buildContactRows(world, bodies, dt, approachBodies);
     solveRows(contactRows.rows, bodies, world.settings.solver, std::max(0, world.settings.solverIterations));
     stats.rows = static_cast<int>(contactRows.rows.size());
     stats.separatingDropped = contactRows.separatingDropped;

@@ -42,7 +42,13 @@ void frictionDirections(const Vec3& normal, const Vec3& relativeVelocity, Vec3& 
 
 /// Builds the rows of every contact point in World::contacts for a step of dt, with effective
 /// masses filled in, against velocities as `bodies` holds them (after gravity, before the solve).
-ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt);
+/// `approachBodies`, when given, holds the velocities from before this step's forces: the
+/// approach speed that restitution reverses is taken from them, as Box2D does (its contact
+/// "relax" velocity is measured before the velocity integration). Without them the approach
+/// speed includes this step's gravity, and a ball with e = 1 gains about v dt of height per
+/// bounce (tests/ch04/bounce_test.cpp).
+ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt,
+                             const std::vector<SolverBody>* approachBodies = nullptr);
 
 /// Copies the solved impulses into World::contacts (normalImpulse; tangentImpulse in the fixed
 /// basis u1 = anyPerpendicular(normal), u2 = normal x u1, so the numbers do not depend on the
@@ -61,7 +67,8 @@ struct SolveStats {
 };
 
 /// The chapter's stage: gather velocities, build rows, iterate (Settings::solver,
-/// Settings::solverIterations), write velocities and impulses back.
-SolveStats solveContacts(World& world, Real dt);
+/// Settings::solverIterations), write velocities and impulses back. `approachBodies` as for
+/// buildContactRows (ignored unless it has one entry per body).
+SolveStats solveContacts(World& world, Real dt, const std::vector<SolverBody>* approachBodies = nullptr);
 
 }  // namespace stepwise

@@ -4,6 +4,8 @@
 #include "03_epa/chapter.h"
 #include "04_pgs/contact_constraints.h"
 
+#include <memory>
+
 namespace stepwise {
 
 const char* toString(StepOrder order) {
@@ -26,11 +28,19 @@ Pipeline makeChapter04Pipeline(const World& world) { return makeChapter04Pipelin
 Pipeline makeChapter04Pipeline(const World& world, StepOrder order) {
     Pipeline pipeline = makeChapter03Pipeline(world);
 
+    // The velocities from before this step's forces, for restitution's approach speed. The
+    // velocity stage fills them, the solve stage uses them once and clears them (so a disabled
+    // velocity stage cannot leave stale ones behind).
+    auto approach = std::make_shared<std::vector<SolverBody>>();
+
     Stage solve;
     solve.name = solveStageName(world.settings.solver);
     // The stage reads Settings::solver every step, so the demo's toggle takes effect at once; the
     // name says which solver the world asked for when the pipeline was planned.
-    solve.run = [](World& stepWorld, Real dt) { solveContacts(stepWorld, dt); };
+    solve.run = [approach](World& stepWorld, Real dt) {
+        solveContacts(stepWorld, dt, approach->empty() ? nullptr : approach.get());
+        approach->clear();
+    };
 
     if (order == StepOrder::IntegrateFirst) {
         pipeline.add(std::move(solve));
@@ -43,7 +53,8 @@ Pipeline makeChapter04Pipeline(const World& world, StepOrder order) {
     // (see the page for the measurement against IntegrateFirst).
     Stage velocities;
     velocities.name = "integrate:velocities";
-    velocities.run = [](World& stepWorld, Real dt) {
+    velocities.run = [approach](World& stepWorld, Real dt) {
+        *approach = gatherSolverBodies(stepWorld);
         applyForces(stepWorld);
         integrateVelocities(stepWorld, dt);
     };

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -20,11 +21,12 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-/// The shortest decimal that reads back as the same Real: 0.5f prints 0.5, not 0.5000000000.
+/// The shortest decimal that reads back as the same Real: 0.1f prints 0.1, not 0.10000000149.
 /// Non-finite values become null (JSON has no NaN), and the report adds a warning for them.
 Json number(Real value) {
     if (!std::isfinite(value)) return nullptr;
-    if (value == 0) return 0.0;  // also turns -0 into 0
+    // Whole numbers print as integers ("1", not "1.0"), like the scene files; this also turns -0 into 0.
+    if (std::floor(value) == value && std::abs(value) < Real(1e15)) return std::int64_t(value);
     if constexpr (std::is_same_v<Real, float>) {
         char text[32];
         for (int digits = 6; digits <= 9; ++digits) {

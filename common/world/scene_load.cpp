@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -438,8 +439,9 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
 }
 
 /// The shortest decimal that reads back as the same Real: 0.1f saves as 0.1, not 0.10000000149.
-double tidy(Real value) {
-    if (value == 0) return 0.0;  // also turns -0 into 0
+/// Whole numbers print as integers ("1", not "1.0"); this also turns -0 into 0.
+Json tidy(Real value) {
+    if (std::floor(value) == value && std::abs(value) < Real(1e15)) return std::int64_t(value);
     if constexpr (std::is_same_v<Real, float>) {
         char text[32];
         for (int digits = 6; digits <= 9; ++digits) {

@@ -4,15 +4,20 @@
 #include "01_integrators/chapter.h"
 #include "01_integrators/forces.h"
 #include "01_integrators/integrate.h"
+#include "01_integrators/rotation.h"
 #include "01_integrators/scenes.h"
 #include "support/fixture.h"
 
 #include <catch2/catch.hpp>
 
+#include <random>
+
 using namespace stepwise;
 using namespace stepwise::test;
 
 namespace {
+
+bool isDoubleBuild() { return sizeof(Real) == sizeof(double); }
 
 struct SpinRecord {
     double initialMomentum = 0, initialEnergy = 0;
@@ -94,5 +99,67 @@ TEST_CASE("RK4 and Verlet integrate Euler's equations: the T-handle flips for th
         CHECK(record.flips >= 2);
         CHECK(record.worstMomentumChange < 1e-2);
         CHECK(record.worstEnergyChange < 1e-2);
+    }
+}
+
+TEST_CASE("one Newton step of the midpoint rule keeps energy / |L|^2, and the rescaled step keeps both",
+          "[ch01][rotation]") {
+    // Random inertias, spins and steps (seeded), including steps far too large for accuracy.
+    std::mt19937 random(7);
+    auto uniform = [&](double low, double high) { return Real(low + (high - low) * (random() / 4294967295.0)); };
+    for (int trial = 0; trial < 50; ++trial) {
+        const Mat3 inertia = Vec3(uniform(0.1, 2), uniform(0.1, 2), uniform(0.1, 2)).asDiagonal();
+        const Vec3 omega(uniform(-20, 20), uniform(-20, 20), uniform(-20, 20));
+        const Quat rotation = Quat(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)).normalized();
+        const Real h = uniform(0.001, 0.5);
+        auto invariants = [&](const Vec3& worldOmega) {
+            const Vec3 bodyOmega = rotation.conjugate() * worldOmega;
+            const double momentum = (inertia * bodyOmega).cast<double>().norm();
+            const double energy = 0.5 * bodyOmega.cast<double>().dot((inertia * bodyOmega).cast<double>());
+            return std::make_pair(momentum, energy);
+        };
+        const auto before = invariants(omega);
+        const auto after = invariants(gyroscopicStepImplicit(omega, rotation, inertia, h));
+        INFO("trial " << trial << " h " << h);
+        const double tolerance = isDoubleBuild() ? 1e-12 : 1e-5;
+        CHECK(after.first == Approx(before.first).epsilon(tolerance));
+        CHECK(after.second == Approx(before.second).epsilon(tolerance));
+    }
+}
+
+TEST_CASE("Catto's backward-Euler gyroscopic step damps the T-handle; the midpoint step does not",
+          "[ch01][rotation]") {
+    auto momentumLoss = [](bool backwardEuler) {
+        World world = buildTHandle(GyroscopicMode::Off);
+        const double initial = angularMomentum(world, 0).norm();
+        const Real h = world.settings.dt;
+        const long frames = framesFor(world, 20.0);
+        for (long frame = 0; frame < frames; ++frame) {
+            Motion& motion = world.motions[0];
+            const Quat rotation = world.bodies[0].transform.rotation;
+            motion.angularVelocity = backwardEuler
+                                         ? gyroscopicStepBackwardEuler(motion.angularVelocity, rotation, motion.inertiaLocal, h)
+                                         : gyroscopicStepImplicit(motion.angularVelocity, rotation, motion.inertiaLocal, h);
+            integratePositions(world, h);
+        }
+        return 1 - angularMomentum(world, 0).norm() / initial;
+    };
+    const double backwardEulerLoss = momentumLoss(true);
+    const double midpointLoss = momentumLoss(false);
+    INFO("|L| lost over 20 s: backward Euler " << backwardEulerLoss << ", midpoint " << midpointLoss);
+    CHECK(backwardEulerLoss > 0.05);
+    CHECK(std::abs(midpointLoss) < 1e-4);
+}
+
+TEST_CASE("the implicit gyroscopic step stays bounded for very fast spins", "[ch01][rotation]") {
+    for (double spinRate : {60.0, 600.0, 6000.0}) {
+        World world = buildTHandle(GyroscopicMode::Implicit);
+        world.motions[0].angularVelocity = Vec3(Real(0.01 * spinRate), Real(0.002 * spinRate), Real(spinRate));
+        const double initial = angularMomentum(world, 0).norm();
+        Pipeline pipeline = makeChapter01Pipeline(world);
+        simulate(world, pipeline, 5.0);
+        INFO("spin " << spinRate << " rad/s");
+        CHECK(angularMomentum(world, 0).norm() == Approx(initial).epsilon(1e-3));
+        CHECK(world.bodies[0].transform.rotation.coeffs().allFinite());
     }
 }

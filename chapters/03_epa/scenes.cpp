@@ -1,0 +1,183 @@
+#include "03_epa/scenes.h"
+
+#include "02_gjk/chapter.h"
+#include "03_epa/narrowphase.h"
+#include "app/panel.h"
+#include "app/registry.h"
+#include "world/debug_draw.h"
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace stepwise {
+
+namespace {
+
+constexpr Real kMarkerHalfSize = Real(0.03);   // m, the red contact cubes
+constexpr Real kNormalLength = Real(0.6);      // m, the yellow arrow
+const Vec3 kPolytopeAnchor(Real(3.5), Real(1.5), 0);  // where the stepper draws A - B's origin
+
+int addKinematic(World& world, const std::string& name, const Shape& shape, const Vec3& position,
+                 const Quat& rotation, const Vec3& spin) {
+    BodyDef def;
+    def.name = name;
+    def.type = BodyType::Kinematic;
+    def.shape = shape;
+    def.transform.position = position;
+    def.transform.rotation = rotation;
+    def.angularVelocity = spin;
+    return addBody(world, def);
+}
+
+Quat tilt(Real x, Real y, Real z) {
+    return (Eigen::AngleAxis<Real>(x, Vec3::UnitX()) * Eigen::AngleAxis<Real>(y, Vec3::UnitY()) *
+            Eigen::AngleAxis<Real>(z, Vec3::UnitZ()))
+        .normalized();
+}
+
+void drawContactMarkers(const Vec3& pointA, const Vec3& pointB, const Vec3& normal, DebugDraw& draw) {
+    Transform marker;
+    marker.position = pointA;
+    draw.box(marker, Vec3::Constant(kMarkerHalfSize), colors::kRed, Fill::Solid);
+    marker.position = pointB;
+    draw.box(marker, Vec3::Constant(kMarkerHalfSize), colors::kRed, Fill::Solid);
+    draw.arrow(pointB, pointB + kNormalLength * normal, colors::kYellow);
+}
+
+std::string describe(const char* format, double value) {
+    char text[96];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+/// Shared by the stepper's panel (which writes it) and its draw hook (which reads it).
+struct StepperState {
+    int expansions = 0;
+    bool converged = false;   // show the finished polytope instead of `expansions`
+    bool spin = true;
+    EpaResult last;
+};
+
+}  // namespace
+
+World buildEpaStepper() {
+    World world;
+    world.name = "epa-step-by-step";
+    world.settings.gravity = Vec3::Zero();
+    addKinematic(world, "a", Shape::box(Vec3(Real(0.8), Real(0.5), Real(0.6))), Vec3(0, 1, 0), tilt(0, Real(0.3), 0),
+                 Vec3::Zero());
+    addKinematic(world, "b", Shape::box(Vec3(Real(0.5), Real(0.4), Real(0.5))), Vec3(Real(0.7), Real(1.6), Real(0.2)),
+                 tilt(Real(0.5), Real(0.2), Real(0.7)), Vec3(Real(0.1), Real(0.25), 0));
+    return world;
+}
+
+World buildContactGallery() {
+    World world;
+    world.name = "epa-contact-gallery";
+    world.settings.gravity = Vec3::Zero();
+    const Shape box = Shape::box(Vec3(Real(0.5), Real(0.35), Real(0.4)));
+    const Shape sphere = Shape::sphere(Real(0.45));
+    const Shape capsule = Shape::capsule(Real(0.25), Real(0.45));
+    const Shape hull = Shape::convex({Vec3(0, Real(0.6), 0), Vec3(Real(0.5), Real(-0.3), Real(0.3)),
+                                      Vec3(Real(-0.5), Real(-0.3), Real(0.3)), Vec3(0, Real(-0.3), Real(-0.55)),
+                                      Vec3(0, Real(-0.1), Real(0.6))});
+    // One pair per lane along x; B sits a little too close to A and turns, so the contact moves.
+    const Shape lanes[6][2] = {{box, box}, {box, sphere}, {sphere, sphere}, {capsule, capsule}, {capsule, box}, {hull, box}};
+    const char* names[6] = {"box-box", "box-sphere", "sphere-sphere", "capsule-capsule", "capsule-box", "hull-box"};
+    for (int lane = 0; lane < 6; ++lane) {
+        const Vec3 base(Real(2.2) * (lane - Real(2.5)), 1, 0);
+        const std::string name = names[lane];
+        addKinematic(world, name + "-a", lanes[lane][0], base, tilt(Real(0.2), Real(0.1) * lane, 0), Vec3::Zero());
+        addKinematic(world, name + "-b", lanes[lane][1], base + Vec3(Real(0.15), Real(0.75), Real(0.1)),
+                     tilt(Real(0.4), 0, Real(0.3)), Vec3(Real(0.2), Real(0.5), Real(0.1)));
+    }
+    return world;
+}
+
+// [ch03-demo-draw]
+EpaResult drawEpaStep(const World& world, int bodyA, int bodyB, int expansions, const Vec3& polytopeAnchor,
+                      DebugDraw& draw) {
+    const ConvexProxy a = makeProxy(world.bodies[bodyA]);
+    const ConvexProxy b = makeProxy(world.bodies[bodyB]);
+    const GjkResult gjk = gjkIntersect(a, b);
+    if (!gjk.intersect) {
+        draw.text(polytopeAnchor, "GJK: separated, nothing for EPA to do", colors::kWhite);
+        return EpaResult{};
+    }
+    EpaSettings settings;
+    settings.maxExpansions = expansions;
+    settings.keepPolytope = true;
+    const EpaResult epa = epaPenetration(a, b, gjk.simplex, settings);
+
+    // The polytope lives in the space of A - B, around its origin; draw it beside the bodies.
+    for (const EpaFace& face : epa.polytope.faces) {
+        if (face.removed) continue;
+        for (int i = 0; i < 3; ++i) {
+            draw.line(polytopeAnchor + epa.polytope.vertices[face.vertices[i]].w,
+                      polytopeAnchor + epa.polytope.vertices[face.vertices[(i + 1) % 3]].w, colors::kGrey);
+        }
+    }
+    draw.triangle(polytopeAnchor + epa.closestFace[0].w, polytopeAnchor + epa.closestFace[1].w,
+                  polytopeAnchor + epa.closestFace[2].w, colors::kBlue);
+    draw.point(polytopeAnchor, 8, colors::kWhite);
+    draw.arrow(polytopeAnchor, polytopeAnchor + epa.depth * epa.normal, colors::kYellow);
+    draw.text(polytopeAnchor + Vec3(0, Real(-2.2), 0),
+              "A - B after " + std::to_string(epa.iterations) + " expansions (" + toString(epa.exit) + ")" +
+                  describe(", depth %.5f m", double(epa.depth)),
+              colors::kWhite);
+
+    // Back in the world: the two contact points and the normal from A to B.
+    drawContactMarkers(epa.pointA, epa.pointB, epa.normal, draw);
+    return epa;
+}
+// [ch03-demo-draw]
+
+void addChapter03Scenes(Registry& registry) {
+    auto state = std::make_shared<StepperState>();
+    SceneEntry stepper;
+    stepper.name = "epa-step-by-step";
+    stepper.chapter = 3;
+    stepper.category = "Contacts";
+    stepper.observe = "Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right) "
+                      "closes in on the boundary; red cubes mark the contact points, the yellow arrow the normal.";
+    stepper.build = buildEpaStepper;
+    stepper.draw = [state](const World& world, DebugDraw& draw) {
+        state->last = drawEpaStep(world, 0, 1, state->converged ? -1 : state->expansions, kPolytopeAnchor, draw);
+    };
+    stepper.panel = [state](World& world, Panel& panel) {
+        panel.sliderInt("EPA expansions", state->expansions, 0, EpaSettings{}.maxIterations);
+        if (panel.button("step")) state->expansions = std::min(state->expansions + 1, EpaSettings{}.maxIterations);
+        if (panel.button("reset")) state->expansions = 0;
+        panel.checkbox("run to convergence", state->converged);
+        if (panel.checkbox("turn box b", state->spin)) {
+            world.motionOf(1)->angularVelocity = state->spin ? Vec3(Real(0.1), Real(0.25), 0) : Vec3(Vec3::Zero());
+        }
+        panel.text(std::string("EPA stopped: ") + toString(state->last.exit) + " after " +
+                   std::to_string(state->last.iterations) + " expansions");
+        panel.text(describe("depth %.6f m", double(state->last.depth)));
+    };
+    registry.addScene(std::move(stepper));
+
+    SceneEntry gallery;
+    gallery.name = "epa-contact-gallery";
+    gallery.chapter = 3;
+    gallery.category = "Contacts";
+    gallery.observe = "Six shape pairs turning into each other; each label names the routine that found the "
+                      "contact (closed form or GJK + EPA), red cubes mark the points, yellow arrows the normals.";
+    gallery.build = buildContactGallery;
+    gallery.draw = [](const World& world, DebugDraw& draw) {
+        for (std::size_t i = 0; i + 1 < world.bodies.size(); i += 2) {
+            const Body& a = world.bodies[i];
+            const Body& b = world.bodies[i + 1];
+            const ContactQuery query = collideShapes(a.shape, a.transform, b.shape, b.transform);
+            const Vec3 label = a.transform.position + Vec3(0, Real(-1.1), 0);
+            draw.text(label, std::string(query.routine) + (query.intersect ? describe(" %.3f m", double(query.depth)) : " apart"),
+                      colors::kWhite);
+            if (query.intersect) drawContactMarkers(query.pointA, query.pointB, query.normal, draw);
+        }
+    };
+    registry.addScene(std::move(gallery));
+}
+
+}  // namespace stepwise

@@ -1,0 +1,247 @@
+// Checks a demo screenshot for content, natively (no wine): the image is not blank, at least
+// one body and (when the scene has one) the ground show in their colours where the camera
+// puts them, and the ImGui panel is drawn. The demo writes IMAGE.txt next to the image with
+// those screen places (renderer_dx12/frame.cpp, writeExpectations), computed from the world
+// and the camera, never from the image.
+//   check_png IMAGE.png [EXPECTATIONS.txt]     screenshot check
+//   check_png --window SCREEN.xwd             the swap-chain test: a window with the shell shows
+// Exit 0 when every check passes, 1 with one line per failed check, 2 on bad input.
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb_image.h>
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgb;
+    const uint8_t* at(int x, int y) const { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
+};
+
+bool loadPng(const std::string& path, Image& image) {
+    int channels = 0;
+    uint8_t* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
+    if (!data) return false;
+    image.rgb.assign(data, data + static_cast<size_t>(image.width) * image.height * 3);
+    stbi_image_free(data);
+    return true;
+}
+
+uint32_t bigEndian(const std::vector<uint8_t>& bytes, size_t offset) {
+    return (uint32_t(bytes[offset]) << 24) | (uint32_t(bytes[offset + 1]) << 16) | (uint32_t(bytes[offset + 2]) << 8) |
+           uint32_t(bytes[offset + 3]);
+}
+
+/// X Window Dump (xwd -root) of a 24-bit TrueColor screen: 32 bits per pixel.
+bool loadXwd(const std::string& path, Image& image) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (bytes.size() < 100) return false;
+    const uint32_t headerSize = bigEndian(bytes, 0), width = bigEndian(bytes, 16), height = bigEndian(bytes, 20);
+    const uint32_t byteOrder = bigEndian(bytes, 28), bitsPerPixel = bigEndian(bytes, 44), bytesPerLine = bigEndian(bytes, 48);
+    const uint32_t colors = bigEndian(bytes, 76);
+    const size_t pixels = size_t(headerSize) + size_t(colors) * 12;
+    if (bitsPerPixel != 32 || width == 0 || height == 0 || width > 16384 || height > 16384 ||
+        pixels + size_t(bytesPerLine) * height > bytes.size()) {
+        return false;
+    }
+    image.width = int(width);
+    image.height = int(height);
+    image.rgb.resize(size_t(width) * height * 3);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x) {
+            const uint8_t* p = &bytes[pixels + size_t(y) * bytesPerLine + size_t(x) * 4];
+            uint8_t* out = &image.rgb[(size_t(y) * width + x) * 3];
+            if (byteOrder == 0) {  // LSBFirst: B G R X
+                out[0] = p[2], out[1] = p[1], out[2] = p[0];
+            } else {  // MSBFirst: X R G B
+                out[0] = p[1], out[1] = p[2], out[2] = p[3];
+            }
+        }
+    }
+    return true;
+}
+
+/// Shaded pixels are the flat colour times a lighting factor: find that factor, then require
+/// it in [minShade, 1.15] and the rest of the pixel to match within a tolerance.
+bool matches(const uint8_t* pixel, const int expected[3], double minShade) {
+    double dotPe = 0, dotEe = 0;
+    for (int c = 0; c < 3; ++c) {
+        dotPe += double(pixel[c]) * expected[c];
+        dotEe += double(expected[c]) * expected[c];
+    }
+    if (dotEe <= 0) return false;
+    const double shade = dotPe / dotEe;
+    if (shade < minShade || shade > 1.15) return false;
+    for (int c = 0; c < 3; ++c)
+        if (std::abs(double(pixel[c]) - shade * expected[c]) > 28) return false;
+    return true;
+}
+
+bool matchesNear(const Image& image, int x, int y, const int expected[3], double minShade, int radius) {
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const int px = x + dx, py = y + dy;
+            if (px >= 0 && py >= 0 && px < image.width && py < image.height && matches(image.at(px, py), expected, minShade))
+                return true;
+        }
+    return false;
+}
+
+/// Not blank: many distinct colours, and a good share of pixels unlike the top-right corner.
+int checkNotBlank(const Image& image, std::vector<std::string>& failures) {
+    std::set<uint32_t> distinct;
+    const uint8_t* corner = image.at(image.width - 1, 0);
+    size_t different = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const uint8_t* p = image.at(x, y);
+            distinct.insert((uint32_t(p[0] >> 3) << 10) | (uint32_t(p[1] >> 3) << 5) | uint32_t(p[2] >> 3));
+            if (std::abs(p[0] - corner[0]) + std::abs(p[1] - corner[1]) + std::abs(p[2] - corner[2]) > 24) ++different;
+        }
+    const double share = double(different) / (double(image.width) * image.height);
+    if (distinct.size() < 40) failures.push_back("blank: only " + std::to_string(distinct.size()) + " distinct colours");
+    if (share < 0.05) failures.push_back("blank: only " + std::to_string(int(share * 100)) + "% of pixels differ from the background");
+    return static_cast<int>(distinct.size());
+}
+
+/// Dear ImGui's dark style: window background ~(15,15,15), title bar (41,74,122), light text.
+void checkPanel(const Image& image, int x0, int y0, int x1, int y1, std::vector<std::string>& failures) {
+    x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, image.width), y1 = std::min(y1, image.height);
+    size_t dark = 0, bright = 0, total = 0, title = 0, titleTotal = 0;
+    const int titleBlue[3] = {41, 74, 122};
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const uint8_t* p = image.at(x, y);
+            ++total;
+            if (std::max({p[0], p[1], p[2]}) < 45) ++dark;
+            if (std::min({p[0], p[1], p[2]}) > 170) ++bright;
+            if (y >= y0 + 3 && y <= y0 + 12) {
+                ++titleTotal;
+                if (matches(p, titleBlue, 0.85)) ++title;
+            }
+        }
+    if (total == 0) return failures.push_back("panel: empty rectangle");
+    if (dark < total * 4 / 10) failures.push_back("panel: background not drawn (" + std::to_string(100 * dark / total) + "% dark)");
+    if (bright < total / 200) failures.push_back("panel: no text drawn");
+    if (titleTotal == 0 || title < titleTotal / 2) failures.push_back("panel: no title bar");
+}
+
+int checkWindow(const std::string& path) {
+    Image image;
+    if (!loadXwd(path, image)) return std::cerr << "check_png: cannot read xwd '" << path << "'\n", 2;
+    std::vector<std::string> failures;
+    const int distinct = checkNotBlank(image, failures);
+    // The shell's title bar somewhere on screen: a run of its blue in many pixels.
+    const int titleBlue[3] = {41, 74, 122};
+    size_t title = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) title += matches(image.at(x, y), titleBlue, 0.85) ? 1 : 0;
+    if (title < 1500) failures.push_back("window: ImGui title bar not found (" + std::to_string(title) + " pixels)");
+    for (const std::string& failure : failures) std::cout << "FAIL " << failure << '\n';
+    std::cout << (failures.empty() ? "ok " : "failed ") << path << ": " << image.width << "x" << image.height << ", "
+              << distinct << " colours, " << title << " title-bar pixels\n";
+    return failures.empty() ? 0 : 1;
+}
+
+int checkScreenshot(const std::string& imagePath, const std::string& expectPath) {
+    Image image;
+    if (!loadPng(imagePath, image)) return std::cerr << "check_png: cannot read PNG '" << imagePath << "'\n", 2;
+    std::ifstream expectations(expectPath);
+    if (!expectations) return std::cerr << "check_png: cannot read '" << expectPath << "'\n", 2;
+
+    std::vector<std::string> failures;
+    const int distinct = checkNotBlank(image, failures);
+    int bodies = 0, bodyHits = 0, grounds = 0, groundHits = 0;
+    bool panel = false;
+    std::string line;
+    while (std::getline(expectations, line)) {
+        std::istringstream in(line);
+        std::string kind, name;
+        in >> kind;
+        if (kind == "size") {
+            int w = 0, h = 0;
+            in >> w >> h;
+            if (w != image.width || h != image.height) failures.push_back("size: image is not " + std::to_string(w) + "x" + std::to_string(h));
+        } else if (kind == "panel") {
+            float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+            in >> x0 >> y0 >> x1 >> y1;
+            checkPanel(image, int(x0), int(y0), int(x1), int(y1), failures);
+            panel = true;
+        } else if (kind == "body" || kind == "ground") {
+            int x = 0, y = 0, color[3] = {0, 0, 0};
+            double minShade = 0;
+            in >> name >> x >> y >> color[0] >> color[1] >> color[2] >> minShade;
+            if (!in) return std::cerr << "check_png: bad line '" << line << "'\n", 2;
+            const bool hit = matchesNear(image, x, y, color, minShade, 3);
+            (kind == "body" ? bodies : grounds) += 1;
+            (kind == "body" ? bodyHits : groundHits) += hit ? 1 : 0;
+            if (!hit) std::cout << "  " << kind << " '" << name << "' not seen at (" << x << ", " << y << ")\n";
+        }
+    }
+    if (!panel) failures.push_back("panel: the demo reported no ImGui panel");
+    if (bodies == 0) failures.push_back("bodies: no body in view per the camera");
+    else if (bodyHits == 0) failures.push_back("bodies: none of " + std::to_string(bodies) + " bodies shows its colour where the camera puts it");
+    if (grounds > 0 && groundHits == 0) failures.push_back("ground: not seen at any of " + std::to_string(grounds) + " places");
+    for (const std::string& failure : failures) std::cout << "FAIL " << failure << '\n';
+    std::cout << (failures.empty() ? "ok " : "failed ") << imagePath << ": " << distinct << " colours, bodies "
+              << bodyHits << "/" << bodies << ", ground " << groundHits << "/" << grounds << '\n';
+    return failures.empty() ? 0 : 1;
+}
+
+/// The checker must fail on a blank image and pass on one that has what the file promises.
+int selfTest(const std::string& folder) {
+    const int w = 320, h = 200;
+    std::vector<uint8_t> rgb(size_t(w) * h * 3);
+    auto fill = [&](int x0, int y0, int x1, int y1, uint8_t r, uint8_t g, uint8_t b) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                uint8_t* p = &rgb[(size_t(y) * w + x) * 3];
+                p[0] = r, p[1] = g, p[2] = b;
+            }
+    };
+    const std::string expect = "size 320 200\npanel 4 4 100 120\nbody cube 200 60 235 188 69 0.25\nground floor 200 170 140 140 148 0.55\n";
+    fill(0, 0, w, h, 41, 46, 54);
+    const std::string blank = folder + "/blank.png";
+    if (!stbi_write_png(blank.c_str(), w, h, 3, rgb.data(), w * 3)) return 2;
+    std::ofstream(blank + ".txt") << expect;
+    // A plausible frame: a shaded sky, a gradient floor, a shaded box, a panel with title bar and text rows.
+    for (int y = 0; y < 100; ++y)
+        for (int x = 0; x < w; x += 4) fill(x, y, x + 4, y + 1, uint8_t(41 + x / 4), 46, uint8_t(54 + y / 2));
+    for (int y = 100; y < h; ++y) fill(0, y, w, y + 1, uint8_t(100 + (y - 100) / 3), uint8_t(100 + (y - 100) / 3), uint8_t(106 + (y - 100) / 3));
+    fill(180, 40, 230, 90, 200, 160, 59);
+    fill(4, 4, 100, 120, 15, 15, 15);
+    fill(4, 4, 100, 18, 41, 74, 122);
+    for (int row = 30; row < 110; row += 12) fill(10, row, 90, row + 2, 230, 230, 230);
+    const std::string good = folder + "/good.png";
+    if (!stbi_write_png(good.c_str(), w, h, 3, rgb.data(), w * 3)) return 2;
+    std::ofstream(good + ".txt") << expect;
+    const int blankResult = checkScreenshot(blank, blank + ".txt");
+    const int goodResult = checkScreenshot(good, good + ".txt");
+    std::cout << "self-test: blank image -> " << blankResult << " (want 1), drawn image -> " << goodResult << " (want 0)\n";
+    return blankResult == 1 && goodResult == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc == 3 && std::string(argv[1]) == "--window") return checkWindow(argv[2]);
+    if (argc == 3 && std::string(argv[1]) == "--self-test") return selfTest(argv[2]);
+    if (argc < 2 || argc > 3) {
+        std::cerr << "usage: check_png IMAGE.png [EXPECTATIONS.txt] | --window SCREEN.xwd | --self-test FOLDER\n";
+        return 2;
+    }
+    return checkScreenshot(argv[1], argc == 3 ? argv[2] : std::string(argv[1]) + ".txt");
+}
