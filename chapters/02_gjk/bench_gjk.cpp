@@ -85,6 +85,7 @@ struct CaseMeasurement {
     double meanDistanceIterations = 0;
     double intersectingFraction = 0;
     std::map<int, int> iterationCounts;   // boolean query iterations -> how many queries
+    std::map<int, int> distanceIterationCounts;
 };
 
 struct CaseProxies {
@@ -111,7 +112,9 @@ void countIterations(const CaseProxies& proxies, CaseMeasurement& measurement) {
         iterationSum += result.iterations;
         measurement.maxIterations = std::max(measurement.maxIterations, result.iterations);
         intersecting += result.intersect ? 1 : 0;
-        distanceIterationSum += gjkDistance(proxies.a[i], proxies.b[i]).iterations;
+        const int distanceIterations = gjkDistance(proxies.a[i], proxies.b[i]).iterations;
+        ++measurement.distanceIterationCounts[distanceIterations];
+        distanceIterationSum += distanceIterations;
     }
     measurement.meanIterations = double(iterationSum) / count;
     measurement.meanDistanceIterations = double(distanceIterationSum) / count;
@@ -144,25 +147,51 @@ std::string escapeXml(const std::string& text) {
     return out;
 }
 
-// The terminal form of the tables, typeset as a monospace SVG figure the page can show.
-void writeSvgText(const std::string& path, const std::vector<std::string>& lines) {
-    size_t widest = 0;
-    for (const std::string& line : lines) widest = std::max(widest, line.size());
-    const double lineHeight = 16, charWidth = 7.3;
+// A titled table for the SVG figure.
+struct FigureTable {
+    std::vector<std::string> notes;   // lines of text above the table
+    const CsvTable* table = nullptr;
+};
+
+// The tables as an SVG figure the chapter page can show (Doxygen includes images, not CSV): one
+// <text> per cell, columns placed by their widest cell, so no renderer needs a monospace font.
+void writeSvgTables(const std::string& path, const std::vector<FigureTable>& figures) {
+    const double lineHeight = 17, charWidth = 7.0, margin = 10;
+    std::ostringstream body;
+    double y = margin + 12, width = 0;
+    auto textAt = [&](double x, const std::string& text, bool bold) {
+        body << "<text x=\"" << x << "\" y=\"" << y << "\"" << (bold ? " font-weight=\"bold\"" : "") << ">"
+             << escapeXml(text) << "</text>\n";
+    };
+    for (const FigureTable& figure : figures) {
+        for (const std::string& note : figure.notes) {
+            textAt(margin, note, false);
+            width = std::max(width, 2 * margin + charWidth * double(note.size()));
+            y += lineHeight;
+        }
+        const CsvTable& table = *figure.table;
+        std::vector<double> columnX;
+        double x = margin;
+        for (size_t c = 0; c < table.columns().size(); ++c) {
+            size_t widest = table.columns()[c].size();
+            for (const auto& row : table.rows()) widest = std::max(widest, c < row.size() ? row[c].size() : 0);
+            columnX.push_back(x);
+            x += charWidth * double(widest + 2);
+        }
+        width = std::max(width, x + margin);
+        for (size_t c = 0; c < table.columns().size(); ++c) textAt(columnX[c], table.columns()[c], true);
+        y += lineHeight;
+        for (const auto& row : table.rows()) {
+            for (size_t c = 0; c < row.size() && c < columnX.size(); ++c) textAt(columnX[c], row[c], false);
+            y += lineHeight;
+        }
+        y += lineHeight;
+    }
     std::ofstream file(path, std::ios::binary);
     if (!file) throw std::runtime_error("cannot write '" + path + "'");
-    file << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 20 + charWidth * double(widest) << "\" height=\""
-         << 20 + lineHeight * double(lines.size()) << "\" font-family=\"monospace\" font-size=\"12\">\n"
-         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    for (size_t i = 0; i < lines.size(); ++i)
-        file << "<text x=\"10\" y=\"" << 22 + lineHeight * double(i) << "\" xml:space=\"preserve\">" << escapeXml(lines[i])
-             << "</text>\n";
-    file << "</svg>\n";
-}
-
-void appendLines(std::vector<std::string>& lines, const std::string& text) {
-    std::istringstream stream(text);
-    for (std::string line; std::getline(stream, line);) lines.push_back(line);
+    file << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << y
+         << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+         << body.str() << "</svg>\n";
 }
 
 }  // namespace
@@ -178,7 +207,7 @@ int runGjkBench(const BenchOptions& options) {
                      "mean_distance_iterations", "intersecting"});
     CsvTable iterations({"pair", "support", "iterations", "fraction"});
     PlotSpec plot;
-    plot.title = "GJK boolean query: iterations per query";
+    plot.title = "GJK: support points per query (boolean unless marked distance)";
     plot.xLabel = "support points evaluated";
     plot.yLabel = "fraction of queries";
     plot.logX = false;
@@ -211,27 +240,45 @@ int runGjkBench(const BenchOptions& options) {
         }
         plot.series.push_back(series);
     }
+    // One distance-query distribution for comparison: it cannot stop at a separating plane.
+    PlotSeries distanceSeries;
+    distanceSeries.title = "box-box extents, distance";
+    for (const auto& [count, queries] : measurements[0].distanceIterationCounts) {
+        distanceSeries.x.push_back(count);
+        distanceSeries.y.push_back(double(queries) / double(pairCount));
+    }
+    plot.series.push_back(distanceSeries);
     // [ch02-bench-timing]
 
     // [ch02-bench-classification]
-    CsvTable classification({"gap_m", "pairs", "wrong_extents", "wrong_vertices", "unclean_extents", "unclean_vertices",
-                             "newest_dropped_extents", "newest_dropped_vertices"});
-    for (const GapClassification& row : classifyNearContact(0x5EED02u, nearContactGaps(), pairsPerGap))
-        classification.addRow({formatNumber(row.gap, 2), std::to_string(row.pairs), std::to_string(row.wrong[0]),
-                               std::to_string(row.wrong[1]), std::to_string(row.nonCleanExits[0]),
-                               std::to_string(row.nonCleanExits[1]), std::to_string(row.newestDropped[0]),
-                               std::to_string(row.newestDropped[1])});
+    // Columns per variant: wrong answers, exits other than intersect/separated, and queries in
+    // which the newest support point was dropped (a region the "skip" shortcut never tests).
+    std::vector<std::string> columns = {"gap_m", "pairs", "touching_m"};
+    for (const char* what : {"wrong", "unclean", "dropped"})
+        for (const char* variant : {"ext", "vert", "ext_sum"}) columns.push_back(std::string(what) + "_" + variant);
+    CsvTable classification(columns);
+    for (const GapClassification& row : classifyNearContact(0x5EED02u, nearContactGaps(), pairsPerGap)) {
+        std::vector<std::string> cells = {formatNumber(row.gap, 2), std::to_string(row.pairs),
+                                          formatNumber(row.touchingTolerance, 2)};
+        for (const int* counts : {row.wrong, row.nonCleanExits, row.newestDropped})
+            for (int variant = 0; variant < kVariantCount; ++variant) cells.push_back(std::to_string(counts[variant]));
+        classification.addRow(cells);
+    }
     // [ch02-bench-classification]
 
     const std::string precision = sizeof(Real) == 4 ? "float" : "double";
-    std::vector<std::string> lines;
-    lines.push_back("GJK per query (" + std::to_string(pairCount) + " random box-sized pairs, Real = " + precision + ", best of " +
-                    std::to_string(repetitions) + " runs)");
-    appendLines(lines, timing.toText());
-    lines.push_back("");
-    lines.push_back("Near-contact box pairs: wrong answers per support map (gap > 0: false positives, gap < 0: false negatives)");
-    appendLines(lines, classification.toText());
-    for (const std::string& line : lines) out << line << "\n";
+    const std::vector<FigureTable> figures = {
+        {{"GJK per query: " + std::to_string(pairCount) + " random box-sized pairs, Real = " + precision + ", best of " +
+          std::to_string(repetitions) + " runs"},
+         &timing},
+        {{"Near-contact box pairs (gap > 0: wrong = false positive, gap < 0: wrong = false negative)",
+          "ext = extents support, vert = vertex loop, ext_sum = extents with the barycentric-sum face point",
+          "unclean = exit other than intersect/separated; dropped = newest support point not kept"},
+         &classification}};
+    for (const FigureTable& figure : figures) {
+        for (const std::string& note : figure.notes) out << note << "\n";
+        out << figure.table->toText() << "\n";
+    }
 
     try {
         if (!options.csvPath.empty()) {
@@ -241,7 +288,7 @@ int runGjkBench(const BenchOptions& options) {
         }
         if (!options.plotPath.empty()) {
             writeSvgPlot(options.plotPath, plot);
-            writeSvgText(withSuffix(options.plotPath, ".svg", "-table"), lines);
+            writeSvgTables(withSuffix(options.plotPath, ".svg", "-table"), figures);
         }
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << "\n";

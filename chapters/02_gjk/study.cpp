@@ -4,6 +4,15 @@
 
 namespace stepwise {
 
+const char* variantName(int variant) {
+    switch (variant) {
+        case kExtents: return "extents";
+        case kVertices: return "vertices";
+        case kExtentsBarycentricSum: return "extents, barycentric-sum face point";
+        default: return "?";
+    }
+}
+
 std::vector<double> nearContactGaps() {
     std::vector<double> gaps;
     for (double magnitude : {1e-2, 1e-3, 1e-4, 3e-5, 1e-5, 1e-6, 1e-7}) gaps.push_back(magnitude);
@@ -23,14 +32,18 @@ std::vector<GapClassification> classifyNearContact(std::uint32_t seed, const std
             ++row.pairs;
             const Shape boxA = Shape::box(pair.halfExtentsA);
             const Shape boxB = Shape::box(pair.halfExtentsB);
-            for (int m = 0; m < 2; ++m) {
-                const SupportMode mode = m == 0 ? SupportMode::Extents : SupportMode::Vertices;
-                const GjkResult result = gjkIntersect(ConvexProxy{&boxA, pair.poseA, mode}, ConvexProxy{&boxB, pair.poseB, mode});
+            row.touchingTolerance += gjkTolerances(ConvexProxy{&boxA, pair.poseA}, ConvexProxy{&boxB, pair.poseB}).touching;
+            for (int m = 0; m < kVariantCount; ++m) {
+                const SupportMode mode = m == kVertices ? SupportMode::Vertices : SupportMode::Extents;
+                const FacePoint facePoint = m == kExtentsBarycentricSum ? FacePoint::BarycentricSum : FacePoint::Projection;
+                const GjkResult result = gjkIntersect(ConvexProxy{&boxA, pair.poseA, mode},
+                                                      ConvexProxy{&boxB, pair.poseB, mode}, 75, facePoint);
                 if (result.intersect != (pair.exactGap < 0)) ++row.wrong[m];
                 if (result.exit != GjkExit::Intersect && result.exit != GjkExit::Separated) ++row.nonCleanExits[m];
                 if (result.newestDropped > 0) ++row.newestDropped[m];
             }
         }
+        if (row.pairs > 0) row.touchingTolerance /= row.pairs;
         rows.push_back(row);
     }
     return rows;

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -33,9 +34,11 @@ Json parseStrict(const std::string& text, const std::string& source) {
         std::set<std::string> keys;
     };
     std::vector<Frame> frames;
-    const auto path = [&frames] {
+    // The path of the value being parsed; without the innermost designator, of its container.
+    const auto path = [&frames](bool withInnermost) {
         std::string result;
-        for (const Frame& frame : frames) {
+        for (std::size_t i = 0; i + (withInnermost ? 0 : 1) < frames.size(); ++i) {
+            const Frame& frame = frames[i];
             result += frame.isArray ? "[" + std::to_string(frame.index) + "]" : (result.empty() ? "" : ".") + frame.key;
         }
         return result;
@@ -50,7 +53,10 @@ Json parseStrict(const std::string& text, const std::string& source) {
         } else if (event == Event::key) {
             Frame& frame = frames.back();
             frame.key = parsed.get<std::string>();
-            if (!frame.keys.insert(frame.key).second) throw SceneError(path(), "duplicate key \"" + frame.key + "\"");
+            if (!frame.keys.insert(frame.key).second) {
+                const std::string where = frames.size() > 1 ? path(false) : source;  // the file, at the top
+                throw SceneError(where, "duplicate key \"" + frame.key + "\"");
+            }
         }
         return true;
     };
@@ -61,18 +67,17 @@ Json parseStrict(const std::string& text, const std::string& source) {
         const std::size_t at = what.find("line ");
         throw SceneError(source, "malformed JSON at " + (at == std::string::npos ? what : what.substr(at)));
     } catch (const nlohmann::json::out_of_range&) {
-        throw SceneError(path(), "must be a finite number");
+        throw SceneError(path(true), "must be a finite number");
     }
 }
 
+/// Rejects keys a pairs file does not define, naming the object they are in (as the loader does).
 void expectKeys(const Json& object, const std::string& path, const std::vector<std::string>& accepted) {
     for (auto it = object.begin(); it != object.end(); ++it) {
-        bool known = false;
-        for (const std::string& key : accepted) known = known || key == it.key();
-        if (known) continue;
+        if (std::find(accepted.begin(), accepted.end(), it.key()) != accepted.end()) continue;
         std::string list;
         for (const std::string& key : accepted) list += (list.empty() ? "" : ", ") + key;
-        throw SceneError(path + (path.empty() ? "" : ".") + it.key(), "unknown key (accepted: " + list + ")");
+        throw SceneError(path, "unknown key \"" + it.key() + "\" (accepted: " + list + ")");
     }
 }
 
@@ -121,8 +126,8 @@ std::string readFile(const std::string& path) {
 std::vector<CollidePair> parseCollidePairs(const std::string& jsonText, const std::string& source) {
     const Json document = parseStrict(jsonText, source);
     if (!document.is_object()) throw SceneError(source, "must be a JSON object { \"pairs\": [ ... ] }");
-    expectKeys(document, "", {"pairs", "description"});
-    if (!document.contains("pairs")) throw SceneError("pairs", "required: an array of { \"a\": BODY, \"b\": BODY }");
+    expectKeys(document, source, {"pairs", "description"});
+    if (!document.contains("pairs")) throw SceneError(source, "missing required key \"pairs\"");
     const Json& pairs = document["pairs"];
     if (!pairs.is_array()) throw SceneError("pairs", "must be an array of { \"a\": BODY, \"b\": BODY }");
 
@@ -134,7 +139,7 @@ std::vector<CollidePair> parseCollidePairs(const std::string& jsonText, const st
         if (!pairs[i].is_object()) throw SceneError(path, "must be an object { \"a\": BODY, \"b\": BODY }");
         expectKeys(pairs[i], path, {"a", "b"});
         for (const char* side : {"a", "b"}) {
-            if (!pairs[i].contains(side)) throw SceneError(path + "." + side, "required (shape, position, orientation)");
+            if (!pairs[i].contains(side)) throw SceneError(path, std::string("missing required key \"") + side + "\"");
             Json body = pairs[i][side];
             if (body.is_object()) body.erase("name");  // names are scene business; keep them unique
             scene["bodies"].push_back(body);

@@ -438,14 +438,6 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
     EpaResult result;
     int closest = closestFace(polytope);
     for (;;) {
-        if (result.iterations >= settings.maxIterations) {
-            result.exit = EpaExit::IterationCap;
-            break;
-        }
-        if (settings.maxExpansions >= 0 && result.iterations >= settings.maxExpansions) {
-            result.exit = EpaExit::StepLimit;
-            break;
-        }
         // Ask A - B for its furthest point along the closest face's normal. If it is no further
         // out than the face (within the tolerance), that face lies on the boundary: done.
         const EpaFace& face = polytope.faces[closest];
@@ -456,6 +448,14 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
         }
         if (face.normal.dot(support.w) - face.distance <= tolerance) {
             result.exit = EpaExit::Converged;
+            break;
+        }
+        if (result.iterations >= settings.maxIterations) {
+            result.exit = EpaExit::IterationCap;
+            break;
+        }
+        if (settings.maxExpansions >= 0 && result.iterations >= settings.maxExpansions) {
+            result.exit = EpaExit::StepLimit;
             break;
         }
         // A point already in the polytope, or a horizon broken by round-off, means the polytope

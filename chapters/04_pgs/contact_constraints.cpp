@@ -100,15 +100,6 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
                 target = std::max(target, -restitution * approachVelocity);
             // [ch04-normal-target]
 
-            // [ch04-drop-separating]
-            // A point whose bodies already move apart faster than the target needs no impulse on
-            // its own; it gets no rows at all.
-            if (normalVelocity > target) {
-                ++result.separatingDropped;
-                continue;
-            }
-            // [ch04-drop-separating]
-
             ContactRowRef ref;
             ref.contactIndex = static_cast<int>(contactIndex);
             ref.pointIndex = pointIndex;
@@ -157,7 +148,12 @@ int storeContactImpulses(World& world, const ContactRows& contactRows) {
 
     // [ch04-drop-weak]
     // Keep a point only if its impulse changed the approach speed by at least
-    // kDropVelocityChange; what is left is the set of contacts that actually held something.
+    // kDropVelocityChange. The normal row clamps at zero, so these are also the points whose
+    // bodies separate on their own (J v >= target without any push): what is left is the set of
+    // contacts that actually held something, the set chapter 6 will carry to the next frame.
+    // The rule runs after the solve on purpose: a point that separates when the solve starts can
+    // be pushed shut by its neighbours within the same solve (a heavy ball on a light one), so
+    // it must keep its row until the solve is over.
     std::vector<Real> effectiveMass(world.contacts.size() * 4, 0);
     for (const ContactRowRef& ref : contactRows.points)
         effectiveMass[static_cast<size_t>(ref.contactIndex) * 4 + ref.pointIndex] =
@@ -190,7 +186,6 @@ SolveStats solveContacts(World& world, Real dt, const std::vector<SolverBody>* a
     ContactRows contactRows = buildContactRows(world, bodies, dt, approachBodies);
     solveRows(contactRows.rows, bodies, world.settings.solver, std::max(0, world.settings.solverIterations));
     stats.rows = static_cast<int>(contactRows.rows.size());
-    stats.separatingDropped = contactRows.separatingDropped;
     stats.residual = measureResidual(contactRows.rows, bodies);
     scatterSolverBodies(world, bodies);
     stats.pointsRemoved = storeContactImpulses(world, contactRows);

@@ -23,12 +23,12 @@ struct ContactRowRef {
 struct ContactRows {
     std::vector<ConstraintRow> rows;
     std::vector<ContactRowRef> points;
-    int separatingDropped = 0;  // contact points that got no rows because they already separate
     int invalidSkipped = 0;     // contact points with non-finite data (a defined result, not a crash)
 };
 
 /// A contact point whose normal impulse changed the bodies' approach speed by less than this
-/// (impulse / effective mass) carried nothing and is removed from World::contacts after the solve.
+/// (impulse / effective mass) carried nothing, its bodies separate on their own, and it is
+/// removed from World::contacts after the solve.
 constexpr Real kDropVelocityChange = Real(1e-4);  // m/s
 
 /// Friction and restitution of a pair, per the scene contract: sqrt(f_a f_b) and max(r_a, r_b).
@@ -60,7 +60,6 @@ int storeContactImpulses(World& world, const ContactRows& contactRows);
 struct SolveStats {
     int contactPoints = 0;      // in World::contacts before the solve
     int rows = 0;
-    int separatingDropped = 0;
     int pointsRemoved = 0;      // taken out of World::contacts after the solve (no rows, or an
                                 // impulse below kDropVelocityChange times the effective mass)
     Residual residual;          // after the last iteration, m/s

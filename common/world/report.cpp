@@ -150,7 +150,8 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
         const Transform& pose = world.bodies[i].transform;
         const bool finite = isFinite(pose.position) && pose.rotation.coeffs().allFinite() &&
                             (!motion || (isFinite(motion->linearVelocity) && isFinite(motion->angularVelocity)));
-        if (!finite) warnings.push_back("body \"" + world.bodies[i].name + "\" ended with a non-finite state (written as null)");
+        if (!finite)
+            warnings.push_back("body \"" + world.bodies[i].name + "\" ended with a non-finite state (written as null)");
     }
     report["bodies"] = bodies;
     report["warnings"] = warnings;

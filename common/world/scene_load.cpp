@@ -166,7 +166,8 @@ public:
         for (const auto& [name, value] : names)
             if (text == name) return value;
         std::string accepted;
-        for (const auto& entry : names) accepted += std::string(accepted.empty() ? "" : ", ") + "\"" + entry.first + "\"";
+        for (const auto& entry : names)
+            accepted += std::string(accepted.empty() ? "" : ", ") + "\"" + entry.first + "\"";
         fail("must be one of " + accepted + " (got \"" + text + "\")");
     }
 
@@ -293,7 +294,8 @@ Shape readShape(const JsonCursor& cursor) {
     const JsonCursor list = params.child("vertices");
     std::vector<Vec3> points(list.arraySize());
     for (std::size_t i = 0; i < points.size(); ++i) points[i] = list.element(i).vec3();
-    if (points.size() < 4) list.fail("needs at least 4 points that span a volume (got " + std::to_string(points.size()) + ")");
+    if (points.size() < 4)
+        list.fail("needs at least 4 points that span a volume (got " + std::to_string(points.size()) + ")");
     try {
         return Shape::convex(points);
     } catch (const HullError& error) {
@@ -316,7 +318,9 @@ BodyDef readBody(const JsonCursor& cursor, std::size_t index) {
             if (cursor.has(key)) cursor.child(key).fail("not allowed on a static body (it never moves)");
     if (def.type != BodyType::Dynamic)
         for (const char* key : {"mass", "density"})
-            if (cursor.has(key)) cursor.child(key).fail(std::string("only dynamic bodies have mass (this body is ") + toString(def.type) + ")");
+            if (cursor.has(key))
+                cursor.child(key).fail(std::string("only dynamic bodies have mass (this body is ") +
+                                       toString(def.type) + ")");
     if (cursor.has("mass") && cursor.has("density")) cursor.child("density").fail("give mass or density, not both");
     if (auto v = cursor.optional("velocity")) def.linearVelocity = v->vec3();
     if (auto v = cursor.optional("angular_velocity")) def.angularVelocity = v->vec3();
@@ -350,7 +354,8 @@ JointDesc readJoint(const JsonCursor& cursor, const World& world) {
     if (joint.type == "hinge") keys.insert(keys.end(), {"axis", "limits"});
     if (joint.type == "cone_twist") keys.insert(keys.end(), {"axis", "cone_angle", "twist_limits"});
     if (std::find(std::begin(kJointTypes), std::end(kJointTypes), joint.type) == std::end(kJointTypes))
-        type.fail("must be one of \"distance\", \"ball_socket\", \"hinge\", \"cone_twist\", \"fixed\" (got \"" + joint.type + "\")");
+        type.fail("must be one of \"distance\", \"ball_socket\", \"hinge\", \"cone_twist\", \"fixed\" (got \"" +
+                  joint.type + "\")");
     cursor.expectObject(keys);
     joint.bodyA = bodyIndex(cursor.child("a"), world);
     joint.bodyB = bodyIndex(cursor.child("b"), world);
@@ -394,7 +399,8 @@ void readForce(const JsonCursor& cursor, World& world) {
     if (auto v = cursor.optional("damping")) spring.damping = v->nonNegative();
     // Without a rest length the spring starts relaxed: the anchors' distance at load time.
     const Vec3 pointA = world.bodies[std::size_t(spring.bodyA)].transform.apply(spring.localAnchorA);
-    const Vec3 pointB = spring.bodyB < 0 ? spring.anchorB : world.bodies[std::size_t(spring.bodyB)].transform.apply(spring.anchorB);
+    const Vec3 pointB =
+        spring.bodyB < 0 ? spring.anchorB : world.bodies[std::size_t(spring.bodyB)].transform.apply(spring.anchorB);
     spring.restLength = (pointB - pointA).norm();
     if (auto v = cursor.optional("rest_length")) spring.restLength = v->nonNegative();
     world.springs.push_back(spring);
@@ -421,7 +427,8 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
             const BodyDef def = readBody(cursor, i);
             if (auto [it, fresh] = firstUse.emplace(def.name, i); !fresh) {
                 const std::string other = "bodies[" + std::to_string(it->second) + "]";
-                if (cursor.has("name")) cursor.child("name").fail("duplicate name \"" + def.name + "\" (also " + other + ")");
+                if (cursor.has("name"))
+                    cursor.child("name").fail("duplicate name \"" + def.name + "\" (also " + other + ")");
                 cursor.fail("its default name \"" + def.name + "\" is taken by " + other + "; give it a name");
             }
             try {
@@ -429,10 +436,16 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
             } catch (const std::invalid_argument& error) {
                 cursor.fail(error.what());
             }
+            // Sizes that are each fine can still overflow a volume or an inertia (r^5 m).
+            const Motion* motion = world.motionOf(int(i));
+            if (motion && !(std::isfinite(motion->mass) && std::isfinite(motion->inverseMass) &&
+                            motion->inertiaLocal.allFinite() && motion->inverseInertiaLocal.allFinite()))
+                cursor.fail("its mass or inertia is not a finite number (sizes, mass or density too large or too small)");
         }
     }
     if (auto joints = root.optional("joints"))
-        for (std::size_t i = 0; i < joints->arraySize(); ++i) world.joints.push_back(readJoint(joints->element(i), world));
+        for (std::size_t i = 0; i < joints->arraySize(); ++i)
+            world.joints.push_back(readJoint(joints->element(i), world));
     if (auto forces = root.optional("forces"))
         for (std::size_t i = 0; i < forces->arraySize(); ++i) readForce(forces->element(i), world);
     return world;
@@ -460,7 +473,8 @@ Json shapeToJson(const Shape& shape) {
     switch (shape.type) {
     case ShapeType::Box: return {{"box", {{"half_extents", toJson(shape.halfExtents)}}}};
     case ShapeType::Sphere: return {{"sphere", {{"radius", tidy(shape.radius)}}}};
-    case ShapeType::Capsule: return {{"capsule", {{"radius", tidy(shape.radius)}, {"half_height", tidy(shape.halfHeight)}}}};
+    case ShapeType::Capsule:
+        return {{"capsule", {{"radius", tidy(shape.radius)}, {"half_height", tidy(shape.halfHeight)}}}};
     case ShapeType::Convex: break;
     }
     Json vertices = Json::array();
@@ -531,7 +545,8 @@ std::string saveSceneToString(const World& world) {
                     {"anchor_a", toJson(joint.localAnchorA)}, {"anchor_b", toJson(joint.localAnchorB)}};
         if (joint.type == "distance" && joint.length) out["length"] = tidy(*joint.length);
         if (joint.type == "hinge" || joint.type == "cone_twist") out["axis"] = toJson(joint.axis);
-        if (joint.type == "hinge" && joint.limits) out["limits"] = {tidy(joint.limits->first), tidy(joint.limits->second)};
+        if (joint.type == "hinge" && joint.limits)
+            out["limits"] = {tidy(joint.limits->first), tidy(joint.limits->second)};
         if (joint.type == "cone_twist") out["cone_angle"] = tidy(joint.coneAngle);
         if (joint.type == "cone_twist" && joint.twistLimits)
             out["twist_limits"] = {tidy(joint.twistLimits->first), tidy(joint.twistLimits->second)};

@@ -37,5 +37,15 @@ inline double distanceTolerance(double exact, double pairSize) {
     return 1e-4 * exact + 64.0 * double(kEpsilon) * pairSize;
 }
 
+/// True when the simplex is a tetrahedron whose closest point to the origin is within
+/// `tolerance`: the origin is inside it or on its boundary (what chapter 3's EPA starts from).
+inline bool tetrahedronHoldsOrigin(const Simplex& simplex, Real tolerance) {
+    if (simplex.count != 4) return false;
+    Vec3 points[4];
+    for (int i = 0; i < 4; ++i) points[i] = simplex.vertices[i].w;
+    const SimplexClosest closest = closestPointToOrigin(points, 4, 1);
+    return closest.inside || closest.point.norm() <= tolerance;
+}
+
 }  // namespace testing
 }  // namespace stepwise

@@ -22,6 +22,8 @@ struct ModeTally {
     int maxIterations = 0;
     int newestDropped = 0;
     int cleanExits = 0;
+    int intersecting = 0;
+    int tetrahedraHoldingOrigin = 0;
 };
 
 const char* modeName(SupportMode mode) { return mode == SupportMode::Extents ? "extents" : "vertices"; }
@@ -57,6 +59,10 @@ TEST_CASE("GJK agrees with the exact oracle on 10,000 random box pairs", "[ch02]
             tally.maxIterations = std::max(tally.maxIterations, result.iterations);
             tally.newestDropped += result.newestDropped;
             tally.cleanExits += (result.exit == GjkExit::Intersect || result.exit == GjkExit::Separated) ? 1 : 0;
+            if (result.intersect) {
+                ++tally.intersecting;
+                tally.tetrahedraHoldingOrigin += tetrahedronHoldsOrigin(result.simplex, gjkTolerances(proxies.a, proxies.b).touching);
+            }
             if (result.intersect && !sat.overlap) ++tally.falsePositives;
             if (!result.intersect && sat.overlap) ++tally.falseNegatives;
             if (result.intersect != sat.overlap && std::abs(signedDistance) > band) {
@@ -99,6 +105,9 @@ TEST_CASE("GJK agrees with the exact oracle on 10,000 random box pairs", "[ch02]
         CHECK(tally.wrongOutsideBand == 0);
         CHECK(tally.distanceFailures == 0);
         CHECK(tally.maxIterations < 75);
+        // Chapter 3 starts from the simplex: every intersecting answer hands over a tetrahedron
+        // around the origin.
+        CHECK(tally.tetrahedraHoldingOrigin == tally.intersecting);
     }
     CHECK(disagreeModes == 0);
 }

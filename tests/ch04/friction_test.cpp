@@ -14,9 +14,9 @@ using namespace stepwise;
 TEST_CASE("a ball launched sliding reaches pure rolling at 5/7 of its speed after 2v/(7 mu g)", "[ch04][friction]") {
     const double mu = 0.3, speed = 4, gravity = 9.81;
     World world = test::makeWorld();
-    // 8 substeps: the transition time is found to one step, and 2v/(7 mu g) is ~0.4 s, so 60 Hz
-    // frames alone would resolve it only to 4 %.
-    world.settings.substeps = 8;
+    // 480 Hz frames: the transition time is found to one frame, and 2v/(7 mu g) is ~0.4 s, so
+    // 60 Hz frames would resolve it only to 4 %.
+    world.settings.dt = Real(1.0 / 480);
     test::addGround(world);
     const Real radius = Real(0.5);
     const int ball = addBall(world, "ball", Vec3(0, radius - world.settings.slop, 0), radius, 2,
@@ -33,7 +33,9 @@ TEST_CASE("a ball launched sliding reaches pure rolling at 5/7 of its speed afte
         const Motion& motion = *w.motionOf(ball);
         // Velocity of the material point at the bottom: zero when it rolls.
         const Vec3 slip = motion.linearVelocity + motion.angularVelocity.cross(Vec3(0, -radius, 0));
-        if (slip.norm() < 1e-3 * speed) {
+        // 1 % of the launch speed: the slip falls by 3.5 mu g dt = 0.5 % of it per frame, and the
+        // rolling contact is a little above the bottom (the ball rests at the slop depth).
+        if (slip.norm() < 1e-2 * speed) {
             rollingTime = w.time;
             rollingSpeed = motion.linearVelocity.norm();
         }
@@ -48,14 +50,21 @@ TEST_CASE("a ball launched sliding reaches pure rolling at 5/7 of its speed afte
     CHECK(world.motionOf(ball)->linearVelocity.normalized().dot(direction) > 0.9999);
 }
 
+// One contact point again (see resting_test.cpp): on a ramp the box rocks from corner to
+// corner, and in the steps where the rocking leaves the corner a small normal impulse, the
+// friction bound mu lambda is too small to hold it, so at 60 Hz even a box on a ramp 14 degrees
+// gentler than atan(mu) walks down, and one on a steep ramp loses speed to the rocking. Both
+// shrink with the step; at 16 substeps (960 Hz) the closed forms hold, which is what this checks.
 TEST_CASE("a box on a ramp slides when the ramp is steeper than atan(mu), and stays when gentler", "[ch04][friction]") {
     const Real mu = Real(0.5);
     const Real critical = std::atan(mu);
     const double seconds = 2;
+    const int substeps = 16;
     SECTION("steeper by 5 degrees: slides as (g sin - mu g cos) t^2 / 2") {
         const Real angle = critical + Real(5.0 * kPi / 180);
         int box = -1;
         World world = buildRampScene(angle, mu, &box);
+        world.settings.substeps = substeps;
         const Vec3 start = world.bodies[box].transform.position;
         Pipeline pipeline = makeChapter04Pipeline(world);
         test::simulate(world, pipeline, seconds);
@@ -63,13 +72,13 @@ TEST_CASE("a box on a ramp slides when the ramp is steeper than atan(mu), and st
         const double travelled = (world.bodies[box].transform.position - start).dot(downhill);
         const double expected = 0.5 * 9.81 * (std::sin(angle) - mu * std::cos(angle)) * seconds * seconds;
         INFO("slid " << travelled << " m, closed form " << expected << " m");
-        CHECK(travelled > 0.8 * expected);
-        CHECK(travelled < 1.1 * expected);
+        CHECK(test::relativeError(travelled, expected) < 0.05);
     }
     SECTION("gentler by 5 degrees: stays") {
         const Real angle = critical - Real(5.0 * kPi / 180);
         int box = -1;
         World world = buildRampScene(angle, mu, &box);
+        world.settings.substeps = substeps;
         const Vec3 start = world.bodies[box].transform.position;
         Pipeline pipeline = makeChapter04Pipeline(world);
         test::simulate(world, pipeline, seconds);

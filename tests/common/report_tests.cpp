@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -153,4 +154,23 @@ TEST_CASE("writeReport writes the text and names the path when it cannot", "[com
     } catch (const std::runtime_error& error) {
         CHECK_THAT(error.what(), Catch::Contains("no/such/dir/report.json"));
     }
+}
+
+TEST_CASE("The report example in the docs has the keys a real report has, in order", "[common][report]") {
+    std::ifstream file("docs/scene-format.md", std::ios::binary);
+    std::ostringstream page;
+    page << file.rdbuf();
+    const std::string text = page.str();
+    const std::regex block("```json\\n(\\{\\n  \"format\": \"stepwise-report\"[\\s\\S]*?)```");
+    std::smatch match;
+    REQUIRE(std::regex_search(text, match, block));
+    const Json example = Json::parse(match[1].str());
+
+    const World world = sampleWorld();
+    const Json report = Json::parse(reportToJson(world, sampleStats(world), "v"));
+    CHECK(keysOf(example) == keysOf(report));
+    CHECK(keysOf(example["timing_ms"]) == keysOf(report["timing_ms"]));
+    CHECK(keysOf(example["energy"]) == keysOf(report["energy"]));
+    CHECK(keysOf(example["bodies"][0]) == keysOf(report["bodies"][0]));
+    CHECK(example["bodies"][0] == report["bodies"][0]);  // the ground of two-box-stack, exactly
 }

@@ -278,6 +278,18 @@ TEST_CASE("Numbers that overflow Real are rejected, not turned into infinity", "
     }
 }
 
+TEST_CASE("Sizes whose volume or inertia overflows are rejected, not turned into NaN", "[common][scene]") {
+    // Each number is a finite Real, but r^3 (volume) and m r^2 (inertia) are not.
+    const std::string radius = std::numeric_limits<Real>::max() < 1e300 ? "1e30" : "1e200";
+    try {
+        loadSceneFromString(sceneWith(R"({"shape": {"sphere": {"radius": )" + radius + "}}}"));
+        FAIL("an overflowing sphere loaded");
+    } catch (const SceneError& error) {
+        CHECK(error.path() == "bodies[0]");
+        CHECK_THAT(error.what(), Catch::Contains("not a finite number"));
+    }
+}
+
 TEST_CASE("Missing files and directories name the path", "[common][scene]") {
     try {
         loadSceneFile("no/such/scene.json");

@@ -53,7 +53,9 @@ bool loadXwd(const std::string& path, Image& image) {
     const uint32_t byteOrder = bigEndian(bytes, 28), bitsPerPixel = bigEndian(bytes, 44), bytesPerLine = bigEndian(bytes, 48);
     const uint32_t colors = bigEndian(bytes, 76);
     const size_t pixels = size_t(headerSize) + size_t(colors) * 12;
-    if (bitsPerPixel != 32 || width == 0 || height == 0 || width > 16384 || height > 16384 ||
+    // Xvfb's depth-24 screens store 4 bytes a pixel while the header may say 24 bits.
+    const uint32_t bytesPerPixel = width ? bytesPerLine / width : 0;
+    if ((bitsPerPixel != 24 && bitsPerPixel != 32) || (bytesPerPixel != 3 && bytesPerPixel != 4) || width == 0 || height == 0 || width > 16384 || height > 16384 ||
         pixels + size_t(bytesPerLine) * height > bytes.size()) {
         return false;
     }
@@ -62,12 +64,13 @@ bool loadXwd(const std::string& path, Image& image) {
     image.rgb.resize(size_t(width) * height * 3);
     for (uint32_t y = 0; y < height; ++y) {
         for (uint32_t x = 0; x < width; ++x) {
-            const uint8_t* p = &bytes[pixels + size_t(y) * bytesPerLine + size_t(x) * 4];
+            const uint8_t* p = &bytes[pixels + size_t(y) * bytesPerLine + size_t(x) * bytesPerPixel];
             uint8_t* out = &image.rgb[(size_t(y) * width + x) * 3];
-            if (byteOrder == 0) {  // LSBFirst: B G R X
+            const uint8_t* msb = bytesPerPixel == 4 ? p + 1 : p;
+            if (byteOrder == 0) {  // LSBFirst: B G R (X)
                 out[0] = p[2], out[1] = p[1], out[2] = p[0];
-            } else {  // MSBFirst: X R G B
-                out[0] = p[1], out[1] = p[2], out[2] = p[3];
+            } else {  // MSBFirst: (X) R G B
+                out[0] = msb[0], out[1] = msb[1], out[2] = msb[2];
             }
         }
     }

@@ -12,7 +12,7 @@ if [[ ! -f $exe ]]; then
 fi
 mkdir -p "$(dirname "$out")"
 rm -f "$out"
-"$here/run_under_wine.sh" --xwd "$out" --xwd-after "^presented" -- "$exe" --frames "$frames" --linger-frames 60
+"$here/run_under_wine.sh" --xwd "$out" --xwd-after "^presented" -- "$exe" --frames "$frames" --linger-frames 20
 status=$?
 [[ $status -eq 0 ]] || exit $status
 "$check" --window "$out"

@@ -1,0 +1,224 @@
+// Chapter 3 inside the engine: the pipeline stage, the penetration probe, the registry entries,
+// the demo scenes' drawing and the bench.
+#include "03_epa/bench_epa.h"
+#include "03_epa/chapter.h"
+#include "03_epa/scenes.h"
+#include "app/panel.h"
+#include "app/registry.h"
+#include "support/fixture.h"
+#include "world/debug_draw.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace stepwise;
+
+namespace {
+
+std::vector<std::string> stageNames(const Pipeline& pipeline) {
+    std::vector<std::string> names;
+    for (const Stage& stage : pipeline.stages()) names.push_back(stage.name);
+    return names;
+}
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+/// A panel that presses every button once and records what it was shown.
+class ScriptedPanel final : public Panel {
+public:
+    std::vector<std::string> lines;
+    int sliders = 0, buttons = 0, checkboxes = 0;
+    void text(const std::string& line) override { lines.push_back(line); }
+    bool checkbox(const std::string&, bool& value) override {
+        ++checkboxes;
+        value = !value;
+        return true;
+    }
+    bool sliderFloat(const std::string&, float&, float, float) override { return false; }
+    bool sliderInt(const std::string&, int& value, int, int max) override {
+        ++sliders;
+        value = std::min(2, max);
+        return true;
+    }
+    bool button(const std::string&) override {
+        ++buttons;
+        return true;
+    }
+    bool combo(const std::string&, int&, const char* const*, int) override { return false; }
+};
+
+}  // namespace
+
+TEST_CASE("The chapter 3 pipeline swaps GJK's yes/no stage for one that makes contacts", "[ch03][pipeline]") {
+    World world = test::makeWorld(test::zeroGravitySettings());
+    test::addGround(world);                                                        // top at y = 0
+    const int box = test::addBox(world, Vec3(0, Real(0.45), 0), Vec3::Constant(Real(0.5)));  // 5 cm into it
+    test::addSphere(world, Vec3(10, 5, 0), Real(0.5));                             // alone
+    Pipeline pipeline = makeChapter03Pipeline(world);
+    const std::vector<std::string> names = stageNames(pipeline);
+    CHECK(contains(names, "narrowphase:gjk_epa"));
+    CHECK_FALSE(contains(names, "narrowphase:gjk"));
+
+    pipeline.step(world);
+    REQUIRE(world.contacts.size() == 1);
+    REQUIRE(world.pairs.size() == 1);
+    const Contact& contact = world.contacts[0];
+    CHECK(contact.bodyA == 0);
+    CHECK(contact.bodyB == box);
+    CHECK(world.pairs[0] == (BodyPair{0, box}));
+    CHECK(contact.pointCount == 1);
+    CHECK(contact.normal.y() == Approx(1).epsilon(1e-5));          // from the ground up to the box
+    CHECK(contact.points[0].depth == Approx(0.05).epsilon(1e-4));
+    CHECK((contact.points[0].pointA - contact.points[0].pointB - contact.points[0].depth * contact.normal).norm() <
+          Real(1e-5));
+    CHECK(measureDeepestPenetration(world) == Approx(0.05).epsilon(1e-4));
+}
+
+TEST_CASE("A world of spheres plans the closed-form stage; static pairs are skipped", "[ch03][pipeline]") {
+    World world = test::makeWorld(test::zeroGravitySettings());
+    test::addSphere(world, Vec3(0, 0, 0), 1, BodyType::Static);
+    test::addSphere(world, Vec3(Real(0.5), 0, 0), 1, BodyType::Static);  // static-static: ignored
+    test::addSphere(world, Vec3(0, Real(1.8), 0), 1);
+    CHECK(allPairsClosedForm(world));
+    Pipeline pipeline = makeChapter03Pipeline(world);
+    CHECK(contains(stageNames(pipeline), "narrowphase:closed_form"));
+    pipeline.step(world);
+    CHECK(world.contacts.size() == 2);
+    for (const Contact& contact : world.contacts) CHECK(contact.bodyB == 2);
+    CHECK(measureDeepestPenetration(world) == Approx(0.2).epsilon(1e-4));
+
+    test::addBox(world, Vec3(5, 5, 5), Vec3::Ones());
+    CHECK(allPairsClosedForm(world));  // box-sphere has a closed form
+    test::addBox(world, Vec3(9, 5, 5), Vec3::Ones());
+    CHECK_FALSE(allPairsClosedForm(world));  // box-box does not
+}
+
+TEST_CASE("The penetration probe finds the deepest of many overlaps", "[ch03][pipeline]") {
+    World world = test::makeWorld(test::zeroGravitySettings());
+    for (int i = 0; i < 20; ++i) {
+        // Pairs of boxes along x, the i-th pair overlapping by 0.01 * (i + 1).
+        const Real x = Real(4 * i);
+        test::addBox(world, Vec3(x, 0, 0), Vec3::Constant(Real(0.5)));
+        test::addBox(world, Vec3(x, 1 - Real(0.01) * (i + 1), 0), Vec3::Constant(Real(0.5)));
+    }
+    CHECK(measureDeepestPenetration(world) == Approx(0.2).epsilon(1e-4));
+    world.bodies.back().transform.position.y() = 5;
+    CHECK(measureDeepestPenetration(world) == Approx(0.19).epsilon(1e-4));
+}
+
+TEST_CASE("Chapter 3 registers its pipeline, probe, bench, command and scenes", "[ch03][registry]") {
+    Registry registry;
+    registerChapters(registry);
+    World world = test::makeWorld();
+    test::addGround(world);
+    test::addBox(world, Vec3(0, Real(0.4), 0), Vec3::Constant(Real(0.5)));
+    CHECK(contains(registry.makePipeline(world, 3).enabledStageNames(), "narrowphase:gjk_epa"));
+    const PenetrationProbe* probe = registry.penetrationProbe(3);
+    REQUIRE(probe != nullptr);
+    CHECK(probe->chapter == 3);
+    CHECK(probe->measure(world) == Approx(0.1).epsilon(1e-4));
+    CHECK(registry.findBench("epa") != nullptr);
+    CHECK(std::count_if(registry.commands().begin(), registry.commands().end(),
+                        [](const CommandEntry& command) { return command.chapter == 3; }) == 1);
+    CHECK(registry.findScene("epa-step-by-step") != nullptr);
+    CHECK(registry.findScene("epa-contact-gallery") != nullptr);
+}
+
+TEST_CASE("The EPA stepper draws the polytope, its closest face and the contact", "[ch03][scenes]") {
+    Registry registry;
+    registerChapters(registry);
+    const SceneEntry* scene = registry.findScene("epa-step-by-step");
+    REQUIRE(scene != nullptr);
+    World world = scene->build();
+    RecordingDraw draw;
+    const EpaResult converged = drawEpaStep(world, 0, 1, -1, Vec3(3, 0, 0), draw);
+    CHECK(converged.exit == EpaExit::Converged);
+    CHECK(draw.count(RecordingDraw::Kind::Box) == 2);       // red contact cubes
+    CHECK(draw.count(RecordingDraw::Kind::Triangle) == 1);  // the closest face, blue
+    CHECK(draw.count(RecordingDraw::Kind::Line) >= 12);     // the polytope's edges
+    CHECK(draw.count(RecordingDraw::Kind::Arrow) == 2);     // normal in the world and in A - B
+    int red = 0, yellow = 0, blue = 0;
+    for (const RecordingDraw::Command& command : draw.commands()) {
+        red += command.kind == RecordingDraw::Kind::Box && command.color.r == colors::kRed.r;
+        yellow += command.kind == RecordingDraw::Kind::Arrow && command.color.g == colors::kYellow.g;
+        blue += command.kind == RecordingDraw::Kind::Triangle && command.color.b == colors::kBlue.b;
+    }
+    CHECK(red == 2);
+    CHECK(yellow == 2);
+    CHECK(blue == 1);
+
+    // One expansion at a time: fewer faces, a shallower lower bound.
+    draw.clear();
+    const EpaResult first = drawEpaStep(world, 0, 1, 1, Vec3(3, 0, 0), draw);
+    CHECK(first.iterations == 1);
+    CHECK(first.depth <= converged.depth + Real(1e-6));
+
+    // The panel drives the step count; the draw hook follows it.
+    ScriptedPanel panel;
+    scene->panel(world, panel);
+    CHECK(panel.sliders == 1);
+    CHECK(panel.buttons == 2);
+    CHECK(panel.lines.size() >= 2);
+    draw.clear();
+    scene->draw(world, draw);
+    CHECK(draw.count(RecordingDraw::Kind::Triangle) == 1);
+}
+
+TEST_CASE("The contact gallery runs through the chapter 3 pipeline with finite contacts", "[ch03][scenes]") {
+    Registry registry;
+    registerChapters(registry);
+    const SceneEntry* scene = registry.findScene("epa-contact-gallery");
+    REQUIRE(scene != nullptr);
+    World world = scene->build();
+    Pipeline pipeline = registry.makePipeline(world, 3);
+    CHECK(contains(pipeline.enabledStageNames(), "narrowphase:gjk_epa"));
+    std::size_t mostContacts = 0;
+    test::simulate(world, pipeline, 3.0, [&](const World& stepped) {
+        mostContacts = std::max(mostContacts, stepped.contacts.size());
+        for (const Contact& contact : stepped.contacts) {
+            CHECK(isFinite(contact.normal));
+            CHECK(isFinite(contact.points[0].depth));
+            CHECK(contact.points[0].depth >= 0);
+        }
+    });
+    CHECK(mostContacts >= 5);
+    RecordingDraw draw;
+    scene->draw(world, draw);
+    CHECK(draw.count(RecordingDraw::Kind::Text) == 6);
+}
+
+TEST_CASE("The EPA bench runs in quick mode and writes its table", "[ch03][bench]") {
+    const std::string csv = (std::filesystem::temp_directory_path() / "ch03_bench_epa_test.csv").string();
+    std::ostringstream out;
+    BenchOptions options;
+    options.quick = true;
+    options.csvPath = csv;
+    options.out = &out;
+    REQUIRE(runEpaBench(options) == 0);
+    CHECK(out.str().find("peers:") != std::string::npos);
+    std::ifstream file(csv);
+    std::string line;
+    int rows = 0;
+    bool defaultBoxesAccurate = false;
+    while (std::getline(file, line)) {
+        ++rows;
+        // boxes, extents, tolerance sweep at the default tolerance: the suite's accuracy holds.
+        if (line.rfind("boxes,extents,tolerance,1e-05,", 0) == 0) {
+            std::stringstream cells(line);
+            std::string cell;
+            for (int column = 0; column < 8; ++column) std::getline(cells, cell, ',');
+            defaultBoxesAccurate = std::stod(cell) <= 1e-5;
+        }
+    }
+    std::remove(csv.c_str());
+    CHECK(rows == 1 + 8 * 5 + 1);
+    CHECK(defaultBoxesAccurate);
+}
