@@ -1,4 +1,5 @@
 # Builds the course site: plots from quick bench runs, the snippet check, then Doxygen.
+cmake_policy(SET CMP0057 NEW)  # IN_LIST under cmake -P
 file(MAKE_DIRECTORY ${IMAGES})
 execute_process(COMMAND ${STEPWISE} bench --list OUTPUT_VARIABLE listing RESULT_VARIABLE status)
 if(NOT status EQUAL 0)

@@ -1,14 +1,17 @@
-// GJK, boolean and distance. Both loops share the same four moves: ask A - B for its support
-// point towards the origin, stop if that proves an answer, add the point to the simplex, and
-// shrink the simplex to the feature closest to the origin (closest_point.cpp).
+// GJK, the boolean query. Both queries (this one and gjk_distance.cpp) make the same four moves:
+// ask A - B for its support point towards the origin, stop if that proves an answer, add the
+// point to the simplex, and shrink the simplex to the feature closest to the origin
+// (gjk_walk.cpp, closest_point.cpp).
 
 #include "02_gjk/gjk.h"
 
-#include "02_gjk/closest_point.h"
+#include "02_gjk/gjk_walk.h"
 
 #include <cmath>
 
 namespace stepwise {
+
+using namespace gjk_detail;
 
 const char* toString(GjkExit exit) {
     switch (exit) {
@@ -36,101 +39,6 @@ GjkTolerances gjkTolerances(const ConvexProxy& a, const ConvexProxy& b) {
 // [ch02-tolerances]
 
 namespace {
-
-// [ch02-relative]
-// The pair seen from A: same shapes and rotations, A's origin moved to the world origin. The
-// Minkowski difference only moves with the positions' difference, so the answer is the same,
-// but 10 km from the origin a float position has a resolution of about 1 mm while the offset
-// pB - pA of two nearby bodies is exact (Sterbenz), and every product GJK forms is then of the
-// size of the shapes, not of their distance to the world origin.
-struct RelativePair {
-    ConvexProxy a;
-    ConvexProxy b;
-    Vec3 offset = Vec3::Zero();   // add back to shape points to return to the world
-};
-
-RelativePair seenFromA(const ConvexProxy& a, const ConvexProxy& b) {
-    RelativePair pair{a, b, a.transform.position};
-    pair.a.transform.position = Vec3::Zero();
-    pair.b.transform.position = b.transform.position - a.transform.position;
-    return pair;
-}
-// [ch02-relative]
-
-bool isFiniteShape(const Shape& shape) {
-    if (shape.type == ShapeType::Convex) {
-        if (!shape.hull) return false;
-        for (const Vec3& vertex : shape.hull->vertices)
-            if (!vertex.allFinite()) return false;
-        return true;
-    }
-    return shape.halfExtents.allFinite() && std::isfinite(shape.radius) && std::isfinite(shape.halfHeight);
-}
-
-// Bad input gets a defined answer (not intersecting, exit Degenerate) rather than NaN.
-bool isValidProxy(const ConvexProxy& proxy) {
-    return proxy.shape && isFiniteShape(*proxy.shape) && proxy.transform.position.allFinite() &&
-           proxy.transform.rotation.coeffs().allFinite();
-}
-
-// The loop state both queries share: the simplex (seen from A), the weights of its vertices
-// that make the closest point v, and how often the newest vertex was not kept.
-struct Walk {
-    Simplex simplex;
-    Real weights[4] = {1, 0, 0, 0};
-    Vec3 v = Vec3::Zero();
-    Vec3 firstDirection = Vec3::UnitX();
-    int newestDropped = 0;
-    bool degenerate = false;
-    bool inside = false;
-};
-
-bool alreadyInSimplex(const Simplex& simplex, const Vec3& w, Real tolerance) {
-    for (int i = 0; i < simplex.count; ++i)
-        if ((simplex.vertices[i].w - w).squaredNorm() <= tolerance * tolerance) return true;
-    return false;
-}
-
-// [ch02-reduce]
-// Adds a support point, finds the closest point of the grown simplex to the origin, and keeps
-// only the vertices of the feature that holds it (at most 4 survive; usually fewer).
-void addAndReduce(Walk& walk, const SupportPoint& point, Real scale, FacePoint facePoint = FacePoint::Projection) {
-    Simplex& simplex = walk.simplex;
-    simplex.vertices[simplex.count++] = point;
-    Vec3 points[4];
-    for (int i = 0; i < simplex.count; ++i) points[i] = simplex.vertices[i].w;
-    const SimplexClosest closest = closestPointToOrigin(points, simplex.count, scale, facePoint);
-
-    const int newest = simplex.count - 1;
-    bool keptNewest = false;
-    Simplex reduced;
-    for (int k = 0; k < closest.keptCount; ++k) {
-        const int index = closest.kept[k];
-        keptNewest = keptNewest || index == newest;
-        reduced.vertices[k] = simplex.vertices[index];
-        walk.weights[k] = closest.weights[index];
-    }
-    reduced.count = closest.keptCount;
-    simplex = reduced;
-    if (!keptNewest) ++walk.newestDropped;
-    walk.v = closest.point;
-    walk.degenerate = closest.degenerate;
-    walk.inside = closest.inside;
-}
-// [ch02-reduce]
-
-// The first simplex: one support point towards B from inside A - B. cA - cB is a point of
-// A - B we know without a query; when it is the origin (concentric shapes) any direction will do.
-Walk startWalk(const RelativePair& pair, const GjkTolerances& tolerances) {
-    Vec3 direction = pair.b.center() - pair.a.center();
-    if (!(direction.squaredNorm() > tolerances.touching * tolerances.touching)) direction = Vec3::UnitX();
-    Walk walk;
-    walk.firstDirection = direction;
-    walk.simplex.vertices[0] = minkowskiSupport(pair.a, pair.b, direction);
-    walk.simplex.count = 1;
-    walk.v = walk.simplex.vertices[0].w;
-    return walk;
-}
 
 // Grows an intersecting simplex into a tetrahedron around the origin for EPA: the origin is
 // within rounding of the simplex, so adding points of A - B off its span (in the directions
@@ -170,13 +78,6 @@ void growToTetrahedron(const RelativePair& pair, Simplex& simplex, Real scale) {
         }
         if (!(bestReach > minimumReach)) return;
         simplex.vertices[simplex.count++] = best;
-    }
-}
-
-void toWorld(Simplex& simplex, const Vec3& offset) {
-    for (int i = 0; i < simplex.count; ++i) {
-        simplex.vertices[i].onA += offset;
-        simplex.vertices[i].onB += offset;
     }
 }
 
@@ -251,73 +152,6 @@ GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterat
     result.exit = exit;
     result.newestDropped = walk.newestDropped;
     if (result.intersect) growToTetrahedron(pair, walk.simplex, tolerances.scale);
-    result.simplex = walk.simplex;
-    toWorld(result.simplex, pair.offset);
-    return result;
-}
-
-GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int maxIterations) {
-    GjkDistanceResult result;
-    if (!isValidProxy(a) || !isValidProxy(b)) {
-        result.exit = GjkExit::Degenerate;
-        return result;
-    }
-    const RelativePair pair = seenFromA(a, b);
-    const GjkTolerances tolerances = gjkTolerances(a, b);
-    const Real touchingSquared = tolerances.touching * tolerances.touching;
-
-    Walk walk = startWalk(pair, tolerances);
-    result.iterations = 1;
-    GjkExit exit = walk.v.squaredNorm() <= touchingSquared ? GjkExit::Intersect : GjkExit::IterationCap;
-    // [ch02-distance-loop]
-    while (exit == GjkExit::IterationCap && result.iterations < maxIterations) {
-        const Vec3 direction = -walk.v;
-        const SupportPoint point = minkowskiSupport(pair.a, pair.b, direction);
-        ++result.iterations;
-
-        // Bounds on the distance: |v| from above (v is a point of A - B), v.w / |v| from below
-        // (the support plane through w). Stop when they agree to a relative tolerance
-        // (van den Bergen 1999, eq. 4): |v|^2 - v.w <= eps |v|^2.
-        const Real distanceSquared = walk.v.squaredNorm();
-        if (distanceSquared - walk.v.dot(point.w) <= tolerances.relative * distanceSquared) {
-            exit = GjkExit::Separated;
-            break;
-        }
-        if (alreadyInSimplex(walk.simplex, point.w, tolerances.touching)) {
-            exit = GjkExit::RepeatedSupport;
-            break;
-        }
-        addAndReduce(walk, point, tolerances.scale);
-        const Real newDistanceSquared = walk.v.squaredNorm();
-        if (!std::isfinite(newDistanceSquared)) {
-            exit = GjkExit::Degenerate;
-            break;
-        }
-        if (walk.inside || newDistanceSquared <= touchingSquared) {
-            exit = GjkExit::Intersect;
-            break;
-        }
-        if (newDistanceSquared >= distanceSquared) {
-            exit = walk.degenerate ? GjkExit::Degenerate : GjkExit::NoProgress;
-            break;
-        }
-    }
-    // [ch02-distance-loop]
-
-    // [ch02-closest-points]
-    // v = sum_i weight_i (a_i - b_i), so the same weights applied to the shape points give the
-    // closest point on each shape (van den Bergen 1999, section 3).
-    result.separated = exit != GjkExit::Intersect && walk.v.squaredNorm() > touchingSquared;
-    result.distance = result.separated ? walk.v.norm() : Real(0);
-    for (int i = 0; i < walk.simplex.count; ++i) {
-        result.pointA += walk.weights[i] * walk.simplex.vertices[i].onA;
-        result.pointB += walk.weights[i] * walk.simplex.vertices[i].onB;
-    }
-    // [ch02-closest-points]
-    result.pointA += pair.offset;
-    result.pointB += pair.offset;
-    result.exit = exit;
-    result.newestDropped = walk.newestDropped;
     result.simplex = walk.simplex;
     toWorld(result.simplex, pair.offset);
     return result;

@@ -40,10 +40,12 @@ TEST_CASE("near contact: false positives and negatives of each box support map",
             totals[variant] += row.wrong[variant];
         }
         std::cout << "\n";
-        // Outside the 1e-4 m band every variant is right. The accurate face point also exits
-        // cleanly there (separating plane or tetrahedron found), for both support maps.
+        // Outside the 1e-4 m band both support maps are right, and exit cleanly (separating
+        // plane or tetrahedron found). The barycentric-sum variant is the bench's counterexample
+        // and is only reported, not held to this.
         if (std::abs(row.gap) >= 1e-4) {
-            for (int variant = 0; variant < kVariantCount; ++variant) CHECK(row.wrong[variant] == 0);
+            CHECK(row.wrong[kExtents] == 0);
+            CHECK(row.wrong[kVertices] == 0);
             CHECK(row.nonCleanExits[kExtents] == 0);
             CHECK(row.nonCleanExits[kVertices] == 0);
         }

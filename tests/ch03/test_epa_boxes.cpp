@@ -95,6 +95,7 @@ TEST_CASE("EPA matches the exact SAT depth and axis of 20,000 random overlapping
     const std::vector<BoxPair> pairs = makeOverlappingBoxes(20240603u, 20000, 0.02);
     const Errors errors = measure(pairs, SupportMode::Extents);
     print("boxes (extents support)", errors);
+    // [ch03-accuracy]
     CHECK(errors.failures == 0);
     CHECK(test::percentile(errors.depth, 0.95) <= 1e-5);
     CHECK(test::percentile(errors.depth, 1.0) <= 1e-3);
@@ -102,6 +103,7 @@ TEST_CASE("EPA matches the exact SAT depth and axis of 20,000 random overlapping
     CHECK(errors.worstSurface <= 1e-4);
     CHECK(errors.worstSeparation <= 1e-4);
     CHECK(errors.worstAxisOverlap <= 1e-3);
+    // [ch03-accuracy]
 }
 
 TEST_CASE("EPA gives the same answers with vertex support", "[ch03][epa]") {

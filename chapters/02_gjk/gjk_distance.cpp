@@ -1,0 +1,111 @@
+// GJK, the distance query: the closest points of two separated shapes (chapter 7 builds
+// continuous collision on it).
+
+#include "02_gjk/gjk_walk.h"
+
+#include <cmath>
+
+namespace stepwise {
+
+using namespace gjk_detail;
+
+namespace {
+
+// [ch02-cores]
+// A sphere is a point grown by its radius, a capsule a segment grown by its radius. On the grown
+// shape every support point is new, so GJK only converges in the limit and its simplex fills
+// with slivers; on the cores (a point, a segment: polytopes) it ends after a few steps with an
+// exact feature, and the radii come off at the end (van den Bergen, "Collision Detection in
+// Interactive 3D Environments", 2004, 4.3.5; Box2D's b2ShapeDistance does the same). A zero-size
+// box is a point and a box of half extents (0, h, 0) the segment, so the box support serves.
+ConvexProxy coreOf(const ConvexProxy& proxy, Shape& storage, Real& radius) {
+    ConvexProxy core = proxy;
+    radius = 0;
+    if (proxy.shape->type == ShapeType::Sphere || proxy.shape->type == ShapeType::Capsule) {
+        const Real halfHeight = proxy.shape->type == ShapeType::Capsule ? proxy.shape->halfHeight : Real(0);
+        storage = Shape::box(Vec3(0, halfHeight, 0));
+        radius = proxy.shape->radius;
+        core.shape = &storage;
+    }
+    return core;
+}
+// [ch02-cores]
+
+}  // namespace
+
+GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int maxIterations) {
+    GjkDistanceResult result;
+    if (!isValidProxy(a) || !isValidProxy(b)) {
+        result.exit = GjkExit::Degenerate;
+        return result;
+    }
+    // Tolerances from the whole shapes, the walk on their cores.
+    const GjkTolerances tolerances = gjkTolerances(a, b);
+    Shape coreStorageA, coreStorageB;
+    Real radiusA = 0, radiusB = 0;
+    const RelativePair pair = seenFromA(coreOf(a, coreStorageA, radiusA), coreOf(b, coreStorageB, radiusB));
+    const Real touchingSquared = tolerances.touching * tolerances.touching;
+
+    Walk walk = startWalk(pair, tolerances);
+    result.iterations = 1;
+    GjkExit exit = walk.v.squaredNorm() <= touchingSquared ? GjkExit::Intersect : GjkExit::IterationCap;
+    // [ch02-distance-loop]
+    while (exit == GjkExit::IterationCap && result.iterations < maxIterations) {
+        const Vec3 direction = -walk.v;
+        const SupportPoint point = minkowskiSupport(pair.a, pair.b, direction);
+        ++result.iterations;
+
+        // Bounds on the distance: |v| from above (v is a point of A - B), v.w / |v| from below
+        // (the support plane through w). Stop when they agree to a relative tolerance
+        // (van den Bergen 1999, eq. 4): |v|^2 - v.w <= eps |v|^2.
+        const Real distanceSquared = walk.v.squaredNorm();
+        if (distanceSquared - walk.v.dot(point.w) <= tolerances.relative * distanceSquared) {
+            exit = GjkExit::Separated;
+            break;
+        }
+        if (alreadyInSimplex(walk.simplex, point.w, tolerances.touching)) {
+            exit = GjkExit::RepeatedSupport;
+            break;
+        }
+        addAndReduce(walk, point, tolerances.scale);
+        const Real newDistanceSquared = walk.v.squaredNorm();
+        if (!std::isfinite(newDistanceSquared)) {
+            exit = GjkExit::Degenerate;
+            break;
+        }
+        if (walk.inside || newDistanceSquared <= touchingSquared) {
+            exit = GjkExit::Intersect;
+            break;
+        }
+        if (newDistanceSquared >= distanceSquared) {
+            exit = walk.degenerate ? GjkExit::Degenerate : GjkExit::NoProgress;
+            break;
+        }
+    }
+    // [ch02-distance-loop]
+
+    // [ch02-closest-points]
+    // v = sum_i weight_i (a_i - b_i), so the same weights applied to the shape points give the
+    // closest points of the cores (van den Bergen 1999, section 3); the radii then move them
+    // towards each other along the axis between the cores.
+    Vec3 coreA = Vec3::Zero(), coreB = Vec3::Zero();
+    for (int i = 0; i < walk.simplex.count; ++i) {
+        coreA += walk.weights[i] * walk.simplex.vertices[i].onA;
+        coreB += walk.weights[i] * walk.simplex.vertices[i].onB;
+    }
+    const Real coreDistance = exit == GjkExit::Intersect ? Real(0) : walk.v.norm();
+    const Vec3 axisAToB = coreDistance > 0 ? Vec3(-walk.v / coreDistance) : Vec3::Zero();
+    result.pointA = coreA + radiusA * axisAToB + pair.offset;
+    result.pointB = coreB - radiusB * axisAToB + pair.offset;
+    const Real gap = coreDistance - radiusA - radiusB;
+    result.separated = gap > tolerances.touching;
+    result.distance = result.separated ? gap : Real(0);
+    // [ch02-closest-points]
+    result.exit = exit;
+    result.newestDropped = walk.newestDropped;
+    result.simplex = walk.simplex;
+    toWorld(result.simplex, pair.offset);
+    return result;
+}
+
+}  // namespace stepwise
