@@ -1,6 +1,6 @@
 # Every `// [name]` marker in the code must be shown by some `\snippet file name` in docs/,
-cmake_policy(SET CMP0057 NEW)  # IN_LIST under cmake -P
 # and every shown marker must exist: text and code cannot drift apart.
+cmake_policy(SET CMP0057 NEW)  # IN_LIST under cmake -P
 file(GLOB_RECURSE code_files ${SOURCE}/chapters/*.h ${SOURCE}/chapters/*.cpp ${SOURCE}/common/*.h
      ${SOURCE}/common/*.cpp ${SOURCE}/tests/*.h ${SOURCE}/tests/*.cpp ${SOURCE}/bench/*.cpp)
 set(defined "")

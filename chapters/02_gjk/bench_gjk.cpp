@@ -121,8 +121,10 @@ void countIterations(const CaseProxies& proxies, CaseMeasurement& measurement) {
     measurement.intersectingFraction = double(intersecting) / count;
 }
 
+// [ch02-bench-timing]
 // One timed pass per query kind; keeps the best time per query seen so far. The best of many
-// short runs is the estimate least disturbed by other processes on a shared machine.
+// short runs is the estimate least disturbed by other processes on a shared machine, and the
+// cases take turns within each repetition (runGjkBench), so a burst of load hits all alike.
 long timeOnce(const CaseProxies& proxies, CaseMeasurement& measurement) {
     const double count = double(proxies.a.size());
     long sink = 0;
@@ -134,6 +136,7 @@ long timeOnce(const CaseProxies& proxies, CaseMeasurement& measurement) {
     measurement.distanceNs = std::min(measurement.distanceNs, clock.seconds() * 1e9 / count);
     return sink;
 }
+// [ch02-bench-timing]
 
 std::string withSuffix(const std::string& path, const std::string& extension, const std::string& suffix) {
     const bool hasExtension = path.size() >= extension.size() &&
@@ -202,7 +205,6 @@ int runGjkBench(const BenchOptions& options) {
     const int repetitions = options.quick ? 15 : 40;
     const int pairsPerGap = options.quick ? 300 : 3000;
 
-    // [ch02-bench-timing]
     CsvTable timing({"pair", "support", "ns_intersect", "ns_distance", "mean_iterations", "max_iterations",
                      "mean_distance_iterations", "intersecting"});
     CsvTable iterations({"pair", "support", "iterations", "fraction"});
@@ -248,9 +250,7 @@ int runGjkBench(const BenchOptions& options) {
         distanceSeries.y.push_back(double(queries) / double(pairCount));
     }
     plot.series.push_back(distanceSeries);
-    // [ch02-bench-timing]
 
-    // [ch02-bench-classification]
     // Columns per variant: wrong answers, exits other than intersect/separated, and queries in
     // which the newest support point was dropped (a region the "skip" shortcut never tests).
     std::vector<std::string> columns = {"gap_m", "pairs", "touching_m"};
@@ -264,7 +264,6 @@ int runGjkBench(const BenchOptions& options) {
             for (int variant = 0; variant < kVariantCount; ++variant) cells.push_back(std::to_string(counts[variant]));
         classification.addRow(cells);
     }
-    // [ch02-bench-classification]
 
     const std::string precision = sizeof(Real) == 4 ? "float" : "double";
     const std::vector<FigureTable> figures = {

@@ -142,25 +142,33 @@ void gjkPanel(World& world, Panel& panel) {
 }  // namespace
 
 std::vector<Vec3> minkowskiPoints(const Body& a, const Body& b, SupportMode mode) {
+    // Each shape as points: a polytope by its corners, a round shape by support points in
+    // directions spread over the sphere (as many as keep the total within what buildConvexHull
+    // takes). A - B is the hull of all their differences.
+    std::vector<Vec3> pointsA = worldCorners(a);
+    std::vector<Vec3> pointsB = worldCorners(b);
+    auto sample = [&](const Body& body, int count) {
+        const ConvexProxy proxy = makeProxy(body, mode);
+        std::vector<Vec3> samples;
+        const Real golden = kPi * (3 - std::sqrt(Real(5)));  // Fibonacci sphere of directions
+        for (int i = 0; i < count; ++i) {
+            const Real y = 1 - 2 * (Real(i) + Real(0.5)) / Real(count);
+            const Real r = std::sqrt(std::max(Real(0), 1 - y * y));
+            samples.push_back(proxy.support(Vec3(r * std::cos(golden * Real(i)), y, r * std::sin(golden * Real(i)))));
+        }
+        return samples;
+    };
+    if (pointsA.empty() && pointsB.empty()) {
+        pointsA = sample(a, 11);
+        pointsB = sample(b, 11);
+    } else if (pointsA.empty()) {
+        pointsA = sample(a, std::max(4, kMaxHullPoints / int(pointsB.size())));
+    } else if (pointsB.empty()) {
+        pointsB = sample(b, std::max(4, kMaxHullPoints / int(pointsA.size())));
+    }
     std::vector<Vec3> points;
-    const std::vector<Vec3> cornersA = worldCorners(a);
-    const std::vector<Vec3> cornersB = worldCorners(b);
-    if (!cornersA.empty() && !cornersB.empty()) {
-        for (const Vec3& onA : cornersA)
-            for (const Vec3& onB : cornersB) points.push_back(onA - onB);
-        return points;
-    }
-    // Round shapes: sample the support map on a Fibonacci sphere of directions.
-    const ConvexProxy proxyA = makeProxy(a, mode);
-    const ConvexProxy proxyB = makeProxy(b, mode);
-    const int count = 162;
-    const Real golden = kPi * (3 - std::sqrt(Real(5)));
-    for (int i = 0; i < count; ++i) {
-        const Real y = 1 - 2 * (Real(i) + Real(0.5)) / Real(count);
-        const Real r = std::sqrt(std::max(Real(0), 1 - y * y));
-        const Vec3 direction(r * std::cos(golden * Real(i)), y, r * std::sin(golden * Real(i)));
-        points.push_back(minkowskiSupport(proxyA, proxyB, direction).w);
-    }
+    for (const Vec3& onA : pointsA)
+        for (const Vec3& onB : pointsB) points.push_back(onA - onB);
     return points;
 }
 
@@ -214,8 +222,8 @@ void addChapter02Scenes(Registry& registry) {
     sphereDiamond.name = "gjk-sphere-diamond";
     sphereDiamond.chapter = 2;
     sphereDiamond.category = "GJK";
-    sphereDiamond.observe = "Each tip of the spinning diamond dips into the sphere; A - B is a rounded diamond, and "
-                            "GJK needs more iterations near the round parts than for two boxes.";
+    sphereDiamond.observe = "Each tip of the spinning diamond dips into the sphere and the pair turns red; above, "
+                            "A - B is the diamond grown by the sphere, and the label counts GJK's support points.";
     sphereDiamond.build = buildGjkSphereDiamond;
     sphereDiamond.draw = [](const World& world, DebugDraw& draw) {
         drawGjkOverlay(world, draw, currentMode(), Vec3(0, Real(3), 0));

@@ -19,8 +19,9 @@ World buildGjkTwoBoxes();
 /// A static sphere and a spinning octahedron ("diamond" hull) whose tips dip into it.
 World buildGjkSphereDiamond();
 
-/// Points of the Minkowski difference A - B of two bodies: every vertex difference when both
-/// are polytopes (64 for two boxes), else support points in 162 directions.
+/// Points of the Minkowski difference A - B of two bodies, for drawing: every corner difference
+/// when both are polytopes (64 for two boxes); a round shape contributes support points in
+/// spread directions instead of corners (at most kMaxHullPoints differences in all then).
 std::vector<Vec3> minkowskiPoints(const Body& a, const Body& b, SupportMode mode);
 
 /// The GJK overlay for bodies 0 and 1: the pair in red while GJK says they intersect, A - B

@@ -26,6 +26,7 @@ std::vector<GapClassification> classifyNearContact(std::uint32_t seed, const std
     for (double gap : gaps) {
         GapClassification row;
         row.gap = gap;
+        // [ch02-near-contact]
         for (int index = 0; index < pairsPerGap; ++index) {
             const BoxPair pair = nearContactBoxPair(random, gap);
             if (pair.exactGap == 0) continue;  // rounding landed exactly on contact: no truth to test
@@ -43,6 +44,7 @@ std::vector<GapClassification> classifyNearContact(std::uint32_t seed, const std
                 if (result.newestDropped > 0) ++row.newestDropped[m];
             }
         }
+        // [ch02-near-contact]
         if (row.pairs > 0) row.touchingTolerance /= row.pairs;
         rows.push_back(row);
     }

@@ -163,18 +163,21 @@ std::vector<CollidePair> parseCollidePairs(const std::string& jsonText, const st
 // [ch03-collide-parse]
 
 std::string collideResultsToJson(const std::vector<ContactQuery>& results) {
-    Json list = Json::array();
-    for (const ContactQuery& query : results) {
-        list.push_back({{"intersect", query.intersect},
-                        {"depth", tidy(query.depth)},
-                        {"normal", toJson(query.normal)},
-                        {"point_a", toJson(query.pointA)},
-                        {"point_b", toJson(query.pointB)},
-                        {"gjk_iterations", query.gjkIterations},
-                        {"epa_iterations", query.epaIterations},
-                        {"routine", query.routine}});
+    // One result per line: a batch of thousands stays readable and diffable.
+    std::string text = "{\n  \"results\": [";
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const ContactQuery& query = results[i];
+        const Json entry = {{"intersect", query.intersect},
+                            {"depth", tidy(query.depth)},
+                            {"normal", toJson(query.normal)},
+                            {"point_a", toJson(query.pointA)},
+                            {"point_b", toJson(query.pointB)},
+                            {"gjk_iterations", query.gjkIterations},
+                            {"epa_iterations", query.epaIterations},
+                            {"routine", query.routine}};
+        text += (i ? ",\n    " : "\n    ") + entry.dump();
     }
-    return Json{{"results", list}}.dump(2) + "\n";
+    return text + (results.empty() ? "]\n}\n" : "\n  ]\n}\n");
 }
 
 int runCollideCommand(const CollideArgs& args, std::ostream& out, std::ostream& err) {

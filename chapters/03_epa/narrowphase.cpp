@@ -28,9 +28,10 @@ bool isValidShape(const Shape& shape) {
 
 namespace {
 
+/// A finite position and a finite rotation that can be normalised (any length but zero).
 bool isValidPose(const Transform& transform) {
     return isFinite(transform.position) && transform.rotation.coeffs().allFinite() &&
-           std::abs(transform.rotation.norm() - Real(1)) < Real(1e-2);
+           transform.rotation.norm() > kEpsilon;
 }
 
 /// The pairs with a closed form, with A and B in the order the routines expect them.

@@ -16,13 +16,16 @@ namespace {
 
 constexpr Real kMarkerHalfSize = Real(0.03);   // m, the red contact cubes
 constexpr Real kNormalLength = Real(0.6);      // m, the yellow arrow
-const Vec3 kPolytopeAnchor(Real(3.5), Real(1.5), 0);  // where the stepper draws A - B's origin
+const Vec3 kPolytopeAnchor(Real(3), Real(1.5), 0);  // where the stepper draws A - B's origin
+constexpr Real kPolytopeScale = Real(0.5);            // A - B is drawn at half size beside the bodies
 
-int addKinematic(World& world, const std::string& name, const Shape& shape, const Vec3& position,
-                 const Quat& rotation, const Vec3& spin) {
+/// A static A (drawn grey) and a dynamic B (drawn in its own colour) that turns in zero gravity:
+/// chapter 3 has no solver, so B simply turns through A and the contact moves.
+int addPairBody(World& world, const std::string& name, const Shape& shape, const Vec3& position, const Quat& rotation,
+            const Vec3& spin) {
     BodyDef def;
     def.name = name;
-    def.type = BodyType::Kinematic;
+    def.type = spin.isZero() ? BodyType::Static : BodyType::Dynamic;
     def.shape = shape;
     def.transform.position = position;
     def.transform.rotation = rotation;
@@ -65,9 +68,9 @@ World buildEpaStepper() {
     World world;
     world.name = "epa-step-by-step";
     world.settings.gravity = Vec3::Zero();
-    addKinematic(world, "a", Shape::box(Vec3(Real(0.8), Real(0.5), Real(0.6))), Vec3(0, 1, 0), tilt(0, Real(0.3), 0),
+    addPairBody(world, "a", Shape::box(Vec3(Real(0.8), Real(0.5), Real(0.6))), Vec3(0, 1, 0), tilt(0, Real(0.3), 0),
                  Vec3::Zero());
-    addKinematic(world, "b", Shape::box(Vec3(Real(0.5), Real(0.4), Real(0.5))), Vec3(Real(0.7), Real(1.6), Real(0.2)),
+    addPairBody(world, "b", Shape::box(Vec3(Real(0.5), Real(0.4), Real(0.5))), Vec3(Real(0.7), Real(1.6), Real(0.2)),
                  tilt(Real(0.5), Real(0.2), Real(0.7)), Vec3(Real(0.1), Real(0.25), 0));
     return world;
 }
@@ -88,8 +91,8 @@ World buildContactGallery() {
     for (int lane = 0; lane < 6; ++lane) {
         const Vec3 base(Real(2.2) * (lane - Real(2.5)), 1, 0);
         const std::string name = names[lane];
-        addKinematic(world, name + "-a", lanes[lane][0], base, tilt(Real(0.2), Real(0.1) * lane, 0), Vec3::Zero());
-        addKinematic(world, name + "-b", lanes[lane][1], base + Vec3(Real(0.15), Real(0.75), Real(0.1)),
+        addPairBody(world, name + "-a", lanes[lane][0], base, tilt(Real(0.2), Real(0.1) * lane, 0), Vec3::Zero());
+        addPairBody(world, name + "-b", lanes[lane][1], base + Vec3(Real(0.15), Real(0.75), Real(0.1)),
                      tilt(Real(0.4), 0, Real(0.3)), Vec3(Real(0.2), Real(0.5), Real(0.1)));
     }
     return world;
@@ -111,18 +114,19 @@ EpaResult drawEpaStep(const World& world, int bodyA, int bodyB, int expansions, 
     const EpaResult epa = epaPenetration(a, b, gjk.simplex, settings);
 
     // The polytope lives in the space of A - B, around its origin; draw it beside the bodies.
+    const auto place = [&](const Vec3& w) { return Vec3(polytopeAnchor + kPolytopeScale * w); };
     for (const EpaFace& face : epa.polytope.faces) {
         if (face.removed) continue;
         for (int i = 0; i < 3; ++i) {
-            draw.line(polytopeAnchor + epa.polytope.vertices[face.vertices[i]].w,
-                      polytopeAnchor + epa.polytope.vertices[face.vertices[(i + 1) % 3]].w, colors::kGrey);
+            draw.line(place(epa.polytope.vertices[face.vertices[i]].w),
+                      place(epa.polytope.vertices[face.vertices[(i + 1) % 3]].w), colors::kGrey);
         }
     }
-    draw.triangle(polytopeAnchor + epa.closestFace[0].w, polytopeAnchor + epa.closestFace[1].w,
-                  polytopeAnchor + epa.closestFace[2].w, colors::kBlue);
+    draw.triangle(place(epa.closestFace[0].w), place(epa.closestFace[1].w), place(epa.closestFace[2].w),
+                  colors::kBlue);
     draw.point(polytopeAnchor, 8, colors::kWhite);
-    draw.arrow(polytopeAnchor, polytopeAnchor + epa.depth * epa.normal, colors::kYellow);
-    draw.text(polytopeAnchor + Vec3(0, Real(-2.2), 0),
+    draw.arrow(polytopeAnchor, place(epa.depth * epa.normal), colors::kYellow);
+    draw.text(polytopeAnchor + Vec3(0, Real(-1.3), 0),
               "A - B after " + std::to_string(epa.iterations) + " expansions (" + toString(epa.exit) + ")" +
                   describe(", depth %.5f m", double(epa.depth)),
               colors::kWhite);
@@ -139,8 +143,9 @@ void addChapter03Scenes(Registry& registry) {
     stepper.name = "epa-step-by-step";
     stepper.chapter = 3;
     stepper.category = "Contacts";
-    stepper.observe = "Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right) "
-                      "closes in on the boundary; red cubes mark the contact points, the yellow arrow the normal.";
+    stepper.observe = "Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right, "
+                      "half size) closes in on the boundary; red cubes mark the contact points inside the overlap "
+                      "(Z: wireframe), the yellow arrow the normal.";
     stepper.build = buildEpaStepper;
     stepper.draw = [state](const World& world, DebugDraw& draw) {
         state->last = drawEpaStep(world, 0, 1, state->converged ? -1 : state->expansions, kPolytopeAnchor, draw);
@@ -164,7 +169,8 @@ void addChapter03Scenes(Registry& registry) {
     gallery.chapter = 3;
     gallery.category = "Contacts";
     gallery.observe = "Six shape pairs turning into each other; each label names the routine that found the "
-                      "contact (closed form or GJK + EPA), red cubes mark the points, yellow arrows the normals.";
+                      "contact (closed form or GJK + EPA), red cubes mark the points (Z: wireframe), yellow "
+                      "arrows the normals.";
     gallery.build = buildContactGallery;
     gallery.draw = [](const World& world, DebugDraw& draw) {
         for (std::size_t i = 0; i + 1 < world.bodies.size(); i += 2) {

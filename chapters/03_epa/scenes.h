@@ -10,15 +10,16 @@ namespace stepwise {
 class DebugDraw;
 class Registry;
 
-/// Two overlapping boxes (kinematic; B turns slowly) for the EPA stepper.
+/// Two overlapping boxes for the EPA stepper: A static, B turning slowly in zero gravity.
 World buildEpaStepper();
 
-/// Pairs of every shape combination, overlapping and turning: closed forms and GJK + EPA.
+/// Pairs of every shape combination, overlapping, B turning: closed forms and GJK + EPA.
 World buildContactGallery();
 
 /// What the stepper draws: the contact (red cubes on each shape, yellow normal arrow), and
-/// beside the bodies the EPA polytope of A - B in wireframe with its closest face in blue and
-/// the origin in white. `expansions` < 0 shows the converged polytope.
+/// beside the bodies, at half size around `polytopeAnchor`, the EPA polytope of A - B in
+/// wireframe with its closest face in blue and the origin in white. `expansions` < 0 shows the
+/// converged polytope.
 EpaResult drawEpaStep(const World& world, int bodyA, int bodyB, int expansions, const Vec3& polytopeAnchor,
                       DebugDraw& draw);
 

@@ -57,6 +57,12 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
     ContactRows result;
     for (size_t contactIndex = 0; contactIndex < world.contacts.size(); ++contactIndex) {
         const Contact& contact = world.contacts[contactIndex];
+        const int bodyCount = static_cast<int>(bodies.size());
+        if (contact.bodyA < 0 || contact.bodyA >= bodyCount || contact.bodyB < 0 || contact.bodyB >= bodyCount ||
+            contact.bodyA == contact.bodyB || contact.pointCount < 0 || contact.pointCount > 4) {
+            result.invalidSkipped += std::clamp(contact.pointCount, 1, 4);
+            continue;
+        }
         const SolverBody& bodyA = bodies[contact.bodyA];
         const SolverBody& bodyB = bodies[contact.bodyB];
         if (bodyA.inverseMass == 0 && bodyB.inverseMass == 0) continue;  // nothing here can move
@@ -129,11 +135,13 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
 
 int storeContactImpulses(World& world, const ContactRows& contactRows) {
     // Points without rows (separating, invalid) carried no impulse.
-    for (Contact& contact : world.contacts)
+    for (Contact& contact : world.contacts) {
+        contact.pointCount = std::clamp(contact.pointCount, 0, 4);  // a malformed count cannot index past points[3]
         for (int i = 0; i < contact.pointCount; ++i) {
             contact.points[i].normalImpulse = 0;
             contact.points[i].tangentImpulse[0] = contact.points[i].tangentImpulse[1] = 0;
         }
+    }
     for (const ContactRowRef& ref : contactRows.points) {
         Contact& contact = world.contacts[ref.contactIndex];
         ContactPoint& point = contact.points[ref.pointIndex];

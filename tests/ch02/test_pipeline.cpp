@@ -106,9 +106,14 @@ TEST_CASE("the overlay draws A - B, the origin, the simplex and the iteration co
     for (const auto& command : draw.commands())
         iterationText = iterationText || (command.kind == RecordingDraw::Kind::Text && command.message.find("iterations") != std::string::npos);
     CHECK(iterationText);
-    // Round shapes: A - B is sampled from the support map instead.
+    // A round shape is sampled from its support map instead; the hull stays buildable.
     const World round = buildGjkSphereDiamond();
-    CHECK(minkowskiPoints(round.bodies[0], round.bodies[1], SupportMode::Extents).size() == 162);
+    const std::vector<Vec3> roundPoints = minkowskiPoints(round.bodies[0], round.bodies[1], SupportMode::Extents);
+    CHECK(roundPoints.size() > 64);
+    CHECK(roundPoints.size() <= size_t(kMaxHullPoints));
+    RecordingDraw roundDraw;
+    drawGjkOverlay(round, roundDraw, SupportMode::Extents, Vec3(0, 3, 0));
+    CHECK(roundDraw.count(RecordingDraw::Kind::Hull) == 2);  // the diamond itself, and A - B
 }
 
 TEST_CASE("chapter 2 registers its scenes, pipeline and bench", "[ch02][registry]") {

@@ -224,4 +224,13 @@ TEST_CASE("bad contacts are skipped, never NaN", "[ch04][rows]") {
     world.contacts.assign(1, test::makeContact(0, 1, Vec3::UnitY(), Vec3(0, Real(-0.001), 0), Real(0.001)));
     CHECK(solveContacts(world, 0).rows == 3);  // dt = 0: no Baumgarte, still finite
     CHECK(world.motionOf(1)->linearVelocity.allFinite());
+
+    // Malformed contacts: a body index out of range, a body against itself, too many points.
+    world.contacts.assign(1, test::makeContact(0, 7, Vec3::UnitY(), Vec3::Zero(), Real(0.001)));
+    world.contacts.push_back(test::makeContact(1, 1, Vec3::UnitY(), Vec3::Zero(), Real(0.001)));
+    world.contacts.push_back(test::makeContact(0, 1, Vec3::UnitY(), Vec3::Zero(), Real(0.001)));
+    world.contacts.back().pointCount = 9;
+    const SolveStats malformed = solveContacts(world, Real(1.0 / 60));
+    CHECK(malformed.rows == 0);
+    CHECK(world.contacts.empty());
 }
