@@ -290,8 +290,8 @@ int runGjkBench(const BenchOptions& options) {
             writeSvgTables(withSuffix(options.plotPath, ".svg", "-table"), figures);
         }
     } catch (const std::exception& error) {
-        std::cerr << "error: " << error.what() << "\n";
-        return 1;
+        std::cerr << "error: bench gjk: " << error.what() << "\n";
+        return 2;  // a path the user gave cannot be written: bad input
     }
     return 0;
 }

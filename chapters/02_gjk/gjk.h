@@ -52,6 +52,8 @@ struct GjkDistanceResult {
     Real distance = 0;                // 0 when not separated
     Vec3 pointA = Vec3::Zero();       // closest point on A (world)
     Vec3 pointB = Vec3::Zero();       // closest point on B (world)
+    /// The final simplex; for spheres and capsules it is that of their cores (a point, a
+    /// segment), which the walk uses instead of the round shapes (gjk_distance.cpp).
     Simplex simplex;
     int iterations = 0;
     GjkExit exit = GjkExit::IterationCap;

@@ -101,7 +101,8 @@ GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int ma
     result.separated = gap > tolerances.touching;
     result.distance = result.separated ? gap : Real(0);
     // [ch02-closest-points]
-    result.exit = exit;
+    // Separated cores whose radii overlap are intersecting shapes: a clean answer too.
+    result.exit = exit == GjkExit::Separated && !result.separated ? GjkExit::Intersect : exit;
     result.newestDropped = walk.newestDropped;
     result.simplex = walk.simplex;
     toWorld(result.simplex, pair.offset);

@@ -38,13 +38,13 @@ struct EpaContext {
     Real scale = 1;
 };
 
+bool containsOrigin(const SupportPoint points[4], Real slack);
+
 // [ch03-seed]
 /// The polytope's first faces need a tetrahedron around the origin. GJK often stops earlier:
 /// with a triangle or an edge through the origin (touching or shallow contact) or a single
 /// point. Following Bullet's EncloseOrigin, add support points in directions the current points
 /// do not span until four points bound a volume that holds the origin.
-bool containsOrigin(const SupportPoint points[4], Real slack);
-
 bool growToTetrahedron(const EpaContext& context, SupportPoint points[4], int count) {
     const Vec3 axes[3] = {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
     const auto tryDirection = [&](const Vec3& direction) {
@@ -121,7 +121,6 @@ bool containsOrigin(const SupportPoint points[4], Real slack) {
     }
     return true;
 }
-
 
 /// The face the contact comes from. A face of A - B that EPA has split into several coplanar
 /// triangles gives them all the same distance up to round-off, and the smallest of those may

@@ -5,6 +5,8 @@
 
 namespace stepwise {
 
+struct SolveStats;
+
 /// Where the solve sits in a step.
 enum class StepOrder {
     /// The first seed's order: integrate (velocities and positions), collide, solve. The solved
@@ -27,5 +29,11 @@ const char* solveStageName(SolverKind kind);
 /// Chapter 3's pipeline plus the solve stage, in the order chooseStepOrder picks.
 Pipeline makeChapter04Pipeline(const World& world);
 Pipeline makeChapter04Pipeline(const World& world, StepOrder order);
+
+/// What the pipeline's solve stage measured in its last run (the last substep of the last
+/// frame): rows, removed points, residual. nullptr for a pipeline without chapter 4's stage.
+/// Copies of a pipeline share this record (and the velocity copy restitution uses): make one
+/// pipeline per world.
+const SolveStats* lastSolveStats(const Pipeline& pipeline);
 
 }  // namespace stepwise

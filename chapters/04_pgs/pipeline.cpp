@@ -25,22 +25,34 @@ const char* solveStageName(SolverKind kind) {
 Pipeline makeChapter04Pipeline(const World& world) { return makeChapter04Pipeline(world, chooseStepOrder(world)); }
 
 // [ch04-pipeline]
-Pipeline makeChapter04Pipeline(const World& world, StepOrder order) {
-    Pipeline pipeline = makeChapter03Pipeline(world);
+namespace {
 
+// The solve stage as a named callable, so lastSolveStats() can find what it measured.
+struct SolveStage {
     // The velocities from before this step's forces, for restitution's approach speed. The
     // velocity stage fills them, the solve stage uses them once and clears them (so a disabled
     // velocity stage cannot leave stale ones behind).
+    std::shared_ptr<std::vector<SolverBody>> approach;
+    std::shared_ptr<SolveStats> stats;
+
+    void operator()(World& world, Real dt) const {
+        *stats = solveContacts(world, dt, approach->empty() ? nullptr : approach.get());
+        approach->clear();
+    }
+};
+
+}  // namespace
+
+Pipeline makeChapter04Pipeline(const World& world, StepOrder order) {
+    Pipeline pipeline = makeChapter03Pipeline(world);
+
     auto approach = std::make_shared<std::vector<SolverBody>>();
 
     Stage solve;
     solve.name = solveStageName(world.settings.solver);
     // The stage reads Settings::solver every step, so the demo's toggle takes effect at once; the
     // name says which solver the world asked for when the pipeline was planned.
-    solve.run = [approach](World& stepWorld, Real dt) {
-        solveContacts(stepWorld, dt, approach->empty() ? nullptr : approach.get());
-        approach->clear();
-    };
+    solve.run = SolveStage{approach, std::make_shared<SolveStats>()};
 
     if (order == StepOrder::IntegrateFirst) {
         pipeline.add(std::move(solve));
@@ -48,9 +60,9 @@ Pipeline makeChapter04Pipeline(const World& world, StepOrder order) {
     }
 
     // Split semi-implicit Euler around the solve. The velocity half takes the integrate stage's
-    // place (before collision detection, which does not move anything); the position half runs
-    // last, with the velocities the solver produced. A resting body then sits at exactly the slop
-    // (see the page for the measurement against IntegrateFirst).
+    // place (before collision detection, which does not move anything) and first keeps a copy of
+    // the velocities for restitution; the position half runs last, with the velocities the solver
+    // produced. A resting body then sits at exactly the slop (the page measures both orders).
     Stage velocities;
     velocities.name = "integrate:velocities";
     velocities.run = [approach](World& stepWorld, Real dt) {
@@ -71,5 +83,11 @@ Pipeline makeChapter04Pipeline(const World& world, StepOrder order) {
     return pipeline;
 }
 // [ch04-pipeline]
+
+const SolveStats* lastSolveStats(const Pipeline& pipeline) {
+    const Stage* stage = pipeline.find("solve");
+    const SolveStage* solve = stage ? stage->run.target<SolveStage>() : nullptr;
+    return solve ? solve->stats.get() : nullptr;
+}
 
 }  // namespace stepwise

@@ -23,6 +23,7 @@ const Material* firstDynamicMaterial(const World& world) {
 void solverPanel(World& world, Panel& panel) {
     Settings& settings = world.settings;
     panel.sliderInt("iterations", settings.solverIterations, 1, 50);
+    panel.sliderInt("substeps", settings.substeps, 1, 16);
     float beta = static_cast<float>(settings.baumgarte);
     if (panel.sliderFloat("Baumgarte beta", beta, 0.0f, 1.0f)) settings.baumgarte = static_cast<Real>(beta);
     float slopMm = static_cast<float>(settings.slop * 1000);
@@ -56,16 +57,18 @@ void registerChapter04(Registry& registry) {
                        "and few iterations",
                        buildDropScene, drawImpulses, solverPanel});
     registry.addScene({"pgs-bounce", 4, category,
-                       "balls with restitution 0.3, 0.6, 0.9 and 1 bounce to e^2 of their drop height; e = 1 keeps "
-                       "its height",
+                       "balls with restitution 0.3, 0.6, 0.9 and 1 bounce to about e^2 of their drop height; e = 1 "
+                       "keeps its height",
                        [] { return buildBounceScene(); }, drawImpulses, solverPanel});
     registry.addScene({"pgs-resting", 4, category,
-                       "the ball rests still at the slop depth; the box, held by one contact point, jitters "
-                       "(chapter 6 fixes it); the 10 kg ball barely sinks into the 1 kg one",
+                       "the ball rests still at the slop depth; the box, held by one contact point, rocks and "
+                       "wanders (chapter 6 fixes it); the 1 kg ball under the 10 kg one is pressed deeper than the "
+                       "slop (no warm starting yet: try 20 iterations)",
                        buildRestingScene, drawImpulses, solverPanel});
     registry.addScene({"pgs-friction", 4, category,
-                       "the box on the ramp steeper than atan(mu) slides, the one on the gentler ramp stays; the "
-                       "ball slides, then rolls at 5/7 of its speed",
+                       "at 8 substeps the box on the ramp steeper than atan(mu) slides and the one on the gentler "
+                       "ramp stays (at 1 substep its rocking corner walks it down); the ball slides, then rolls at "
+                       "5/7 of its speed",
                        [] { return buildFrictionScene(); }, drawImpulses, solverPanel});
     registry.addScene({"pgs-sphere-pit", 4, category,
                        "forty balls settle into a pile: many coupled contacts; compare Gauss-Seidel with Jacobi",

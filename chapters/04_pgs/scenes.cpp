@@ -124,9 +124,12 @@ World buildRampScene(Real angle, Real friction, int* box) {
 
 World buildFrictionScene(Real friction) {
     World world = namedWorld("pgs-friction");
+    // One contact point per box rocks it from corner to corner; at 60 Hz that rocking walks a box
+    // down even a gentle ramp. 8 substeps make it small enough to show Coulomb's law.
+    world.settings.substeps = 8;
     addGroundPlane(world, friction);
     const Real critical = std::atan(friction);
-    const Real offsets[] = {Real(0.15), Real(-0.15)};  // rad: steeper, gentler than atan(mu)
+    const Real offsets[] = {Real(0.2), Real(-0.2)};  // rad: steeper, gentler than atan(mu)
     for (int i = 0; i < 2; ++i) {
         const Real angle = critical + offsets[i];
         const Quat tilt(Eigen::AngleAxis<Real>(angle, Vec3::UnitZ()));

@@ -27,8 +27,8 @@ World buildBounceScene(Real height = 2);
 /// all placed at the slop depth so they start at rest: one-point contacts make the box jitter.
 World buildRestingScene();
 
-/// "pgs-friction": two ramps of friction mu, one steeper and one gentler than atan(mu), each
-/// with a box on it, and a ball launched sliding without spin on flat ground.
+/// "pgs-friction": two ramps of friction mu, 0.2 rad steeper and gentler than atan(mu), each
+/// with a box on it, and a ball launched sliding without spin on flat ground; 8 substeps.
 World buildFrictionScene(Real friction = Real(0.5));
 
 /// A box resting on an inclined plane: a static ramp at `angle` radians about +Z with a unit

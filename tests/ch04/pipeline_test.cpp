@@ -1,7 +1,10 @@
 // The chapter as the programs see it: stage names, scenes, the draw hook, the benches.
+#include "03_epa/chapter.h"
 #include "04_pgs/benches.h"
 #include "04_pgs/chapter.h"
+#include "04_pgs/contact_constraints.h"
 #include "04_pgs/scenes.h"
+#include "app/panel.h"
 #include "app/registry.h"
 #include "support/fixture.h"
 #include "world/debug_draw.h"
@@ -33,6 +36,18 @@ TEST_CASE("the pipeline's stage names say what runs", "[ch04][pipeline]") {
           std::vector<std::string>{"integrate:rk4", "narrowphase:gjk_epa", "solve:jacobi"});
 }
 
+TEST_CASE("the solve stage reports what it did", "[ch04][pipeline]") {
+    World world = buildRestingScene();
+    Pipeline pipeline = makeChapter04Pipeline(world);
+    const SolveStats* stats = lastSolveStats(pipeline);
+    REQUIRE(stats != nullptr);
+    pipeline.step(world);
+    CHECK(stats->contactPoints == 4);  // box, ball, light ball on the ground; heavy on light
+    CHECK(stats->rows == 12);
+    CHECK(stats->residual.rms >= 0);
+    CHECK(lastSolveStats(makeChapter03Pipeline(world)) == nullptr);
+}
+
 TEST_CASE("the registry's chapter 4 pipeline is this chapter's", "[ch04][pipeline]") {
     Registry registry;
     registerChapters(registry);
@@ -42,7 +57,7 @@ TEST_CASE("the registry's chapter 4 pipeline is this chapter's", "[ch04][pipelin
     CHECK(registry.findBench("resting") != nullptr);
 }
 
-TEST_CASE("every chapter 4 scene runs finite, comes to rest inside its bounds, and draws its impulses",
+TEST_CASE("every chapter 4 scene runs finite, keeps its bodies above the ground, and draws its impulses",
           "[ch04][pipeline]") {
     Registry registry;
     registerChapters(registry);
@@ -70,7 +85,7 @@ TEST_CASE("every chapter 4 scene runs finite, comes to rest inside its bounds, a
     CHECK(scenes >= 4);
 }
 
-TEST_CASE("bench solver measures: more iterations, less residual; Gauss-Seidel below Jacobi", "[ch04][bench]") {
+TEST_CASE("bench solver measures: more iterations give less residual and Gauss-Seidel stays below Jacobi", "[ch04][bench]") {
     const std::string csv = (std::filesystem::temp_directory_path() / "ch04_bench_solver_test.csv").string();
     std::ostringstream out;
     BenchOptions options;
@@ -100,4 +115,79 @@ TEST_CASE("bench solver measures: more iterations, less residual; Gauss-Seidel b
     BenchOptions bad = options;
     bad.csvPath = "/nonexistent-dir/x.csv";
     CHECK(runSolverBench(bad) == 2);
+}
+
+namespace {
+
+// A panel that records the controls it is shown and "moves" the ones a test names.
+class ScriptedPanel final : public Panel {
+public:
+    std::map<std::string, float> floats;
+    std::map<std::string, int> ints;
+    std::vector<std::string> labels;
+
+    void text(const std::string&) override {}
+    bool checkbox(const std::string& label, bool&) override { return seen(label); }
+    bool sliderFloat(const std::string& label, float& value, float, float) override {
+        seen(label);
+        if (!floats.count(label)) return false;
+        value = floats[label];
+        return true;
+    }
+    bool sliderInt(const std::string& label, int& value, int, int) override {
+        seen(label);
+        if (!ints.count(label)) return false;
+        value = ints[label];
+        return true;
+    }
+    bool button(const std::string& label) override { return seen(label); }
+    bool combo(const std::string& label, int& index, const char* const*, int) override {
+        seen(label);
+        if (!ints.count(label)) return false;
+        index = ints[label];
+        return true;
+    }
+
+private:
+    bool seen(const std::string& label) {
+        labels.push_back(label);
+        return false;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("the solver panel sets iterations, beta, slop, restitution, friction and the solver", "[ch04][pipeline]") {
+    Registry registry;
+    registerChapters(registry);
+    const SceneEntry* entry = registry.findScene("pgs-drop");
+    REQUIRE(entry);
+    World world = entry->build();
+    ScriptedPanel panel;
+    panel.ints = {{"iterations", 3}, {"substeps", 2}, {"solver", 1}};
+    panel.floats = {{"Baumgarte beta", 0.5f}, {"slop (mm)", 10.0f}, {"restitution", 0.7f}, {"friction", 0.2f}};
+    entry->panel(world, panel);
+    CHECK(world.settings.solverIterations == 3);
+    CHECK(world.settings.substeps == 2);
+    CHECK(world.settings.solver == SolverKind::Jacobi);
+    CHECK(world.settings.baumgarte == Approx(0.5));
+    CHECK(world.settings.slop == Approx(0.01));
+    for (const Body& body : world.bodies) {
+        CHECK(body.material.restitution == Approx(0.7));
+        CHECK(body.material.friction == Approx(0.2));
+    }
+    // The stage follows the toggle at once: a pipeline planned for Gauss-Seidel, run after the
+    // toggle, steps exactly like one planned for Jacobi.
+    World planned = entry->build();
+    Pipeline plannedPipeline = makeChapter04Pipeline(planned);
+    REQUIRE(plannedPipeline.find("solve:pgs"));
+    planned.settings.solver = SolverKind::Jacobi;
+    World fresh = entry->build();
+    fresh.settings.solver = SolverKind::Jacobi;
+    Pipeline freshPipeline = makeChapter04Pipeline(fresh);
+    REQUIRE(freshPipeline.find("solve:jacobi"));
+    test::simulate(planned, plannedPipeline, 1);
+    test::simulate(fresh, freshPipeline, 1);
+    for (size_t i = 0; i < planned.bodies.size(); ++i)
+        CHECK(planned.bodies[i].transform.position == fresh.bodies[i].transform.position);
 }
