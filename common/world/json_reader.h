@@ -1,0 +1,158 @@
+#pragma once
+// Strict JSON reading for the project's formats (scenes, collide queries): a JsonCursor knows
+// its own path from the document root, so every rejection is ONE
+// SceneError("bodies[3].shape.box.half_extents[1]", "must be > 0"). Unknown keys are errors
+// (with a "did you mean" for near misses), duplicate keys are errors, overflowing numbers are
+// errors. Shared by the scene loader and by chapters that read JSON (chapter 3's `collide`).
+
+#include "world/scene.h"
+#include "world/shape.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace stepwise {
+
+using Json = nlohmann::ordered_json;  // keeps the author's key order for messages and saving
+
+template <class E>
+using Names = std::vector<std::pair<const char*, E>>;
+
+/// "%g" for numbers inside messages.
+std::string formatForMessage(double value);
+
+/// A JSON value together with its path from the document root. Each getter checks the type
+/// and range of the value and throws SceneError(path(), message) when it is wrong.
+class JsonCursor {
+public:
+    JsonCursor(const Json& value, std::string path) : value_(value), path_(std::move(path)) {}
+
+    const Json& json() const { return value_; }
+    const std::string& path() const { return path_; }
+    [[noreturn]] void fail(const std::string& message) const { throw SceneError(path_, message); }
+
+    /// Checks that this is an object whose keys are all among `accepted`.
+    void expectObject(const std::vector<const char*>& accepted) const {
+        if (!value_.is_object()) fail("must be an object");
+        for (const auto& item : value_.items()) {
+            const auto known = [&](const char* key) { return item.key() == key; };
+            if (std::none_of(accepted.begin(), accepted.end(), known)) fail(unknownKeyMessage(item.key(), accepted));
+        }
+    }
+    bool has(const char* key) const { return value_.contains(key); }
+    JsonCursor child(const char* key) const {
+        if (!has(key)) fail(std::string("missing required key \"") + key + "\"");
+        return JsonCursor(value_.at(key), path_.empty() ? key : path_ + "." + key);
+    }
+    std::optional<JsonCursor> optional(const char* key) const {
+        return has(key) ? std::optional<JsonCursor>(child(key)) : std::nullopt;
+    }
+    /// Checks that this is an array and returns its size.
+    std::size_t arraySize() const {
+        if (!value_.is_array()) fail("must be an array");
+        return value_.size();
+    }
+    JsonCursor element(std::size_t index) const {
+        return JsonCursor(value_.at(index), path_ + "[" + std::to_string(index) + "]");
+    }
+
+    Real number() const {
+        if (!value_.is_number()) fail("must be a number");
+        const double value = value_.get<double>();
+        if (!std::isfinite(value) || std::abs(value) > double(kRealMax)) fail("must be a finite number");
+        return Real(value);
+    }
+    Real positive() const { return check(number() > 0, "must be > 0"); }
+    Real positiveAtMost(Real high) const {
+        const Real value = number();
+        if (!(value > 0 && value <= high)) fail("must be > 0 and <= " + formatForMessage(high));
+        return value;
+    }
+    Real nonNegative() const { return check(number() >= 0, "must be >= 0"); }
+    Real inRange(Real low, Real high) const {
+        const Real value = number();
+        if (value < low || value > high) fail("must be in [" + formatForMessage(low) + ", " + formatForMessage(high) + "]");
+        return value;
+    }
+    int integer(int low, int high) const {
+        const Real value = number();
+        if (std::floor(value) != value) fail("must be an integer");
+        if (value < Real(low) || value > Real(high))
+            fail("must be an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+        return int(value);
+    }
+    bool boolean() const {
+        if (!value_.is_boolean()) fail("must be true or false");
+        return value_.get<bool>();
+    }
+    std::string string() const {
+        if (!value_.is_string()) fail("must be a string");
+        return value_.get<std::string>();
+    }
+    std::string nonEmptyString() const {
+        if (string().empty()) fail("must not be empty");
+        return string();
+    }
+    Vec3 vec3() const {
+        if (!value_.is_array() || value_.size() != 3) fail("must be an array of 3 numbers [x, y, z]");
+        return Vec3(element(0).number(), element(1).number(), element(2).number());
+    }
+    /// [lo, hi] with lo <= hi.
+    std::pair<Real, Real> interval() const {
+        if (!value_.is_array() || value_.size() != 2) fail("must be an array of 2 numbers [lo, hi]");
+        const Real low = element(0).number();
+        const Real high = element(1).number();
+        if (low > high) fail("must be [lo, hi] with lo <= hi");
+        return {low, high};
+    }
+    /// [x, y, z, w], normalised; rejected when its length is far from 1 (likely a typo).
+    Quat unitQuaternion() const {
+        if (!value_.is_array() || value_.size() != 4) fail("must be an array of 4 numbers [x, y, z, w]");
+        const Eigen::Vector4d q(element(0).number(), element(1).number(), element(2).number(), element(3).number());
+        if (std::abs(q.norm() - 1.0) > 1e-3)
+            fail("must be a unit quaternion [x, y, z, w] (its length is " + formatForMessage(q.norm()) + ")");
+        const Eigen::Vector4d unit = q.normalized();
+        return Quat(Real(unit.w()), Real(unit.x()), Real(unit.y()), Real(unit.z()));
+    }
+    template <class E>
+    E choice(const Names<E>& names) const {
+        const std::string text = string();
+        for (const auto& [name, value] : names)
+            if (text == name) return value;
+        std::string accepted;
+        for (const auto& entry : names)
+            accepted += std::string(accepted.empty() ? "" : ", ") + "\"" + entry.first + "\"";
+        fail("must be one of " + accepted + " (got \"" + text + "\")");
+    }
+
+private:
+    Real check(bool ok, const char* message) const {
+        if (!ok) fail(message);
+        return Real(value_.get<double>());
+    }
+    static std::string unknownKeyMessage(const std::string& key, const std::vector<const char*>& accepted);
+
+    const Json& value_;
+    std::string path_;
+};
+
+/// Parses JSON text. nlohmann keeps the last of two equal keys silently, so a parser callback
+/// tracks the current path and rejects duplicates; the same path names a number that overflows.
+/// Malformed text is rejected naming `source`, the line and the column.
+Json parseStrictJson(const std::string& text, const std::string& source);
+
+/// Reads `{ "box": {...} }`, `{ "sphere": {...} }`, `{ "capsule": {...} }` or `{ "convex": {...} }`.
+Shape readShape(const JsonCursor& cursor);
+
+/// The shortest decimal that reads back as the same Real; whole numbers as integers.
+Json tidyNumber(Real value);
+Json toJson(const Vec3& v);
+Json toJson(const Quat& q);
+
+}  // namespace stepwise

@@ -1,0 +1,101 @@
+// Scenes out: the inverse of loading, up to float round-off (scene_load.cpp reads them back).
+#include "world/json_reader.h"
+#include "world/scene.h"
+
+#include <stdexcept>
+
+namespace stepwise {
+namespace {
+
+Json shapeToJson(const Shape& shape) {
+    switch (shape.type) {
+    case ShapeType::Box: return {{"box", {{"half_extents", toJson(shape.halfExtents)}}}};
+    case ShapeType::Sphere: return {{"sphere", {{"radius", tidyNumber(shape.radius)}}}};
+    case ShapeType::Capsule:
+        return {{"capsule", {{"radius", tidyNumber(shape.radius)}, {"half_height", tidyNumber(shape.halfHeight)}}}};
+    case ShapeType::Convex: break;
+    }
+    Json vertices = Json::array();
+    if (shape.hull)
+        for (const Vec3& vertex : shape.hull->vertices) vertices.push_back(toJson(vertex));
+    return {{"convex", {{"vertices", vertices}}}};
+}
+
+const std::string& bodyName(const World& world, int index) {
+    if (index < 0 || std::size_t(index) >= world.bodies.size())
+        throw std::invalid_argument("saveSceneToString: body index " + std::to_string(index) + " out of range");
+    return world.bodies[std::size_t(index)].name;
+}
+
+}  // namespace
+
+std::string saveSceneToString(const World& world) {
+    const Settings& s = world.settings;
+    Json scene = {{"format", "stepwise-scene"}, {"version", 1}, {"name", world.name}};
+    scene["settings"] = {{"gravity", toJson(s.gravity)},
+                         {"dt", tidyNumber(s.dt)},
+                         {"substeps", s.substeps},
+                         {"solver_iterations", s.solverIterations},
+                         {"baumgarte", tidyNumber(s.baumgarte)},
+                         {"slop", tidyNumber(s.slop)},
+                         {"warm_starting", s.warmStarting},
+                         {"broadphase", toString(s.broadphase)},
+                         {"ccd", toString(s.ccd)},
+                         {"integrator", toString(s.integrator)},
+                         {"gyroscopic", toString(s.gyroscopic)},
+                         {"solver", toString(s.solver)},
+                         {"restitution_threshold", tidyNumber(s.restitutionThreshold)}};
+    Json bodies = Json::array();
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        const Body& body = world.bodies[i];
+        Json out = {{"name", body.name}, {"type", toString(body.type)}, {"shape", shapeToJson(body.shape)},
+                    {"position", toJson(body.transform.position)}, {"orientation", toJson(body.transform.rotation)}};
+        if (const Motion* motion = world.motionOf(int(i))) {
+            out["velocity"] = toJson(motion->linearVelocity);
+            out["angular_velocity"] = toJson(motion->angularVelocity);
+            if (body.type == BodyType::Dynamic) out["mass"] = tidyNumber(motion->mass);
+            if (motion->integrator) out["integrator"] = toString(*motion->integrator);
+        }
+        out["friction"] = tidyNumber(body.material.friction);
+        out["restitution"] = tidyNumber(body.material.restitution);
+        if (body.bullet) out["bullet"] = true;
+        bodies.push_back(out);
+    }
+    scene["bodies"] = bodies;
+    Json joints = Json::array();
+    for (const JointDesc& joint : world.joints) {
+        Json out = {{"type", joint.type}, {"a", bodyName(world, joint.bodyA)}, {"b", bodyName(world, joint.bodyB)},
+                    {"anchor_a", toJson(joint.localAnchorA)}, {"anchor_b", toJson(joint.localAnchorB)}};
+        if (joint.type == "distance" && joint.length) out["length"] = tidyNumber(*joint.length);
+        if (joint.type == "hinge" || joint.type == "cone_twist") out["axis"] = toJson(joint.axis);
+        if (joint.type == "hinge" && joint.limits)
+            out["limits"] = {tidyNumber(joint.limits->first), tidyNumber(joint.limits->second)};
+        if (joint.type == "cone_twist") out["cone_angle"] = tidyNumber(joint.coneAngle);
+        if (joint.type == "cone_twist" && joint.twistLimits)
+            out["twist_limits"] = {tidyNumber(joint.twistLimits->first), tidyNumber(joint.twistLimits->second)};
+        joints.push_back(out);
+    }
+    if (!joints.empty()) scene["joints"] = joints;
+    Json forces = Json::array();
+    for (const Spring& spring : world.springs) {
+        Json out = {{"type", "spring"}, {"a", bodyName(world, spring.bodyA)}};
+        if (spring.bodyB >= 0) out["b"] = bodyName(world, spring.bodyB);
+        out["anchor_a"] = toJson(spring.localAnchorA);
+        out["anchor_b"] = toJson(spring.anchorB);
+        out["rest_length"] = tidyNumber(spring.restLength);
+        out["stiffness"] = tidyNumber(spring.stiffness);
+        out["damping"] = tidyNumber(spring.damping);
+        forces.push_back(out);
+    }
+    for (const Damping& damping : world.dampings) {
+        Json out = {{"type", "damping"}};
+        if (damping.body >= 0) out["body"] = bodyName(world, damping.body);
+        out["linear"] = tidyNumber(damping.linear);
+        out["angular"] = tidyNumber(damping.angular);
+        forces.push_back(out);
+    }
+    if (!forces.empty()) scene["forces"] = forces;
+    return scene.dump(2) + "\n";
+}
+
+}  // namespace stepwise
