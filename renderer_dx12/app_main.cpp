@@ -70,20 +70,22 @@ int runOffscreen(DemoState& state, const Options& options) {
     io.DisplaySize = ImVec2(static_cast<float>(options.width), static_cast<float>(options.height));
     io.DeltaTime = 1.0f / 60.0f;
     Camera camera;
-    const float aspect = float(options.width) / float(options.height);
-    camera.frame(state.framingBounds(), aspect);
     ViewOptions view;
     const long frames = std::max(0L, options.frames);
     for (long i = 0; i < frames; ++i) state.step();
     DrawList list;
-    // Dear ImGui lays auto-sized windows out over a couple of frames: build three, draw the last.
-    for (int uiFrame = 0; uiFrame < 3; ++uiFrame) {
+    // Dear ImGui lays auto-sized windows out over a couple of frames: build four, draw the
+    // last. The camera is framed (from the scene at frame 0, as the window does on loading)
+    // once the panel has its size, so the scene lands beside it.
+    constexpr int kUiFrames = 4;
+    for (int uiFrame = 0; uiFrame < kUiFrames; ++uiFrame) {
         ImGui_ImplDX12_NewFrame();
         ImGui::NewFrame();
         drawShell(state, view, camera, shellInfo(device, 60));
         state.buildDrawList(list, view);
         drawLabels(list, camera, io.DisplaySize.x, io.DisplaySize.y);
         ImGui::Render();
+        if (uiFrame == kUiFrames - 2) frameScene(camera, state.initialFraming(), view, io.DisplaySize.x, io.DisplaySize.y);
     }
     device.beginFrame();
     recordFrame(device, renderer, target.view(), frameConstants(camera, view, options.width, options.height), list,
@@ -132,7 +134,7 @@ int runWindow(DemoState& state, const Options& options) {
         Camera camera;
         ViewOptions view;
         DrawList list;
-        camera.frame(state.framingBounds(), float(target.width()) / float(target.height()));
+        frameScene(camera, state.initialFraming(), view, float(target.width()), float(target.height()));
         auto last = std::chrono::steady_clock::now();
         const auto start = last;
         float fps = 60;
@@ -160,7 +162,7 @@ int runWindow(DemoState& state, const Options& options) {
             ImGui_ImplWin32_NewFrame();
             ImGui::NewFrame();
             const float width = float(target.width()), height = float(target.height());
-            if (handleInput(state, view, camera, height, seconds)) camera.frame(state.framingBounds(), width / height);
+            if (handleInput(state, view, camera, height, seconds)) frameScene(camera, state.framing(), view, width, height);
             state.advance(seconds);
             drawShell(state, view, camera, shellInfo(device, fps));
             state.buildDrawList(list, view);

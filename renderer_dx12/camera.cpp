@@ -42,20 +42,39 @@ Mat4f Camera::projection(float aspect) const {
     Mat4f m = Mat4f::Zero();
     m(0, 0) = f / std::max(aspect, 1e-3f);
     m(1, 1) = f;
+    m(0, 2) = -shiftX;  // x_ndc = x_clip / w + shiftX, with w = -z_view
     m(2, 2) = farPlane / (nearPlane - farPlane);
     m(2, 3) = nearPlane * farPlane / (nearPlane - farPlane);
     m(3, 2) = -1;
     return m;
 }
 
-void Camera::frame(const Aabb& box, float aspect) {
+void Camera::frame(const Aabb& box, float aspect, float viewLeft, float viewRight) {
     if (!box.min.allFinite() || !box.max.allFinite() || (box.min.array() > box.max.array()).any()) return;
+    viewLeft = std::clamp(viewLeft, 0.0f, 0.9f);
+    viewRight = std::clamp(viewRight, viewLeft + 0.1f, 1.0f);
     const Vec3f center = box.center().cast<float>();
-    const float radius = std::max(0.5f, static_cast<float>(box.extents().norm()));
-    // Fit the bounding sphere in the narrower of the two fields of view.
-    const float halfFov = 0.5f * fovY * std::min(1.0f, std::max(aspect, 0.2f));
-    distance = std::min(1.15f * radius / std::sin(halfFov), 0.5f * farPlane);
+    const Vec3f half = box.extents().cast<float>().cwiseMax(Vec3f::Constant(0.25f));
+    // Tangents of the half angles the box may fill, with a margin (kFill) around it.
+    constexpr float kFill = 0.85f;
+    const float tanY = std::tan(0.5f * fovY);
+    const float tanUp = kFill * tanY;
+    const float tanSide = kFill * tanY * std::max(aspect, 0.05f) * (viewRight - viewLeft);
+    // The eye sits at target - distance * forward. A corner q (from the centre) is at depth
+    // distance + q.f, and stays in view while |q.r| <= tanSide * depth and |q.u| <= tanUp * depth:
+    // the smallest distance that satisfies every corner (tighter than a bounding sphere).
+    const Vec3f along = forward(), side = right(), up = side.cross(along);
+    float needed = 0.5f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3f q((corner & 1) ? half.x() : -half.x(), (corner & 2) ? half.y() : -half.y(),
+                      (corner & 4) ? half.z() : -half.z());
+        const float depthOffset = q.dot(along);
+        needed = std::max({needed, std::abs(q.dot(side)) / tanSide - depthOffset, std::abs(q.dot(up)) / tanUp - depthOffset,
+                           2 * nearPlane - depthOffset});
+    }
+    distance = std::min(needed, 0.5f * farPlane);
     target = center;
+    shiftX = viewLeft + viewRight - 1;  // the middle of the free part, in device x
     position = target - distance * forward();
 }
 

@@ -21,6 +21,10 @@ struct Camera {
     float fovY = 0.87f;             // rad (50 degrees)
     float nearPlane = 0.05f;
     float farPlane = 2000;
+    /// Lens shift in normalised device x (-1..1 spans the image): the point looked at lands at
+    /// this x instead of the centre, so a scene can sit beside the ImGui panel while the
+    /// orbit still turns about the scene.
+    float shiftX = 0;
 
     Vec3f eye() const;
     Vec3f forward() const;          // unit view direction
@@ -29,8 +33,10 @@ struct Camera {
     Mat4f projection(float aspect) const;
     Mat4f viewProjection(float aspect) const { return projection(aspect) * view(); }
 
-    /// Looks at the box from the current direction, close enough that all of it is in view.
-    void frame(const Aabb& box, float aspect);
+    /// Looks at the box from the current direction, as close as keeps its eight corners in
+    /// view, centred in the horizontal part [viewLeft, viewRight] of the image (fractions of
+    /// its width; the rest is covered, e.g. by the panel).
+    void frame(const Aabb& box, float aspect, float viewLeft = 0, float viewRight = 1);
     void orbit(float deltaYaw, float deltaPitch);
     void pan(float dxPixels, float dyPixels, float viewportHeight);
     void zoom(float wheelSteps);

@@ -1,6 +1,7 @@
 #include "demo_state.h"
 
 #include "app/runner.h"
+#include "bounds_draw.h"
 #include "world/shape.h"
 
 #include <algorithm>
@@ -27,6 +28,7 @@ void DemoState::setWorld(World next) {
         pipeline = Pipeline();
         pipelineError = error.what();
     }
+    initialFraming_ = framing();
 }
 
 void DemoState::loadScene(int index) {
@@ -104,7 +106,7 @@ Real DemoState::groundLevel() const {
     return lowest < kRealMax ? std::min(lowest, Real(0)) : Real(0);
 }
 
-Aabb DemoState::framingBounds() const {
+Aabb DemoState::bodyBounds() const {
     Aabb moving, all;
     for (const Body& body : world.bodies) {
         const Aabb box = computeAabb(body.shape, body.transform);
@@ -117,11 +119,34 @@ Aabb DemoState::framingBounds() const {
         result.min = Vec3(-2, 0, -2);
         result.max = Vec3(2, 2, 2);
     }
-    // Keep a static ground in the picture: extend down to it (not for bodies in free space).
+    return result;
+}
+
+Framing DemoState::framing() const {
+    Framing framing;
+    Aabb& result = framing.bounds;
+    result = bodyBounds();
+    // The scene's overlay counts as content: chapter 2 draws A - B above its bodies, chapter 3
+    // the EPA polytope beside them. The hook only reads the world, so measuring it is harmless.
+    if (const SceneEntry* entry = scene(); entry && entry->draw) {
+        BoundsDraw measure;
+        try {
+            entry->draw(world, measure);
+        } catch (const std::exception&) {
+            // A hook that throws draws nothing here either; the bodies alone are framed.
+        }
+        if (!measure.empty()) result.grow(measure.bounds());
+        framing.labels = std::move(measure.labels);
+    }
+    // Keep the ground (a static slab, or the grid at groundLevel()) in the picture: always when
+    // there is a static body; for bodies in free space only when the ground is near them, so a
+    // scene far up in the air is not shrunk to a dot.
     bool hasStatic = false;
     for (const Body& body : world.bodies) hasStatic = hasStatic || body.type == BodyType::Static;
-    if (hasStatic) result.min.y() = std::min(result.min.y(), groundLevel());
-    return result;
+    const Real ground = groundLevel();
+    const Real size = std::max(Real(1), (result.max - result.min).maxCoeff());
+    if (hasStatic || result.min.y() - ground <= 2 * size) result.min.y() = std::min(result.min.y(), ground);
+    return framing;
 }
 
 void DemoState::buildDrawList(DrawList& list, const ViewOptions& options) const {
@@ -129,7 +154,7 @@ void DemoState::buildDrawList(DrawList& list, const ViewOptions& options) const 
     list.wireframe = options.wireframe;
     if (options.showGrid) {
         // A 1 m grid around the scene, 1 mm above the ground so it does not z-fight with it.
-        const Aabb bounds = framingBounds();
+        const Aabb bounds = bodyBounds();
         const Real y = groundLevel() + Real(0.001);
         const int extent = std::clamp(static_cast<int>(std::ceil(std::max(bounds.extents().x(), bounds.extents().z()))) + 6, 8, 200);
         const int cx = static_cast<int>(std::round(bounds.center().x())), cz = static_cast<int>(std::round(bounds.center().z()));

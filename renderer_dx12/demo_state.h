@@ -22,6 +22,13 @@ struct ViewOptions {
     bool showPanel = true;        // F2 hides the whole ImGui shell
 };
 
+/// What the camera must show: a box, and the text labels whose anchors lie in it (a label
+/// runs to the right of its anchor, so the shell keeps room for it).
+struct Framing {
+    Aabb bounds;
+    std::vector<TextLabel> labels;
+};
+
 class DemoState {
 public:
     static constexpr int kHistory = 180;  // frames of stage timings kept for the graph
@@ -44,8 +51,13 @@ public:
 
     /// Bodies, the scene's own drawing, contacts, and the ground grid.
     void buildDrawList(DrawList& list, const ViewOptions& options) const;
-    /// Box to frame: the moving bodies when there are any (a huge ground would dwarf them).
-    Aabb framingBounds() const;
+    /// The moving bodies when there are any (a huge ground would dwarf them), else all bodies.
+    Aabb bodyBounds() const;
+    /// What to frame now: bodyBounds() plus everything the scene's draw hook emits (overlays
+    /// beside or above the bodies), extended down to the ground so the ground stays in view.
+    Framing framing() const;
+    /// framing() when the scene was loaded (frame 0): what a new scene is framed from.
+    const Framing& initialFraming() const { return initialFraming_; }
     /// Height of the ground: top of the widest static body, else the lowest body bottom, else 0.
     Real groundLevel() const;
 
@@ -69,6 +81,7 @@ private:
     int sceneIndex_ = -1;
     std::string loadedFile_;
     double accumulator_ = 0;
+    Framing initialFraming_;
 };
 
 }  // namespace stepwise::render

@@ -7,6 +7,7 @@
 #include <imgui.h>
 #include <imgui_impl_dx12.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -54,6 +55,9 @@ void initImGui(Device& device) {
     io.IniFilename = nullptr;  // every run starts with the same layout (and screenshots match)
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 4;
+    // One pixel less between rows than the default: chapter 4's panel then fits a 720-pixel
+    // image without a scroll bar.
+    ImGui::GetStyle().ItemSpacing.y = 3;
     ImGui_ImplDX12_Init(device.device(), Device::kFramesInFlight, kColorFormat, device.imguiHeap(),
                         device.imguiHeap()->GetCPUDescriptorHandleForHeapStart(),
                         device.imguiHeap()->GetGPUDescriptorHandleForHeapStart());
@@ -85,6 +89,22 @@ void writeExpectations(const std::string& path, const DemoState& state, const Ca
             << static_cast<int>(std::lround(color.r * 255)) << ' ' << static_cast<int>(std::lround(color.g * 255)) << ' '
             << static_cast<int>(std::lround(color.b * 255)) << ' ' << minShade << '\n';
     };
+    // Where the box the camera was framed from (the scene at frame 0, overlay included) lands:
+    // the test wants all of it on screen and clear of the panel.
+    const Aabb& framed = state.initialFraming().bounds;
+    if ((framed.min.array() <= framed.max.array()).all()) {
+        float x0 = float(width), y0 = float(height), x1 = 0, y1 = 0;
+        bool behind = false;
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3 at((corner & 1) ? framed.max.x() : framed.min.x(), (corner & 2) ? framed.max.y() : framed.min.y(),
+                          (corner & 4) ? framed.max.z() : framed.min.z());
+            float x = 0, y = 0;
+            if (!camera.project(at.cast<float>(), float(width), float(height), x, y)) behind = true;
+            x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+        }
+        if (behind) out << "framed behind\n";
+        else out << "framed " << x0 << ' ' << y0 << ' ' << x1 << ' ' << y1 << '\n';
+    }
     // Same colours as drawWorld (common/world/debug_draw.cpp).
     for (size_t i = 0; i < state.world.bodies.size(); ++i) {
         const Body& body = state.world.bodies[i];

@@ -7,6 +7,7 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -61,28 +62,85 @@ void settingsSection(World& world) {
     if (ImGui::SliderFloat("gravity y", &gravity, -30.0f, 30.0f)) s.gravity.y() = static_cast<Real>(gravity);
 }
 
+/// Durations readable at a glance: "850 ns", "4.2 us", "1.25 ms", "2.5 s".
+void formatDuration(char* out, size_t size, double ms) {
+    if (ms < 0.001) std::snprintf(out, size, "%.0f ns", ms * 1e6);
+    else if (ms < 1.0) std::snprintf(out, size, "%.3g us", ms * 1e3);
+    else if (ms < 1000.0) std::snprintf(out, size, "%.3g ms", ms);
+    else std::snprintf(out, size, "%.3g s", ms * 1e-3);
+}
+
+/// The smallest 1, 2 or 5 times a power of ten at or above `value`: a graph's full scale.
+double niceCeiling(double value) {
+    if (!(value > 0)) return 0;
+    const double decade = std::pow(10.0, std::floor(std::log10(value)));
+    for (double step : {1.0, 2.0, 5.0, 10.0})
+        if (step * decade >= value * (1 - 1e-9)) return step * decade;
+    return 10 * decade;
+}
+
+/// A history graph scaled to its recent maximum so that sub-millisecond curves fill its height.
+/// "Maximum" leaves out the top 5% of the samples: one slow step (often the very first)
+/// would otherwise flatten the rest into the baseline. Those few clip at the top, and the
+/// graph's corner prints the full scale and, when it is higher, the peak.
+void historyGraph(const char* id, const std::deque<float>& history, float height, const char* caption = nullptr) {
+    if (history.empty()) return;
+    std::vector<float> samples(history.begin(), history.end());
+    std::vector<float> sorted = samples;
+    std::sort(sorted.begin(), sorted.end());
+    const double peak = static_cast<double>(sorted.back());
+    const double typicalMax = static_cast<double>(sorted[(sorted.size() - 1) * 95 / 100]);
+    const double top = niceCeiling(typicalMax > 0 ? typicalMax : peak);
+    // Auto-resized windows give a negative width only a few pixels: size the graph explicitly.
+    const float width = std::max(ImGui::GetContentRegionAvail().x, 300.0f);
+    const ImVec2 corner = ImGui::GetCursorScreenPos();
+    ImGui::PushID(id);
+    ImGui::PlotLines("##history", samples.data(), static_cast<int>(samples.size()), 0, nullptr, 0.0f,
+                     top > 0 ? static_cast<float>(top) : 1.0f, ImVec2(width, height));
+    ImGui::PopID();
+    char scale[64] = "0";
+    if (top > 0) {
+        char full[24], highest[24];
+        formatDuration(full, sizeof full, top);
+        formatDuration(highest, sizeof highest, peak);
+        if (peak > top) std::snprintf(scale, sizeof scale, "0..%s, peak %s", full, highest);
+        else std::snprintf(scale, sizeof scale, "0..%s", full);
+    }
+    // Captions on a dark backing, so the curve under them does not garble them.
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImU32 backing = ImGui::GetColorU32(ImGuiCol_WindowBg, 0.8f);
+    const ImVec2 scaleSize = ImGui::CalcTextSize(scale);
+    const ImVec2 scaleAt(corner.x + width - scaleSize.x - 3, corner.y + 1);
+    draw->AddRectFilled(ImVec2(scaleAt.x - 2, scaleAt.y), ImVec2(scaleAt.x + scaleSize.x + 1, scaleAt.y + scaleSize.y), backing);
+    draw->AddText(scaleAt, ImGui::GetColorU32(ImGuiCol_TextDisabled), scale);
+    if (caption) {
+        const ImVec2 captionSize = ImGui::CalcTextSize(caption);
+        const ImVec2 captionAt(corner.x + 3, corner.y + 1);
+        draw->AddRectFilled(ImVec2(captionAt.x - 1, captionAt.y), ImVec2(captionAt.x + captionSize.x + 2, captionAt.y + captionSize.y),
+                            backing);
+        draw->AddText(captionAt, ImGui::GetColorU32(ImGuiCol_Text), caption);
+    }
+}
+
 void pipelineSection(DemoState& state) {
     if (!ImGui::CollapsingHeader("Pipeline", ImGuiTreeNodeFlags_DefaultOpen)) return;
     if (!state.pipelineError.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%s", state.pipelineError.c_str());
-    std::vector<float> samples;
+    char duration[32];
     for (Stage& stage : state.pipeline.stages()) {
         ImGui::Checkbox(stage.name.c_str(), &stage.enabled);
-        ImGui::SameLine(230);
-        ImGui::Text("%6.3f ms", stage.lastMs);
+        // A long stage name pushes the time right instead of running into it.
+        ImGui::SameLine();
+        ImGui::SetCursorPosX(std::max(ImGui::GetCursorPosX() + 8, 270.0f));
+        formatDuration(duration, sizeof duration, stage.lastMs);
+        ImGui::TextUnformatted(duration);
         auto found = state.stageHistory.find(stage.name);
-        if (found != state.stageHistory.end() && !found->second.empty()) {
-            samples.assign(found->second.begin(), found->second.end());
-            ImGui::PushID(stage.name.c_str());
-            ImGui::PlotLines("##history", samples.data(), static_cast<int>(samples.size()), 0, nullptr, 0.0f, FLT_MAX,
-                             ImVec2(-1, 22));
-            ImGui::PopID();
-        }
+        if (found != state.stageHistory.end()) historyGraph(stage.name.c_str(), found->second, 20);
     }
     if (!state.frameHistory.empty()) {
-        samples.assign(state.frameHistory.begin(), state.frameHistory.end());
-        char overlay[48];
-        std::snprintf(overlay, sizeof overlay, "step %.3f ms", static_cast<double>(samples.back()));
-        ImGui::PlotLines("##step", samples.data(), static_cast<int>(samples.size()), 0, overlay, 0.0f, FLT_MAX, ImVec2(-1, 40));
+        char caption[48];
+        formatDuration(duration, sizeof duration, static_cast<double>(state.frameHistory.back()));
+        std::snprintf(caption, sizeof caption, "whole step %s", duration);
+        historyGraph("##step", state.frameHistory, 32, caption);
     }
 }
 
@@ -139,7 +197,7 @@ void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellI
             }
             if (ImGui::Selectable(scenes[i]->name.c_str(), static_cast<int>(i) == state.sceneIndex())) {
                 state.loadScene(static_cast<int>(i));
-                camera.frame(state.framingBounds(), ImGui::GetIO().DisplaySize.x / std::max(1.0f, ImGui::GetIO().DisplaySize.y));
+                frameScene(camera, state.initialFraming(), view, ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
             }
         }
         ImGui::EndCombo();
@@ -240,6 +298,35 @@ bool shellRect(float rect[4]) {
     rect[2] = window->Pos.x + window->Size.x;
     rect[3] = window->Pos.y + window->Size.y;
     return true;
+}
+
+void frameScene(Camera& camera, const Framing& framing, const ViewOptions& view, float width, float height) {
+    // The panel's right edge (it sits at the left); 8 px of air between it and the scene.
+    constexpr float kUsualPanelRight = 405;
+    float left = 0;
+    if (view.showPanel) {
+        float rect[4];
+        left = (shellRect(rect) ? rect[2] : kUsualPanelRight) + 8;
+    }
+    // In a window too narrow for both, frame for the whole view: F2 hides the panel.
+    const float viewWidth = std::max(width, 1.0f), aspect = viewWidth / std::max(height, 1.0f);
+    const float leftFraction = left < 0.6f * viewWidth ? left / viewWidth : 0.0f;
+    float rightFraction = 1.0f;
+    camera.frame(framing.bounds, aspect, leftFraction, rightFraction);
+    // Labels run right from their anchors: while one ends past the right edge, give the
+    // scene that much less room and frame again (a few rounds settle it).
+    for (int round = 0; round < 4; ++round) {
+        float overflow = 0;
+        for (const TextLabel& label : framing.labels) {
+            float x = 0, y = 0;
+            if (!camera.project(label.at.cast<float>(), viewWidth, height, x, y)) continue;
+            overflow = std::max(overflow, x + ImGui::CalcTextSize(label.message.c_str()).x + 8 - viewWidth);
+        }
+        const float narrower = std::max(rightFraction - 1.1f * overflow / viewWidth, leftFraction + 0.35f);
+        if (overflow <= 0 || narrower >= rightFraction) break;
+        rightFraction = narrower;
+        camera.frame(framing.bounds, aspect, leftFraction, rightFraction);
+    }
 }
 
 }  // namespace stepwise::render

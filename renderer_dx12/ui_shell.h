@@ -37,5 +37,9 @@ bool handleInput(DemoState& state, ViewOptions& view, Camera& camera, float view
 void drawLabels(const DrawList& list, const Camera& camera, float width, float height);
 /// The rectangle the shell's main window covers (x0, y0, x1, y1), after ImGui::Render.
 bool shellRect(float rect[4]);
+/// Frames the scene in the part of a width x height view the panel leaves free (all of it
+/// when the panel is hidden; before the panel's first layout, its usual width is assumed),
+/// narrowing that part until the framing's labels end inside the image.
+void frameScene(Camera& camera, const Framing& framing, const ViewOptions& view, float width, float height);
 
 }  // namespace stepwise::render

@@ -12,7 +12,7 @@
 #include "app/bench_util.h"
 
 // The exact box-box oracle is shared with the test suites (header-only, double precision).
-#include "../../tests/support/box_oracle.h"
+#include "02_gjk/box_oracle.h"
 
 #include <algorithm>
 #include <cmath>

@@ -32,10 +32,16 @@ constexpr Real kCoplanar = Real(0.99999);
 // Chapter 2's GJK reports "intersect" for shapes this close (relative to their size).
 constexpr Real kTouching = 128 * kEpsilon;
 
+// Support points the seed search may spend before it gives up on building a tetrahedron: the
+// search recurses over subsets of GJK's points and over directions, and a pathological input
+// must not turn it into thousands of queries (a normal seed needs none, a shallow one a few).
+constexpr int kSeedBudget = 64;
+
 struct EpaContext {
     const ConvexProxy& a;
     const ConvexProxy& b;
     Real scale = 1;
+    int seedSupports = 0;
 };
 
 bool containsOrigin(const SupportPoint points[4], Real slack);
@@ -45,9 +51,10 @@ bool containsOrigin(const SupportPoint points[4], Real slack);
 /// with a triangle or an edge through the origin (touching or shallow contact) or a single
 /// point. Following Bullet's EncloseOrigin, add support points in directions the current points
 /// do not span until four points bound a volume that holds the origin.
-bool growToTetrahedron(const EpaContext& context, SupportPoint points[4], int count) {
+bool growToTetrahedron(EpaContext& context, SupportPoint points[4], int count) {
     const Vec3 axes[3] = {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
     const auto tryDirection = [&](const Vec3& direction) {
+        if (++context.seedSupports > kSeedBudget) return false;
         points[count] = minkowskiSupport(context.a, context.b, direction);
         return growToTetrahedron(context, points, count + 1);
     };
@@ -74,11 +81,13 @@ bool growToTetrahedron(const EpaContext& context, SupportPoint points[4], int co
         default: {
             const Vec3 e1 = points[1].w - points[0].w, e2 = points[2].w - points[0].w,
                        e3 = points[3].w - points[0].w;
+            // The sign of the volume orients every face, so it must be clear of its round-off
+            // (a few ulps of the product of the edge lengths); a thin tetrahedron is fine.
             const Real volume = std::abs(e1.cross(e2).dot(e3));
-            const Real scale = context.scale;
+            const bool solid = volume > kRoundOff * e1.norm() * e2.norm() * e3.norm();
             // GJK calls shapes within its touching tolerance (about 100 ulps of the size) of each
             // other intersecting, so the origin may lie that far outside their simplex.
-            return volume > kRoundOff * scale * scale * scale && containsOrigin(points, kTouching * scale);
+            return solid && containsOrigin(points, kTouching * context.scale);
         }
     }
 }
@@ -86,7 +95,7 @@ bool growToTetrahedron(const EpaContext& context, SupportPoint points[4], int co
 
 /// GJK's points normally seed the tetrahedron directly. When they cannot (four points on one
 /// plane, three on one line), fewer of them can: try the seed with each point left out in turn.
-bool seedTetrahedron(const EpaContext& context, SupportPoint points[4], int count) {
+bool seedTetrahedron(EpaContext& context, SupportPoint points[4], int count) {
     SupportPoint trial[4];
     std::copy(points, points + count, trial);
     if (growToTetrahedron(context, trial, count)) {
@@ -229,7 +238,7 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
     // The tolerance is relative to the pair's size (GJK's scale: the sum of the bounding radii);
     // below a few ulps of that size a float cannot tell a gap from round-off, so it never asks
     // for less.
-    EpaContext context{a, b, gjkTolerances(a, b).scale};
+    EpaContext context{a, b, gjkTolerances(a, b).scale, 0};
     if (!(context.scale > 0) || !isFinite(context.scale)) return fallbackContact(a, b, simplex);
     const Real tolerance = std::max(settings.relativeTolerance, kRoundOff) * context.scale;
 

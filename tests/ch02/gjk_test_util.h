@@ -3,7 +3,7 @@
 
 #include "02_gjk/gjk.h"
 #include "02_gjk/random_pairs.h"
-#include "support/box_oracle.h"
+#include "02_gjk/box_oracle.h"
 
 namespace stepwise {
 namespace testing {

@@ -1,4 +1,4 @@
-// GJK on random box pairs against the exact oracle (tests/support/box_oracle.h).
+// GJK on random box pairs against the exact oracle (chapters/02_gjk/box_oracle.h).
 
 #include "gjk_test_util.h"
 

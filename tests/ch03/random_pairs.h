@@ -3,7 +3,7 @@
 // std::uniform_real_distribution differs between standard libraries, these numbers do not.
 
 #include "math/math.h"
-#include "support/box_oracle.h"
+#include "02_gjk/box_oracle.h"
 
 #include <algorithm>
 #include <cmath>

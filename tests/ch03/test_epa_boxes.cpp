@@ -1,4 +1,4 @@
-// EPA against the exact separating-axis depth of overlapping boxes (tests/support/box_oracle.h).
+// EPA against the exact separating-axis depth of overlapping boxes (chapters/02_gjk/box_oracle.h).
 #include "03_epa/narrowphase.h"
 #include "ch03/random_pairs.h"
 

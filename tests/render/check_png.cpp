@@ -1,6 +1,7 @@
 // Checks a demo screenshot for content, natively (no wine): the image is not blank, at least
 // one body and (when the scene has one) the ground show in their colours where the camera
-// puts them, and the ImGui panel is drawn. The demo writes IMAGE.txt next to the image with
+// puts them, the ImGui panel is drawn, and the box the camera was framed from (bodies and the
+// scene's overlay) lies on screen and right of the panel. The demo writes IMAGE.txt next to the image with
 // those screen places (renderer_dx12/frame.cpp, writeExpectations), computed from the world
 // and the camera, never from the image.
 //   check_png IMAGE.png [EXPECTATIONS.txt]     screenshot check
@@ -169,6 +170,7 @@ int checkScreenshot(const std::string& imagePath, const std::string& expectPath)
     const int distinct = checkNotBlank(image, failures);
     int bodies = 0, bodyHits = 0, grounds = 0, groundHits = 0;
     bool panel = false;
+    float panelRight = 0;
     std::string line;
     while (std::getline(expectations, line)) {
         std::istringstream in(line);
@@ -183,6 +185,25 @@ int checkScreenshot(const std::string& imagePath, const std::string& expectPath)
             in >> x0 >> y0 >> x1 >> y1;
             checkPanel(image, int(x0), int(y0), int(x1), int(y1), failures);
             panel = true;
+            panelRight = x1;
+        } else if (kind == "framed") {
+            // The box the camera was framed from must be on screen, right of the panel (the
+            // panel line comes first); 2 px for rounding.
+            std::string first;
+            in >> first;
+            if (first == "behind") {
+                failures.push_back("framing: part of the framed box is behind the camera");
+                continue;
+            }
+            float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+            std::istringstream(first) >> x0;
+            in >> y0 >> x1 >> y1;
+            if (!in || !std::isfinite(x0)) return std::cerr << "check_png: bad line '" << line << "'\n", 2;
+            std::ostringstream where;
+            where << "framed box spans x " << x0 << ".." << x1 << ", y " << y0 << ".." << y1;
+            if (x0 < panelRight - 2) failures.push_back("framing: " + where.str() + ", under the panel (right edge " + std::to_string(int(panelRight)) + ")");
+            if (x0 < -2 || y0 < -2 || x1 > image.width + 2 || y1 > image.height + 2)
+                failures.push_back("framing: " + where.str() + ", not all on screen");
         } else if (kind == "body" || kind == "ground") {
             int x = 0, y = 0, color[3] = {0, 0, 0};
             double minShade = 0;
@@ -215,7 +236,8 @@ int selfTest(const std::string& folder) {
                 p[0] = r, p[1] = g, p[2] = b;
             }
     };
-    const std::string expect = "size 320 200\npanel 4 4 100 120\nbody cube 200 60 235 188 69 0.25\nground floor 200 170 140 140 148 0.55\n";
+    const std::string expect = "size 320 200\npanel 4 4 100 120\nframed 110 20 300 190\nbody cube 200 60 235 188 69 0.25\n"
+                               "ground floor 200 170 140 140 148 0.55\n";
     fill(0, 0, w, h, 41, 46, 54);
     const std::string blank = folder + "/blank.png";
     if (!stbi_write_png(blank.c_str(), w, h, 3, rgb.data(), w * 3)) return 2;
@@ -231,10 +253,18 @@ int selfTest(const std::string& folder) {
     const std::string good = folder + "/good.png";
     if (!stbi_write_png(good.c_str(), w, h, 3, rgb.data(), w * 3)) return 2;
     std::ofstream(good + ".txt") << expect;
+    // The same picture, but the camera put the scene half under the panel.
+    const std::string covered = folder + "/covered.png";
+    if (!stbi_write_png(covered.c_str(), w, h, 3, rgb.data(), w * 3)) return 2;
+    std::string coveredExpect = expect;
+    coveredExpect.replace(coveredExpect.find("framed 110"), 10, "framed  50");
+    std::ofstream(covered + ".txt") << coveredExpect;
     const int blankResult = checkScreenshot(blank, blank + ".txt");
     const int goodResult = checkScreenshot(good, good + ".txt");
-    std::cout << "self-test: blank image -> " << blankResult << " (want 1), drawn image -> " << goodResult << " (want 0)\n";
-    return blankResult == 1 && goodResult == 0 ? 0 : 1;
+    const int coveredResult = checkScreenshot(covered, covered + ".txt");
+    std::cout << "self-test: blank image -> " << blankResult << " (want 1), drawn image -> " << goodResult
+              << " (want 0), scene under the panel -> " << coveredResult << " (want 1)\n";
+    return blankResult == 1 && goodResult == 0 && coveredResult == 1 ? 0 : 1;
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 // An exact box-box oracle, computed in double whatever Real is, for the GJK (chapter 2) and
-// EPA (chapter 3) suites.
+// EPA (chapter 3) suites and benches.
 //
 // Overlap: the separating-axis test over the 15 candidate axes (3 face normals of A, 3 of B,
 // 9 edge-edge cross products). For two boxes these contain every face normal of the Minkowski
