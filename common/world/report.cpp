@@ -5,6 +5,8 @@
 
 #include "world/report.h"
 
+#include "world/json_reader.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -19,23 +21,11 @@
 namespace stepwise {
 namespace {
 
-using Json = nlohmann::ordered_json;
-
-/// The shortest decimal that reads back as the same Real: 0.1f prints 0.1, not 0.10000000149.
-/// Non-finite values become null (JSON has no NaN), and the report adds a warning for them.
+/// The shortest decimal that reads back as the same Real (json_reader.h). Non-finite values
+/// become null (JSON has no NaN), and the report adds a warning for them.
 Json number(Real value) {
     if (!std::isfinite(value)) return nullptr;
-    // Whole numbers print as integers ("1", not "1.0"), like the scene files; this also turns -0 into 0.
-    if (std::floor(value) == value && std::abs(value) < Real(1e15)) return std::int64_t(value);
-    if constexpr (std::is_same_v<Real, float>) {
-        char text[32];
-        for (int digits = 6; digits <= 9; ++digits) {
-            std::snprintf(text, sizeof text, "%.*g", digits, double(value));
-            const double parsed = std::strtod(text, nullptr);
-            if (Real(parsed) == value) return parsed;
-        }
-    }
-    return double(value);
+    return tidyNumber(value);
 }
 
 /// Statistics that are double already (energies): as is, but finite or null.
