@@ -34,19 +34,32 @@ D3D12_CPU_DESCRIPTOR_HANDLE TargetBase::rtvHandle(ID3D12Device* device, int inde
     return handle;
 }
 
-void TargetBase::createDepth(ID3D12Device* device, int width, int height) {
-    depth_.reset();
+// One 2D texture in GPU memory: the depth buffer and the offscreen colour target differ only
+// in format and usage.
+static D3D12_HEAP_PROPERTIES defaultHeap() {
     D3D12_HEAP_PROPERTIES heap = {};
     heap.Type = D3D12_HEAP_TYPE_DEFAULT;
+    return heap;
+}
+
+static D3D12_RESOURCE_DESC texture2DDesc(int width, int height, DXGI_FORMAT format, D3D12_RESOURCE_FLAGS flags) {
     D3D12_RESOURCE_DESC desc = {};
     desc.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;
     desc.Width = static_cast<UINT64>(width);
     desc.Height = static_cast<UINT>(height);
     desc.DepthOrArraySize = 1;
     desc.MipLevels = 1;
-    desc.Format = kDepthFormat;
+    desc.Format = format;
     desc.SampleDesc.Count = 1;
-    desc.Flags = D3D12_RESOURCE_FLAG_ALLOW_DEPTH_STENCIL;
+    desc.Flags = flags;
+    return desc;
+}
+
+void TargetBase::createDepth(ID3D12Device* device, int width, int height) {
+    depth_.reset();
+    const D3D12_HEAP_PROPERTIES heap = defaultHeap();
+    const D3D12_RESOURCE_DESC desc =
+        texture2DDesc(width, height, kDepthFormat, D3D12_RESOURCE_FLAG_ALLOW_DEPTH_STENCIL);
     D3D12_CLEAR_VALUE clear = {};
     clear.Format = kDepthFormat;
     clear.DepthStencil.Depth = 1.0f;
@@ -109,17 +122,9 @@ OffscreenTarget::OffscreenTarget(Device& device, int width, int height)
     }
     ID3D12Device* d3d = device.device();
     createHeaps(d3d, 1);
-    D3D12_HEAP_PROPERTIES heap = {};
-    heap.Type = D3D12_HEAP_TYPE_DEFAULT;
-    D3D12_RESOURCE_DESC desc = {};
-    desc.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;
-    desc.Width = static_cast<UINT64>(width);
-    desc.Height = static_cast<UINT>(height);
-    desc.DepthOrArraySize = 1;
-    desc.MipLevels = 1;
-    desc.Format = kColorFormat;
-    desc.SampleDesc.Count = 1;
-    desc.Flags = D3D12_RESOURCE_FLAG_ALLOW_RENDER_TARGET;
+    const D3D12_HEAP_PROPERTIES heap = defaultHeap();
+    const D3D12_RESOURCE_DESC desc =
+        texture2DDesc(width, height, kColorFormat, D3D12_RESOURCE_FLAG_ALLOW_RENDER_TARGET);
     D3D12_CLEAR_VALUE clear = {};
     clear.Format = kColorFormat;
     for (int i = 0; i < 4; ++i) clear.Color[i] = kClearColor[i];
