@@ -1,4 +1,4 @@
-# Every `// [name]` marker in the code must be shown by a page (a \snippet command in docs/),
+# Every `// [name]` marker in the code must be shown by some page of docs/ as a snippet,
 # and every shown marker must exist: text and code cannot drift apart.
 cmake_policy(SET CMP0057 NEW)  # IN_LIST under cmake -P
 file(GLOB_RECURSE code_files ${SOURCE}/chapters/*.h ${SOURCE}/chapters/*.cpp ${SOURCE}/common/*.h

@@ -98,7 +98,7 @@ Measurement measure(const std::vector<Oscillator>& oscillators, IntegratorKind m
         total += seconds;
         if (runSeconds.size() == 1) result.error = maxErrorAgainstExact(world, oscillators, kDuration);
     }
-    result.seconds = medianOf(runSeconds);
+    result.seconds = median(runSeconds);
     return result;
 }
 

@@ -66,7 +66,7 @@ FixedSetResult solveFrozen(const FrozenRows& frozen, SolverKind kind, int iterat
         times.push_back(watch.seconds() * 1e3);
         result.residual = measureResidual(rows, bodies).rms;
     }
-    result.solveMs = medianOf(times);
+    result.solveMs = median(times);
     return result;
 }
 
@@ -98,7 +98,7 @@ SimulationResult simulatePit(int sphereCount, int frames, SolverKind kind, int i
     }
     result.penetration /= std::max(1, measured);
     result.residual /= std::max(1, measured);
-    result.solveMs = medianOf(frameMs);  // the median: a shared machine's hiccups stay out
+    result.solveMs = median(frameMs);  // the median: a shared machine's hiccups stay out
     return result;
 }
 

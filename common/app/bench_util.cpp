@@ -15,15 +15,6 @@ std::string formatNumber(double value, int significantDigits) {
     return buffer;
 }
 
-double medianOf(std::vector<double> values) {
-    if (values.empty()) return 0;
-    const size_t middle = values.size() / 2;
-    std::nth_element(values.begin(), values.begin() + middle, values.end());
-    if (values.size() % 2) return values[middle];
-    const double upper = values[middle];
-    return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + middle));
-}
-
 static std::ofstream openForWriting(const std::string& path) {
     std::ofstream file(path, std::ios::binary);
     if (!file) throw std::runtime_error("cannot write '" + path + "'");

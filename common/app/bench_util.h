@@ -2,6 +2,8 @@
 // Small tools for `stepwise bench` suites: a wall clock, CSV output and a log-log SVG plot
 // (work-precision diagrams), written without any plotting dependency so Windows gets them too.
 
+#include "world/report.h"  // median(), shared with run reports
+
 #include <chrono>
 #include <string>
 #include <vector>
@@ -59,8 +61,5 @@ struct PlotSpec {
 /// Writes an SVG line plot (log axes by default; non-positive values are skipped on log axes).
 /// Throws std::runtime_error naming the path when the file cannot be written.
 void writeSvgPlot(const std::string& path, const PlotSpec& spec);
-
-/// Median of a sample (0 for an empty one).
-double medianOf(std::vector<double> values);
 
 }  // namespace stepwise
