@@ -8,7 +8,7 @@ namespace stepwise {
 Pipeline makeChapter01Pipeline(const World& world) {
     Pipeline pipeline;
     Stage stage;
-    stage.name = "integrate:" + integratorLabel(world);
+    stage.name = stageName(stage_group::kIntegrate, integratorLabel(world));
     stage.run = [](World& stepWorld, Real dt) { integrate(stepWorld, dt); };
     pipeline.add(std::move(stage));
     return pipeline;

@@ -36,7 +36,8 @@ int findIntersectingPairs(World& world, SupportMode mode) {
 Pipeline makeChapter02Pipeline(const World& world) {
     Pipeline pipeline = makeChapter01Pipeline(world);
     Stage stage;
-    stage.name = "narrowphase:gjk";
+    stage.name = stageName(stage_group::kNarrowphase, "gjk");
+    stage.frequency = StageFrequency::FrameStart;
     stage.run = [](World& stepWorld, Real) { findIntersectingPairs(stepWorld); };
     pipeline.add(std::move(stage));
     return pipeline;

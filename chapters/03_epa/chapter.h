@@ -1,17 +1,58 @@
 #pragma once
 // Chapter 3's pipeline: chapter 2's, with its yes/no stage `narrowphase:gjk` replaced by a
-// stage that also measures each overlap and fills World::contacts (one point per pair).
-// The stage is called `narrowphase:closed_form` when every pair of the scene has a closed form
-// (no GJK or EPA will run), else `narrowphase:gjk_epa`.
+// stage that also measures each overlap and keeps World::contacts, the contact cache (one point
+// per pair). The stage is called `narrowphase:closed_form` when every pair of the scene has a
+// closed form (no GJK or EPA will run), else `narrowphase:gjk_epa`.
 
 #include "03_epa/narrowphase.h"
 #include "world/pipeline.h"
 
+#include <vector>
+
 namespace stepwise {
 
-/// Fills world.pairs and world.contacts with every overlapping pair (bodyA < bodyB, static
-/// pairs skipped), one contact point each. Returns the number of shape queries made.
-int findContacts(World& world, const CollideOptions& options = CollideOptions{});
+/// False for two static bodies: nothing could respond to their contact (as in chapter 2).
+bool canCollide(const Body& a, const Body& b);
+
+// [ch03-contact-search]
+/// When the narrowphase looks for contacts. A single point per pair cannot follow a body that
+/// rocks within a frame (the deepest corner changes from substep to substep), so chapter 3's
+/// one-point contacts are searched every substep. Contacts that hold every touching corner
+/// (chapter 6, to come) can be searched once per frame: their points ride on their bodies
+/// (anchors) through the substeps, and pairs that could close during the frame are taken in
+/// early as speculative points.
+enum class ContactSearch { EverySubstep, OncePerFrame };
+// [ch03-contact-search]
+
+/// How far a pair can close over `substepsAhead` substeps after the search, m: the speculative
+/// margin within which a pair becomes a contact before it touches. Zero for zero substeps.
+Real speculativeMargin(const World& world, int bodyA, int bodyB, int substepsAhead);
+
+/// How many substeps a search of this kind must look ahead: 0 every substep, substeps - 1 once
+/// per frame.
+int substepsAhead(const World& world, ContactSearch search);
+
+/// Chapter 3's own candidate source: every pair that can collide whose bounds (grown by the
+/// speculative margin) overlap, in canonical order. Chapter 5 (to come) finds them faster.
+std::vector<BodyPair> findAllPairCandidates(const World& world, int lookAhead = 0);
+
+/// The narrowphase entry point. Tests the candidate pairs (any order; they are handled in
+/// canonical order), and rebuilds World::contacts: one record per touching pair, one point
+/// each, with anchors on both bodies and a feature id. A point whose features match a point of
+/// the pair's previous record keeps its impulses (re-expressed in the new tangent basis) and is
+/// marked persisted. Fills World::pairs with the touching pairs. Returns the shape queries made.
+/// `lookAhead` substeps: pairs within the speculative margin become contacts with depth < 0.
+int updateContacts(World& world, const std::vector<BodyPair>& candidates, int lookAhead = 0,
+                   const CollideOptions& options = CollideOptions{});
+
+/// Moves every contact point with its bodies: world points from the anchors, depth along the
+/// normal found with them. The substeps after the first see how far their bodies moved since the
+/// contacts were found.
+void followContactAnchors(World& world);
+
+/// findAllPairCandidates then updateContacts: the stage of this chapter.
+int findContacts(World& world, ContactSearch search = ContactSearch::EverySubstep,
+                 const CollideOptions& options = CollideOptions{});
 
 /// True when every pair of bodies that could collide has a closed-form routine.
 bool allPairsClosedForm(const World& world);
@@ -21,6 +62,6 @@ bool allPairsClosedForm(const World& world);
 Real measureDeepestPenetration(const World& world);
 
 /// Chapter 2's pipeline with its narrowphase stage replaced by chapter 3's.
-Pipeline makeChapter03Pipeline(const World& world);
+Pipeline makeChapter03Pipeline(const World& world, ContactSearch search = ContactSearch::EverySubstep);
 
 }  // namespace stepwise

@@ -37,10 +37,48 @@ Vec3 perpendicularTowards(const Vec3& axis, const Vec3& towards) {
     return length > 0 && isFinite(length) ? Vec3(side / length) : anyPerpendicular(unitAxis);
 }
 
+// [ch03-closed-form-features]
+constexpr std::uint32_t kSphereCore = makeFeature(FeatureKind::Core, 0);
+
+/// A capsule's feature at a point of its core segment: an end cap (vertex 0 bottom, 1 top) or
+/// the side (edge 0), so a capsule rolling along its side keeps one id.
+std::uint32_t segmentFeature(const Vec3& onSegment, const Vec3& bottom, const Vec3& top) {
+    const Real endTolerance = kEpsilon * kEpsilon * std::max((top - bottom).squaredNorm(), Real(1e-30)) * 16;
+    if ((onSegment - bottom).squaredNorm() <= endTolerance) return makeFeature(FeatureKind::Vertex, 0);
+    if ((onSegment - top).squaredNorm() <= endTolerance) return makeFeature(FeatureKind::Vertex, 1);
+    return makeFeature(FeatureKind::Edge, 0);
+}
+
+/// The box feature closest to a sphere centre, from which coordinates the clamp changed: one
+/// axis clamped is a face (2 per axis), two an edge (4 per free axis), three a corner (sign bits).
+std::uint32_t boxRegionFeature(const Vec3& local, const Vec3& clamped) {
+    int clampedAxes = 0;
+    std::uint32_t signBits = 0;
+    int freeAxis = 0, faceAxis = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (local[axis] > 0) signBits |= 1u << axis;
+        if (clamped[axis] != local[axis]) {
+            ++clampedAxes;
+            faceAxis = axis;
+        } else {
+            freeAxis = axis;
+        }
+    }
+    if (clampedAxes == 3) return makeFeature(FeatureKind::Vertex, signBits);
+    if (clampedAxes == 2) {
+        const std::uint32_t otherBits = signBits & ~(1u << freeAxis);
+        return makeFeature(FeatureKind::Edge, static_cast<std::uint32_t>(freeAxis) * 8 + otherBits);
+    }
+    return makeFeature(FeatureKind::Face, static_cast<std::uint32_t>(faceAxis) * 2 + ((signBits >> faceAxis) & 1u));
+}
+// [ch03-closed-form-features]
+
 }  // namespace
 
 ContactQuery collideSpheres(const Vec3& centerA, Real radiusA, const Vec3& centerB, Real radiusB) {
-    return inflateCores(centerA, radiusA, centerB, radiusB, Vec3::UnitY(), "sphere_sphere");
+    ContactQuery query = inflateCores(centerA, radiusA, centerB, radiusB, Vec3::UnitY(), "sphere_sphere");
+    query.featureId = makeFeatureId(kSphereCore, kSphereCore);
+    return query;
 }
 
 // [ch03-box-sphere]
@@ -51,8 +89,10 @@ ContactQuery collideBoxSphere(const Vec3& halfExtents, const Transform& box, con
     const Vec3 clamped = local.cwiseMax(-halfExtents).cwiseMin(halfExtents);
     Vec3 localNormal;
     Vec3 localBoxPoint = clamped;
+    std::uint32_t boxFeature = 0;
     if (clamped != local) {
         // Centre outside the box: the clamped point is the closest point of the box.
+        boxFeature = boxRegionFeature(local, clamped);
         const Vec3 outward = local - clamped;
         const Real distance = outward.norm();
         localNormal = outward / distance;
@@ -67,7 +107,9 @@ ContactQuery collideBoxSphere(const Vec3& halfExtents, const Transform& box, con
         localNormal[axis] = side;
         localBoxPoint[axis] = side * halfExtents[axis];
         query.depth = radius + faceGaps[axis];
+        boxFeature = makeFeature(FeatureKind::Face, static_cast<std::uint32_t>(axis) * 2 + (side > 0 ? 1u : 0u));
     }
+    query.featureId = makeFeatureId(boxFeature, kSphereCore);
     query.intersect = query.depth >= 0;
     query.normal = box.rotate(localNormal);
     query.pointA = box.apply(localBoxPoint);
@@ -122,16 +164,18 @@ ContactQuery collideCapsuleSphere(Real capsuleRadius, Real halfHeight, const Tra
     closestPointsOfSegments(bottom, top, center, center, onSegment, onCenter);
     // A centre on the axis: any direction across the axis is as deep; lean away from the centre.
     const Vec3 fallback = perpendicularTowards(axis, center - capsule.position);
-    return inflateCores(onSegment, capsuleRadius, center, radius, fallback, "capsule_sphere");
+    ContactQuery query = inflateCores(onSegment, capsuleRadius, center, radius, fallback, "capsule_sphere");
+    query.featureId = makeFeatureId(segmentFeature(onSegment, bottom, top), kSphereCore);
+    return query;
 }
 
 ContactQuery collideCapsules(Real radiusA, Real halfHeightA, const Transform& capsuleA, Real radiusB,
                              Real halfHeightB, const Transform& capsuleB) {
     const Vec3 axisA = capsuleA.rotate(Vec3::UnitY()), axisB = capsuleB.rotate(Vec3::UnitY());
     Vec3 onA, onB;
-    closestPointsOfSegments(capsuleA.apply(Vec3(0, -halfHeightA, 0)), capsuleA.apply(Vec3(0, halfHeightA, 0)),
-                            capsuleB.apply(Vec3(0, -halfHeightB, 0)), capsuleB.apply(Vec3(0, halfHeightB, 0)), onA,
-                            onB);
+    const Vec3 bottomA = capsuleA.apply(Vec3(0, -halfHeightA, 0)), topA = capsuleA.apply(Vec3(0, halfHeightA, 0));
+    const Vec3 bottomB = capsuleB.apply(Vec3(0, -halfHeightB, 0)), topB = capsuleB.apply(Vec3(0, halfHeightB, 0));
+    closestPointsOfSegments(bottomA, topA, bottomB, topB, onA, onB);
     // Crossing axes: the segments' Minkowski difference is a flat parallelogram around the
     // origin, so the shallowest way out is across its plane, the common perpendicular.
     const Vec3 centres = capsuleB.position - capsuleA.position;
@@ -143,7 +187,9 @@ ContactQuery collideCapsules(Real radiusA, Real halfHeightA, const Transform& ca
     } else {
         fallback = perpendicularTowards(axisA, centres);
     }
-    return inflateCores(onA, radiusA, onB, radiusB, fallback, "capsule_capsule");
+    ContactQuery query = inflateCores(onA, radiusA, onB, radiusB, fallback, "capsule_capsule");
+    query.featureId = makeFeatureId(segmentFeature(onA, bottomA, topA), segmentFeature(onB, bottomB, topB));
+    return query;
 }
 
 ContactQuery swapped(const ContactQuery& query) {
@@ -151,6 +197,7 @@ ContactQuery swapped(const ContactQuery& query) {
     result.normal = -query.normal;
     result.pointA = query.pointB;
     result.pointB = query.pointA;
+    result.featureId = swappedFeatureId(query.featureId);
     return result;
 }
 

@@ -3,6 +3,7 @@
 #include "03_epa/narrowphase.h"
 
 #include "03_epa/closed_form.h"
+#include "03_epa/features.h"
 
 #include <cmath>
 
@@ -66,6 +67,7 @@ ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, 
         query.pointA = epa.pointA;
         query.pointB = epa.pointB;
         query.epaIterations = epa.iterations;
+        query.featureId = epaFeatureId(proxyA, proxyB, epa.closestFace);
         return query;
     }
     if (!options.separationDistance) return query;

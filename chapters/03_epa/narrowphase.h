@@ -5,7 +5,10 @@
 
 #include "02_gjk/support.h"
 #include "03_epa/epa.h"
+#include "world/contact.h"
 #include "world/shape.h"
+
+#include <cstdint>
 
 namespace stepwise {
 
@@ -17,6 +20,7 @@ struct ContactQuery {
     Vec3 pointB = Vec3::Zero();       // deepest point of B inside A; pointA - pointB = depth*normal
     int gjkIterations = 0;            // both GJK runs (intersection, then distance) when separated
     int epaIterations = 0;
+    std::uint32_t featureId = 0;      // touching features (world/contact.h), 0 when unknown
     const char* routine = "none";     // which routine answered, e.g. "gjk_epa", "sphere_box"
 };
 

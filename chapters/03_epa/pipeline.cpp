@@ -1,4 +1,5 @@
-// The narrowphase stage of chapter 3 and the penetration probe of run reports.
+// The narrowphase stage of chapter 3, the contact cache it keeps, and the penetration probe of
+// run reports.
 #include "03_epa/chapter.h"
 
 #include "02_gjk/chapter.h"
@@ -9,12 +10,11 @@
 
 namespace stepwise {
 
-namespace {
-
 bool canCollide(const Body& a, const Body& b) {
-    // Two static bodies never need a contact: nothing could respond to it (as in chapter 2).
     return a.type != BodyType::Static || b.type != BodyType::Static;
 }
+
+namespace {
 
 std::vector<Aabb> bodyBounds(const World& world) {
     std::vector<Aabb> bounds(world.bodies.size());
@@ -24,54 +24,167 @@ std::vector<Aabb> bodyBounds(const World& world) {
     return bounds;
 }
 
+/// An upper bound on how fast any point of the body moves, m/s.
+Real speedBound(const World& world, int bodyIndex) {
+    const Motion* motion = world.motionOf(bodyIndex);
+    if (!motion) return 0;
+    return motion->linearVelocity.norm() + motion->angularVelocity.norm() * shapeScale(world.bodies[bodyIndex].shape);
+}
+
 }  // namespace
 
-// [ch03-stage]
-int findContacts(World& world, const CollideOptions& options) {
-    world.pairs.clear();
-    world.contacts.clear();
-    CollideOptions stageOptions = options;
-    stageOptions.separationDistance = false;  // the solver has no use for the distance of a miss
-    const std::vector<Aabb> bounds = bodyBounds(world);
-    int queries = 0;
+// [ch03-speculative-margin]
+// A search once per frame is not repeated in the later substeps, so a pair must be found already
+// when it could close during them: at the speed the bodies have plus what gravity adds over the
+// frame. A search every substep looks ahead zero substeps and takes only overlapping pairs.
+Real speculativeMargin(const World& world, int bodyA, int bodyB, int lookAhead) {
+    if (lookAhead <= 0) return 0;
+    const Real substep = world.settings.dt / static_cast<Real>(std::max(1, world.settings.substeps));
+    const Real gravityGain = world.settings.gravity.norm() * world.settings.dt;
+    return static_cast<Real>(lookAhead) * substep *
+           (speedBound(world, bodyA) + speedBound(world, bodyB) + 2 * gravityGain);
+}
+// [ch03-speculative-margin]
+
+int substepsAhead(const World& world, ContactSearch search) {
+    return search == ContactSearch::OncePerFrame ? std::max(1, world.settings.substeps) - 1 : 0;
+}
+
+std::vector<BodyPair> findAllPairCandidates(const World& world, int lookAhead) {
+    std::vector<Aabb> bounds = bodyBounds(world);
+    if (lookAhead > 0) {
+        // Grow each box by the body's own share of the margin (the margin of a pair is the sum).
+        for (std::size_t i = 0; i < bounds.size(); ++i) {
+            const Real grow = speculativeMargin(world, static_cast<int>(i), static_cast<int>(i), lookAhead) / 2;
+            bounds[i].min.array() -= grow;
+            bounds[i].max.array() += grow;
+        }
+    }
+    std::vector<BodyPair> candidates;
     const int bodyCount = static_cast<int>(world.bodies.size());
     for (int i = 0; i < bodyCount; ++i) {
         for (int j = i + 1; j < bodyCount; ++j) {
-            const Body& bodyA = world.bodies[i];
-            const Body& bodyB = world.bodies[j];
-            // Boxes that do not overlap rule the pair out for the price of six comparisons;
-            // chapter 5 replaces this loop over all pairs with a broadphase.
-            if (!canCollide(bodyA, bodyB) || !bounds[i].overlaps(bounds[j])) continue;
-            ++queries;
-            const ContactQuery query =
-                collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, stageOptions);
-            if (!query.intersect) continue;
-            world.pairs.push_back(BodyPair{i, j});
-            Contact contact;
-            contact.bodyA = i;
-            contact.bodyB = j;
-            contact.normal = query.normal;
-            contact.points[0].pointA = query.pointA;
-            contact.points[0].pointB = query.pointB;
-            contact.points[0].depth = query.depth;
-            contact.pointCount = 1;
-            world.contacts.push_back(contact);
+            // Boxes that do not overlap rule the pair out for the price of six comparisons.
+            if (canCollide(world.bodies[i], world.bodies[j]) && bounds[i].overlaps(bounds[j]))
+                candidates.push_back(BodyPair{i, j});
         }
+    }
+    return candidates;
+}
+
+namespace {
+
+ContactPoint makeContactPoint(const Body& bodyA, const Body& bodyB, const ContactQuery& query) {
+    ContactPoint point;
+    point.pointA = query.pointA;
+    point.pointB = query.pointB;
+    point.localAnchorA = bodyA.transform.applyInverse(query.pointA);
+    point.localAnchorB = bodyB.transform.applyInverse(query.pointB);
+    point.depth = query.depth;
+    point.featureId = query.featureId;
+    return point;
+}
+
+// [ch03-carry-impulses]
+/// A new point takes over the impulses of the previous record's point with the same features.
+/// Friction is stored in the basis of the normal, so when the normal turned, the stored
+/// friction vector is projected into the new basis.
+void carryImpulses(Contact& contact, const Contact& previous) {
+    Vec3 oldTangent1, oldTangent2, newTangent1, newTangent2;
+    tangentBasis(previous.normal, oldTangent1, oldTangent2);
+    tangentBasis(contact.normal, newTangent1, newTangent2);
+    for (int i = 0; i < contact.pointCount; ++i) {
+        ContactPoint& point = contact.points[i];
+        if (point.featureId == 0) continue;
+        for (int k = 0; k < previous.pointCount; ++k) {
+            const ContactPoint& old = previous.points[k];
+            if (old.featureId != point.featureId) continue;
+            const Vec3 friction = old.tangentImpulse[0] * oldTangent1 + old.tangentImpulse[1] * oldTangent2;
+            point.normalImpulse = old.normalImpulse;
+            point.tangentImpulse[0] = friction.dot(newTangent1);
+            point.tangentImpulse[1] = friction.dot(newTangent2);
+            point.persisted = true;
+            break;
+        }
+    }
+}
+// [ch03-carry-impulses]
+
+}  // namespace
+
+// [ch03-update-contacts]
+int updateContacts(World& world, const std::vector<BodyPair>& candidates, int lookAhead,
+                   const CollideOptions& options) {
+    std::vector<BodyPair> ordered = candidates;
+    if (!std::is_sorted(ordered.begin(), ordered.end())) std::sort(ordered.begin(), ordered.end());
+    ordered.erase(std::unique(ordered.begin(), ordered.end()), ordered.end());
+
+    std::vector<Contact> previous;
+    previous.swap(world.contacts);
+    world.step.contactsFoundAtSubstep = world.step.substep;
+    world.pairs.clear();
+    const bool speculative = lookAhead > 0;
+    CollideOptions stageOptions = options;
+    // Only speculative contacts need the distance of a pair that does not overlap.
+    stageOptions.separationDistance = speculative;
+    const int bodyCount = static_cast<int>(world.bodies.size());
+    int queries = 0;
+    for (const BodyPair& pair : ordered) {
+        if (pair.bodyA < 0 || pair.bodyB >= bodyCount || pair.bodyA >= pair.bodyB) continue;
+        const Body& bodyA = world.bodies[pair.bodyA];
+        const Body& bodyB = world.bodies[pair.bodyB];
+        if (!canCollide(bodyA, bodyB)) continue;
+        ++queries;
+        const ContactQuery query = collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, stageOptions);
+        const bool closeEnough =
+            speculative && query.routine != std::string("invalid") &&
+            -query.depth < speculativeMargin(world, pair.bodyA, pair.bodyB, lookAhead);
+        if (!query.intersect && !closeEnough) continue;
+        if (query.intersect) world.pairs.push_back(pair);
+        Contact contact;
+        contact.bodyA = pair.bodyA;
+        contact.bodyB = pair.bodyB;
+        contact.normal = query.normal;
+        contact.points[0] = makeContactPoint(bodyA, bodyB, query);
+        contact.pointCount = 1;
+        if (const Contact* old = findContact(previous, pair)) carryImpulses(contact, *old);
+        world.contacts.push_back(contact);
     }
     return queries;
 }
+// [ch03-update-contacts]
 
-Pipeline makeChapter03Pipeline(const World& world) {
+// [ch03-follow-anchors]
+void followContactAnchors(World& world) {
+    for (Contact& contact : world.contacts) {
+        const Transform& transformA = world.bodies[contact.bodyA].transform;
+        const Transform& transformB = world.bodies[contact.bodyB].transform;
+        for (int i = 0; i < contact.pointCount; ++i) {
+            ContactPoint& point = contact.points[i];
+            point.pointA = transformA.apply(point.localAnchorA);
+            point.pointB = transformB.apply(point.localAnchorB);
+            // pointA - pointB = depth * normal when found; the normal stays for the frame.
+            point.depth = contact.normal.dot(point.pointA - point.pointB);
+        }
+    }
+}
+// [ch03-follow-anchors]
+
+int findContacts(World& world, ContactSearch search, const CollideOptions& options) {
+    const int lookAhead = substepsAhead(world, search);
+    world.candidatePairs = findAllPairCandidates(world, lookAhead);
+    return updateContacts(world, world.candidatePairs, lookAhead, options);
+}
+
+// [ch03-stage]
+Pipeline makeChapter03Pipeline(const World& world, ContactSearch search) {
     Pipeline pipeline = makeChapter02Pipeline(world);
     Stage stage;
     // Plan from the scene: the name says which routines this world will use.
-    stage.name = allPairsClosedForm(world) ? "narrowphase:closed_form" : "narrowphase:gjk_epa";
-    stage.run = [](World& stepWorld, Real) { findContacts(stepWorld); };
-    if (Stage* previous = pipeline.find("narrowphase")) {
-        *previous = std::move(stage);
-    } else {
-        pipeline.add(std::move(stage));
-    }
+    stage.name = stageName(stage_group::kNarrowphase, allPairsClosedForm(world) ? "closed_form" : "gjk_epa");
+    stage.frequency = search == ContactSearch::OncePerFrame ? StageFrequency::FrameStart : StageFrequency::EverySubstep;
+    stage.run = [search](World& stepWorld, Real) { findContacts(stepWorld, search); };
+    pipeline.replaceOrAdd(std::move(stage));
     return pipeline;
 }
 // [ch03-stage]

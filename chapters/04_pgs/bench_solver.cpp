@@ -13,6 +13,7 @@
 #include "03_epa/chapter.h"
 #include "04_pgs/chapter.h"
 #include "04_pgs/contact_constraints.h"
+#include "04_pgs/frozen_rows.h"
 #include "04_pgs/scenes.h"
 #include "app/bench_util.h"
 
@@ -26,29 +27,6 @@ namespace stepwise {
 namespace {
 
 const char* solverLabel(SolverKind kind) { return kind == SolverKind::Jacobi ? "jacobi" : "gauss_seidel"; }
-
-struct FrozenRows {
-    std::vector<ConstraintRow> rows;
-    std::vector<SolverBody> bodies;
-};
-
-// Runs `frames` frames of the pit with the default solver (20: the balls are landing on each
-// other), then the next frame's stages up to the narrowphase, and freezes the rows the solver
-// would get.
-FrozenRows freezeRows(int sphereCount, int frames) {
-    World world = buildSpherePitScene(sphereCount);
-    Pipeline pipeline = makeChapter04Pipeline(world);
-    for (int frame = 0; frame < frames; ++frame) pipeline.step(world);
-    const Real dt = world.settings.dt / static_cast<Real>(std::max(1, world.settings.substeps));
-    for (Stage& stage : pipeline.stages()) {
-        if (stageGroup(stage.name) == "solve") break;
-        if (stage.enabled) stage.run(world, dt);
-    }
-    FrozenRows frozen;
-    frozen.bodies = gatherSolverBodies(world);
-    frozen.rows = buildContactRows(world, frozen.bodies, dt).rows;
-    return frozen;
-}
 
 struct FixedSetResult {
     double solveMs = 0;
@@ -81,9 +59,8 @@ SimulationResult simulatePit(int sphereCount, int frames, SolverKind kind, int i
     world.settings.solver = kind;
     world.settings.solverIterations = iterations;
     Pipeline pipeline = makeChapter04Pipeline(world);
-    const Stage* solve = pipeline.find("solve");
-    const SolveStats* stats = lastSolveStats(pipeline);
-    if (!solve || !stats) throw std::logic_error("chapter 4 pipeline has no solve stage");
+    const Stage* solve = pipeline.find(stage_group::kSolve);
+    if (!solve) throw std::logic_error("chapter 4 pipeline has no solve stage");
     SimulationResult result;
     std::vector<double> frameMs;
     int measured = 0;
@@ -93,7 +70,7 @@ SimulationResult simulatePit(int sphereCount, int frames, SolverKind kind, int i
         if (frame < frames / 2) continue;
         // The run report's max_penetration: the deepest overlap at the end of the step.
         result.penetration += static_cast<double>(measureDeepestPenetration(world));
-        result.residual += static_cast<double>(stats->residual.rms);
+        result.residual += static_cast<double>(world.step.solver.residualRms);
         ++measured;
     }
     result.penetration /= std::max(1, measured);
@@ -131,7 +108,7 @@ int runSolverBench(const BenchOptions& options) {
     plot.xLabel = "solve time (ms; fixed set: one solve, running: per frame)";
     plot.yLabel = "residual (m/s) or deepest penetration (m)";
 
-    const FrozenRows frozen = freezeRows(sphereCount, freezeFrames);
+    const FrozenRows frozen = freezeSpherePitRows(sphereCount, freezeFrames);
     out << "fixed set: " << frozen.rows.size() << " rows from the pit of " << sphereCount << " spheres after "
         << freezeFrames << " frames\n";
     for (SolverKind kind : {SolverKind::GaussSeidel, SolverKind::Jacobi}) {

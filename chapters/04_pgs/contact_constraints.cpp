@@ -15,10 +15,13 @@ Real combinedRestitution(const Material& a, const Material& b) {
 
 // [ch04-friction-directions]
 void frictionDirections(const Vec3& normal, const Vec3& relativeVelocity, Vec3& tangent1, Vec3& tangent2) {
-    const Vec3 sliding = relativeVelocity - normal.dot(relativeVelocity) * normal;
-    const Real slidingSpeed = sliding.norm();
-    // Below ~1e-5 m/s the direction is round-off; any perpendicular will do.
-    tangent1 = slidingSpeed > Real(1e-5) ? Vec3(sliding / slidingSpeed) : anyPerpendicular(normal);
+    // The sliding velocity in the contact's own basis, which depends on the normal alone.
+    Vec3 basis1, basis2;
+    tangentBasis(normal, basis1, basis2);
+    const Real slide1 = basis1.dot(relativeVelocity), slide2 = basis2.dot(relativeVelocity);
+    const Real slidingSpeed = std::sqrt(slide1 * slide1 + slide2 * slide2);
+    // Below ~1e-5 m/s the direction is round-off: the basis itself will do.
+    tangent1 = slidingSpeed > Real(1e-5) ? Vec3((slide1 * basis1 + slide2 * basis2) / slidingSpeed) : basis1;
     tangent2 = normal.cross(tangent1);
 }
 // [ch04-friction-directions]
@@ -49,9 +52,21 @@ static Vec3 relativeVelocityAt(const SolverBody& bodyA, const SolverBody& bodyB,
            bodyA.angularVelocity.cross(at - bodyA.center);
 }
 
-ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt,
-                             const std::vector<SolverBody>* approachBodies) {
-    if (approachBodies && approachBodies->size() != bodies.size()) approachBodies = nullptr;
+/// The velocity of a body before this substep's forces, as a SolverBody (the approach speed).
+static std::vector<SolverBody> approachBodiesOf(const World& world, const std::vector<SolverBody>& bodies) {
+    const std::vector<BodyVelocity>& before = world.step.velocitiesBeforeForces;
+    if (before.size() != bodies.size()) return {};
+    std::vector<SolverBody> approach = bodies;
+    for (size_t i = 0; i < approach.size(); ++i) {
+        approach[i].linearVelocity = before[i].linear;
+        approach[i].angularVelocity = before[i].angular;
+    }
+    return approach;
+}
+
+ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt) {
+    const std::vector<SolverBody> approachVelocities = approachBodiesOf(world, bodies);
+    const std::vector<SolverBody>* approachBodies = approachVelocities.empty() ? nullptr : &approachVelocities;
     const Settings& settings = world.settings;
     const Real inverseDt = dt > 0 ? 1 / dt : 0;
     ContactRows result;
@@ -101,8 +116,11 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
             // Restitution reverses the approach speed from before this step's forces (Box2D's
             // "relax" velocity), and only above the threshold, so resting bodies do not bounce on
             // gravity's own speed. The larger of the two targets wins: adding them would bounce a
-            // deep contact higher than the restitution law allows.
-            if (approachVelocity < -settings.restitutionThreshold)
+            // deep contact higher than the restitution law allows. A point still apart (a
+            // speculative point, found early for the substeps) bounces only in the substep whose
+            // motion would close its gap; before that it merely keeps the bodies from closing more.
+            const bool closesThisStep = point.depth - normalVelocity * dt >= 0;
+            if (closesThisStep && approachVelocity < -settings.restitutionThreshold)
                 target = std::max(target, -restitution * approachVelocity);
             // [ch04-normal-target]
 
@@ -133,49 +151,51 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
     return result;
 }
 
-int storeContactImpulses(World& world, const ContactRows& contactRows) {
+// [ch04-store-impulses]
+void storeContactImpulses(World& world, const ContactRows& contactRows) {
     // Points without rows (separating, invalid) carried no impulse.
     for (Contact& contact : world.contacts) {
         contact.pointCount = std::clamp(contact.pointCount, 0, 4);  // a malformed count cannot index past points[3]
         for (int i = 0; i < contact.pointCount; ++i) {
-            contact.points[i].normalImpulse = 0;
-            contact.points[i].tangentImpulse[0] = contact.points[i].tangentImpulse[1] = 0;
+            ContactPoint& point = contact.points[i];
+            point.normalImpulse = point.normalMass = 0;
+            point.tangentImpulse[0] = point.tangentImpulse[1] = 0;
         }
     }
     for (const ContactRowRef& ref : contactRows.points) {
-        Contact& contact = world.contacts[ref.contactIndex];
-        ContactPoint& point = contact.points[ref.pointIndex];
-        point.normalImpulse = contactRows.rows[ref.normalRow].impulse;
-        const Vec3 frictionImpulse = contactRows.rows[ref.tangentRow[0]].impulse * ref.tangent[0] +
-                                     contactRows.rows[ref.tangentRow[1]].impulse * ref.tangent[1];
-        const Vec3 fixed1 = anyPerpendicular(contact.normal);
-        const Vec3 fixed2 = contact.normal.cross(fixed1);
-        point.tangentImpulse[0] = frictionImpulse.dot(fixed1);
-        point.tangentImpulse[1] = frictionImpulse.dot(fixed2);
+        ContactPoint& point = world.contacts[ref.contactIndex].points[ref.pointIndex];
+        const ConstraintRow& normalRow = contactRows.rows[ref.normalRow];
+        point.normalImpulse = normalRow.impulse;
+        point.normalMass = normalRow.effectiveMass;
+        // The rows ran along this step's friction directions; the cache keeps the friction
+        // impulse in tangentBasis(normal), which the next step can read whatever it slides along.
+        const Vec3 friction = contactRows.rows[ref.tangentRow[0]].impulse * ref.tangent[0] +
+                              contactRows.rows[ref.tangentRow[1]].impulse * ref.tangent[1];
+        Vec3 basis1, basis2;
+        tangentBasis(world.contacts[ref.contactIndex].normal, basis1, basis2);
+        point.tangentImpulse[0] = friction.dot(basis1);
+        point.tangentImpulse[1] = friction.dot(basis2);
     }
+}
+// [ch04-store-impulses]
 
-    // [ch04-drop-weak]
-    // Keep a point only if its impulse changed the approach speed by at least
-    // kDropVelocityChange. The normal row clamps at zero, so these are also the points whose
-    // bodies separate on their own (J v >= target without any push): what is left is the set of
-    // contacts that actually held something, the set chapter 6 will carry to the next frame.
-    // The rule runs after the solve on purpose: a point that separates when the solve starts can
-    // be pushed shut by its neighbours within the same solve (a heavy ball on a light one), so
-    // it must keep its row until the solve is over.
-    std::vector<Real> effectiveMass(world.contacts.size() * 4, 0);
-    for (const ContactRowRef& ref : contactRows.points)
-        effectiveMass[static_cast<size_t>(ref.contactIndex) * 4 + ref.pointIndex] =
-            contactRows.rows[ref.normalRow].effectiveMass;
+// [ch04-drop-weak]
+// Keep a point only if its impulse changed the approach speed by at least kDropVelocityChange.
+// The normal row clamps at zero, so these are also the points whose bodies separate on their own
+// (J v >= target without any push): what is left is the set of contacts that actually held
+// something. The rule runs after the frame's last solve on purpose: a point that separates when
+// the solve starts can be pushed shut by its neighbours within the same solve (a heavy ball on
+// a light one), so it keeps its row until the solves are over.
+int dropUnloadedContactPoints(World& world) {
     int removed = 0;
     size_t kept = 0;
-    for (size_t c = 0; c < world.contacts.size(); ++c) {
-        Contact contact = world.contacts[c];
+    for (Contact contact : world.contacts) {
         int keptPoints = 0;
-        for (int i = 0; i < contact.pointCount; ++i) {
-            const Real mass = effectiveMass[c * 4 + i];
-            const bool carried = mass > 0 && contact.points[i].normalImpulse >= kDropVelocityChange * mass;
+        for (int i = 0; i < std::clamp(contact.pointCount, 0, 4); ++i) {
+            const ContactPoint& point = contact.points[i];
+            const bool carried = point.normalMass > 0 && point.normalImpulse >= kDropVelocityChange * point.normalMass;
             if (carried)
-                contact.points[keptPoints++] = contact.points[i];
+                contact.points[keptPoints++] = point;
             else
                 ++removed;
         }
@@ -183,20 +203,24 @@ int storeContactImpulses(World& world, const ContactRows& contactRows) {
         if (keptPoints > 0) world.contacts[kept++] = contact;
     }
     world.contacts.resize(kept);
-    // [ch04-drop-weak]
     return removed;
 }
+// [ch04-drop-weak]
 
-SolveStats solveContacts(World& world, Real dt, const std::vector<SolverBody>* approachBodies) {
-    SolveStats stats;
+SolverStats solveContacts(World& world, Real dt) {
+    SolverStats stats;
     for (const Contact& contact : world.contacts) stats.contactPoints += contact.pointCount;
     std::vector<SolverBody> bodies = gatherSolverBodies(world);
-    ContactRows contactRows = buildContactRows(world, bodies, dt, approachBodies);
+    ContactRows contactRows = buildContactRows(world, bodies, dt);
     solveRows(contactRows.rows, bodies, world.settings.solver, std::max(0, world.settings.solverIterations));
     stats.rows = static_cast<int>(contactRows.rows.size());
-    stats.residual = measureResidual(contactRows.rows, bodies);
+    stats.invalidSkipped = contactRows.invalidSkipped;
+    const Residual residual = measureResidual(contactRows.rows, bodies);
+    stats.residualRms = residual.rms;
+    stats.residualMax = residual.max;
     scatterSolverBodies(world, bodies);
-    stats.pointsRemoved = storeContactImpulses(world, contactRows);
+    storeContactImpulses(world, contactRows);
+    world.step.solver = stats;
     return stats;
 }
 

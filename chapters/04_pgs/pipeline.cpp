@@ -4,7 +4,6 @@
 #include "03_epa/chapter.h"
 #include "04_pgs/contact_constraints.h"
 
-#include <memory>
 
 namespace stepwise {
 
@@ -18,8 +17,8 @@ StepOrder chooseStepOrder(const World& world) {
                : StepOrder::IntegrateFirst;
 }
 
-const char* solveStageName(SolverKind kind) {
-    return kind == SolverKind::Jacobi ? "solve:jacobi" : "solve:pgs";
+std::string solveStageName(SolverKind kind) {
+    return stageName(stage_group::kSolve, kind == SolverKind::Jacobi ? "jacobi" : "pgs");
 }
 
 Pipeline makeChapter04Pipeline(const World& world) { return makeChapter04Pipeline(world, chooseStepOrder(world)); }
@@ -27,67 +26,70 @@ Pipeline makeChapter04Pipeline(const World& world) { return makeChapter04Pipelin
 // [ch04-pipeline]
 namespace {
 
-// The solve stage as a named callable, so lastSolveStats() can find what it measured.
-struct SolveStage {
-    // The velocities from before this step's forces, for restitution's approach speed. The
-    // velocity stage fills them, the solve stage uses them once and clears them (so a disabled
-    // velocity stage cannot leave stale ones behind).
-    std::shared_ptr<std::vector<SolverBody>> approach;
-    std::shared_ptr<SolveStats> stats;
+std::vector<BodyVelocity> currentVelocities(const World& world) {
+    std::vector<BodyVelocity> velocities(world.bodies.size());
+    for (const Motion& motion : world.motions)
+        velocities[motion.bodyIndex] = BodyVelocity{motion.linearVelocity, motion.angularVelocity};
+    return velocities;
+}
 
-    void operator()(World& world, Real dt) const {
-        *stats = solveContacts(world, dt, approach->empty() ? nullptr : approach.get());
-        approach->clear();
-    }
-};
+// The solve, once per substep. When the contacts were found at the start of the frame, their
+// points move with their bodies first from the second substep on. The velocities from before the
+// forces are used once and cleared, so a disabled velocity stage cannot leave stale ones behind.
+void solveStage(World& world, Real dt) {
+    if (world.step.substep > 0 && world.step.contactsFoundAtSubstep < world.step.substep) followContactAnchors(world);
+    solveContacts(world, dt);
+    world.step.velocitiesBeforeForces.clear();
+}
 
 }  // namespace
 
-Pipeline makeChapter04Pipeline(const World& world, StepOrder order) {
-    Pipeline pipeline = makeChapter03Pipeline(world);
-
-    auto approach = std::make_shared<std::vector<SolverBody>>();
+Pipeline makeChapter04Pipeline(const World& world, StepOrder order, ContactSearch search) {
+    Pipeline pipeline = makeChapter03Pipeline(world, search);
 
     Stage solve;
     solve.name = solveStageName(world.settings.solver);
     // The stage reads Settings::solver every step, so the demo's toggle takes effect at once; the
     // name says which solver the world asked for when the pipeline was planned.
-    solve.run = SolveStage{approach, std::make_shared<SolveStats>()};
+    solve.run = solveStage;
+
+    // After the frame's last solve, the cache keeps only the points that carried load.
+    Stage upkeep;
+    upkeep.name = stageName(stage_group::kContacts, "drop_unloaded");
+    upkeep.frequency = StageFrequency::FrameEnd;
+    upkeep.run = [](World& stepWorld, Real) { stepWorld.step.contactPointsDropped = dropUnloadedContactPoints(stepWorld); };
 
     if (order == StepOrder::IntegrateFirst) {
         pipeline.add(std::move(solve));
+        pipeline.add(std::move(upkeep));
         return pipeline;
     }
 
     // Split semi-implicit Euler around the solve. The velocity half takes the integrate stage's
     // place (before collision detection, which does not move anything) and first keeps a copy of
-    // the velocities for restitution; the position half runs last, with the velocities the solver
-    // produced. A resting body then sits at exactly the slop (the page measures both orders).
+    // the velocities for restitution; the position half runs after the solve, with the velocities
+    // the solver produced. A resting body then sits at exactly the slop (the page measures both
+    // orders).
     Stage velocities;
-    velocities.name = "integrate:velocities";
-    velocities.run = [approach](World& stepWorld, Real dt) {
-        *approach = gatherSolverBodies(stepWorld);
+    velocities.name = stageName(stage_group::kIntegrate, "velocities");
+    velocities.run = [](World& stepWorld, Real dt) {
+        stepWorld.step.velocitiesBeforeForces = currentVelocities(stepWorld);
         applyForces(stepWorld);
         integrateVelocities(stepWorld, dt);
     };
     Stage positions;
-    positions.name = "integrate:positions";
+    positions.name = stageName(stage_group::kIntegrate, "positions");
     positions.run = [](World& stepWorld, Real dt) { integratePositions(stepWorld, dt); };
 
-    if (Stage* integrateStage = pipeline.find("integrate"))
+    if (Stage* integrateStage = pipeline.find(stage_group::kIntegrate))
         *integrateStage = std::move(velocities);
     else
-        pipeline.insertBefore("narrowphase", std::move(velocities));
+        pipeline.insertBefore(stage_group::kNarrowphase, std::move(velocities));
     pipeline.add(std::move(solve));
     pipeline.add(std::move(positions));
+    pipeline.add(std::move(upkeep));
     return pipeline;
 }
 // [ch04-pipeline]
-
-const SolveStats* lastSolveStats(const Pipeline& pipeline) {
-    const Stage* stage = pipeline.find("solve");
-    const SolveStage* solve = stage ? stage->run.target<SolveStage>() : nullptr;
-    return solve ? solve->stats.get() : nullptr;
-}
 
 }  // namespace stepwise

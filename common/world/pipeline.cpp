@@ -5,6 +5,8 @@
 
 namespace stepwise {
 
+std::string stageName(const char* group, const std::string& variant) { return std::string(group) + ":" + variant; }
+
 std::string stageGroup(const std::string& stageName) {
     return stageName.substr(0, stageName.find(':'));
 }
@@ -18,6 +20,13 @@ void Pipeline::add(Stage stage) { stages_.push_back(std::move(stage)); }
 void Pipeline::insertBefore(const std::string& group, Stage stage) {
     auto at = std::find_if(stages_.begin(), stages_.end(), [&](const Stage& s) { return matches(s, group); });
     stages_.insert(at, std::move(stage));
+}
+
+void Pipeline::replaceOrAdd(Stage stage) {
+    if (Stage* existing = find(stageGroup(stage.name)))
+        *existing = std::move(stage);
+    else
+        add(std::move(stage));
 }
 
 Stage* Pipeline::find(const std::string& nameOrGroup) {
@@ -44,9 +53,13 @@ void Pipeline::step(World& world) {
     const Real dt = world.settings.dt / static_cast<Real>(substeps);
     for (Stage& stage : stages_) stage.lastMs = 0;
     const auto frameStart = Clock::now();
+    world.step.substepCount = substeps;
     for (int substep = 0; substep < substeps; ++substep) {
+        world.step.substep = substep;
         for (Stage& stage : stages_) {
             if (!stage.enabled) continue;
+            if (stage.frequency == StageFrequency::FrameStart && substep != 0) continue;
+            if (stage.frequency == StageFrequency::FrameEnd && substep != substeps - 1) continue;
             const auto stageStart = Clock::now();
             stage.run(world, dt);
             stage.lastMs += std::chrono::duration<double, std::milli>(Clock::now() - stageStart).count();
@@ -57,6 +70,7 @@ void Pipeline::step(World& world) {
         stage.totalMs += stage.lastMs;
         ++stage.runs;
     }
+    world.step.substep = 0;
     lastStepMs_ = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
     world.time += world.settings.dt;
     ++world.frame;

@@ -12,9 +12,40 @@ namespace stepwise {
 
 class DebugDraw;
 
+// [foundation-stage-names]
+/// The stage groups. A stage is named "group:variant" ("broadphase:sap"); the group keys the
+/// timings of run reports and is how chapters find each other's stages, always through these
+/// constants, never through a string spelled again.
+namespace stage_group {
+constexpr const char* kIntegrate = "integrate";
+constexpr const char* kBroadphase = "broadphase";
+constexpr const char* kNarrowphase = "narrowphase";
+constexpr const char* kSolve = "solve";
+constexpr const char* kContacts = "contacts";   // contact-cache upkeep after the solves
+}  // namespace stage_group
+
+/// "group:variant".
+std::string stageName(const char* group, const std::string& variant);
+// [foundation-stage-names]
+
+// [foundation-stage-frequency]
+/// How often a stage runs when a frame is split into substeps. Collision detection looks at
+/// where the bodies are, which only substeps' integration changes: finding contacts once per
+/// frame and letting the substeps follow the points on their bodies (anchors) costs one
+/// narrowphase instead of n (Box2D v3's soft step does the same). The solve and the
+/// integration must run every substep: that is what substepping is. Cache upkeep decides what
+/// the next frame remembers, after the last substep's solve.
+enum class StageFrequency {
+    EverySubstep,   // integration, the solve
+    FrameStart,     // once, in the first substep, at its place in the list: collision detection
+    FrameEnd,       // once, in the last substep, at its place in the list: cache upkeep
+};
+// [foundation-stage-frequency]
+
 struct Stage {
     std::string name;      // "group:variant", e.g. "broadphase:sap"; the group keys timings
     std::function<void(World& world, Real dt)> run;
+    StageFrequency frequency = StageFrequency::EverySubstep;
     bool enabled = true;
     double lastMs = 0;     // time of the last frame (all substeps)
     double totalMs = 0;    // since the pipeline was made
@@ -29,6 +60,8 @@ public:
     void add(Stage stage);
     /// Inserts before the first stage of the given group; appends when there is none.
     void insertBefore(const std::string& group, Stage stage);
+    /// Replaces the first stage of the stage's group; appends when there is none.
+    void replaceOrAdd(Stage stage);
     /// The first stage whose full name or group matches; nullptr when absent.
     Stage* find(const std::string& nameOrGroup);
     const Stage* find(const std::string& nameOrGroup) const;

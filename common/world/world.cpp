@@ -1,5 +1,6 @@
 #include "world/world.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace stepwise {
@@ -11,6 +12,12 @@ const char* toString(BodyType type) {
         case BodyType::Dynamic: return "dynamic";
     }
     return "?";
+}
+
+const Contact* findContact(const std::vector<Contact>& contacts, const BodyPair& pair) {
+    const auto at = std::lower_bound(contacts.begin(), contacts.end(), pair,
+                                     [](const Contact& contact, const BodyPair& key) { return contact.pair() < key; });
+    return at != contacts.end() && at->pair() == pair ? &*at : nullptr;
 }
 
 int World::findBody(const std::string& bodyName) const {
@@ -83,13 +90,6 @@ Vec3 worldCenterOfMass(const World& world, int bodyIndex) {
 Mat3 worldInverseInertia(const Body& body, const Motion& motion) {
     const Mat3 rotation = body.transform.rotation.toRotationMatrix();
     return rotation * motion.inverseInertiaLocal * rotation.transpose();
-}
-
-Vec3 pointVelocity(const World& world, int bodyIndex, const Vec3& worldPoint) {
-    const Motion* motion = world.motionOf(bodyIndex);
-    if (!motion) return Vec3::Zero();
-    const Vec3 arm = worldPoint - worldCenterOfMass(world, bodyIndex);
-    return motion->linearVelocity + motion->angularVelocity.cross(arm);
 }
 
 Energy computeEnergy(const World& world) {

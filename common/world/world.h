@@ -5,6 +5,7 @@
 #include "world/body.h"
 #include "world/contact.h"
 #include "world/settings.h"
+#include "world/step_state.h"
 
 #include <optional>
 #include <string>
@@ -68,9 +69,15 @@ struct World {
     std::vector<Damping> dampings;
     std::vector<JointDesc> joints;
 
-    // Per-step results, rebuilt by the stages that own them.
-    std::vector<BodyPair> pairs;         // broadphase / narrowphase candidates or hits
-    std::vector<Contact> contacts;       // narrowphase output
+    // Collision state. candidatePairs is rebuilt every frame by whatever finds candidates (all
+    // pairs in chapter 3, a broadphase from chapter 5); pairs lists the pairs the last narrowphase
+    // found overlapping. contacts is the contact cache: one record per touching pair, sorted by
+    // pair, kept from step to step (contact.h).
+    std::vector<BodyPair> candidatePairs;
+    std::vector<BodyPair> pairs;
+    std::vector<Contact> contacts;
+
+    StepState step;                      // what stages hand each other, and what they measured
 
     double time = 0;                     // s simulated
     long frame = 0;
@@ -90,9 +97,6 @@ Vec3 worldCenterOfMass(const World& world, int bodyIndex);
 
 /// Inverse inertia in world axes: R I^-1 R^T. Zero for static and kinematic bodies.
 Mat3 worldInverseInertia(const Body& body, const Motion& motion);
-
-/// Velocity of the body's material point at a world position.
-Vec3 pointVelocity(const World& world, int bodyIndex, const Vec3& worldPoint);
 
 struct Energy {
     double kinetic = 0;

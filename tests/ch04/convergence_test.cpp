@@ -2,7 +2,7 @@
 // method differs.
 #include "04_pgs/chapter.h"
 #include "04_pgs/contact_constraints.h"
-#include "04_pgs/scenes.h"
+#include "04_pgs/frozen_rows.h"
 
 #include <catch2/catch.hpp>
 
@@ -10,29 +10,7 @@ using namespace stepwise;
 
 namespace {
 
-struct Frozen {
-    std::vector<ConstraintRow> rows;
-    std::vector<SolverBody> bodies;
-};
-
-// The sphere pit after 20 frames, while the balls land on each other, frozen at the next
-// frame's solve. (In the settled pile the residual left is mostly the pile's slow chains, and
-// the first one or two sweeps of either method leave about the same; bench `solver` shows both.)
-Frozen freezePit() {
-    World world = buildSpherePitScene(40);
-    Pipeline pipeline = makeChapter04Pipeline(world);
-    for (int frame = 0; frame < 20; ++frame) pipeline.step(world);
-    for (Stage& stage : pipeline.stages()) {
-        if (stageGroup(stage.name) == "solve") break;
-        stage.run(world, world.settings.dt);
-    }
-    Frozen frozen;
-    frozen.bodies = gatherSolverBodies(world);
-    frozen.rows = buildContactRows(world, frozen.bodies, world.settings.dt).rows;
-    return frozen;
-}
-
-Real residualAfter(const Frozen& frozen, SolverKind kind, int iterations) {
+Real residualAfter(const FrozenRows& frozen, SolverKind kind, int iterations) {
     std::vector<ConstraintRow> rows = frozen.rows;
     std::vector<SolverBody> bodies = frozen.bodies;
     solveRows(rows, bodies, kind, iterations);
@@ -43,7 +21,7 @@ Real residualAfter(const Frozen& frozen, SolverKind kind, int iterations) {
 
 TEST_CASE("on a fixed contact set Gauss-Seidel leaves a lower residual than Jacobi for the same iterations",
           "[ch04][convergence]") {
-    const Frozen frozen = freezePit();
+    const FrozenRows frozen = freezeSpherePitRows(40, 20);
     REQUIRE(frozen.rows.size() > 60);  // a real pile: many coupled rows
     Real previous = kRealMax;
     for (int iterations : {1, 2, 4, 8, 16, 32}) {
