@@ -24,7 +24,17 @@ if(NOT status EQUAL 0)
   message(FATAL_ERROR "snippet check failed")
 endif()
 get_filename_component(doxyfile_dir ${DOXYFILE} DIRECTORY)
+file(REMOVE_RECURSE ${doxyfile_dir}/html)  # no page of an older build survives
 execute_process(COMMAND ${DOXYGEN} ${DOXYFILE} WORKING_DIRECTORY ${doxyfile_dir} RESULT_VARIABLE status)
+# MathJax 2.7 (Debian's libjs-mathjax) goes next to the pages: formulas render offline. Only
+# what the configuration loads is copied: TeX input, the AMS extensions, SVG output, TeX font.
+set(mathjax ${doxyfile_dir}/html/mathjax)
+file(REMOVE_RECURSE ${mathjax})
+foreach(part MathJax.js extensions jax/input/TeX jax/element jax/output/SVG/jax.js
+             jax/output/SVG/config.js jax/output/SVG/autoload jax/output/SVG/fonts/TeX localization/en)
+  get_filename_component(parent ${mathjax}/${part} DIRECTORY)
+  file(COPY ${MATHJAX}/${part} DESTINATION ${parent})
+endforeach()
 if(EXISTS ${doxyfile_dir}/warnings.log)
   file(READ ${doxyfile_dir}/warnings.log warnings)
 endif()
