@@ -18,6 +18,22 @@ foreach(line IN LISTS lines)
     message(STATUS "bench ${suite}: plot written")
   endif()
 endforeach()
+# "What you should see": a page that includes run-chNN-SCENE.txt gets what a headless run of
+# SCENE with chapter NN's engine prints over 600 frames (10 s), from this build's program.
+file(GLOB pages ${SOURCE}/docs/*.md)
+foreach(page IN LISTS pages)
+  file(STRINGS ${page} includes REGEX "run-ch[0-9]+-[a-z0-9-]+\\.txt")
+  foreach(line IN LISTS includes)
+    string(REGEX MATCH "run-ch([0-9]+)-([a-z0-9-]+)\\.txt" output "${line}")
+    set(scene ${CMAKE_MATCH_2})
+    math(EXPR chapter "${CMAKE_MATCH_1}")
+    execute_process(COMMAND ${STEPWISE} run ${scene} --chapter ${chapter} --frames 600
+                    OUTPUT_FILE ${IMAGES}/${output} RESULT_VARIABLE status)
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "stepwise run ${scene} --chapter ${chapter} failed (${status}), for ${page}")
+    endif()
+  endforeach()
+endforeach()
 execute_process(COMMAND ${CMAKE_COMMAND} -DSOURCE=${SOURCE} -P ${SOURCE}/docs/check_snippets.cmake
                 RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
