@@ -1,4 +1,5 @@
-# Builds the course site: plots from quick bench runs, the snippet check, then Doxygen.
+# Builds the course site: plots from quick bench runs, the figures, the headless runs the pages
+# include, the snippet check, then Doxygen and MathJax.
 cmake_policy(SET CMP0057 NEW)  # IN_LIST under cmake -P
 file(MAKE_DIRECTORY ${IMAGES})
 execute_process(COMMAND ${STEPWISE} bench --list OUTPUT_VARIABLE listing RESULT_VARIABLE status)
@@ -18,6 +19,11 @@ foreach(line IN LISTS lines)
     message(STATUS "bench ${suite}: plot written")
   endif()
 endforeach()
+# The figures, drawn by the engine's own code (docs/figures/).
+execute_process(COMMAND ${FIGURES} ${IMAGES} RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "stepwise_figures failed (${status})")
+endif()
 # "What you should see": a page that includes run-chNN-SCENE.txt gets what a headless run of
 # SCENE with chapter NN's engine prints over 600 frames (10 s), from this build's program.
 file(GLOB pages ${SOURCE}/docs/*.md)

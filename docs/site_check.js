@@ -17,7 +17,7 @@
     document.querySelectorAll('object').forEach(function (obj) {
       var doc = null;
       try { doc = obj.contentDocument; } catch (e) { doc = null; }
-      if (doc && !doc.querySelector('svg'))
+      if (doc && (!doc.querySelector('svg') || doc.querySelector('parsererror')))
         problems.push('figure did not load: ' + obj.getAttribute('data'));
     });
   }
