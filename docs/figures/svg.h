@@ -35,20 +35,10 @@ public:
               << style << "'/>\n";
     }
     void polygon(const Viewport& view, const std::vector<Point2>& points, const std::string& style) {
-        body_ << "<polygon points='";
-        for (const Point2& point : points) {
-            const Point2 p = view.map(point);
-            body_ << p.x << ',' << p.y << ' ';
-        }
-        body_ << "' style='" << style << "'/>\n";
+        shape("polygon", view, points, style);
     }
     void polyline(const Viewport& view, const std::vector<Point2>& points, const std::string& style) {
-        body_ << "<polyline points='";
-        for (const Point2& point : points) {
-            const Point2 p = view.map(point);
-            body_ << p.x << ',' << p.y << ' ';
-        }
-        body_ << "' style='fill:none;" << style << "'/>\n";
+        shape("polyline", view, points, "fill:none;" + style);
     }
     void dot(const Viewport& view, Point2 at, double radius, const std::string& fill) {
         const Point2 p = view.map(at);
@@ -107,6 +97,14 @@ public:
     }
 
 private:
+    void shape(const char* tag, const Viewport& view, const std::vector<Point2>& points, const std::string& style) {
+        body_ << '<' << tag << " points='";
+        for (const Point2& point : points) {
+            const Point2 p = view.map(point);
+            body_ << p.x << ',' << p.y << ' ';
+        }
+        body_ << "' style='" << style << "'/>\n";
+    }
     std::size_t marker(const std::string& colour) {
         for (std::size_t i = 0; i < markers_.size(); ++i)
             if (markers_[i] == colour) return i;
