@@ -10,6 +10,7 @@ namespace figures {
 
 bool drawMinkowski(const std::string& path);        // chapter 2: A - B and a support point
 bool drawVoronoiRegions(const std::string& path);   // chapter 2: a triangle's Voronoi regions
+bool drawEpaHorizon(const std::string& path);       // chapter 3: the polytope and its horizon
 bool drawContactArms(const std::string& path);      // chapter 4: the Jacobian's arms
 bool drawFrictionPyramid(const std::string& path);  // chapter 4: friction pyramid against cone
 bool drawBaumgarteEnergy(const std::string& path);  // chapter 4: Baumgarte's energy gain

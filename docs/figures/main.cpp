@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     };
     const Figure all[] = {{"fig-minkowski.svg", figures::drawMinkowski},
                           {"fig-voronoi-regions.svg", figures::drawVoronoiRegions},
+                          {"fig-epa-horizon.svg", figures::drawEpaHorizon},
                           {"fig-contact-arms.svg", figures::drawContactArms},
                           {"fig-friction-pyramid.svg", figures::drawFrictionPyramid},
                           {"fig-baumgarte-energy.svg", figures::drawBaumgarteEnergy}};
