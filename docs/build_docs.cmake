@@ -1,4 +1,5 @@
-# Builds the course site: plots from quick bench runs, the snippet check, then Doxygen.
+# Builds the course site: plots from quick bench runs, the figures, the headless runs the pages
+# include, the snippet check, then Doxygen and MathJax.
 cmake_policy(SET CMP0057 NEW)  # IN_LIST under cmake -P
 file(MAKE_DIRECTORY ${IMAGES})
 execute_process(COMMAND ${STEPWISE} bench --list OUTPUT_VARIABLE listing RESULT_VARIABLE status)
@@ -18,13 +19,44 @@ foreach(line IN LISTS lines)
     message(STATUS "bench ${suite}: plot written")
   endif()
 endforeach()
+# The figures, drawn by the engine's own code (docs/figures/).
+execute_process(COMMAND ${FIGURES} ${IMAGES} RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "stepwise_figures failed (${status})")
+endif()
+# "What you should see": a page that includes run-chNN-SCENE.txt gets what a headless run of
+# SCENE with chapter NN's engine prints over 600 frames (10 s), from this build's program.
+file(GLOB pages ${SOURCE}/docs/*.md)
+foreach(page IN LISTS pages)
+  file(STRINGS ${page} includes REGEX "run-ch[0-9]+-[a-z0-9-]+\\.txt")
+  foreach(line IN LISTS includes)
+    string(REGEX MATCH "run-ch([0-9]+)-([a-z0-9-]+)\\.txt" output "${line}")
+    set(scene ${CMAKE_MATCH_2})
+    math(EXPR chapter "${CMAKE_MATCH_1}")
+    execute_process(COMMAND ${STEPWISE} run ${scene} --chapter ${chapter} --frames 600
+                    OUTPUT_FILE ${IMAGES}/${output} RESULT_VARIABLE status)
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "stepwise run ${scene} --chapter ${chapter} failed (${status}), for ${page}")
+    endif()
+  endforeach()
+endforeach()
 execute_process(COMMAND ${CMAKE_COMMAND} -DSOURCE=${SOURCE} -P ${SOURCE}/docs/check_snippets.cmake
                 RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "snippet check failed")
 endif()
 get_filename_component(doxyfile_dir ${DOXYFILE} DIRECTORY)
+file(REMOVE_RECURSE ${doxyfile_dir}/html)  # no page of an older build survives
 execute_process(COMMAND ${DOXYGEN} ${DOXYFILE} WORKING_DIRECTORY ${doxyfile_dir} RESULT_VARIABLE status)
+# MathJax 2.7 (Debian's libjs-mathjax) goes next to the pages: formulas render offline. Only
+# what the configuration loads is copied: TeX input, the AMS extensions, SVG output, TeX font.
+set(mathjax ${doxyfile_dir}/html/mathjax)
+file(REMOVE_RECURSE ${mathjax})
+foreach(part MathJax.js extensions jax/input/TeX jax/element jax/output/SVG/jax.js
+             jax/output/SVG/config.js jax/output/SVG/autoload jax/output/SVG/fonts/TeX localization/en)
+  get_filename_component(parent ${mathjax}/${part} DIRECTORY)
+  file(COPY ${MATHJAX}/${part} DESTINATION ${parent})
+endforeach()
 if(EXISTS ${doxyfile_dir}/warnings.log)
   file(READ ${doxyfile_dir}/warnings.log warnings)
 endif()

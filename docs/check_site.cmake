@@ -1,0 +1,63 @@
+# The docs test a reader would run: every page of the built site opened in headless Chromium.
+# Fails on a page whose formulas do not typeset (MathJax missing, a TeX error such as an
+# unloaded AMS macro), an image or figure that is missing, or a link to a local file that
+# does not exist. With -DSCREENSHOTS=<dir> it also saves a screenshot of every page there.
+# Usage: cmake -DCHROMIUM=<exe> -DHTML=<built html dir> [-DSCREENSHOTS=<dir>] -P check_site.cmake
+if(NOT CHROMIUM OR NOT EXISTS "${CHROMIUM}")
+  message(FATAL_ERROR "site check: Chromium not found (tools/setup-deps.sh installs Debian's "
+                      "chromium; or pass -DSTEPWISE_CHROMIUM=<browser> to CMake)")
+endif()
+if(NOT EXISTS ${HTML}/index.html)
+  message(FATAL_ERROR "site check: ${HTML}/index.html does not exist (build the docs first)")
+endif()
+get_filename_component(here ${CMAKE_CURRENT_LIST_FILE} DIRECTORY)
+file(COPY ${here}/site_check.js DESTINATION ${HTML})
+file(GLOB pages RELATIVE ${HTML} ${HTML}/*.html)
+list(FILTER pages EXCLUDE REGEX "\\.sitecheck\\.html$")
+set(chrome_flags --headless --no-sandbox --disable-gpu --disable-dev-shm-usage
+    --allow-file-access-from-files --no-first-run --hide-scrollbars --virtual-time-budget=60000)
+set(failures "")
+foreach(page IN LISTS pages)
+  file(READ ${HTML}/${page} text)
+  # Every local file the page points at must exist (images, figures, scripts, links).
+  string(REGEX MATCHALL "(src|data|href)=\"[^\"]*\"" references "${text}")
+  foreach(reference IN LISTS references)
+    string(REGEX REPLACE "^[a-z]+=\"([^\"#?]*).*" "\\1" target "${reference}")
+    if(target STREQUAL "" OR target MATCHES "^[a-z]+:")
+      continue()  # an anchor in the page, or a web or javascript: address
+    endif()
+    if(NOT EXISTS ${HTML}/${target})
+      string(APPEND failures "  ${page}: points at ${target}, which is not in the site\n")
+    endif()
+  endforeach()
+  # Open a copy that carries the checker, and read its verdict from the page it leaves behind.
+  string(REPLACE "</body>" "<script src=\"site_check.js\"></script></body>" checked "${text}")
+  string(REGEX REPLACE "\\.html$" ".sitecheck.html" copy ${page})
+  file(WRITE ${HTML}/${copy} "${checked}")
+  execute_process(COMMAND ${CHROMIUM} ${chrome_flags} --dump-dom file://${HTML}/${copy}
+                  OUTPUT_VARIABLE dom ERROR_VARIABLE chrome_errors RESULT_VARIABLE status
+                  TIMEOUT 120)
+  file(REMOVE ${HTML}/${copy})
+  if(NOT dom MATCHES "SITECHECK-BEGIN\n(.*)\nSITECHECK-END")
+    string(APPEND failures "  ${page}: the checker did not finish (Chromium exit ${status})\n")
+    continue()
+  endif()
+  set(found "${CMAKE_MATCH_1}")
+  if(NOT found STREQUAL "")
+    string(REPLACE "\n" "\n  ${page}: " found "${found}")
+    string(APPEND failures "  ${page}: ${found}\n")
+  endif()
+  if(SCREENSHOTS)
+    file(MAKE_DIRECTORY ${SCREENSHOTS})
+    string(REGEX REPLACE "\\.html$" ".png" shot ${page})
+    execute_process(COMMAND ${CHROMIUM} ${chrome_flags} --window-size=1280,2400
+                            --screenshot=${SCREENSHOTS}/${shot} file://${HTML}/${page}
+                    OUTPUT_QUIET ERROR_QUIET TIMEOUT 120)
+  endif()
+endforeach()
+file(REMOVE ${HTML}/site_check.js)
+list(LENGTH pages count)
+if(failures)
+  message(FATAL_ERROR "site check: problems a reader would see:\n${failures}")
+endif()
+message(STATUS "site check: ${count} pages, every formula typeset, every image and link present")

@@ -1,0 +1,18 @@
+#pragma once
+// The course's figures, each drawn by the engine's own code into an SVG file. The docs build
+// runs `stepwise_figures <dir>`; the pages show the files with \image.
+
+#include "svg.h"
+
+#include <string>
+
+namespace figures {
+
+bool drawMinkowski(const std::string& path);        // chapter 2: A - B and a support point
+bool drawVoronoiRegions(const std::string& path);   // chapter 2: a triangle's Voronoi regions
+bool drawEpaHorizon(const std::string& path);       // chapter 3: the polytope and its horizon
+bool drawContactArms(const std::string& path);      // chapter 4: the Jacobian's arms
+bool drawFrictionPyramid(const std::string& path);  // chapter 4: friction pyramid against cone
+bool drawBaumgarteEnergy(const std::string& path);  // chapter 4: Baumgarte's energy gain
+
+}  // namespace figures

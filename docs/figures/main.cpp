@@ -1,0 +1,30 @@
+// stepwise_figures <output dir>: draws every figure of the course site from the engine's code.
+#include "figures.h"
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: stepwise_figures <output dir>\n");
+        return 2;
+    }
+    const std::string dir = argv[1];
+    struct Figure {
+        const char* file;
+        bool (*draw)(const std::string&);
+    };
+    const Figure all[] = {{"fig-minkowski.svg", figures::drawMinkowski},
+                          {"fig-voronoi-regions.svg", figures::drawVoronoiRegions},
+                          {"fig-epa-horizon.svg", figures::drawEpaHorizon},
+                          {"fig-contact-arms.svg", figures::drawContactArms},
+                          {"fig-friction-pyramid.svg", figures::drawFrictionPyramid},
+                          {"fig-baumgarte-energy.svg", figures::drawBaumgarteEnergy}};
+    for (const Figure& figure : all) {
+        const std::string path = dir + "/" + figure.file;
+        if (!figure.draw(path)) {
+            std::fprintf(stderr, "error: could not write %s\n", path.c_str());
+            return 1;
+        }
+    }
+    return 0;
+}

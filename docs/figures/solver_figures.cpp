@@ -1,0 +1,126 @@
+// Figures for chapter 4, computed by the engine's own solver code.
+#include "figures.h"
+
+#include "04_pgs/chapter.h"
+#include "world/world.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace figures {
+
+using namespace stepwise;
+
+bool drawFrictionPyramid(const std::string& path) {
+    // Coulomb's law bounds the tangential impulse by a disc of radius mu lambda_n (a section of
+    // the friction cone). Two friction rows along tangents t1, t2, each clamped to
+    // [-mu lambda_n, mu lambda_n], bound it by a square instead (the pyramid): in the square's
+    // corners friction may reach sqrt(2) times Coulomb's bound. The tangents are the engine's
+    // own choice for a contact normal (anyPerpendicular), here seen along the normal.
+    const Vec3 normal = Vec3(Real(0.3), 1, Real(0.2)).normalized();
+    const Vec3 t1 = anyPerpendicular(normal);
+    const Vec3 t2 = normal.cross(t1);
+    const double bound = 1;  // mu lambda_n
+    Svg svg(520, 440);
+    const Viewport view{0, 0, 520, 440, {0, 0}, 140};
+    svg.polygon(view, {{bound, bound}, {-bound, bound}, {-bound, -bound}, {bound, -bound}},
+                "fill:#f8e3cc;stroke:#e08a2e;stroke-width:2");
+    svg.circle(view, {0, 0}, bound, "fill:#dbe6f5;stroke:#3b6fb6;stroke-width:2;fill-opacity:0.8");
+    svg.arrow(view, {0, 0}, {1.35, 0}, "#333");
+    svg.arrow(view, {0, 0}, {0, 1.35}, "#333");
+    svg.text(view, {1.38, -0.05}, "t1");
+    svg.text(view, {0.05, 1.38}, "t2");
+    svg.arrow(view, {0, 0}, {bound, bound}, "#c0392b");
+    svg.text(view, {0.45, 0.75}, "sqrt(2) mu lambda_n", "fill:#c0392b");
+    svg.text(view, {-0.85, -0.2}, "cone: |lambda_t| <= mu lambda_n", "fill:#3b6fb6");
+    svg.text(view, {-1.05, -1.15}, "pyramid: |lambda_1|, |lambda_2| <= mu lambda_n", "fill:#b0661e");
+    char label[200];
+    std::snprintf(label, sizeof label, "t1 = (%.2f, %.2f, %.2f), t2 = (%.2f, %.2f, %.2f) for n = (%.2f, %.2f, %.2f)",
+                  double(t1.x()), double(t1.y()), double(t1.z()), double(t2.x()), double(t2.y()), double(t2.z()),
+                  double(normal.x()), double(normal.y()), double(normal.z()));
+    svg.textAt({10, 430}, label, "fill:#555;font-size:12px");
+    return svg.save(path);
+}
+
+namespace {
+
+// A 1 kg ball at rest, started `depth` metres inside a static slab, stepped by chapter 4's
+// engine with the given Baumgarte factor: the energy it has gained after each frame.
+std::vector<Point2> energyGain(Real beta, Real depth, int frames) {
+    World world;
+    world.settings.baumgarte = beta;
+    BodyDef ground;
+    ground.name = "ground";
+    ground.type = BodyType::Static;
+    ground.shape = Shape::box(Vec3(5, Real(0.5), 5));
+    ground.transform.position = Vec3(0, Real(-0.5), 0);
+    addBody(world, ground);
+    BodyDef ball;
+    ball.name = "ball";
+    ball.shape = Shape::sphere(Real(0.25));
+    ball.mass = 1;
+    ball.transform.position = Vec3(0, Real(0.25) - depth, 0);
+    addBody(world, ball);
+    Pipeline pipeline = makeChapter04Pipeline(world);
+    const Energy start = computeEnergy(world);
+    std::vector<Point2> curve{{0, 0}};
+    for (int frame = 1; frame <= frames; ++frame) {
+        pipeline.step(world);
+        const Energy now = computeEnergy(world);
+        curve.push_back({world.time, (now.kinetic + now.gravity) - (start.kinetic + start.gravity)});
+    }
+    return curve;
+}
+
+}  // namespace
+
+bool drawBaumgarteEnergy(const std::string& path) {
+    const Real depth = Real(0.1);
+    const int frames = 90;
+    const Real betas[3] = {Real(0.2), Real(0.5), Real(1)};
+    const char* colours[3] = {"#2e8b57", "#3b6fb6", "#c0392b"};
+    std::vector<Point2> curves[3];
+    double top = 0.1;
+    for (int i = 0; i < 3; ++i) {
+        curves[i] = energyGain(betas[i], depth, frames);
+        for (Point2 p : curves[i]) top = std::max(top, p.y);
+    }
+    // Plot area: time 0 to 1.5 s across; joules scaled so that `top` fills the height.
+    Svg svg(620, 400);
+    const double plotWidth = 520, plotHeight = 300, pixelsPerSecond = plotWidth / 1.5;
+    const Viewport plot{60, 30, plotWidth, plotHeight, {0.75, plotHeight / pixelsPerSecond / 2}, pixelsPerSecond};
+    const double yScale = plotHeight / pixelsPerSecond / top;
+    svg.line(plot, {0, 0}, {1.5, 0}, "stroke:#333");
+    svg.line(plot, {0, 0}, {0, top * yScale}, "stroke:#333");
+    for (int i = 0; i < 3; ++i) {
+        std::vector<Point2> points;
+        for (Point2 p : curves[i]) points.push_back({p.x, p.y * yScale});
+        svg.polyline(plot, points, std::string("stroke:") + colours[i] + ";stroke-width:2");
+        double peak = 0;
+        for (Point2 p : curves[i]) peak = std::max(peak, p.y);
+        char label[80];
+        std::snprintf(label, sizeof label, "beta = %.1f: peak +%.2f J", double(betas[i]), peak);
+        svg.textAt({400, 60.0 + 20 * i}, label, std::string("fill:") + colours[i]);
+    }
+    // Lifting the ball out of the ground, to the slop, takes m g (depth - slop); anything above
+    // that line is energy the position correction made up.
+    World reference;
+    const double needed = double(-reference.settings.gravity.y()) * double(depth - reference.settings.slop);
+    svg.line(plot, {0, needed * yScale}, {1.5, needed * yScale}, "stroke:#555;stroke-dasharray:5,4");
+    char lift[120];
+    std::snprintf(lift, sizeof lift, "m g (depth - slop) = %.2f J: what lifting it out takes", needed);
+    svg.text(plot, {0.35, needed * yScale + 0.08}, lift, "fill:#555;font-size:12px");
+    char axis[120];
+    std::snprintf(axis, sizeof axis, "%.2f J", top);
+    svg.textAt({8, 36}, axis, "fill:#555;font-size:12px");
+    svg.textAt({50, 348}, "0", "fill:#555;font-size:12px");
+    svg.textAt({560, 348}, "1.5 s", "fill:#555;font-size:12px");
+    char caption[200];
+    std::snprintf(caption, sizeof caption,
+                  "energy gained by a 1 kg ball started %.0f cm inside the ground, at rest (chapter 4's engine, 60 Hz)",
+                  double(depth) * 100);
+    svg.textAt({10, 385}, caption, "fill:#555;font-size:12px");
+    return svg.save(path);
+}
+
+}  // namespace figures
