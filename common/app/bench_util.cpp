@@ -98,6 +98,15 @@ std::string escapeXml(const std::string& text) {
     return out;
 }
 
+/// A whole number with thousands separators: 100000 -> "100,000".
+std::string countLabel(double value) {
+    std::string digits = std::to_string(static_cast<long long>(std::llround(value)));
+    const std::size_t sign = digits[0] == '-' ? 1 : 0;
+    for (std::ptrdiff_t at = static_cast<std::ptrdiff_t>(digits.size()) - 3; at > static_cast<std::ptrdiff_t>(sign); at -= 3)
+        digits.insert(static_cast<std::size_t>(at), ",");
+    return digits;
+}
+
 const char* kSeriesColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
 }  // namespace
@@ -126,7 +135,7 @@ void writeSvgPlot(const std::string& path, const PlotSpec& spec) {
         const double x = xAxis.toPixel(value);
         svg << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << height - bottom
             << "\" stroke=\"#ddd\"/>\n<text x=\"" << x << "\" y=\"" << height - bottom + 16
-            << "\" text-anchor=\"middle\">" << formatNumber(value, 3) << "</text>\n";
+            << "\" text-anchor=\"middle\">" << (spec.xCounts ? countLabel(value) : formatNumber(value, 3)) << "</text>\n";
     }
     for (double value : ticks(yAxis)) {
         const double y = yAxis.toPixel(value);

@@ -55,7 +55,9 @@ struct PlotSpec {
     std::string yLabel;
     bool logX = true;
     bool logY = true;
+
     std::vector<PlotSeries> series;
+    bool xCounts = false;       // x ticks as whole numbers with separators ("10,000"): body counts
 };
 
 /// Writes an SVG line plot (log axes by default; non-positive values are skipped on log axes).

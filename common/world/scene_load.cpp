@@ -151,11 +151,26 @@ void readForce(const JsonCursor& cursor, World& world) {
     world.springs.push_back(spring);
 }
 
-World loadScene(const std::string& jsonText, const std::string& source, const std::string& defaultName) {
+/// "generator": { "<name>": { parameters } }: exactly one generator the program knows.
+void runGenerator(const JsonCursor& cursor, const SceneGenerators& generators, World& world) {
+    if (!cursor.json().is_object() || cursor.json().size() != 1)
+        cursor.fail("must be an object with one key, the generator's name: { \"stress\": { ... } }");
+    const std::string name = cursor.json().begin().key();
+    const auto generator = generators.find(name);
+    if (generator == generators.end()) {
+        std::string known;
+        for (const auto& entry : generators) known += std::string(known.empty() ? "" : ", ") + "\"" + entry.first + "\"";
+        cursor.fail("unknown generator \"" + name + "\" (" + (known.empty() ? "this program knows none" : "known: " + known) + ")");
+    }
+    generator->second(world, cursor.child(name.c_str()));
+}
+
+World loadScene(const std::string& jsonText, const std::string& source, const std::string& defaultName,
+                const SceneGenerators& generators) {
     const Json document = parseStrictJson(jsonText, source);
     const JsonCursor root(document, "");
     if (!document.is_object()) root.fail("a scene must be a JSON object { ... }");
-    root.expectObject({"format", "version", "name", "description", "settings", "bodies", "joints", "forces"});
+    root.expectObject({"format", "version", "name", "description", "settings", "bodies", "generator", "joints", "forces"});
     if (auto v = root.optional("format"); v && v->string() != "stepwise-scene") v->fail("must be \"stepwise-scene\"");
     if (auto v = root.optional("version"); v && v->integer(0, 1 << 30) != 1)
         v->fail("unsupported version " + v->json().dump() + " (this engine reads version 1)");
@@ -188,6 +203,8 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
                 cursor.fail("its mass or inertia is not a finite number (sizes, mass or density too large or too small)");
         }
     }
+    // Generated bodies come after the listed ones, so joints and forces can name either.
+    if (auto generator = root.optional("generator")) runGenerator(*generator, generators, world);
     if (auto joints = root.optional("joints"))
         for (std::size_t i = 0; i < joints->arraySize(); ++i)
             world.joints.push_back(readJoint(joints->element(i), world));
@@ -198,11 +215,11 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
 
 }  // namespace
 
-World loadSceneFromString(const std::string& jsonText, const std::string& source) {
-    return loadScene(jsonText, source, "untitled");
+World loadSceneFromString(const std::string& jsonText, const std::string& source, const SceneGenerators& generators) {
+    return loadScene(jsonText, source, "untitled", generators);
 }
 
-World loadSceneFile(const std::string& path) {
+World loadSceneFile(const std::string& path, const SceneGenerators& generators) {
     std::error_code error;
     if (!std::filesystem::exists(path, error)) throw SceneError(path, "no such file");
     if (std::filesystem::is_directory(path, error)) throw SceneError(path, "is a directory, not a scene file");
@@ -210,7 +227,7 @@ World loadSceneFile(const std::string& path) {
     std::ostringstream text;
     text << file.rdbuf();
     if (!file) throw SceneError(path, "cannot read the file");
-    return loadScene(text.str(), path, std::filesystem::path(path).stem().string());
+    return loadScene(text.str(), path, std::filesystem::path(path).stem().string(), generators);
 }
 
 }  // namespace stepwise

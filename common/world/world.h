@@ -3,6 +3,7 @@
 // here knows which stages exist.
 
 #include "world/body.h"
+#include "world/broadphase_state.h"
 #include "world/contact.h"
 #include "world/settings.h"
 #include "world/step_state.h"
@@ -76,6 +77,7 @@ struct World {
     std::vector<BodyPair> candidatePairs;
     std::vector<BodyPair> pairs;
     std::vector<Contact> contacts;
+    BroadphaseState broadphase;          // what the broadphase keeps between steps (chapter 5)
 
     StepState step;                      // what stages hand each other, and what they measured
 

@@ -1,0 +1,337 @@
+// `stepwise bench broadphase`: what sweep and prune buys, measured on the stress scene.
+//
+//   crossover  small scenes (4 to 256 bodies), sparse and dense: the broadphase alone, brute
+//              force against sweep and prune, median over many frames. The smallest count from
+//              which sweep and prune wins at every larger count is the crossover `auto` uses.
+//   scaling    100 to 100,000 bodies, sparse and dense: broadphase time of brute force, sweep and
+//              prune with a full sort, and with the incremental sort, and the whole step.
+//   settled    spheres resting on the ground: the sort alone, insertion sort from last step's
+//              order against a full sort, and the whole broadphase with each.
+//
+// One simulation per scene runs chapter 5's pipeline (sweep and prune, incremental); each
+// measured frame the other broadphases are timed on the same world before it steps. Every
+// broadphase hands the narrowphase the same pairs, so the rest of the step is the same whichever
+// ran: a method's whole step is the measured step with its broadphase time in place of the stage's.
+#include "05_sap/benches.h"
+
+#include "05_sap/chapter.h"
+#include "05_sap/stress_scene.h"
+#include "app/bench_util.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+
+namespace stepwise {
+
+namespace {
+
+enum class Method { Brute, SapFull, SapIncremental };
+const char* methodName(Method method) {
+    return method == Method::Brute ? "brute" : method == Method::SapFull ? "sap_full" : "sap_incremental";
+}
+const Method kMethods[] = {Method::Brute, Method::SapFull, Method::SapIncremental};
+
+void runBroadphase(World& world, Method method) {
+    if (method == Method::Brute)
+        bruteForceBroadphase(world);
+    else
+        sweepAndPrune(world, method == Method::SapFull ? SortMode::Full : SortMode::Incremental);
+}
+
+/// Median time of one broadphase call, ms, each repetition starting from the same state.
+double timeBroadphase(World& world, const BroadphaseState& start, Method method, int repetitions) {
+    std::vector<double> samples;
+    for (int repetition = 0; repetition < repetitions; ++repetition) {
+        world.broadphase = start;
+        const Stopwatch watch;
+        runBroadphase(world, method);
+        samples.push_back(watch.seconds() * 1e3);
+    }
+    world.broadphase = start;
+    return median(samples);
+}
+
+struct SceneResult {
+    std::map<Method, double> broadphaseMs;   // median per frame
+    std::map<Method, double> stepMs;         // the rest of the step plus this broadphase
+    double narrowphaseMs = 0, solveMs = 0;
+    double candidates = 0, axisOverlaps = 0, contacts = 0;  // mean per measured frame
+};
+
+struct SceneRun {
+    StressParams params;
+    int warmupFrames = 10;
+    int measuredFrames = 10;
+    int repetitions = 1;        // per frame and method (small scenes: many, to beat the clock)
+    bool brute = true;
+    int bruteFrames = 1 << 30;  // brute force on at most this many of the measured frames
+};
+
+double stageMs(const Pipeline& pipeline, const char* group) {
+    const Stage* stage = pipeline.find(group);
+    return stage ? stage->lastMs : 0;
+}
+
+SceneResult measureScene(const SceneRun& run) {
+    World world = buildStressScene(run.params);
+    world.settings.broadphase = BroadphaseMode::Sap;
+    Pipeline pipeline = makeChapter05Pipeline(world);
+    std::map<Method, std::vector<double>> broadphase, step;
+    std::vector<double> narrowphase, solve;
+    SceneResult result;
+    for (int frame = 0; frame < run.warmupFrames + run.measuredFrames; ++frame) {
+        const int measured = frame - run.warmupFrames;
+        std::map<Method, double> sideMs;
+        if (measured >= 0) {
+            // The other broadphases, on the world as the stage will see it (the velocity stage
+            // before it moves nothing the bounds depend on but the growth).
+            const BroadphaseState start = world.broadphase;
+            for (Method method : kMethods) {
+                if (method == Method::SapIncremental) continue;  // the stage itself, below
+                if (method == Method::Brute && (!run.brute || measured >= run.bruteFrames)) continue;
+                sideMs[method] = timeBroadphase(world, start, method, run.repetitions);
+            }
+            if (run.repetitions > 1) sideMs[Method::SapIncremental] = timeBroadphase(world, start, Method::SapIncremental, run.repetitions);
+        }
+        pipeline.step(world);
+        if (measured < 0) continue;
+        const double stageTime = stageMs(pipeline, stage_group::kBroadphase);
+        if (!sideMs.count(Method::SapIncremental)) sideMs[Method::SapIncremental] = stageTime;
+        const double rest = std::max(0.0, pipeline.lastStepMs() - stageTime);
+        for (const auto& [method, ms] : sideMs) {
+            broadphase[method].push_back(ms);
+            step[method].push_back(rest + ms);
+        }
+        narrowphase.push_back(stageMs(pipeline, stage_group::kNarrowphase));
+        solve.push_back(stageMs(pipeline, stage_group::kSolve));
+        result.candidates += static_cast<double>(world.candidatePairs.size()) / run.measuredFrames;
+        result.axisOverlaps += static_cast<double>(world.broadphase.axisOverlaps) / run.measuredFrames;
+        result.contacts += static_cast<double>(world.contacts.size()) / run.measuredFrames;
+    }
+    for (const auto& [method, samples] : broadphase) result.broadphaseMs[method] = median(samples);
+    for (const auto& [method, samples] : step) result.stepMs[method] = median(samples);
+    result.narrowphaseMs = median(narrowphase);
+    result.solveMs = median(solve);
+    return result;
+}
+
+struct SettledResult {
+    double insertionSortMs = 0, fullSortMs = 0;           // the sort alone
+    double incrementalMs = 0, fullMs = 0;                 // the whole broadphase
+    double moves = 0;                                     // insertion-sort moves per frame
+};
+
+// [ch05-bench-settled]
+/// Spheres resting on the ground: the sort from last step's order against a full sort, timed
+/// apart from the rest of the broadphase, and the whole broadphase with each.
+SettledResult measureSettled(int count, int settleFrames, int measuredFrames) {
+    StressParams params;
+    params.count = count;
+    params.shape = StressShape::Sphere;
+    params.dropHeight = 0;
+    World world = buildStressScene(params);
+    world.settings.broadphase = BroadphaseMode::Sap;
+    Pipeline pipeline = makeChapter05Pipeline(world);
+    for (int frame = 0; frame < settleFrames; ++frame) pipeline.step(world);
+    std::vector<double> insertion, full, incremental, whole, moves;
+    std::vector<Aabb> bounds;
+    std::vector<char> dynamic;
+    for (int frame = 0; frame < measuredFrames; ++frame) {
+        const BroadphaseState start = world.broadphase;
+        computeBroadphaseBounds(world, bounds, dynamic);
+        std::vector<SweepEndpoint> ends = start.endpoints;
+        Stopwatch watch;
+        refreshEndpointValues(bounds, start.axis, ends);
+        const long moved = insertionSortEndpoints(ends, static_cast<long>(ends.size()) * 64);
+        insertion.push_back(watch.seconds() * 1e3);
+        moves.push_back(static_cast<double>(moved));
+        watch.restart();
+        makeEndpoints(bounds, start.axis, ends);
+        fullSortEndpoints(ends);
+        full.push_back(watch.seconds() * 1e3);
+        whole.push_back(timeBroadphase(world, start, Method::SapFull, 1));
+        incremental.push_back(timeBroadphase(world, start, Method::SapIncremental, 1));
+        pipeline.step(world);
+    }
+    return SettledResult{median(insertion), median(full), median(incremental), median(whole), median(moves)};
+}
+// [ch05-bench-settled]
+
+std::string cell(double value) { return std::isfinite(value) ? formatNumber(value) : ""; }
+
+struct Series {
+    std::map<std::string, PlotSeries> byName;
+    void add(const std::string& name, double x, double y) {
+        PlotSeries& series = byName[name];
+        series.title = name;
+        series.x.push_back(x);
+        series.y.push_back(y);
+    }
+};
+
+/// The smallest count from which sweep and prune's broadphase is faster at every measured count.
+int crossoverCount(const std::vector<std::pair<int, double>>& bruteOverSap) {
+    int crossover = -1;
+    for (auto it = bruteOverSap.rbegin(); it != bruteOverSap.rend(); ++it) {
+        if (it->second <= 1) break;
+        crossover = it->first;
+    }
+    return crossover;
+}
+
+}  // namespace
+
+int runBroadphaseBench(const BenchOptions& options) {
+    for (const std::string& path : {options.csvPath, options.plotPath}) {
+        if (!path.empty() && !std::ofstream(path, std::ios::binary | std::ios::app)) {
+            std::cerr << "error: bench broadphase: cannot write '" << path << "'\n";
+            return 2;
+        }
+    }
+    std::ostream& out = options.out ? *options.out : std::cout;
+    const bool quick = options.quick;
+    CsvTable table({"part", "density", "shape", "bodies", "method", "broadphase_ms", "step_ms", "sort_ms",
+                    "candidates", "axis_overlaps", "contacts", "narrowphase_ms", "solve_ms"});
+    Series broadphasePlot, stepPlot;
+    const StressDensity densities[] = {StressDensity::Sparse, StressDensity::Dense};
+
+    // Crossover: small scenes, many frames, many repetitions.
+    std::map<StressDensity, int> crossover;
+    const std::vector<int> smallCounts = {4, 8, 12, 16, 24, 32, 48, 64, 128, 256};
+    for (StressDensity density : densities) {
+        std::vector<std::pair<int, double>> ratios;
+        for (int count : smallCounts) {
+            SceneRun run;
+            run.params.count = count;
+            run.params.density = density;
+            run.params.dropHeight = 0;
+            run.warmupFrames = 20;
+            run.measuredFrames = quick ? 40 : 200;
+            run.repetitions = std::max(1, 4000 / (count * count) + 5);
+            const SceneResult result = measureScene(run);
+            ratios.emplace_back(count + 1, result.broadphaseMs.at(Method::Brute) / result.broadphaseMs.at(Method::SapIncremental));
+            for (Method method : kMethods) {
+                table.addRow({"crossover", toString(density), "mixed", std::to_string(count + 1), methodName(method),
+                              cell(result.broadphaseMs.at(method)), "", "", cell(result.candidates), "", "", "", ""});
+            }
+        }
+        crossover[density] = crossoverCount(ratios);
+    }
+
+    // Scaling: 100 to 100,000 bodies.
+    const std::vector<int> counts = quick ? std::vector<int>{100, 1000, 10000, 100000}
+                                          : std::vector<int>{100, 300, 1000, 3000, 10000, 30000, 100000};
+    std::map<std::pair<StressDensity, int>, SceneResult> scaling;
+    for (StressDensity density : densities) {
+        for (int count : counts) {
+            // Dense scenes pile up: their step grows fast, so quick runs stop at 10,000.
+            if (quick && density == StressDensity::Dense && count > 10000) continue;
+            SceneRun run;
+            run.params.count = count;
+            run.params.density = density;
+            run.params.dropHeight = 0;
+            run.warmupFrames = quick ? 5 : 20;
+            run.measuredFrames = count >= 30000 ? 5 : quick ? 8 : 20;
+            run.repetitions = count <= 300 ? 10 : 1;
+            // Brute force grows as n^2: one frame at 30,000 and up, none at 100,000 in quick runs.
+            run.brute = !(quick && count > 10000);
+            run.bruteFrames = count >= 30000 ? 1 : run.measuredFrames;
+            const SceneResult result = measureScene(run);
+            scaling[{density, count}] = result;
+            const int bodies = count + 1;
+            for (Method method : kMethods) {
+                if (!result.broadphaseMs.count(method)) continue;
+                table.addRow({"scaling", toString(density), "mixed", std::to_string(bodies), methodName(method),
+                              cell(result.broadphaseMs.at(method)), cell(result.stepMs.at(method)), "",
+                              cell(result.candidates), method == Method::Brute ? "" : cell(result.axisOverlaps),
+                              cell(result.contacts), cell(result.narrowphaseMs), cell(result.solveMs)});
+                const std::string label = std::string(toString(density)) + ", " +
+                                          (method == Method::Brute ? "brute force" : method == Method::SapFull ? "SAP full sort" : "SAP incremental");
+                broadphasePlot.add(label, bodies, result.broadphaseMs.at(method));
+                if (method != Method::SapFull) stepPlot.add(label, bodies, result.stepMs.at(method));
+            }
+            stepPlot.add(std::string(toString(density)) + ": narrowphase + solve", bodies, result.narrowphaseMs + result.solveMs);
+        }
+    }
+
+    // Settled: incremental against full sort.
+    std::map<int, SettledResult> settled;
+    for (int count : quick ? std::vector<int>{10000} : std::vector<int>{10000, 100000}) {
+        const SettledResult result = measureSettled(count, quick ? 40 : 60, quick ? 10 : 30);
+        settled[count] = result;
+        table.addRow({"settled", "sparse", "sphere", std::to_string(count + 1), "sap_incremental", cell(result.incrementalMs),
+                      "", cell(result.insertionSortMs), "", "", "", "", ""});
+        table.addRow({"settled", "sparse", "sphere", std::to_string(count + 1), "sap_full", cell(result.fullMs), "",
+                      cell(result.fullSortMs), "", "", "", "", ""});
+    }
+
+    out << table.toText();
+    // [ch05-bench-summary]
+    out << "\ncrossover: sweep and prune's broadphase is faster from " << crossover[StressDensity::Sparse]
+        << " bodies (sparse) and " << crossover[StressDensity::Dense] << " bodies (dense); auto uses "
+        << kAutoSapMinBodies << " (kAutoSapMinBodies)\n";
+    SceneResult& sparse10k = scaling[{StressDensity::Sparse, 10000}];
+    const double sap10k = sparse10k.broadphaseMs[Method::SapIncremental];
+    const double speedup10k = sparse10k.broadphaseMs[Method::Brute] / sap10k;
+    const double sap100k = scaling[{StressDensity::Sparse, 100000}].broadphaseMs[Method::SapIncremental];
+    const SettledResult& rest = settled[10000];
+    auto verdict = [](bool met) { return met ? "met" : "MISSED"; };
+    out << "targets (one thread):\n"
+        << "  sparse 10,001 bodies: SAP " << formatNumber(sap10k, 3) << " ms, " << formatNumber(speedup10k, 3)
+        << "x faster than brute force (target: at least 100x, under 2 ms): "
+        << verdict(speedup10k >= 100 && sap10k < 2) << "\n"
+        << "  sparse 100,001 bodies: SAP " << formatNumber(sap100k, 3) << " ms (target: under 25 ms): " << verdict(sap100k < 25)
+        << "\n"
+        << "  settled 10,001 spheres: insertion sort " << formatNumber(rest.insertionSortMs, 3) << " ms ("
+        << formatNumber(rest.moves, 3) << " moves), full sort " << formatNumber(rest.fullSortMs, 3) << " ms: "
+        << formatNumber(rest.fullSortMs / rest.insertionSortMs, 3) << "x (target: at least 3x): "
+        << verdict(rest.fullSortMs >= 3 * rest.insertionSortMs) << "; whole broadphase "
+        << formatNumber(rest.incrementalMs, 3) << " against " << formatNumber(rest.fullMs, 3) << " ms\n";
+    out << "dense against sparse, 10,001 bodies (SAP incremental):\n";
+    for (StressDensity density : densities) {
+        const SceneResult& result = scaling[{density, 10000}];
+        const double stepTime = result.stepMs.at(Method::SapIncremental);
+        out << "  " << toString(density) << ": " << formatNumber(result.candidates / 10001, 3) << " candidate pairs and "
+            << formatNumber(result.axisOverlaps / 10001, 3) << " axis overlaps per body; broadphase "
+            << formatNumber(result.broadphaseMs.at(Method::SapIncremental), 3) << " ms (brute force "
+            << formatNumber(result.broadphaseMs.at(Method::Brute), 3) << " ms), narrowphase "
+            << formatNumber(result.narrowphaseMs, 3) << " ms, solve " << formatNumber(result.solveMs, 3) << " ms, step "
+            << formatNumber(stepTime, 3) << " ms; SAP saves "
+            << formatNumber(100 * (result.stepMs.at(Method::Brute) - stepTime) / result.stepMs.at(Method::Brute), 3)
+            << "% of brute force's step\n";
+    }
+    // [ch05-bench-summary]
+
+    try {
+        if (!options.csvPath.empty()) table.write(options.csvPath);
+        if (!options.plotPath.empty()) {
+            PlotSpec plot;
+            plot.title = "Broadphase time against body count (stress scene, one thread)";
+            plot.xLabel = "bodies";
+            plot.yLabel = "broadphase ms per step (median)";
+            plot.xCounts = true;
+            for (auto& [name, series] : broadphasePlot.byName) plot.series.push_back(series);
+            writeSvgPlot(options.plotPath, plot);
+            PlotSpec stepSpec = plot;
+            stepSpec.title = "Whole step against body count: where the time goes";
+            stepSpec.yLabel = "ms per step (median)";
+            stepSpec.series.clear();
+            for (auto& [name, series] : stepPlot.byName) stepSpec.series.push_back(series);
+            std::string stepPath = options.plotPath;
+            const std::size_t dot = stepPath.rfind(".svg");
+            stepPath = dot == std::string::npos ? stepPath + "-step" : stepPath.substr(0, dot) + "-step.svg";
+            writeSvgPlot(stepPath, stepSpec);
+        }
+    } catch (const std::runtime_error& error) {
+        std::cerr << "error: bench broadphase: " << error.what() << "\n";
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace stepwise
