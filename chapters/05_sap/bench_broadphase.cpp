@@ -43,17 +43,17 @@ void runBroadphase(World& world, Method method) {
         sweepAndPrune(world, method == Method::SapFull ? SortMode::Full : SortMode::Incremental);
 }
 
-/// Median time of one broadphase call, ms, each repetition starting from the same state.
+/// Time of one broadphase call, ms: the mean of `repetitions` calls timed together (reading the
+/// thread's CPU clock costs about a microsecond, as much as a whole call on a few bodies). The
+/// calls after the first find the ends sorted already; the first one's moves are few in a
+/// small scene. The world's broadphase state is left as `start`.
 double timeBroadphase(World& world, const BroadphaseState& start, Method method, int repetitions) {
-    std::vector<double> samples;
-    for (int repetition = 0; repetition < repetitions; ++repetition) {
-        world.broadphase = start;
-        const Stopwatch watch;
-        runBroadphase(world, method);
-        samples.push_back(watch.seconds() * 1e3);
-    }
     world.broadphase = start;
-    return median(samples);
+    const ThreadStopwatch watch;
+    for (int repetition = 0; repetition < repetitions; ++repetition) runBroadphase(world, method);
+    const double ms = watch.seconds() * 1e3 / repetitions;
+    world.broadphase = start;
+    return ms;
 }
 
 struct SceneResult {
@@ -72,15 +72,25 @@ struct SceneRun {
     int bruteFrames = 1 << 30;  // brute force on at most this many of the measured frames
 };
 
-double stageMs(const Pipeline& pipeline, const char* group) {
-    const Stage* stage = pipeline.find(group);
-    return stage ? stage->lastMs : 0;
+/// Wraps every stage so its CPU time adds up in cpuMs[group]: the pipeline's own stage timings
+/// are wall-clock, which on a shared machine also count other programs' turns.
+void timeStagesOnCpu(Pipeline& pipeline, std::map<std::string, double>& cpuMs) {
+    for (Stage& stage : pipeline.stages()) {
+        double* total = &cpuMs[stageGroup(stage.name)];
+        stage.run = [run = stage.run, total](World& world, Real dt) {
+            const ThreadStopwatch watch;
+            run(world, dt);
+            *total += watch.seconds() * 1e3;
+        };
+    }
 }
 
 SceneResult measureScene(const SceneRun& run) {
     World world = buildStressScene(run.params);
     world.settings.broadphase = BroadphaseMode::Sap;
     Pipeline pipeline = makeChapter05Pipeline(world);
+    std::map<std::string, double> cpuMs;
+    timeStagesOnCpu(pipeline, cpuMs);
     std::map<Method, std::vector<double>> broadphase, step;
     std::vector<double> narrowphase, solve;
     SceneResult result;
@@ -98,17 +108,20 @@ SceneResult measureScene(const SceneRun& run) {
             }
             if (run.repetitions > 1) sideMs[Method::SapIncremental] = timeBroadphase(world, start, Method::SapIncremental, run.repetitions);
         }
+        for (auto& entry : cpuMs) entry.second = 0;
         pipeline.step(world);
         if (measured < 0) continue;
-        const double stageTime = stageMs(pipeline, stage_group::kBroadphase);
+        double stepTime = 0;
+        for (const auto& entry : cpuMs) stepTime += entry.second;
+        const double stageTime = cpuMs[stage_group::kBroadphase];
         if (!sideMs.count(Method::SapIncremental)) sideMs[Method::SapIncremental] = stageTime;
-        const double rest = std::max(0.0, pipeline.lastStepMs() - stageTime);
+        const double rest = std::max(0.0, stepTime - stageTime);
         for (const auto& [method, ms] : sideMs) {
             broadphase[method].push_back(ms);
             step[method].push_back(rest + ms);
         }
-        narrowphase.push_back(stageMs(pipeline, stage_group::kNarrowphase));
-        solve.push_back(stageMs(pipeline, stage_group::kSolve));
+        narrowphase.push_back(cpuMs[stage_group::kNarrowphase]);
+        solve.push_back(cpuMs[stage_group::kSolve]);
         result.candidates += static_cast<double>(world.candidatePairs.size()) / run.measuredFrames;
         result.axisOverlaps += static_cast<double>(world.broadphase.axisOverlaps) / run.measuredFrames;
         result.contacts += static_cast<double>(world.contacts.size()) / run.measuredFrames;
@@ -145,7 +158,7 @@ SettledResult measureSettled(int count, int settleFrames, int measuredFrames) {
         const BroadphaseState start = world.broadphase;
         computeBroadphaseBounds(world, bounds, dynamic);
         std::vector<SweepEndpoint> ends = start.endpoints;
-        Stopwatch watch;
+        ThreadStopwatch watch;
         refreshEndpointValues(bounds, start.axis, ends);
         const long moved = insertionSortEndpoints(ends, static_cast<long>(ends.size()) * 64);
         insertion.push_back(watch.seconds() * 1e3);

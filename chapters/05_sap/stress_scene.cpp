@@ -81,7 +81,7 @@ const char* toString(StressShape shape) {
     return "?";
 }
 
-Real stressSpacing(StressDensity density) { return density == StressDensity::Dense ? Real(1.05) : Real(4); }
+Real stressSpacing(StressDensity density) { return density == StressDensity::Dense ? Real(1) : Real(4); }
 
 // [ch05-stress-scene]
 void addStressBodies(World& world, const StressParams& params) {

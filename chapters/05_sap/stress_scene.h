@@ -30,8 +30,8 @@ struct StressParams {
 constexpr int kStressMaxCount = 1000000;
 constexpr Real kStressMaxDropHeight = 1000;   // m
 
-/// Centre spacing of the bodies, m: every body fits in a 1 m cube; dense leaves 5 cm between
-/// neighbours' cubes, sparse 3 m.
+/// Centre spacing of the bodies, m. Every body fits in a ball of 1 m across: dense packs those
+/// balls touching (neighbouring spheres touch), sparse leaves 3 m between them.
 Real stressSpacing(StressDensity density);
 
 /// Adds the ground (a static box whose top is y = 0, wide enough for the layout) and the bodies:

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace stepwise {
 
@@ -18,14 +19,70 @@ Real boundsGrowth(const World& world, int bodyIndex) {
     return speculativeMargin(world, bodyIndex, bodyIndex, wholeFrame) / 2 + kBoundsMargin;
 }
 
+namespace {
+
+/// A placed shape's world box, and the radius of the smallest ball about the body's origin that
+/// holds the shape (chapter 2's shapeScale), in one pass over the shape: one rotation matrix,
+/// each hull vertex turned once.
+struct PlacedShape {
+    Aabb box;
+    Real radius = 0;
+};
+
+PlacedShape placeShape(const Shape& shape, const Transform& pose) {
+    PlacedShape placed;
+    if (shape.type == ShapeType::Sphere) {  // turning changes nothing
+        placed.box.min = pose.position - Vec3::Constant(shape.radius);
+        placed.box.max = pose.position + Vec3::Constant(shape.radius);
+        placed.radius = shape.radius;
+        return placed;
+    }
+    const Mat3 rotation = pose.rotation.toRotationMatrix();
+    Vec3 reach = Vec3::Zero();
+    switch (shape.type) {
+        case ShapeType::Box:
+            reach = rotation.cwiseAbs() * shape.halfExtents;
+            placed.radius = shape.halfExtents.norm();
+            break;
+        case ShapeType::Sphere: break;  // above
+        case ShapeType::Capsule:
+            reach = rotation.col(1).cwiseAbs() * shape.halfHeight + Vec3::Constant(shape.radius);
+            placed.radius = shape.halfHeight + shape.radius;
+            break;
+        case ShapeType::Convex: {
+            if (!shape.hull) break;
+            Real radiusSquared = 0;
+            for (const Vec3& vertex : shape.hull->vertices) {
+                placed.box.grow(pose.position + rotation * vertex);
+                radiusSquared = std::max(radiusSquared, vertex.squaredNorm());
+            }
+            placed.radius = std::sqrt(radiusSquared);
+            return placed;
+        }
+    }
+    placed.box.min = pose.position - reach;
+    placed.box.max = pose.position + reach;
+    return placed;
+}
+
+}  // namespace
+
 void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std::vector<char>& dynamic) {
     bounds.resize(world.bodies.size());
     dynamic.resize(world.bodies.size());
+    // boundsGrowth, with the shape's radius from the same pass as its box.
+    const Real dt = world.settings.dt;
+    const Real gravityGain = world.settings.gravity.norm() * dt;
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const Body& body = world.bodies[i];
         dynamic[i] = body.type == BodyType::Dynamic ? 1 : 0;
-        Aabb box = computeAabb(body.shape, body.transform);
-        const Real grow = boundsGrowth(world, static_cast<int>(i));
+        const PlacedShape placed = placeShape(body.shape, body.transform);
+        Real speed = 0;  // bound on the speed of the body's points, m/s
+        if (const Motion* motion = world.motionOf(static_cast<int>(i)))
+            speed = motion->linearVelocity.norm() +
+                    motion->angularVelocity.norm() * std::max(placed.radius, std::numeric_limits<Real>::min());
+        const Real grow = dt * (speed + gravityGain) + kBoundsMargin;
+        Aabb box = placed.box;
         box.min.array() -= grow;
         box.max.array() += grow;
         // A NaN would break the sort's order; an empty box overlaps nothing and sorts last.
@@ -120,6 +177,10 @@ struct ActiveList {
     std::vector<int> body;
 
     std::size_t size() const { return body.size(); }
+    void reserve(std::size_t capacity) {
+        for (std::vector<Real>* bound : {&lowA, &highA, &lowB, &highB}) bound->reserve(capacity);
+        body.reserve(capacity);
+    }
     void add(Real boxLowA, Real boxHighA, Real boxLowB, Real boxHighB, int bodyIndex) {
         lowA.push_back(boxLowA), highA.push_back(boxHighA), lowB.push_back(boxLowB), highB.push_back(boxHighB);
         body.push_back(bodyIndex);
@@ -167,6 +228,8 @@ long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vect
     // kinematic interval only scans the dynamic list, and a large static ground, open over the
     // whole sweep, sits in a short list of its own.
     ActiveList dynamicList, otherList;
+    dynamicList.reserve(256);
+    otherList.reserve(16);
     std::vector<int> slot(bounds.size(), -1);  // where each body sits in its list, -1 when closed
     long scanned = 0;
     for (const SweepEndpoint& end : endpoints) {
