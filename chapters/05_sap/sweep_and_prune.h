@@ -71,8 +71,8 @@ void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints);
 
 /// Walks the sorted ends with active lists: a lower end meets every interval still open on the
 /// axis; those whose boxes also overlap on the other two axes, and that need a contact, are
-/// pairs. Appends them (bodyA < bodyB, in sweep order) and returns how many pairs overlapping
-/// on the axis the sweep looked at (two bodies that are not dynamic are never looked at).
+/// pairs. Appends them (bodyA < bodyB, in sweep order) and returns how many pairs the sweep
+/// looked at: the pairs that overlap on the axis and need a contact.
 long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
                     const std::vector<char>& dynamic, int axis, std::vector<BodyPair>& pairs);
 
