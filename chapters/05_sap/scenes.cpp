@@ -88,34 +88,48 @@ void drawIntervals(const World& world, DebugDraw& draw) {
     }
 }
 
-/// The demo's own state, kept by the scene entry (not in a function-static): the generator's
-/// parameters the next restart uses, and what the overlay shows.
-struct StressDemo {
-    StressParams params;
-    BroadphaseOverlay overlay;
+/// The stress scenes' view: what the overlay shows, and the generator's parameters for the
+/// "regenerate" button. The demo makes a fresh view at every load, so a restart (R) brings the
+/// scene's own parameters back.
+class StressView : public SceneView {
+public:
+    explicit StressView(StressParams params) : params_(params) {}
+    void draw(const World& world, DebugDraw& draw) const override { drawBroadphase(world, overlay_, draw); }
+    bool hasPanel() const override { return true; }
+    void panel(World& world, Panel& panel) override;
+
+private:
+    StressParams params_;
+    BroadphaseOverlay overlay_;
 };
 
-void stressPanel(StressDemo& demo, World& world, Panel& panel) {
+void StressView::panel(World& world, Panel& panel) {
     const char* const modes[] = {"auto", "sweep and prune", "brute force"};
     int mode = world.settings.broadphase == BroadphaseMode::Sap ? 1 : world.settings.broadphase == BroadphaseMode::Brute ? 2 : 0;
     if (panel.combo("broadphase", mode, modes, 3))
         world.settings.broadphase = mode == 1 ? BroadphaseMode::Sap : mode == 2 ? BroadphaseMode::Brute : BroadphaseMode::Auto;
     describeBroadphase(world, panel);
-    panel.checkbox("draw bounds", demo.overlay.bounds);
-    panel.checkbox("draw candidate pairs", demo.overlay.candidatePairs);
-    panel.checkbox("draw sweep axis and intervals", demo.overlay.intervals);
+    panel.checkbox("draw bounds", overlay_.bounds);
+    panel.checkbox("draw candidate pairs", overlay_.candidatePairs);
+    panel.checkbox("draw sweep axis and intervals", overlay_.intervals);
 
-    panel.text("stress scene (R restarts with these):");
-    panel.sliderInt("bodies", demo.params.count, 10, 5000);
+    panel.text("stress scene generator:");
+    panel.sliderInt("bodies", params_.count, 10, 5000);
     const char* const densities[] = {"sparse", "dense"};
-    int density = demo.params.density == StressDensity::Dense ? 1 : 0;
-    if (panel.combo("density", density, densities, 2))
-        demo.params.density = density == 1 ? StressDensity::Dense : StressDensity::Sparse;
+    int density = params_.density == StressDensity::Dense ? 1 : 0;
+    if (panel.combo("density", density, densities, 2)) params_.density = density == 1 ? StressDensity::Dense : StressDensity::Sparse;
     const char* const shapes[] = {"sphere", "diamond", "box", "mixed"};
-    int shape = static_cast<int>(demo.params.shape);
-    if (panel.combo("shape", shape, shapes, 4)) demo.params.shape = static_cast<StressShape>(shape);
-    float height = static_cast<float>(demo.params.dropHeight);
-    if (panel.sliderFloat("drop height (m)", height, 0.0f, 50.0f)) demo.params.dropHeight = static_cast<Real>(height);
+    int shape = static_cast<int>(params_.shape);
+    if (panel.combo("shape", shape, shapes, 4)) params_.shape = static_cast<StressShape>(shape);
+    float height = static_cast<float>(params_.dropHeight);
+    if (panel.sliderFloat("drop height (m)", height, 0.0f, 50.0f)) params_.dropHeight = static_cast<Real>(height);
+    if (panel.button("regenerate")) {
+        // The world is replaced in place; the settings (and the broadphase toggle) stay. The
+        // pipeline's stages keep no state, so they step the new bodies at once (F frames them).
+        World fresh = buildStressScene(params_, world.name);
+        fresh.settings = world.settings;
+        world = std::move(fresh);
+    }
 }
 
 }  // namespace
@@ -164,17 +178,15 @@ void addChapter05Scenes(Registry& registry) {
         "343 bodies packed in a block fall into a pile: nearly every body has candidate pairs, so sweep and prune "
         "saves little and the narrowphase and solver take the time"};
     for (int i = 0; i < 2; ++i) {
-        auto demo = std::make_shared<StressDemo>();
-        demo->params = demoStressParams(i == 0 ? StressDensity::Sparse : StressDensity::Dense);
+        const StressParams params = demoStressParams(i == 0 ? StressDensity::Sparse : StressDensity::Dense);
         SceneEntry entry;
         entry.name = names[i];
         entry.chapter = 5;
         entry.category = category;
         entry.observe = observe[i];
         const std::string name = names[i];
-        entry.build = [demo, name] { return buildStressScene(demo->params, name); };
-        entry.draw = [demo](const World& world, DebugDraw& draw) { drawBroadphase(world, demo->overlay, draw); };
-        entry.panel = [demo](World& world, Panel& panel) { stressPanel(*demo, world, panel); };
+        entry.build = [params, name] { return buildStressScene(params, name); };
+        entry.makeView = [params] { return std::unique_ptr<SceneView>(std::make_unique<StressView>(params)); };
         registry.addScene(std::move(entry));
     }
 }

@@ -1,13 +1,13 @@
 // The stress scene generator (stress_scene.h).
 #include "05_sap/stress_scene.h"
 
+#include "math/random.h"
 #include "world/json_reader.h"
 #include "world/scene.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <random>
 
 namespace stepwise {
 
@@ -18,18 +18,6 @@ const Names<StressShape> kShapes = {{"sphere", StressShape::Sphere},
                                     {"diamond", StressShape::Diamond},
                                     {"box", StressShape::Box},
                                     {"mixed", StressShape::Mixed}};
-
-// Uniform in [0, 1) from the raw generator output: the same on every standard library
-// (std::uniform_real_distribution is not).
-Real uniform01(std::mt19937& random) { return static_cast<Real>(random() >> 8) * Real(1.0 / 16777216.0); }
-Real uniform(std::mt19937& random, Real low, Real high) { return low + (high - low) * uniform01(random); }
-
-Quat randomRotation(std::mt19937& random) {
-    // Shoemake's uniform quaternion from three uniform numbers (Graphics Gems III, 1992).
-    const Real u1 = uniform01(random), u2 = uniform(random, 0, 2 * kPi), u3 = uniform(random, 0, 2 * kPi);
-    const Real a = std::sqrt(1 - u1), b = std::sqrt(u1);
-    return Quat(a * std::cos(u2), a * std::sin(u2), b * std::sin(u3), b * std::cos(u3)).normalized();
-}
 
 /// Each kind of body fits in a ball of radius 0.5 m about its origin, so turned any way it stays
 /// inside its 1 m cell.
@@ -97,7 +85,7 @@ void addStressBodies(World& world, const StressParams& params) {
     addBody(world, ground);
 
     const StressShapes shapes;
-    std::mt19937 random(params.seed);
+    Random random(params.seed);
     // Each body sits at random in its own cell, up to 45% of the gap off the cell's centre:
     // neighbours never start touching, and a sparse layer is not lined up in rows and columns
     // (aligned columns would be a worst case for any sweep along x or z).
@@ -113,10 +101,10 @@ void addStressBodies(World& world, const StressParams& params) {
         def.name = "b" + std::to_string(index);
         def.shape = shapes.pick(params.shape, index);
         def.transform.position =
-            Vec3(-halfWidth + spacing * (Real(0.5) + static_cast<Real>(column)) + uniform(random, -slack, slack),
+            Vec3(-halfWidth + spacing * (Real(0.5) + static_cast<Real>(column)) + Real(random.uniform(-slack, slack)),
                  params.dropHeight + Real(0.5) + spacing * static_cast<Real>(layer),
-                 -halfWidth + spacing * (Real(0.5) + static_cast<Real>(row)) + uniform(random, -slack, slack));
-        def.transform.rotation = randomRotation(random);
+                 -halfWidth + spacing * (Real(0.5) + static_cast<Real>(row)) + Real(random.uniform(-slack, slack)));
+        def.transform.rotation = random.rotation();
         addBody(world, def);
     }
 }

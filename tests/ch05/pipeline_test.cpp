@@ -7,6 +7,7 @@
 #include "app/panel.h"
 #include "app/runner.h"
 #include "support/fixture.h"
+#include "support/scripted_panel.h"
 #include "world/debug_draw.h"
 #include "world/report.h"
 
@@ -14,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <map>
 
 using namespace stepwise;
@@ -178,79 +180,54 @@ TEST_CASE("the broadphase follows the setting at once, as the demo's toggle need
         REQUIRE(planned.bodies[i].transform.position == copy.bodies[i].transform.position);
 }
 
-namespace {
-
-// A panel that records what it shows and answers the controls a test names.
-class ScriptedPanel final : public Panel {
-public:
-    std::map<std::string, int> ints;
-    std::map<std::string, float> floats;
-    std::vector<std::string> lines;
-    void text(const std::string& line) override { lines.push_back(line); }
-    bool checkbox(const std::string& label, bool& value) override {
-        if (!ints.count(label)) return false;
-        value = ints[label] != 0;
-        return true;
-    }
-    bool sliderFloat(const std::string& label, float& value, float, float) override {
-        if (!floats.count(label)) return false;
-        value = floats[label];
-        return true;
-    }
-    bool sliderInt(const std::string& label, int& value, int, int) override {
-        if (!ints.count(label)) return false;
-        value = ints[label];
-        return true;
-    }
-    bool button(const std::string&) override { return false; }
-    bool combo(const std::string& label, int& index, const char* const*, int) override {
-        if (!ints.count(label)) return false;
-        index = ints[label];
-        return true;
-    }
-    bool shows(const std::string& part) const {
-        for (const std::string& line : lines)
-            if (line.find(part) != std::string::npos) return true;
-        return false;
-    }
-};
-
-}  // namespace
-
 TEST_CASE("the stress scenes draw the bounds, the pairs and the sweep axis, and the panel drives them",
           "[ch05][scenes]") {
-    // A registry of its own: the panel changes the scenes' generator settings.
-    Registry own;
-    registerChapters(own);
     for (const char* name : {"sap-stress", "sap-stress-dense"}) {
         INFO(name);
-        const SceneEntry* entry = own.findScene(name);
+        const SceneEntry* entry = registry().findScene(name);
         REQUIRE(entry);
+        REQUIRE(entry->makeView);
         CHECK(entry->chapter == 5);
         World world = entry->build();
-        Pipeline pipeline = own.makePipeline(world);
+        Pipeline pipeline = registry().makePipeline(world);
         test::simulate(world, pipeline, 1.0);
+        std::unique_ptr<SceneView> view = entry->makeView();
+        REQUIRE(view->hasPanel());
         RecordingDraw draw;
-        entry->draw(world, draw);
+        view->draw(world, draw);
         CHECK(draw.count(RecordingDraw::Kind::Box) == world.dynamicBodyCount());  // one bound per moving body
         CHECK(draw.count(RecordingDraw::Kind::Arrow) == 1);                      // the sweep axis
         CHECK(draw.count(RecordingDraw::Kind::Line) >= world.dynamicBodyCount());  // intervals (and pairs)
         CHECK(draw.count(RecordingDraw::Kind::Text) == 1);
 
-        ScriptedPanel panel;
-        panel.ints = {{"broadphase", 2}, {"bodies", 60}, {"shape", 1}, {"draw bounds", 0}};
-        panel.floats = {{"drop height (m)", 7.0f}};
-        entry->panel(world, panel);
+        test::ScriptedPanel panel;
+        panel.ints = {{"broadphase", 2}};
+        view->panel(world, panel);
         CHECK(world.settings.broadphase == BroadphaseMode::Brute);
-        CHECK(panel.shows("candidate pairs: " + std::to_string(world.candidatePairs.size())));
-        CHECK(panel.shows("sweep axis: "));
-        // The generator's controls act on the next build (the demo's restart).
-        const World rebuilt = entry->build();
-        CHECK(rebuilt.bodies.size() == 61);
-        CHECK(rebuilt.bodies[1].shape.type == ShapeType::Convex);
+        const auto shows = [&](const std::string& part) {
+            return std::any_of(panel.lines.begin(), panel.lines.end(),
+                               [&](const std::string& line) { return line.find(part) != std::string::npos; });
+        };
+        CHECK(shows("candidate pairs: " + std::to_string(world.candidatePairs.size())));
+        CHECK(shows("sweep axis: "));
+        // The generator's controls take effect with "regenerate"; the settings stay.
+        test::ScriptedPanel regenerate;
+        regenerate.ints = {{"bodies", 60}, {"shape", 1}};
+        regenerate.floats = {{"drop height (m)", 7.0f}};
+        regenerate.pressEveryButton = true;
+        regenerate.flipEveryCheckbox = true;  // bounds, pairs and intervals off
+        view->panel(world, regenerate);
+        REQUIRE(world.bodies.size() == 61);
+        CHECK(world.bodies[1].shape.type == ShapeType::Convex);
+        CHECK(world.settings.broadphase == BroadphaseMode::Brute);
+        CHECK(world.name == name);
+        test::simulate(world, pipeline, 0.1);
         draw.clear();
-        entry->draw(world, draw);
-        CHECK(draw.count(RecordingDraw::Kind::Box) == 0);  // bounds switched off
+        view->draw(world, draw);
+        CHECK(draw.commands().empty());
+        // A fresh view (the demo's restart) starts from the scene's own parameters.
+        CHECK(entry->build().bodies.size() == static_cast<std::size_t>(demoStressParams(
+                                                  std::string(name) == "sap-stress" ? StressDensity::Sparse : StressDensity::Dense).count + 1));
     }
 }
 

@@ -3,10 +3,11 @@
 // coincident, a lattice of exactly touching boxes, all on one plane, one huge static ground
 // under everything, far from the origin, at rest and fast. Seeded, the same on every platform.
 
+#include "math/random.h"
 #include "world/world.h"
 
-#include <cstdint>
-#include <random>
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace stepwise::test {
@@ -18,15 +19,15 @@ inline const char* toString(Layout layout) {
     return names[static_cast<int>(layout)];
 }
 
-/// Uniform in [low, high) from the raw generator (std distributions differ between libraries).
-inline Real uniformIn(std::mt19937& random, Real low, Real high) {
-    return low + (high - low) * static_cast<Real>(random() >> 8) * Real(1.0 / 16777216.0);
-}
+inline Real uniformIn(Random& random, Real low, Real high) { return Real(random.uniform(low, high)); }
 
-inline Shape randomShape(std::mt19937& random, Real size) {
+/// A whole number in [0, count).
+inline int pick(Random& random, int count) { return std::min(count - 1, static_cast<int>(random.uniform() * count)); }
+
+inline Shape randomShape(Random& random, Real size) {
     static const Shape diamond = Shape::convex({Vec3(Real(0.35), 0, 0), Vec3(Real(-0.35), 0, 0), Vec3(0, Real(0.5), 0),
                                                 Vec3(0, Real(-0.5), 0), Vec3(0, 0, Real(0.35)), Vec3(0, 0, Real(-0.35))});
-    switch (random() % 4) {
+    switch (pick(random, 4)) {
         case 0: return Shape::sphere(size);
         case 1: return Shape::box(Vec3(size, size * Real(0.7), size * Real(0.5)));
         case 2: return Shape::capsule(size * Real(0.5), size);
@@ -34,14 +35,9 @@ inline Shape randomShape(std::mt19937& random, Real size) {
     }
 }
 
-inline Quat randomRotation(std::mt19937& random) {
-    Quat q(uniformIn(random, -1, 1), uniformIn(random, -1, 1), uniformIn(random, -1, 1), uniformIn(random, -1, 1));
-    return q.norm() < Real(1e-3) ? Quat::Identity() : q.normalized();
-}
-
 /// A world of `count` bodies in the layout; body types mixed (mostly dynamic, some kinematic and
 /// static) so the pair rule is exercised too.
-inline World randomWorld(std::mt19937& random, Layout layout, int count) {
+inline World randomWorld(Random& random, Layout layout, int count) {
     World world;
     world.name = std::string("random ") + toString(layout);
     if (layout == Layout::HugeGround) {
@@ -57,10 +53,10 @@ inline World randomWorld(std::mt19937& random, Layout layout, int count) {
     for (int i = 0; i < count; ++i) {
         BodyDef def;
         def.name = "b" + std::to_string(i);
-        const unsigned kind = random() % 10;
+        const int kind = pick(random, 10);
         def.type = kind == 0 ? BodyType::Static : kind == 1 ? BodyType::Kinematic : BodyType::Dynamic;
         def.shape = randomShape(random, uniformIn(random, Real(0.2), Real(1.5)));
-        def.transform.rotation = randomRotation(random);
+        def.transform.rotation = random.rotation();
         Vec3 position(uniformIn(random, -10, 10), uniformIn(random, 0, 10), uniformIn(random, -10, 10));
         switch (layout) {
             case Layout::Coincident:
@@ -79,7 +75,7 @@ inline World randomWorld(std::mt19937& random, Layout layout, int count) {
         }
         def.transform.position = position + offset;
         if (def.type != BodyType::Static) {
-            const Real speed = layout == Layout::Fast ? 200 : (random() % 3 == 0 ? 0 : 5);
+            const Real speed = layout == Layout::Fast ? 200 : (pick(random, 3) == 0 ? 0 : 5);
             def.linearVelocity = Vec3(uniformIn(random, -1, 1), uniformIn(random, -1, 1), uniformIn(random, -1, 1)) * speed;
             def.angularVelocity = Vec3(uniformIn(random, -1, 1), uniformIn(random, -1, 1), uniformIn(random, -1, 1)) * speed;
         }

@@ -29,11 +29,11 @@ std::vector<BodyPair> brutePairs(World& world) {
 }  // namespace
 
 TEST_CASE("sweep and prune finds exactly brute force's pairs on 1,000 random scenes", "[ch05][sap]") {
-    std::mt19937 random(505);
+    Random random(505);
     long pairsSeen = 0;
     for (int scene = 0; scene < 1000; ++scene) {
         const Layout layout = static_cast<Layout>(scene % static_cast<int>(Layout::Count));
-        const int count = static_cast<int>(random() % 60);
+        const int count = test::pick(random, 60);
         World world = test::randomWorld(random, layout, count);
         INFO("scene " << scene << " (" << toString(layout) << ", " << count << " bodies)");
         const std::vector<BodyPair> expected = brutePairs(world);
@@ -50,7 +50,7 @@ TEST_CASE("sweep and prune finds exactly brute force's pairs on 1,000 random sce
 }
 
 TEST_CASE("the incremental sweep stays equal to brute force while bodies move", "[ch05][sap]") {
-    std::mt19937 random(77);
+    Random random(77);
     for (Layout layout : {Layout::Spread, Layout::HugeGround, Layout::OnePlane, Layout::Fast}) {
         World world = test::randomWorld(random, layout, 120);
         int incremental = 0;
@@ -116,7 +116,7 @@ TEST_CASE("pairs of bodies that are not dynamic are never reported", "[ch05][sap
 }
 
 TEST_CASE("a body that became non-finite overlaps nothing and breaks nothing", "[ch05][sap]") {
-    std::mt19937 random(3);
+    Random random(3);
     World world = test::randomWorld(random, Layout::Spread, 30);
     world.bodies[7].transform.position = Vec3(std::numeric_limits<Real>::quiet_NaN(), 0, 0);
     world.bodies[9].transform.position = Vec3(0, std::numeric_limits<Real>::infinity(), 0);
@@ -134,7 +134,7 @@ TEST_CASE("the variance picks the axis the bodies are laid out along", "[ch05][s
     for (int along = 0; along < 3; ++along) {
         INFO("laid out along axis " << along);
         World world;
-        std::mt19937 random(11);
+        Random random(11);
         for (int i = 0; i < 50; ++i) {
             BodyDef def;
             def.shape = Shape::sphere(Real(0.4));
@@ -159,9 +159,9 @@ TEST_CASE("the axis changes only when another spreads the bodies clearly more", 
 }
 
 TEST_CASE("the incremental sort gives the full sort's order after random motions", "[ch05][sap]") {
-    std::mt19937 random(2024);
+    Random random(2024);
     for (int trial = 0; trial < 200; ++trial) {
-        const int count = 1 + static_cast<int>(random() % 300);
+        const int count = 1 + test::pick(random, 300);
         std::vector<Aabb> bounds(static_cast<std::size_t>(count));
         for (Aabb& box : bounds) {
             const Vec3 centre(test::uniformIn(random, -20, 20), test::uniformIn(random, -20, 20), test::uniformIn(random, -20, 20));
@@ -196,7 +196,7 @@ TEST_CASE("the incremental sort gives the full sort's order after random motions
 }
 
 TEST_CASE("a scene at rest is re-sorted incrementally, a changed axis or body count sorts afresh", "[ch05][sap]") {
-    std::mt19937 random(8);
+    Random random(8);
     World world = test::randomWorld(random, Layout::Spread, 40);
     sweepAndPrune(world);
     CHECK(world.broadphase.fullSort);  // the first step has no order to start from
@@ -220,12 +220,12 @@ TEST_CASE("a scene at rest is re-sorted incrementally, a changed axis or body co
 }
 
 TEST_CASE("pairs come out in canonical order whatever order the sweep found them in", "[ch05][sap]") {
-    std::mt19937 random(99);
+    Random random(99);
     for (int size : {0, 1, 10, 500, 5000}) {
         std::vector<BodyPair> pairs;
         const int bodies = 3000;
         for (int i = 0; i < size; ++i) {
-            const int a = static_cast<int>(random() % bodies), b = static_cast<int>(random() % bodies);
+            const int a = test::pick(random, bodies), b = test::pick(random, bodies);
             if (a != b) pairs.push_back(BodyPair{std::min(a, b), std::max(a, b)});
         }
         std::vector<BodyPair> expected = pairs;
@@ -236,7 +236,7 @@ TEST_CASE("pairs come out in canonical order whatever order the sweep found them
 }
 
 TEST_CASE("the bounds are the shape's box grown by the body's motion over a frame", "[ch05][sap]") {
-    std::mt19937 random(31);
+    Random random(31);
     World world = test::randomWorld(random, Layout::Fast, 60);
     world.settings.substeps = 3;
     std::vector<Aabb> bounds;
@@ -259,7 +259,7 @@ TEST_CASE("the bounds are the shape's box grown by the body's motion over a fram
 }
 
 TEST_CASE("a pair that touches by the end of the frame was a candidate at its start", "[ch05][sap]") {
-    std::mt19937 random(404);
+    Random random(404);
     int touchingLater = 0;
     for (int scene = 0; scene < 60; ++scene) {
         World world = test::randomWorld(random, scene % 2 ? Layout::Fast : Layout::Spread, 40);

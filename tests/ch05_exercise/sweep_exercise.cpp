@@ -5,21 +5,20 @@
 // sweep must find exactly the pairs brute force finds, and count the pairs it looked at.
 #include "05_sap/sweep_and_prune.h"
 
+#include "math/random.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 using namespace stepwise;
 
 TEST_CASE("exercise: the sweep finds brute force's pairs and counts the axis overlaps", "[ch05-exercise]") {
-    std::mt19937 random(55);
-    auto uniform = [&](double low, double high) {
-        return static_cast<Real>(low + (high - low) * static_cast<double>(random() >> 8) / 16777216.0);
-    };
+    Random random(55);
+    auto uniform = [&](double low, double high) { return static_cast<Real>(random.uniform(low, high)); };
     for (int trial = 0; trial < 300; ++trial) {
-        const int count = static_cast<int>(random() % 80);
+        const int count = static_cast<int>(random.uniform() * 80);
         std::vector<Aabb> bounds(static_cast<std::size_t>(count));
         std::vector<char> dynamic(static_cast<std::size_t>(count));
         for (int i = 0; i < count; ++i) {
@@ -28,7 +27,7 @@ TEST_CASE("exercise: the sweep finds brute force's pairs and counts the axis ove
             const Vec3 half(uniform(0.1, 2), uniform(0.1, 2), uniform(0.1, 2));
             box.min = centre - half, box.max = centre + half;
             if (trial % 3 == 0) box.min = box.min.array().round(), box.max = box.min.array() + 1;  // touching cubes
-            dynamic[static_cast<std::size_t>(i)] = random() % 4 != 0;
+            dynamic[static_cast<std::size_t>(i)] = random.uniform() < 0.75;
         }
         const int axis = trial % 3;
         std::vector<SweepEndpoint> ends;
