@@ -16,7 +16,7 @@ namespace stepwise {
 /// count where sweep and prune's broadphase becomes faster than brute force's, measured by
 /// `stepwise bench broadphase` (its "crossover" line) on sparse and dense stress scenes: below
 /// it, sorting and sweeping cost more than the few pairs they save.
-constexpr int kAutoSapMinBodies = 24;
+constexpr int kAutoSapMinBodies = 128;
 // [ch05-crossover]
 
 /// How the sweep sorts the interval ends: from last step's order by insertion sort when the axis
