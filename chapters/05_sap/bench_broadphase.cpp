@@ -219,6 +219,51 @@ AxisComparison compareAxes(StressDensity density, int count) {
     return comparison;
 }
 
+/// Where sweep and prune's time goes, per body, ns: each phase of sweepAndPrune timed alone over
+/// `repetitions` runs on a scene that has landed, and brute force's time per pair.
+struct PhaseCosts {
+    double bounds = 0, variance = 0, sort = 0, sweep = 0, pairSort = 0, brutePerPair = 0;
+};
+
+PhaseCosts measurePhases(int count, int repetitions) {
+    StressParams params;
+    params.count = count;
+    params.dropHeight = 0;
+    World world = buildStressScene(params);
+    world.settings.broadphase = BroadphaseMode::Sap;
+    Pipeline pipeline = makeChapter05Pipeline(world);
+    for (int frame = 0; frame < 5; ++frame) pipeline.step(world);
+    std::vector<double> bounds, variance, sort, sweep, pairSort;
+    for (int repetition = 0; repetition < repetitions; ++repetition) {
+        BroadphaseState state = world.broadphase;
+        ThreadStopwatch watch;
+        computeBroadphaseBounds(world, state.bounds, state.dynamic);
+        bounds.push_back(watch.seconds());
+        watch.restart();
+        const int axis = chooseSweepAxis(centreVariance(state.bounds), state.axis);
+        variance.push_back(watch.seconds());
+        watch.restart();
+        refreshEndpointValues(state.bounds, axis, state.endpoints);
+        insertionSortEndpoints(state.endpoints, static_cast<long>(state.endpoints.size()) * 64);
+        sort.push_back(watch.seconds());
+        std::vector<BodyPair> pairs;
+        watch.restart();
+        sweepEndpoints(state.endpoints, state.bounds, state.dynamic, axis, pairs);
+        sweep.push_back(watch.seconds());
+        watch.restart();
+        sortPairsCanonical(pairs, static_cast<int>(world.bodies.size()));
+        pairSort.push_back(watch.seconds());
+    }
+    const double perBody = 1e9 / static_cast<double>(world.bodies.size());
+    PhaseCosts costs{median(bounds) * perBody, median(variance) * perBody, median(sort) * perBody,
+                     median(sweep) * perBody, median(pairSort) * perBody, 0};
+    const ThreadStopwatch watch;
+    bruteForceBroadphase(world);
+    const double n = static_cast<double>(world.bodies.size());
+    costs.brutePerPair = watch.seconds() * 1e9 / (n * (n - 1) / 2);
+    return costs;
+}
+
 /// The smallest count from which sweep and prune's broadphase is faster at every measured count.
 int crossoverCount(const std::vector<std::pair<int, double>>& bruteOverSap) {
     int crossover = -1;
@@ -319,7 +364,6 @@ int runBroadphaseBench(const BenchOptions& options) {
 
     out << table.toText();
     std::ostringstream summary;
-    // [ch05-bench-summary]
     summary << "crossover: sweep and prune's broadphase is faster from " << crossover[StressDensity::Sparse]
             << " bodies (sparse) and " << crossover[StressDensity::Dense] << " bodies (dense); auto uses "
             << kAutoSapMinBodies << " (kAutoSapMinBodies)\n";
@@ -347,6 +391,14 @@ int runBroadphaseBench(const BenchOptions& options) {
             << formatNumber(rest.fullSortMs / rest.insertionSortMs, 3) << "x (target: at least 3x): "
             << verdict(rest.fullSortMs >= 3 * rest.insertionSortMs) << "; whole broadphase "
             << formatNumber(rest.incrementalMs, 3) << " against " << formatNumber(rest.fullMs, 3) << " ms\n";
+    const PhaseCosts phases = measurePhases(10000, quick ? 10 : 40);
+    const double perBody = phases.bounds + phases.variance + phases.sort + phases.sweep + phases.pairSort;
+    summary << "where the time goes, sparse 10,001 bodies, ns per body: bounds " << formatNumber(phases.bounds, 3)
+            << ", variance " << formatNumber(phases.variance, 3) << ", sort " << formatNumber(phases.sort, 3)
+            << ", sweep " << formatNumber(phases.sweep, 3) << ", pair sort " << formatNumber(phases.pairSort, 3)
+            << ": " << formatNumber(perBody, 3) << " in all; brute force " << formatNumber(phases.brutePerPair, 3)
+            << " ns per pair, so 100x faster would take under "
+            << formatNumber(phases.brutePerPair * 10000 / 2 / 100, 3) << " ns per body\n";
     summary << "dense against sparse, 10,001 bodies (SAP incremental; dense measured once it has piled up):\n";
     for (StressDensity density : densities) {
         const SceneResult& result = scaling[{density, 10000}];
@@ -360,7 +412,6 @@ int runBroadphaseBench(const BenchOptions& options) {
                 << formatNumber(stepTime, 3) << " ms against " << formatNumber(bruteStep, 3) << " ms with brute force ("
                 << formatNumber(100 * (bruteStep - stepTime) / bruteStep, 3) << "% saved)\n";
     }
-    // [ch05-bench-summary]
     out << "\n" << summary.str();
 
     try {

@@ -1,10 +1,11 @@
 #pragma once
 // Sweep and prune, the pieces one at a time: bounds that cover a frame's motion, the axis with
 // the largest spread, the interval ends sorted along it (from scratch, or from last step's order
-// by insertion sort), and the sweep with an active list. After Baraff's "sort and sweep"
-// (Dynamic Simulation of Non-penetrating Rigid Bodies, 1992, section 7.3) and Cohen, Lin,
-// Manocha and Ponamgi (I-COLLIDE, 1995), who keep the sorted lists from step to step. The
-// stage that strings them together is in broadphase.cpp.
+// by insertion sort), and the sweep with an active list. After Baraff's sort and sweep
+// (Dynamic Simulation of Non-Penetrating Rigid Bodies, PhD thesis, Cornell, 1992), Cohen, Lin,
+// Manocha and Ponamgi (I-COLLIDE, I3D 1995), who keep the sorted lists from step to step, and
+// Ericson (Real-Time Collision Detection, 2005, section 7.5). The stage that strings the pieces
+// together is in broadphase.cpp.
 
 #include "world/world.h"
 

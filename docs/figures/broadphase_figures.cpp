@@ -31,12 +31,12 @@ bool drawSweepIntervals(const std::string& path) {
     sweepAndPrune(world);
     const BroadphaseState& state = world.broadphase;
 
-    Svg svg(760, 470);
-    const Viewport view{0, 0, 760, 470, {0, -0.75}, 95};
+    Svg svg(760, 520);
+    const Viewport view{0, 30, 760, 470, {-0.1, -0.5}, 95};
     const char* const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#17becf"};
     const double axisZ = -2.6;
     svg.arrow(view, {-4.2, axisZ}, {3.9, axisZ}, "#333");
-    svg.text(view, {3.5, axisZ - 0.35}, "x (sweep axis)");
+    svg.text(view, {2.6, axisZ - 0.3}, "x (sweep axis)");
     int lane = 0;
     for (const SweepEndpoint& end : state.endpoints) {
         if (end.isUpper) continue;
