@@ -12,6 +12,8 @@
 // measured frame the other broadphases are timed on the same world before it steps. Every
 // broadphase hands the narrowphase the same pairs, so the rest of the step is the same whichever
 // ran: a method's whole step is the measured step with its broadphase time in place of the stage's.
+// Times are the thread's CPU time (ThreadStopwatch): the machines this runs on are shared, and
+// wall-clock time would count the other programs' turns.
 #include "05_sap/benches.h"
 
 #include "05_sap/chapter.h"
@@ -347,7 +349,7 @@ int runBroadphaseBench(const BenchOptions& options) {
                 broadphasePlot.add(label, bodies, result.broadphaseMs.at(method));
                 if (method != Method::SapFull) stepPlot.add(label, bodies, result.stepMs.at(method));
             }
-            stepPlot.add(std::string(toString(density)) + ": narrowphase + solve", bodies, result.narrowphaseMs + result.solveMs);
+            stepPlot.add(std::string(toString(density)) + ", narrow+solve", bodies, result.narrowphaseMs + result.solveMs);
         }
     }
 
