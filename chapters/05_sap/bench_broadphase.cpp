@@ -393,7 +393,7 @@ int runBroadphaseBench(const BenchOptions& options) {
             << formatNumber(rest.fullSortMs / rest.insertionSortMs, 3) << "x (target: at least 3x): "
             << verdict(rest.fullSortMs >= 3 * rest.insertionSortMs) << "; whole broadphase "
             << formatNumber(rest.incrementalMs, 3) << " against " << formatNumber(rest.fullMs, 3) << " ms\n";
-    const PhaseCosts phases = measurePhases(10000, quick ? 10 : 40);
+    const PhaseCosts phases = measurePhases(10000, quick ? 30 : 100);
     const double perBody = phases.bounds + phases.variance + phases.sort + phases.sweep + phases.pairSort;
     summary << "where the time goes, sparse 10,001 bodies, ns per body: bounds " << formatNumber(phases.bounds, 3)
             << ", variance " << formatNumber(phases.variance, 3) << ", sort " << formatNumber(phases.sort, 3)

@@ -19,9 +19,9 @@ struct BroadphaseOverlay {
     bool intervals = true;         // the sweep axis and every body's interval on it
 };
 
-/// Draws what the last broadphase did: bounds (orange for bodies in a candidate pair, grey for
-/// the rest), candidate pairs between moving bodies (yellow lines), the sweep axis (an arrow
-/// along the edge of the ground, named) and the intervals on it in a few lanes beside it.
+/// Draws what the last broadphase did: bounds (orange for bodies in a candidate pair with another
+/// moving body, grey for the rest), those pairs (yellow lines), the sweep axis (an arrow beside
+/// the bodies, named) and the intervals on it in a few lanes along it.
 void drawBroadphase(const World& world, const BroadphaseOverlay& overlay, DebugDraw& draw);
 
 /// The panel lines: which broadphase ran and why, candidate pairs against all pairs, the axis

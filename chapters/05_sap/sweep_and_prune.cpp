@@ -18,6 +18,7 @@ Real boundsGrowth(const World& world, int bodyIndex) {
     const int wholeFrame = std::max(1, world.settings.substeps);
     return speculativeMargin(world, bodyIndex, bodyIndex, wholeFrame) / 2 + kBoundsMargin;
 }
+// [ch05-bounds]
 
 namespace {
 
@@ -67,6 +68,7 @@ PlacedShape placeShape(const Shape& shape, const Transform& pose) {
 
 }  // namespace
 
+// [ch05-bounds-pass]
 void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std::vector<char>& dynamic) {
     bounds.resize(world.bodies.size());
     dynamic.resize(world.bodies.size());
@@ -90,7 +92,7 @@ void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std:
         bounds[i] = box;
     }
 }
-// [ch05-bounds]
+// [ch05-bounds-pass]
 
 // [ch05-axis]
 Vec3 centreVariance(const std::vector<Aabb>& bounds) {
