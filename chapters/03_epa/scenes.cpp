@@ -166,38 +166,35 @@ void EpaStepperView::panel(World& world, Panel& panel) {
     panel.text(describe("depth %.6f m", double(shown.depth)));
 }
 
-void addChapter03Scenes(Registry& registry) {
-    SceneEntry stepper;
-    stepper.name = "epa-step-by-step";
-    stepper.chapter = 3;
-    stepper.category = "Contacts";
-    stepper.observe = "Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right, "
-                      "half size) closes in on the boundary; red cubes mark the contact points inside the overlap "
-                      "(Z: wireframe), the yellow arrow the normal.";
-    stepper.build = buildEpaStepper;
-    stepper.makeView = viewOfType<EpaStepperView>();
-    registry.addScene(std::move(stepper));
+namespace {
 
-    SceneEntry gallery;
-    gallery.name = "epa-contact-gallery";
-    gallery.chapter = 3;
-    gallery.category = "Contacts";
-    gallery.observe = "Six shape pairs turning into each other; each label names the routine that found the "
-                      "contact (closed form or GJK + EPA), red cubes mark the points (Z: wireframe), yellow "
-                      "arrows the normals.";
-    gallery.build = buildContactGallery;
-    gallery.makeView = statelessView([](const World& world, DebugDraw& draw) {
-        for (std::size_t i = 0; i + 1 < world.bodies.size(); i += 2) {
-            const Body& a = world.bodies[i];
-            const Body& b = world.bodies[i + 1];
-            const ContactQuery query = collideShapes(a.shape, a.transform, b.shape, b.transform);
-            const Vec3 label = a.transform.position + Vec3(0, Real(-1.1), 0);
-            draw.text(label, std::string(query.routine) + (query.intersect ? describe(" %.3f m", double(query.depth)) : " apart"),
-                      colors::kWhite);
-            if (query.intersect) drawContactMarkers(query.pointA, query.pointB, query.normal, draw);
-        }
-    });
-    registry.addScene(std::move(gallery));
+// Labels each lane with the routine that found its contact and marks the contact.
+void drawGallery(const World& world, DebugDraw& draw) {
+    for (std::size_t i = 0; i + 1 < world.bodies.size(); i += 2) {
+        const Body& a = world.bodies[i];
+        const Body& b = world.bodies[i + 1];
+        const ContactQuery query = collideShapes(a.shape, a.transform, b.shape, b.transform);
+        const Vec3 label = a.transform.position + Vec3(0, Real(-1.1), 0);
+        draw.text(label, std::string(query.routine) + (query.intersect ? describe(" %.3f m", double(query.depth)) : " apart"),
+                  colors::kWhite);
+        if (query.intersect) drawContactMarkers(query.pointA, query.pointB, query.normal, draw);
+    }
+}
+
+}  // namespace
+
+void addChapter03Scenes(Registry& registry) {
+    const char* const category = "Contacts";
+    registry.addScene({"epa-step-by-step", 3, category,
+                       "Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right, "
+                       "half size) closes in on the boundary; red cubes mark the contact points inside the overlap "
+                       "(Z: wireframe), the yellow arrow the normal.",
+                       buildEpaStepper, viewOfType<EpaStepperView>()});
+    registry.addScene({"epa-contact-gallery", 3, category,
+                       "Six shape pairs turning into each other; each label names the routine that found the "
+                       "contact (closed form or GJK + EPA), red cubes mark the points (Z: wireframe), yellow "
+                       "arrows the normals.",
+                       buildContactGallery, statelessView(drawGallery)});
 }
 
 }  // namespace stepwise
