@@ -4,6 +4,7 @@
 #include "03_epa/narrowphase.h"
 #include "app/panel.h"
 #include "app/registry.h"
+#include "world/contact_draw.h"
 #include "world/debug_draw.h"
 
 #include <cstdio>
@@ -14,8 +15,6 @@ namespace stepwise {
 
 namespace {
 
-constexpr Real kMarkerHalfSize = Real(0.03);   // m, the red contact cubes
-constexpr Real kNormalLength = Real(0.6);      // m, the yellow arrow
 const Vec3 kPolytopeAnchor(Real(3), Real(1.5), 0);  // where the stepper draws A - B's origin
 constexpr Real kPolytopeScale = Real(0.5);            // A - B is drawn at half size beside the bodies
 
@@ -37,15 +36,6 @@ Quat tilt(Real x, Real y, Real z) {
     return (Eigen::AngleAxis<Real>(x, Vec3::UnitX()) * Eigen::AngleAxis<Real>(y, Vec3::UnitY()) *
             Eigen::AngleAxis<Real>(z, Vec3::UnitZ()))
         .normalized();
-}
-
-void drawContactMarkers(const Vec3& pointA, const Vec3& pointB, const Vec3& normal, DebugDraw& draw) {
-    Transform marker;
-    marker.position = pointA;
-    draw.box(marker, Vec3::Constant(kMarkerHalfSize), colors::kRed, Fill::Solid);
-    marker.position = pointB;
-    draw.box(marker, Vec3::Constant(kMarkerHalfSize), colors::kRed, Fill::Solid);
-    draw.arrow(pointB, pointB + kNormalLength * normal, colors::kYellow);
 }
 
 std::string describe(const char* format, double value) {
@@ -146,7 +136,7 @@ EpaResult drawEpaStep(const World& world, int bodyA, int bodyB, int expansions, 
               colors::kWhite);
 
     // Back in the world: the two contact points and the normal from A to B.
-    drawContactMarkers(epa.pointA, epa.pointB, epa.normal, draw);
+    drawContact(draw, epa.pointA, epa.pointB, epa.normal);
     return epa;
 }
 // [ch03-demo-draw]
@@ -177,7 +167,7 @@ void drawGallery(const World& world, DebugDraw& draw) {
         const Vec3 label = a.transform.position + Vec3(0, Real(-1.1), 0);
         draw.text(label, std::string(query.routine) + (query.intersect ? describe(" %.3f m", double(query.depth)) : " apart"),
                   colors::kWhite);
-        if (query.intersect) drawContactMarkers(query.pointA, query.pointB, query.normal, draw);
+        if (query.intersect) drawContact(draw, query.pointA, query.pointB, query.normal);
     }
 }
 
