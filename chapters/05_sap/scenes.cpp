@@ -170,26 +170,24 @@ StressParams demoStressParams(StressDensity density) {
 }
 
 void addChapter05Scenes(Registry& registry) {
-    const std::string category = "Chapter 5: sweep and prune";
-    const char* const names[] = {"sap-stress", "sap-stress-dense"};
-    const char* const observe[] = {
-        "400 bodies spread out fall and land: switch brute force and sweep and prune and watch the broadphase time "
-        "(the bodies move exactly the same); orange bounds have a candidate pair with another body, the cyan "
-        "intervals lie on the sweep axis",
-        "343 bodies packed in a block fall into a pile: nearly every body has candidate pairs, so sweep and prune "
-        "saves little and the narrowphase and solver take the time"};
-    for (int i = 0; i < 2; ++i) {
-        const StressParams params = demoStressParams(i == 0 ? StressDensity::Sparse : StressDensity::Dense);
-        SceneEntry entry;
-        entry.name = names[i];
-        entry.chapter = 5;
-        entry.category = category;
-        entry.observe = observe[i];
-        const std::string name = names[i];
-        entry.build = [params, name] { return buildStressScene(params, name); };
-        entry.makeView = [params] { return std::unique_ptr<SceneView>(std::make_unique<StressView>(params)); };
-        registry.addScene(std::move(entry));
-    }
+    const char* const category = "Sweep and prune";
+    const auto stressScene = [](StressDensity density, const char* name) {
+        const StressParams params = demoStressParams(density);
+        const std::string sceneName = name;
+        return std::make_pair([params, sceneName] { return buildStressScene(params, sceneName); },
+                              SceneViewFactory([params] { return std::unique_ptr<SceneView>(std::make_unique<StressView>(params)); }));
+    };
+    const auto sparse = stressScene(StressDensity::Sparse, "sap-stress");
+    const auto dense = stressScene(StressDensity::Dense, "sap-stress-dense");
+    registry.addScene({"sap-stress", 5, category,
+                       "400 bodies spread out fall and land: switch brute force and sweep and prune and watch the "
+                       "broadphase time (the bodies move exactly the same); orange bounds have a candidate pair with "
+                       "another body, the cyan intervals lie on the sweep axis",
+                       sparse.first, sparse.second});
+    registry.addScene({"sap-stress-dense", 5, category,
+                       "343 bodies packed in a block fall into a pile: nearly every body has candidate pairs, so sweep "
+                       "and prune saves less and the narrowphase and solver take the time",
+                       dense.first, dense.second});
 }
 
 }  // namespace stepwise

@@ -72,7 +72,7 @@ struct World {
     std::vector<JointDesc> joints;
 
     // Collision state. candidatePairs is rebuilt every frame by whatever finds candidates (all
-    // pairs in chapter 3, a broadphase from chapter 5, to come); pairs lists the pairs the last narrowphase
+    // pairs in chapter 3, a broadphase from chapter 5); pairs lists the pairs the last narrowphase
     // found overlapping. contacts is the contact cache: one record per touching pair, sorted by
     // pair, kept from step to step (contact.h).
     std::vector<BodyPair> candidatePairs;

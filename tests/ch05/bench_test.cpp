@@ -51,8 +51,10 @@ TEST_CASE("bench broadphase writes its table, both plots and the targets, and re
     const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
     CHECK(text.find(">10,000<") != std::string::npos);  // body counts as whole numbers
     CHECK(out.str().find("crossover: sweep and prune's broadphase is faster from") != std::string::npos);
-    CHECK(out.str().find("targets (one thread):") != std::string::npos);
-    for (const std::string& path : {csv, plot, stepPlot}) std::remove(path.c_str());
+    CHECK(out.str().find("targets (one thread, CPU time):") != std::string::npos);
+    CHECK(std::ifstream((directory / "ch05_bench_test-summary.txt").string()).good());
+    const std::string summary = (directory / "ch05_bench_test-summary.txt").string();
+    for (const std::string& path : {csv, plot, stepPlot, summary}) std::remove(path.c_str());
 
     options.csvPath = "/nonexistent-dir/x.csv";
     CHECK(runBroadphaseBench(options) == 2);
