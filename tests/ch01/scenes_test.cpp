@@ -4,6 +4,7 @@
 #include "01_integrators/integrate.h"
 #include "01_integrators/scenes.h"
 #include "app/registry.h"
+#include "support/registry_fixture.h"
 #include "support/fixture.h"
 #include "world/debug_draw.h"
 
@@ -17,19 +18,6 @@
 
 using namespace stepwise;
 using namespace stepwise::test;
-
-namespace {
-
-const Registry& chapterRegistry() {
-    static const Registry registry = [] {
-        Registry r;
-        registerChapters(r);
-        return r;
-    }();
-    return registry;
-}
-
-}  // namespace
 
 TEST_CASE("chapter 1 registers its scenes, pipeline and bench", "[ch01][scenes]") {
     const Registry& registry = chapterRegistry();
