@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/bench_util.h"
 #include "app/runner.h"
 #include "world/report.h"
 #include "world/scene.h"
@@ -90,7 +91,9 @@ int runCli(int argc, char** argv, const Registry& registry) {
     bench->add_option("--csv", benchOptions.csvPath, "Write the measurements as CSV");
     bench->add_option("--plot", benchOptions.plotPath, "Write the plot as SVG");
     bench->add_flag("--quick", benchOptions.quick, "Smaller sizes (docs build, smoke tests)");
+    bench->add_flag("--quiet", benchOptions.quiet, "No progress bar and no list of the files written");
     bench->add_flag("--list", listBenches, "List the suites");
+    bench->footer(benchFilesHelp(registry.benches()));
 
     for (const CommandEntry& command : registry.commands()) command.install(app, exitCode);
 
