@@ -118,7 +118,7 @@ int runCli(int argc, char** argv, const Registry& registry) {
         std::cerr << "error: " << error.what() << "\n\n" << app.help();
         return kExitBadInput;
     } catch (const SceneError& error) {
-        std::cerr << "error: " << error.what() << "\n";
+        printSceneError(std::cerr, error);
         return kExitBadInput;
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << "\n";
