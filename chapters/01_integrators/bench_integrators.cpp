@@ -7,11 +7,11 @@
 
 #include "01_integrators/integrate.h"
 #include "app/bench_util.h"
+#include "math/random.h"
 
 #include <cmath>
 #include <exception>
 #include <iostream>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -30,10 +30,10 @@ struct Oscillator {
     Vec3 velocity;   // initial velocity, m/s
 };
 
-// Seeded, with our own mapping to [-1, 1] so every standard library gives the same numbers.
+// The engine's seeded random source: every standard library gives the same oscillators.
 std::vector<Oscillator> makeOscillators() {
-    std::mt19937 random(20240601u);
-    auto uniform = [&] { return Real(2.0 * (random() / 4294967295.0) - 1.0); };
+    Random random(20240601u);
+    auto uniform = [&] { return Real(random.uniform(-1, 1)); };
     std::vector<Oscillator> oscillators(kBodies);
     for (int i = 0; i < kBodies; ++i) {
         oscillators[i].anchor = Vec3(Real(3 * i), 0, 0);

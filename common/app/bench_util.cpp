@@ -54,13 +54,6 @@ std::string CsvTable::toText() const {
     return out.str();
 }
 
-double percentile(std::vector<double> samples, double p) {
-    if (samples.empty()) return 0;
-    std::sort(samples.begin(), samples.end());
-    const size_t rank = static_cast<size_t>(std::ceil(std::clamp(p, 0.0, 1.0) * double(samples.size())));
-    return samples[std::min(samples.size() - 1, rank > 0 ? rank - 1 : 0)];
-}
-
 Spread spreadOf(const std::vector<double>& samples) {
     return Spread{median(samples), percentile(samples, 0.25), percentile(samples, 0.75)};
 }

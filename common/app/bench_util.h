@@ -6,7 +6,7 @@
 
 #include "app/registry.h"
 #include "app/svg_plot.h"
-#include "world/report.h"  // median(), shared with run reports
+#include "world/report.h"  // median() and percentile(), shared with run reports
 
 #include <chrono>
 #include <functional>
@@ -46,9 +46,6 @@ private:
 };
 
 std::string formatNumber(double value, int significantDigits = 4);
-
-/// The value below which a fraction p of the samples lie (nearest rank; p in [0, 1]).
-double percentile(std::vector<double> samples, double p);
 
 /// A timing as the median of repeated runs with its quartiles: the median ignores the runs a
 /// burst of load elsewhere slowed down, and the quartiles show how far the runs scatter, so a

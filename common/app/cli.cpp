@@ -31,7 +31,11 @@ int commandRun(const Registry& registry, const RunArgs& args) {
     options.maxChapter = args.chapter;
     options.progress = !args.quiet;
     const RunStats stats = runHeadless(world, pipeline, registry, options);
-    if (!args.quiet) printSummary(std::cout, world, stats);
+    if (!args.quiet) {
+        // A built-in scene says what it is for, so the numbers below can be read against it.
+        if (const SceneEntry* entry = registry.findScene(args.scene)) std::cout << "observe    " << entry->observe << "\n";
+        printSummary(std::cout, world, stats);
+    }
     if (!args.reportPath.empty()) {
         writeReport(args.reportPath, world, stats, engineVersion());
         if (!args.quiet) std::cout << "report     " << args.reportPath << "\n";
