@@ -10,6 +10,7 @@
 //   (numbers to 1e-4, since the page rounds them; strings, booleans and counts exactly).
 // - The report example ("stepwise-report") must have the keys, in order, and the pipeline of a
 //   real report of the scene it names.
+// - Every query shipped in scenes/queries/ is one of the page's query examples, as it stands.
 // - Every "error: ..." line in a ```text block must be printed, as a whole line, by a run of one
 //   of the bad files the CLI test runs (tests/cli/cases.txt).
 // Prints one line per failed check; exits 1 when any failed.
@@ -141,6 +142,7 @@ int main(int argc, char** argv) {
 
     const std::regex block("```(json|text)\\n([\\s\\S]*?)```");
     Json lastResults;  // the program's answer to the latest query example
+    std::vector<Json> queryExamples;
     int scenes = 0, queries = 0, outputs = 0, reports = 0, errorLines = 0;
     std::vector<std::string> badFileLines;
     for (auto it = std::sregex_iterator(page.begin(), page.end(), block); it != std::sregex_iterator(); ++it) {
@@ -167,6 +169,7 @@ int main(int argc, char** argv) {
         const fs::path file = scratch / "example.json";
         writeText(file, text);
         if (example.contains("pairs")) {
+            queryExamples.push_back(example);
             const Run run = runProgram(program, "collide --input \"" + file.string() + "\"", scratch, scratch);
             check(run.code == 0, "collide on the query example exits 0 (got " + std::to_string(run.code) + "): " + run.err);
             lastResults = run.code == 0 ? Json::parse(run.out) : Json();
@@ -198,6 +201,12 @@ int main(int argc, char** argv) {
             check(run.code == 0, "the scene example runs (exit " + std::to_string(run.code) + "): " + run.err + "\n" + text);
             ++scenes;
         }
+    }
+    for (const auto& entry : fs::directory_iterator(source / "scenes" / "queries")) {
+        const Json shipped = Json::parse(readText(entry.path()));
+        bool shown = false;
+        for (const Json& example : queryExamples) shown = shown || example == shipped;
+        check(shown, "the page shows the shipped query " + entry.path().filename().string() + " as it stands");
     }
     // The page shows at least its shipped scenes, one query with its output, a report and errors.
     check(scenes >= 3 && queries >= 1 && outputs >= 1 && reports == 1 && errorLines >= 10,
