@@ -9,6 +9,7 @@
 #include "app/bench_util.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace stepwise {
@@ -132,9 +133,10 @@ long timeOnce(const CaseProxies& proxies, CaseMeasurement& measurement) {
 }
 // [ch02-bench-timing]
 
-// "412 (405-420)": a median with its quartiles, for the table figure.
+// "412 (405-420)": a median with its quartiles in whole nanoseconds, for the table figure.
 std::string withQuartiles(const Spread& spread) {
-    return formatNumber(spread.median, 3) + " (" + formatNumber(spread.lower, 3) + "-" + formatNumber(spread.upper, 3) + ")";
+    const auto ns = [](double value) { return std::to_string(std::lround(value)); };
+    return ns(spread.median) + " (" + ns(spread.lower) + "-" + ns(spread.upper) + ")";
 }
 
 void measureGjk(BenchRun& run) {

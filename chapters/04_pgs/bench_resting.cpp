@@ -113,6 +113,7 @@ void measureResting(BenchRun& run) {
     }
     PlotSeries slop("slop");
     slop.lineOnly = true;
+    slop.dashed = true;
     slop.x = {0.0, frames * static_cast<double>(defaults.dt)};
     slop.y = {static_cast<double>(defaults.slop), static_cast<double>(defaults.slop)};
     plot.series.push_back(slop);

@@ -203,8 +203,8 @@ void writeSvgPlot(const std::string& path, const PlotSpec& spec) {
             }
         }
         if (!series.markersOnly)
-            svg << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\" points=\"" << points.str()
-                << "\"/>\n";
+            svg << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\""
+                << (series.dashed ? " stroke-dasharray=\"6,4\"" : "") << " points=\"" << points.str() << "\"/>\n";
         const double legendY = top + 10 + 18 * static_cast<double>(s);
         svg << "<rect x=\"" << plotRight + 12 << "\" y=\"" << legendY - 9 << "\" width=\"12\" height=\"12\" fill=\""
             << color << "\"/>\n<text x=\"" << plotRight + 30 << "\" y=\"" << legendY + 1 << "\">"

@@ -20,6 +20,7 @@ struct PlotSeries {
     std::vector<double> y;
     bool markersOnly = false;   // points without connecting lines
     bool lineOnly = false;      // a line without markers (dense series, such as one point a frame)
+    bool dashed = false;        // a reference line (a limit, a setting) rather than a measurement
     // Optional spread of each point (same length as x, or empty): drawn as whiskers, e.g. the
     // quartiles of repeated timings around their median.
     std::vector<double> xLow, xHigh;
