@@ -135,7 +135,7 @@ void measureIntegrators(BenchRun& run) {
     // [ch01-bench]
     run.progress().endStage();
 
-    const std::string precision = sizeof(Real) == 4 ? "float" : "double";
+    const std::string precision = realTypeName();
     CsvTable table({"method", "steps", "dt_s", "h_omega", "error_m", "run_ms", "ns_per_body_step", "run_ms_q1",
                     "run_ms_q3"});
     PlotSpec workPrecision{"Work-precision: " + std::to_string(kBodies) + " oscillators to t = 2.3 s (Real = " + precision + ")",

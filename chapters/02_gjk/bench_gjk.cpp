@@ -216,7 +216,7 @@ void measureGjk(BenchRun& run) {
     }
     run.progress().endStage();
 
-    const std::string precision = sizeof(Real) == 4 ? "float" : "double";
+    const std::string precision = realTypeName();
     const std::vector<FigureTable> figures = {
         {{"GJK per query: " + std::to_string(pairCount) + " random box-sized pairs, Real = " + precision +
           "; ns: median of " + std::to_string(repetitions) + " timed passes (quartiles in brackets), it = iterations"},

@@ -233,7 +233,7 @@ void measureEpa(BenchRun& run) {
     }
     run.progress().endStage();
 
-    const std::string precision = sizeof(Real) == 4 ? "float" : "double";
+    const std::string precision = realTypeName();
     PlotSpec plot("EPA work-precision, Real = " + precision, "ns per query (GJK + EPA)",
                   "95th percentile relative depth error");
     plot.caption = "Each point is one setting of EPA's relative tolerance or iteration cap: the 95th percentile "

@@ -47,6 +47,9 @@ private:
 
 std::string formatNumber(double value, int significantDigits = 4);
 
+/// "float" or "double": what Real is in this build, for table and plot titles.
+inline const char* realTypeName() { return sizeof(Real) == 4 ? "float" : "double"; }
+
 /// A timing as the median of repeated runs with its quartiles: the median ignores the runs a
 /// burst of load elsewhere slowed down, and the quartiles show how far the runs scatter, so a
 /// plot can show whether a difference is larger than the noise.
