@@ -76,8 +76,8 @@ void registerChapter04(Registry& registry) {
     resting.chapter = 4;
     resting.category = "Sequential impulses";
     resting.observe = "the ball rests still at the slop depth; the box, held by one contact point, rocks and "
-                       "wanders (chapter 6, to come, fixes it); the 1 kg ball under the 10 kg one is pressed deeper than the "
-                       "slop (no warm starting yet: try 20 iterations)";
+                       "wanders (chapter 6, to come, fixes it); the 1 kg ball under the 10 kg one is pressed "
+                       "deeper than the slop (no warm starting yet: try 20 iterations)";
     resting.build = buildRestingScene;
     resting.makeView = statelessView(drawImpulses, solverPanel);
     registry.addScene(std::move(resting));
