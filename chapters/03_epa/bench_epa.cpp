@@ -15,6 +15,8 @@
 
 // The exact box-box oracle is shared with the test suites (header-only, double precision).
 #include "02_gjk/box_oracle.h"
+#include "02_gjk/random_pairs.h"
+#include "math/random.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,27 +49,13 @@ struct PairSet {
     std::vector<BenchPair> pairs;
 };
 
-Vec3 randomVector(Random& random, double low, double high) {
-    return Vec3(Real(random.uniform(low, high)), Real(random.uniform(low, high)), Real(random.uniform(low, high)));
-}
-
 PairSet makeBoxPairs(int count) {
     Random random(20240605u);
     PairSet set{"boxes", {}};
     while (static_cast<int>(set.pairs.size()) < count) {
-        BenchPair pair;
-        pair.a = Shape::box(randomVector(random, 0.05, 1));
-        pair.b = Shape::box(randomVector(random, 0.05, 1));
-        pair.poseA.rotation = random.rotation();
-        pair.poseB.rotation = random.rotation();
-        const double reach = pair.a.halfExtents.norm() + pair.b.halfExtents.norm();
-        pair.poseB.position = Real(random.uniform(0, reach)) * random.unitVector();
-        const oracle::SatResult sat = oracle::boxSat(oracle::makeOracleBox(pair.a.halfExtents, pair.poseA),
-                                                     oracle::makeOracleBox(pair.b.halfExtents, pair.poseB));
-        const double smallest = std::min(pair.a.halfExtents.minCoeff(), pair.b.halfExtents.minCoeff());
-        if (!sat.overlap || sat.depth < 0.02 * smallest) continue;
-        pair.exactDepth = sat.depth;
-        set.pairs.push_back(pair);
+        const BoxPair drawn = overlappingBoxPair(random, 0.02);
+        set.pairs.push_back(BenchPair{Shape::box(drawn.halfExtentsA), Shape::box(drawn.halfExtentsB), drawn.poseA,
+                                      drawn.poseB, -drawn.exactGap});
     }
     return set;
 }
@@ -78,7 +66,7 @@ PairSet makeSphereBoxPairs(int count) {
     while (static_cast<int>(set.pairs.size()) < count) {
         BenchPair pair;
         pair.a = Shape::sphere(Real(random.uniform(0.1, 1)));
-        pair.b = Shape::box(randomVector(random, 0.1, 1));
+        pair.b = Shape::box(Vec3(Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1))));
         pair.poseB.rotation = random.rotation();
         const double reach = pair.a.radius + pair.b.halfExtents.norm();
         pair.poseB.position = Real(random.uniform(0, reach)) * random.unitVector();

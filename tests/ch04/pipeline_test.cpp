@@ -5,6 +5,7 @@
 #include "04_pgs/contact_constraints.h"
 #include "04_pgs/scenes.h"
 #include "support/scripted_panel.h"
+#include "world/contact_draw.h"
 #include "app/registry.h"
 #include "support/fixture.h"
 #include "world/debug_draw.h"
@@ -70,9 +71,12 @@ TEST_CASE("every chapter 4 scene runs finite, keeps its bodies above the ground,
         RecordingDraw draw;
         REQUIRE(entry.makeView);
         const std::unique_ptr<SceneView> view = entry.makeView();
+        ContactDrawOptions impulsesOnly;
+        impulsesOnly.points = impulsesOnly.normals = false;
+        impulsesOnly.impulses = true;
         test::simulate(world, pipeline, 2, [&](const World& w) {
             draw.clear();
-            view->draw(w, draw);
+            drawContacts(draw, w, impulsesOnly);  // what the demo's "impulses" view draws
             arrows = std::max(arrows, draw.count(RecordingDraw::Kind::Arrow));
         });
         for (const Motion& motion : world.motions) {
