@@ -25,19 +25,8 @@ void readQueryBody(const JsonCursor& body, Shape& shape, Transform& pose) {
                        "density", "friction", "restitution", "bullet", "integrator"});
     shape = readShape(body.child("shape"));
     pose = Transform{};
-    if (auto position = body.optional("position")) pose.position = position->vec3();
+    if (auto position = body.optional("position")) pose.position = position->vec3Within(kMaxCoordinate);
     if (auto orientation = body.optional("orientation")) pose.rotation = orientation->unitQuaternion();
-}
-
-std::string readFile(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw SceneError(path, "no such file");
-    if (std::filesystem::is_directory(path, error)) throw SceneError(path, "is a directory, not a pairs file");
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw SceneError(path, "cannot open the file for reading");
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
 }
 
 }  // namespace
@@ -49,7 +38,7 @@ std::vector<CollidePair> parseCollidePairs(const std::string& jsonText, const st
     if (!document.is_object()) root.fail(source + " must be a JSON object { \"pairs\": [ ... ] }");
     root.expectObject({"pairs", "description"});
     const JsonCursor pairs = root.child("pairs");
-    std::vector<CollidePair> result(pairs.arraySize());
+    std::vector<CollidePair> result(pairs.arraySizeAtMost(kMaxQueryPairs));
     for (std::size_t i = 0; i < result.size(); ++i) {
         const JsonCursor pair = pairs.element(i);
         pair.expectObject({"a", "b"});
@@ -82,7 +71,7 @@ std::string collideResultsToJson(const std::vector<ContactQuery>& results) {
 int runCollideCommand(const CollideArgs& args, std::ostream& out, std::ostream& err) {
     std::vector<CollidePair> pairs;
     try {
-        pairs = parseCollidePairs(readFile(args.inputPath), args.inputPath);
+        pairs = parseCollidePairs(readInputFile(args.inputPath, "a pairs file"), args.inputPath);
     } catch (const SceneError& error) {
         err << "error: " << error.what() << "\n";
         return 2;

@@ -8,9 +8,7 @@
 #include "world/scene.h"
 
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 namespace stepwise {
 namespace {
@@ -32,7 +30,7 @@ Settings readSettings(const JsonCursor& cursor) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
                          "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold"});
     Settings settings;
-    if (auto v = cursor.optional("gravity")) settings.gravity = v->vec3();
+    if (auto v = cursor.optional("gravity")) settings.gravity = v->vec3Within(kMaxGravity);
     if (auto v = cursor.optional("dt")) settings.dt = v->positiveAtMost(1);
     if (auto v = cursor.optional("substeps")) settings.substeps = v->integer(1, 64);
     if (auto v = cursor.optional("solver_iterations")) settings.solverIterations = v->integer(0, 1000);
@@ -56,7 +54,7 @@ BodyDef readBody(const JsonCursor& cursor, std::size_t index) {
     if (auto v = cursor.optional("name")) def.name = v->nonEmptyString();
     if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypes);
     def.shape = readShape(cursor.child("shape"));
-    if (auto v = cursor.optional("position")) def.transform.position = v->vec3();
+    if (auto v = cursor.optional("position")) def.transform.position = v->vec3Within(kMaxCoordinate);
     if (auto v = cursor.optional("orientation")) def.transform.rotation = v->unitQuaternion();
     if (def.type == BodyType::Static)
         for (const char* key : {"velocity", "angular_velocity", "integrator"})
@@ -67,10 +65,10 @@ BodyDef readBody(const JsonCursor& cursor, std::size_t index) {
                 cursor.child(key).fail(std::string("only dynamic bodies have mass (this body is ") +
                                        toString(def.type) + ")");
     if (cursor.has("mass") && cursor.has("density")) cursor.child("density").fail("give mass or density, not both");
-    if (auto v = cursor.optional("velocity")) def.linearVelocity = v->vec3();
-    if (auto v = cursor.optional("angular_velocity")) def.angularVelocity = v->vec3();
-    if (auto v = cursor.optional("mass")) def.mass = v->positive();
-    if (auto v = cursor.optional("density")) def.density = v->positive();
+    if (auto v = cursor.optional("velocity")) def.linearVelocity = v->vec3Within(kMaxSpeed);
+    if (auto v = cursor.optional("angular_velocity")) def.angularVelocity = v->vec3Within(kMaxAngularSpeed);
+    if (auto v = cursor.optional("mass")) def.mass = v->positiveBetween(kMinMass, kMaxMass);
+    if (auto v = cursor.optional("density")) def.density = v->positiveBetween(kMinDensity, kMaxDensity);
     if (auto v = cursor.optional("friction")) def.material.friction = v->nonNegative();
     if (auto v = cursor.optional("restitution")) def.material.restitution = v->inRange(0, 1);
     if (auto v = cursor.optional("bullet")) def.bullet = v->boolean();
@@ -105,9 +103,9 @@ JointDesc readJoint(const JsonCursor& cursor, const World& world) {
     joint.bodyA = bodyIndex(cursor.child("a"), world);
     joint.bodyB = bodyIndex(cursor.child("b"), world);
     if (joint.bodyA == joint.bodyB) cursor.child("b").fail("a joint needs two different bodies");
-    if (auto v = cursor.optional("anchor_a")) joint.localAnchorA = v->vec3();
-    if (auto v = cursor.optional("anchor_b")) joint.localAnchorB = v->vec3();
-    if (auto v = cursor.optional("length")) joint.length = v->nonNegative();
+    if (auto v = cursor.optional("anchor_a")) joint.localAnchorA = v->vec3Within(kMaxCoordinate);
+    if (auto v = cursor.optional("anchor_b")) joint.localAnchorB = v->vec3Within(kMaxCoordinate);
+    if (auto v = cursor.optional("length")) joint.length = v->inRange(0, kMaxCoordinate);
     if (auto v = cursor.optional("axis")) {
         const Vec3 axis = v->vec3();
         if (axis.norm() < Real(1e-6)) v->fail("must not be zero");
@@ -138,8 +136,8 @@ void readForce(const JsonCursor& cursor, World& world) {
     spring.bodyA = bodyIndex(cursor.child("a"), world);
     if (auto v = cursor.optional("b")) spring.bodyB = bodyIndex(*v, world);
     if (spring.bodyA == spring.bodyB) cursor.child("b").fail("a spring needs two different bodies");
-    if (auto v = cursor.optional("anchor_a")) spring.localAnchorA = v->vec3();
-    if (auto v = cursor.optional("anchor_b")) spring.anchorB = v->vec3();
+    if (auto v = cursor.optional("anchor_a")) spring.localAnchorA = v->vec3Within(kMaxCoordinate);
+    if (auto v = cursor.optional("anchor_b")) spring.anchorB = v->vec3Within(kMaxCoordinate);
     spring.stiffness = cursor.child("stiffness").nonNegative();
     if (auto v = cursor.optional("damping")) spring.damping = v->nonNegative();
     // Without a rest length the spring starts relaxed: the anchors' distance at load time.
@@ -147,7 +145,7 @@ void readForce(const JsonCursor& cursor, World& world) {
     const Vec3 pointB =
         spring.bodyB < 0 ? spring.anchorB : world.bodies[std::size_t(spring.bodyB)].transform.apply(spring.anchorB);
     spring.restLength = (pointB - pointA).norm();
-    if (auto v = cursor.optional("rest_length")) spring.restLength = v->nonNegative();
+    if (auto v = cursor.optional("rest_length")) spring.restLength = v->inRange(0, kMaxCoordinate);
     world.springs.push_back(spring);
 }
 
@@ -167,7 +165,7 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
     if (auto v = root.optional("settings")) world.settings = readSettings(*v);
     if (auto bodies = root.optional("bodies")) {
         std::map<std::string, std::size_t> firstUse;
-        for (std::size_t i = 0; i < bodies->arraySize(); ++i) {
+        for (std::size_t i = 0; i < bodies->arraySizeAtMost(kMaxBodies); ++i) {
             const JsonCursor cursor = bodies->element(i);
             const BodyDef def = readBody(cursor, i);
             if (auto [it, fresh] = firstUse.emplace(def.name, i); !fresh) {
@@ -189,10 +187,10 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
         }
     }
     if (auto joints = root.optional("joints"))
-        for (std::size_t i = 0; i < joints->arraySize(); ++i)
+        for (std::size_t i = 0; i < joints->arraySizeAtMost(kMaxJoints); ++i)
             world.joints.push_back(readJoint(joints->element(i), world));
     if (auto forces = root.optional("forces"))
-        for (std::size_t i = 0; i < forces->arraySize(); ++i) readForce(forces->element(i), world);
+        for (std::size_t i = 0; i < forces->arraySizeAtMost(kMaxForces); ++i) readForce(forces->element(i), world);
     return world;
 }
 
@@ -203,14 +201,7 @@ World loadSceneFromString(const std::string& jsonText, const std::string& source
 }
 
 World loadSceneFile(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw SceneError(path, "no such file");
-    if (std::filesystem::is_directory(path, error)) throw SceneError(path, "is a directory, not a scene file");
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (!file) throw SceneError(path, "cannot read the file");
-    return loadScene(text.str(), path, std::filesystem::path(path).stem().string());
+    return loadScene(readInputFile(path, "a scene file"), path, std::filesystem::path(path).stem().string());
 }
 
 }  // namespace stepwise
