@@ -131,47 +131,69 @@ bool allFinite(const World& world) {
 
 // --- 2. a stack far from the origin, against the same stack at the origin ---------------------
 
-/// Three 1 m boxes on a ground slab, all shifted by `offset` along x.
-World stackAt(double offset) {
+/// Shifted by `offset` along x: a ground slab; a box and a ball resting on it; a box sliding to a
+/// stop on friction; and, apart, a stack of three boxes.
+World farScene(double offset, bool stack) {
     World world;
-    world.name = "far-stack";
-    addBox(world, "ground", BodyType::Static, Vec3(Real(offset), Real(-0.5), 0), Vec3(10, Real(0.5), 10));
-    for (int level = 0; level < 3; ++level)
-        addBox(world, "box" + std::to_string(level), BodyType::Dynamic,
-               Vec3(Real(offset), Real(0.5 + level) - world.settings.slop, 0), Vec3(Real(0.5), Real(0.5), Real(0.5)));
+    world.name = "far";
+    const Real slop = world.settings.slop;
+    const auto at = [offset](double x, double y, double z) { return Vec3(Real(offset + x), Real(y), Real(z)); };
+    addBox(world, "ground", BodyType::Static, at(0, -0.5, 0), Vec3(20, Real(0.5), 20));
+    if (stack) {
+        for (int level = 0; level < 3; ++level)
+            addBox(world, "box" + std::to_string(level), BodyType::Dynamic, at(0, 0.5 + level - double(slop), 0),
+                   Vec3(Real(0.5), Real(0.5), Real(0.5)));
+        return world;
+    }
+    addBox(world, "resting-box", BodyType::Dynamic, at(-3, 0.5 - double(slop), 0), Vec3(Real(0.5), Real(0.5), Real(0.5)));
+    BodyDef ball;
+    ball.name = "resting-ball";
+    ball.shape = Shape::sphere(Real(0.5));
+    ball.transform.position = at(0, 0.5 - double(slop), 0);
+    addBody(world, ball);
+    const int slider = addBox(world, "sliding-box", BodyType::Dynamic, at(3, 0.5 - double(slop), -5),
+                              Vec3(Real(0.5), Real(0.5), Real(0.5)));
+    world.motionOf(slider)->linearVelocity = Vec3(0, 0, 3);
     return world;
+}
+
+/// Largest distance between a body's path at `offset` (shifted back) and at the origin, m.
+double strayFromOrigin(double offset, long frames) {
+    World reference = farScene(0, false);
+    World world = farScene(offset, false);
+    Pipeline referencePipeline = chapters().makePipeline(reference);
+    Pipeline pipeline = chapters().makePipeline(world);
+    double stray = 0;
+    for (long frame = 0; frame < frames; ++frame) {
+        referencePipeline.step(reference);
+        pipeline.step(world);
+        if (!allFinite(world)) return INFINITY;
+        for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+            const Eigen::Vector3d shifted = world.bodies[i].transform.position.cast<double>() - Eigen::Vector3d(offset, 0, 0);
+            stray = std::max(stray, (shifted - reference.bodies[i].transform.position.cast<double>()).norm());
+        }
+    }
+    return stray;
+}
+
+/// The top box's height after `frames` frames: 2.5 m when the stack stands.
+double stackTop(double offset, long frames) {
+    World world = farScene(offset, true);
+    Pipeline pipeline = chapters().makePipeline(world);
+    for (long frame = 0; frame < frames; ++frame) pipeline.step(world);
+    return double(world.bodies.back().transform.position.y());
 }
 
 void farTable(bool quick) {
     const long frames = quick ? 300 : 1200;
-    std::printf("\nA stack of three 1 m boxes far from the origin, %s build, %ld frames: how far each box's path\n"
-                "strays from the same stack's path at the origin (shifted back), and the top box's height at the end\n"
-                "(2.5 m when standing).\n\n", precision(), frames);
-    std::printf("%-12s %14s %14s %12s\n", "distance m", "Real spacing m", "max stray m", "top y m");
-    const std::vector<double> offsets = {0, 100, 1000, 3000, 10000, 30000, 100000};
-    World reference = stackAt(0);
-    Pipeline referencePipeline = chapters().makePipeline(reference);
-    std::vector<std::vector<Eigen::Vector3d>> referencePath;
-    for (long frame = 0; frame < frames; ++frame) {
-        referencePipeline.step(reference);
-        std::vector<Eigen::Vector3d> positions;
-        for (const Body& body : reference.bodies) positions.push_back(body.transform.position.cast<double>());
-        referencePath.push_back(positions);
-    }
-    for (double offset : offsets) {
-        World world = stackAt(offset);
-        Pipeline pipeline = chapters().makePipeline(world);
-        double stray = 0;
-        for (long frame = 0; frame < frames && allFinite(world); ++frame) {
-            pipeline.step(world);
-            for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-                const Eigen::Vector3d shifted = world.bodies[i].transform.position.cast<double>() - Eigen::Vector3d(offset, 0, 0);
-                stray = std::max(stray, (shifted - referencePath[std::size_t(frame)][i]).norm());
-            }
-        }
-        std::printf("%-12.0f %14.3g %14.3g %12.4f\n", offset, ulpAt(offset), stray,
-                    double(world.bodies.back().transform.position.y()));
-    }
+    std::printf("\nFar from the origin, %s build, %ld frames. Stray: how far any body's path strays from the same\n"
+                "scene's path at the origin (shifted back); the scene holds a resting box, a resting ball and a box\n"
+                "sliding to a stop. Stack: the top of three 1 m boxes at the end (2.5 m when standing).\n\n",
+                precision(), frames);
+    std::printf("%-12s %14s %14s %12s\n", "distance m", "Real spacing m", "max stray m", "stack top m");
+    for (double offset : {0.0, 100.0, 1000.0, 3000.0, 10000.0, 30000.0, 100000.0})
+        std::printf("%-12.0f %14.3g %14.3g %12.4f\n", offset, ulpAt(offset), strayFromOrigin(offset, frames),
+                    stackTop(offset, frames));
 }
 
 // --- 3. the soak: a long run of a mixed scene ---------------------------------------------------
@@ -244,6 +266,7 @@ void soakTable(bool quick) {
 
 struct Outcome {
     double sink = 0;        // deepest the top body sank into what it rests on, m
+    double endSink = 0;     // the same at the end
     double drift = 0;       // largest distance the top body moved from where it started, m
     double speed = 0;       // its speed at the end, m/s
     bool finite = true;
@@ -262,6 +285,7 @@ Outcome settle(World world, int top, int below, double restingGap, long frames) 
         const Vec3 topPosition = world.bodies[std::size_t(top)].transform.position;
         const double gap = double(topPosition.y() - world.bodies[std::size_t(below)].transform.position.y());
         outcome.sink = std::max(outcome.sink, restingGap - gap);
+        outcome.endSink = restingGap - gap;
         outcome.drift = std::max(outcome.drift, double((topPosition - start).norm()));
     }
     outcome.speed = double(world.motionOf(top)->linearVelocity.norm());
@@ -270,28 +294,38 @@ Outcome settle(World world, int top, int below, double restingGap, long frames) 
 
 void ratiosTable(bool quick) {
     const long frames = quick ? 300 : 1800;
-    std::printf("\nMass ratios: a 1 m box resting on a 1 m box on the ground, the top one heavier by the ratio;\n"
-                "%ld frames, %s build. Sink: how far the top box pressed into the lower one beyond its start.\n\n",
-                frames, precision());
-    std::printf("%-10s %12s %12s %14s %8s\n", "top:lower", "sink m", "drift m", "end speed m/s", "finite");
+    std::printf("\nMass ratios: a 1 m ball resting on a 1 m ball on the ground, exactly on the vertical, the top one\n"
+                "heavier by the ratio; %ld frames, %s build. Sink: how far the top ball pressed into the lower one\n"
+                "beyond the slop it started at (largest, and at the end).\n\n", frames, precision());
+    std::printf("%-10s %12s %12s %12s %14s %8s\n", "top:lower", "max sink m", "end sink m", "drift m", "end speed m/s",
+                "finite");
     for (double ratio : {1.0, 10.0, 100.0, 1000.0}) {
         World world;
         addBox(world, "ground", BodyType::Static, Vec3(0, Real(-0.5), 0), Vec3(10, Real(0.5), 10));
         const Real slop = world.settings.slop;
-        const int lower = addBox(world, "lower", BodyType::Dynamic, Vec3(0, Real(0.5) - slop, 0), Vec3(Real(0.5), Real(0.5), Real(0.5)));
-        const int top = addBox(world, "top", BodyType::Dynamic, Vec3(0, Real(1.5) - 2 * slop, 0),
-                               Vec3(Real(0.5), Real(0.5), Real(0.5)), Real(1000 * ratio));
+        BodyDef ball;
+        ball.shape = Shape::sphere(Real(0.5));
+        ball.name = "lower";
+        ball.transform.position = Vec3(0, Real(0.5) - slop, 0);
+        const int lower = addBody(world, ball);
+        ball.name = "top";
+        ball.transform.position = Vec3(0, Real(1.5) - 2 * slop, 0);
+        ball.density = Real(1000 * ratio);
+        const int top = addBody(world, ball);
         const Outcome outcome = settle(world, top, lower, 1 - double(slop), frames);
-        std::printf("%-10s %12.3g %12.3g %14.3g %8s\n", ("1:" + std::to_string(int(ratio))).c_str(), outcome.sink,
-                    outcome.drift, outcome.speed, outcome.finite ? "yes" : "no");
+        std::printf("%-10s %12.3g %12.3g %12.3g %14.3g %8s\n", ("1:" + std::to_string(int(ratio))).c_str(), outcome.sink,
+                    outcome.endSink, outcome.drift, outcome.speed, outcome.finite ? "yes" : "no");
     }
 }
 
 void sizesTable(bool quick) {
     const long frames = quick ? 300 : 1800;
-    std::printf("\nSizes: a 1 cm cube resting on a 100 m box (static, then dynamic on the ground), and a 1 cm cube\n"
-                "dropped from 1 m onto it; %ld frames, %s build.\n\n", frames, precision());
-    std::printf("%-34s %12s %12s %14s %8s\n", "case", "sink m", "drift m", "end speed m/s", "finite");
+    std::printf("\nSizes: a 1 cm cube resting on a 200 m ground (static), on a 100 m slab (dynamic, on that ground),\n"
+                "and dropped from 1 m onto the ground; %ld frames, %s build. Sink: how far the cube sank below\n"
+                "resting on the surface (largest, and at the end); the slop alone lets it sink %.3g m.\n\n", frames, precision(),
+                double(Settings{}.slop));
+    std::printf("%-34s %12s %12s %12s %14s %8s\n", "case", "max sink m", "end sink m", "drift m", "end speed m/s",
+                "finite");
     for (int variant = 0; variant < 3; ++variant) {
         World world;
         const Real slop = world.settings.slop;
@@ -302,11 +336,11 @@ void sizesTable(bool quick) {
         const double drop = variant == 2 ? 1 : 0;
         const int cube = addBox(world, "cube", BodyType::Dynamic, Vec3(0, Real(top + 0.005 + drop), 0),
                                 Vec3(Real(0.005), Real(0.005), Real(0.005)));
-        const double restingGap = variant == 1 ? 0.5 + 0.005 : 0.5 + 0.005;  // centre above what it rests on
+        const double restingGap = 0.5 + 0.005;  // the cube's centre above the centre of what it rests on
         const Outcome outcome = settle(world, cube, below, restingGap, frames);
-        const char* names[] = {"1 cm cube on static 100 m ground", "1 cm cube on dynamic 100 m slab",
+        const char* names[] = {"1 cm cube on static 200 m ground", "1 cm cube on dynamic 100 m slab",
                                "1 cm cube dropped 1 m on ground"};
-        std::printf("%-34s %12.3g %12.3g %14.3g %8s\n", names[variant], outcome.sink,
+        std::printf("%-34s %12.3g %12.3g %12.3g %14.3g %8s\n", names[variant], outcome.sink, outcome.endSink,
                     variant == 2 ? 0.0 : outcome.drift, outcome.speed, outcome.finite ? "yes" : "no");
     }
 }
