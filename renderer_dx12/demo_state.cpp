@@ -38,6 +38,7 @@ void DemoState::loadScene(int index) {
         World next = scenes_[index]->build();
         sceneIndex_ = index;
         loadedFile_.clear();
+        view_ = scenes_[index]->makeView ? scenes_[index]->makeView() : nullptr;
         setWorld(std::move(next));
     } catch (const std::exception& error) {
         loadError = "scene '" + scenes_[index]->name + "' failed to build: " + error.what();
@@ -55,6 +56,7 @@ void DemoState::loadByName(const std::string& nameOrPath) {
     World next = loadSceneOrBuiltin(registry_, nameOrPath);  // throws SceneError with the reason
     sceneIndex_ = -1;
     loadedFile_ = nameOrPath;
+    view_.reset();
     setWorld(std::move(next));
 }
 
@@ -127,11 +129,11 @@ Framing DemoState::framing() const {
     Aabb& result = framing.bounds;
     result = bodyBounds();
     // The scene's overlay counts as content: chapter 2 draws A - B above its bodies, chapter 3
-    // the EPA polytope beside them. The hook only reads the world, so measuring it is harmless.
-    if (const SceneEntry* entry = scene(); entry && entry->draw) {
+    // the EPA polytope beside them. Drawing changes neither world nor view, so measuring is harmless.
+    if (view_) {
         BoundsDraw measure;
         try {
-            entry->draw(world, measure);
+            view_->draw(world, measure);
         } catch (const std::exception&) {
             // A hook that throws draws nothing here either; the bodies alone are framed.
         }
@@ -178,7 +180,7 @@ void DemoState::buildDrawList(DrawList& list, const ViewOptions& options) const 
             }
         }
     }
-    if (const SceneEntry* entry = scene(); entry && entry->draw) entry->draw(world, list);
+    if (view_) view_->draw(world, list);
     if (!options.showLabels) list.labels.clear();
 }
 

@@ -7,6 +7,7 @@
 
 #include <deque>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ public:
     /// A built-in scene name or a scene JSON file. Throws (SceneError, runtime_error) when neither.
     void loadByName(const std::string& nameOrPath);
     void reload();
+    /// The loaded scene's view (made afresh at every load), or nullptr: scene files have none.
+    SceneView* view() { return view_.get(); }
+    const SceneView* view() const { return view_.get(); }
 
     /// Advances by wall-clock time (scaled), in whole fixed steps of settings.dt.
     void advance(double wallSeconds);
@@ -79,6 +83,7 @@ private:
     int chapter_;
     std::vector<const SceneEntry*> scenes_;
     int sceneIndex_ = -1;
+    std::unique_ptr<SceneView> view_;
     std::string loadedFile_;
     double accumulator_ = 0;
     Framing initialFraming_;

@@ -42,24 +42,33 @@ bool enumCombo(const char* label, Enum& value, std::initializer_list<Enum> optio
     return true;
 }
 
-void settingsSection(World& world) {
+// Shows only the settings some stage of this demo's chapters reads; the rest are named, with
+// the chapter that will read them, so a learner never moves a slider that does nothing.
+void settingsSection(World& world, int chapter, int lastChapter) {
     if (!ImGui::CollapsingHeader("Solver and integrator")) return;
     Settings& s = world.settings;
-    enumCombo("integrator", s.integrator, {IntegratorKind::SemiImplicitEuler, IntegratorKind::Rk4, IntegratorKind::Verlet});
-    enumCombo("solver", s.solver, {SolverKind::GaussSeidel, SolverKind::Jacobi});
-    enumCombo("gyroscopic", s.gyroscopic, {GyroscopicMode::Off, GyroscopicMode::Explicit, GyroscopicMode::Implicit});
-    enumCombo("broadphase", s.broadphase, {BroadphaseMode::Auto, BroadphaseMode::Sap, BroadphaseMode::Brute});
-    enumCombo("ccd", s.ccd, {CcdMode::Auto, CcdMode::On, CcdMode::Off});
-    ImGui::SliderInt("iterations", &s.solverIterations, 1, 100);
-    ImGui::SliderInt("substeps", &s.substeps, 1, 16);
+    const auto reads = [&](const char* key) { return chapterReading(key) <= chapter; };
+    if (reads("integrator"))
+        enumCombo("integrator", s.integrator, {IntegratorKind::SemiImplicitEuler, IntegratorKind::Rk4, IntegratorKind::Verlet});
+    if (reads("solver")) enumCombo("solver", s.solver, {SolverKind::GaussSeidel, SolverKind::Jacobi});
+    if (reads("gyroscopic"))
+        enumCombo("gyroscopic", s.gyroscopic, {GyroscopicMode::Off, GyroscopicMode::Explicit, GyroscopicMode::Implicit});
+    if (reads("broadphase")) enumCombo("broadphase", s.broadphase, {BroadphaseMode::Auto, BroadphaseMode::Sap, BroadphaseMode::Brute});
+    if (reads("ccd")) enumCombo("ccd", s.ccd, {CcdMode::Auto, CcdMode::On, CcdMode::Off});
+    if (reads("solver_iterations")) ImGui::SliderInt("iterations", &s.solverIterations, 1, 100);
+    if (reads("substeps")) ImGui::SliderInt("substeps", &s.substeps, 1, 16);
     float dtMs = static_cast<float>(s.dt) * 1000.0f;
-    if (ImGui::SliderFloat("dt (ms)", &dtMs, 1.0f, 50.0f, "%.2f")) s.dt = static_cast<Real>(dtMs / 1000.0f);
+    if (reads("dt") && ImGui::SliderFloat("dt (ms)", &dtMs, 1.0f, 50.0f, "%.2f")) s.dt = static_cast<Real>(dtMs / 1000.0f);
     float baumgarte = static_cast<float>(s.baumgarte), slop = static_cast<float>(s.slop);
-    if (ImGui::SliderFloat("baumgarte", &baumgarte, 0.0f, 1.0f)) s.baumgarte = static_cast<Real>(baumgarte);
-    if (ImGui::SliderFloat("slop (m)", &slop, 0.0f, 0.05f, "%.4f")) s.slop = static_cast<Real>(slop);
-    ImGui::Checkbox("warm starting", &s.warmStarting);
+    if (reads("baumgarte") && ImGui::SliderFloat("baumgarte", &baumgarte, 0.0f, 1.0f)) s.baumgarte = static_cast<Real>(baumgarte);
+    if (reads("slop") && ImGui::SliderFloat("slop (m)", &slop, 0.0f, 0.05f, "%.4f")) s.slop = static_cast<Real>(slop);
+    if (reads("warm_starting")) ImGui::Checkbox("warm starting", &s.warmStarting);
     float gravity = static_cast<float>(s.gravity.y());
-    if (ImGui::SliderFloat("gravity y", &gravity, -30.0f, 30.0f)) s.gravity.y() = static_cast<Real>(gravity);
+    if (reads("gravity") && ImGui::SliderFloat("gravity y", &gravity, -30.0f, 30.0f)) s.gravity.y() = static_cast<Real>(gravity);
+    for (const SettingUse& use : settingUses())
+        if (use.chapter > chapter)
+            ImGui::TextDisabled("%s: not used until chapter %d%s", use.key, use.chapter,
+                                use.chapter > lastChapter ? " (to come)" : "");
 }
 
 /// Durations readable at a glance: "850 ns", "4.2 us", "1.25 ms", "2.5 s".
@@ -219,7 +228,7 @@ void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellI
                 static_cast<int>(state.world.contacts.size()));
 
     pipelineSection(state);
-    settingsSection(state.world);
+    settingsSection(state.world, state.chapter(), state.registry().lastChapter());
     if (ImGui::CollapsingHeader("View")) {
         ImGui::Checkbox("wireframe (Z)", &view.wireframe);
         ImGui::SliderFloat("line width (px)", &view.lineWidth, 1.0f, 8.0f, "%.1f");
@@ -232,9 +241,10 @@ void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellI
         const char* const modes[] = {"orbit", "fly"};
         if (ImGui::Combo("camera (C)", &mode, modes, 2)) camera.setMode(mode == 0 ? Camera::Mode::Orbit : Camera::Mode::Fly);
     }
-    if (current && current->panel && ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (SceneView* sceneView = state.view();
+        sceneView && sceneView->hasPanel() && ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGuiPanel panel;
-        current->panel(state.world, panel);
+        sceneView->panel(state.world, panel);
     }
     ImGui::End();
 }

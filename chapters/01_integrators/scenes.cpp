@@ -171,11 +171,11 @@ void addChapter01Scenes(Registry& registry) {
     sideBySide.observe = "Three identical spring chains: RK4's swing slowly dies down, Verlet and "
                          "semi-implicit Euler keep their energy within a band.";
     sideBySide.build = buildIntegratorsSideBySide;
-    sideBySide.draw = [](const World& world, DebugDraw& draw) {
+    const SceneDrawHook drawChains = [](const World& world, DebugDraw& draw) {
         drawSprings(world, draw);
         labelBodies(world, draw);
     };
-    sideBySide.panel = [](World& world, Panel& panel) {
+    const ScenePanelHook chainPanel = [](World& world, Panel& panel) {
         for (IntegratorKind method : kMethods)
             panel.text(formatValue((std::string(toString(method)) + " energy").c_str(), methodEnergy(world, method), "J"));
         float stiffness = world.springs.empty() ? 0.0f : static_cast<float>(world.springs[0].stiffness);
@@ -183,6 +183,7 @@ void addChapter01Scenes(Registry& registry) {
             for (Spring& spring : world.springs) spring.stiffness = static_cast<Real>(stiffness);
         panel.text("Stable while h*w < 2 (Euler, Verlet) or < 2.83 (RK4); the chain's fastest mode has w = 1.6 sqrt(k/m).");
     };
+    sideBySide.makeView = statelessView(drawChains, chainPanel);
     registry.addScene(std::move(sideBySide));
 
     SceneEntry handle;
@@ -192,7 +193,7 @@ void addChapter01Scenes(Registry& registry) {
     handle.observe = "Spun about its intermediate axis, the handle flips over every few seconds while its "
                      "angular momentum (arrow) stays put.";
     handle.build = [] { return buildTHandle(); };
-    handle.draw = [](const World& world, DebugDraw& draw) {
+    const SceneDrawHook drawHandle = [](const World& world, DebugDraw& draw) {
         labelBodies(world, draw);
         const Body& body = world.bodies[0];
         const Vec3 center = worldCenterOfMass(world, 0);
@@ -201,7 +202,7 @@ void addChapter01Scenes(Registry& registry) {
         draw.text(center + Real(0.3) * angularMomentum(world, 0), "L", colors::kYellow);
         draw.text(center + body.transform.rotate(Vec3(0, 0, Real(0.6))), "intermediate axis", colors::kGreen);
     };
-    handle.panel = [](World& world, Panel& panel) {
+    const ScenePanelHook handlePanel = [](World& world, Panel& panel) {
         static const char* const modes[] = {"off", "explicit", "implicit"};
         int mode = static_cast<int>(world.settings.gyroscopic);
         if (panel.combo("gyroscopic term", mode, modes, 3)) world.settings.gyroscopic = static_cast<GyroscopicMode>(mode);
@@ -209,6 +210,7 @@ void addChapter01Scenes(Registry& registry) {
         panel.text(formatValue("energy", 0.5 * world.motions[0].angularVelocity.dot(angularMomentum(world, 0)), "J"));
         panel.text("Off: no flip. Explicit: energy grows. Implicit: flips, energy kept.");
     };
+    handle.makeView = statelessView(drawHandle, handlePanel);
     registry.addScene(std::move(handle));
 
     SceneEntry projectile;
@@ -218,7 +220,7 @@ void addChapter01Scenes(Registry& registry) {
     projectile.observe = "Verlet and RK4 stay on the exact parabola (white); semi-implicit Euler runs "
                          "below it by |g| h t / 2.";
     projectile.build = buildProjectile;
-    projectile.draw = [](const World& world, DebugDraw& draw) {
+    projectile.makeView = statelessView([](const World& world, DebugDraw& draw) {
         labelBodies(world, draw);
         const Vec3 gravity = world.settings.gravity;
         auto exact = [&](double t, const Vec3& lane) {
@@ -233,7 +235,7 @@ void addChapter01Scenes(Registry& registry) {
                           colors::kWhite);
             draw.point(exact(world.time, lane), 6, colors::kWhite);
         }
-    };
+    });
     registry.addScene(std::move(projectile));
 }
 

@@ -38,14 +38,14 @@ Shape boxAsHull(const Vec3& halfExtents) {
 }
 
 // 64 random points on the ellipsoid inscribed in the box: a rounder hull of the same size.
-Shape roundHull(PairRandom& random, const Vec3& halfExtents) {
+Shape roundHull(Random& random, const Vec3& halfExtents) {
     std::vector<Vec3> points;
     for (int i = 0; i < 64; ++i) points.push_back(random.unitVector().cwiseProduct(halfExtents));
     return Shape::convex(points);
 }
 
 std::vector<QueryCase> makeCases(int pairCount) {
-    PairRandom random(0x6A6B02u);
+    Random random(0x6A6B02u);
     std::vector<BoxPair> pairs;
     for (int i = 0; i < pairCount; ++i) pairs.push_back(randomBoxPair(random, 0.05, 2.0));
     std::vector<Shape> roundHulls;  // hull building is slow-ish; 64 shapes, reused

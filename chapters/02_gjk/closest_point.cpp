@@ -4,14 +4,14 @@
 
 #include "02_gjk/closest_point.h"
 
+#include "02_gjk/tolerances.h"
+
 #include <cmath>
 
 namespace stepwise {
 namespace {
 
-// Relative size below which a length, area or volume counts as zero: a few hundred rounding
-// errors, so that Real = float and Real = double both classify real slivers as slivers.
-constexpr Real kDegenerateFraction = Real(256) * kEpsilon;
+using tolerance::kDegenerateFraction;
 
 SimplexClosest vertexResult(const Vec3* points, int i) {
     SimplexClosest result;

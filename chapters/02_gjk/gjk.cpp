@@ -6,6 +6,7 @@
 #include "02_gjk/gjk.h"
 
 #include "02_gjk/gjk_walk.h"
+#include "02_gjk/tolerances.h"
 
 #include <cmath>
 
@@ -32,8 +33,8 @@ GjkTolerances gjkTolerances(const ConvexProxy& a, const ConvexProxy& b) {
     // pair is seen from A (below), so rounding errors are a few epsilons of that size. Every
     // tolerance is such a multiple: a 1 mm and a 1 km box get the same relative treatment.
     tolerances.scale = shapeScale(*a.shape) + shapeScale(*b.shape);
-    tolerances.touching = Real(100) * kEpsilon * tolerances.scale;
-    tolerances.relative = Real(100) * kEpsilon;
+    tolerances.touching = tolerance::kTouching * tolerances.scale;
+    tolerances.relative = tolerance::kTouching;
     return tolerances;
 }
 // [ch02-tolerances]
@@ -44,7 +45,7 @@ namespace {
 // within rounding of the simplex, so adding points of A - B off its span (in the directions
 // it lacks) gives a tetrahedron containing it. Stops early when A - B is itself flat.
 void growToTetrahedron(const RelativePair& pair, Simplex& simplex, Real scale) {
-    const Real minimumReach = Real(256) * kEpsilon * scale;
+    const Real minimumReach = tolerance::kDegenerateFraction * scale;
     while (simplex.count > 0 && simplex.count < 4) {
         const Vec3& first = simplex.vertices[0].w;
         Vec3 candidates[6];

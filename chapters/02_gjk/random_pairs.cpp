@@ -5,25 +5,7 @@
 
 namespace stepwise {
 
-Quat PairRandom::rotation() {
-    const double u1 = uniform();
-    const double u2 = uniform() * 2 * 3.14159265358979323846;
-    const double u3 = uniform() * 2 * 3.14159265358979323846;
-    const double a = std::sqrt(1 - u1);
-    const double b = std::sqrt(u1);
-    Quat q(Real(b * std::cos(u3)), Real(a * std::sin(u2)), Real(a * std::cos(u2)), Real(b * std::sin(u3)));
-    q.normalize();
-    return q;
-}
-
-Vec3 PairRandom::unitVector() {
-    const double z = uniform(-1, 1);
-    const double angle = uniform() * 2 * 3.14159265358979323846;
-    const double r = std::sqrt(std::max(0.0, 1 - z * z));
-    return Vec3(Real(r * std::cos(angle)), Real(r * std::sin(angle)), Real(z));
-}
-
-BoxPair randomBoxPair(PairRandom& random, double minSize, double maxSize, const Vec3& origin) {
+BoxPair randomBoxPair(Random& random, double minSize, double maxSize, const Vec3& origin) {
     BoxPair pair;
     auto halfExtents = [&] {
         return Vec3(Real(0.5 * random.uniform(minSize, maxSize)), Real(0.5 * random.uniform(minSize, maxSize)),
@@ -40,7 +22,7 @@ BoxPair randomBoxPair(PairRandom& random, double minSize, double maxSize, const 
     return pair;
 }
 
-BoxPair nearContactBoxPair(PairRandom& random, double gap) {
+BoxPair nearContactBoxPair(Random& random, double gap) {
     BoxPair pair;
     pair.halfExtentsA = Vec3(Real(random.uniform(0.5, 1.0)), Real(random.uniform(0.5, 1.0)), Real(random.uniform(0.5, 1.0)));
     pair.halfExtentsB = Vec3(Real(random.uniform(0.05, 0.2)), Real(random.uniform(0.05, 0.2)), Real(random.uniform(0.05, 0.2)));

@@ -70,19 +70,23 @@ std::vector<Vec3> worldCorners(const Body& body) {
     return corners;
 }
 
-// The demo's own UI state: which support map the overlay uses, and the user's hold on body 1.
-struct DemoControls {
-    int supportMode = 0;            // 0 extents, 1 vertices
-    bool animate = true;
-    Vec3 savedLinear = Vec3::Zero();
-    Vec3 savedAngular = Vec3::Zero();
-    std::string worldName;
+// The demo's view of a GJK scene: which support map the overlay uses, and the user's hold on
+// body 1 (the velocities its spin gets back when the user lets go).
+class GjkView : public SceneView {
+public:
+    explicit GjkView(Vec3 overlayAnchor) : overlayAnchor_(overlayAnchor) {}
+    void draw(const World& world, DebugDraw& draw) const override;
+    bool hasPanel() const override { return true; }
+    void panel(World& world, Panel& panel) override;
+
+private:
+    SupportMode mode() const { return supportMode_ == 0 ? SupportMode::Extents : SupportMode::Vertices; }
+    Vec3 overlayAnchor_;
+    int supportMode_ = 0;  // 0 extents, 1 vertices
+    bool animate_ = true;
+    Vec3 savedLinear_ = Vec3::Zero();
+    Vec3 savedAngular_ = Vec3::Zero();
 };
-DemoControls& controls() {
-    static DemoControls state;
-    return state;
-}
-SupportMode currentMode() { return controls().supportMode == 0 ? SupportMode::Extents : SupportMode::Vertices; }
 
 std::string describe(const GjkResult& result) {
     char text[160];
@@ -92,18 +96,16 @@ std::string describe(const GjkResult& result) {
 }
 
 // Support mode, and position / rotation sliders that take body 1 over from its spin.
-void gjkPanel(World& world, Panel& panel) {
+void GjkView::panel(World& world, Panel& panel) {
     if (world.bodies.size() < 2) return;
-    DemoControls& state = controls();
-    if (state.worldName != world.name) state = DemoControls{0, true, Vec3::Zero(), Vec3::Zero(), world.name};
-    static const char* const kModes[] = {"extents (3 sign tests)", "vertices (loop over 8)"};
-    panel.combo("box support map", state.supportMode, kModes, 2);
-    panel.text(describe(gjkIntersect(makeProxy(world.bodies[0], currentMode()), makeProxy(world.bodies[1], currentMode()))));
+    const char* const modes[] = {"extents (3 sign tests)", "vertices (loop over 8)"};
+    panel.combo("box support map", supportMode_, modes, 2);
+    panel.text(describe(gjkIntersect(makeProxy(world.bodies[0], mode()), makeProxy(world.bodies[1], mode()))));
 
     Body& body = world.bodies[1];
     Motion* motion = world.motionOf(1);
-    const bool wasAnimating = state.animate;
-    panel.checkbox("animate body 1", state.animate);
+    const bool wasAnimating = animate_;
+    panel.checkbox("animate body 1", animate_);
     bool moved = false;
     float position[3] = {float(body.transform.position.x()), float(body.transform.position.y()), float(body.transform.position.z())};
     const char* const axes[3] = {"body 1 x (m)", "body 1 y (m)", "body 1 z (m)"};
@@ -125,19 +127,21 @@ void gjkPanel(World& world, Panel& panel) {
                                        Eigen::AngleAxis<Real>(Real(angles[2]) * toRadians, Vec3::UnitZ()));
         moved = true;
     }
-    if (moved) state.animate = false;
+    if (moved) animate_ = false;
     if (!motion) return;
     // Pausing keeps the scripted velocities to give back when the user lets go.
-    if (wasAnimating && !state.animate) {
-        state.savedLinear = motion->linearVelocity;
-        state.savedAngular = motion->angularVelocity;
+    if (wasAnimating && !animate_) {
+        savedLinear_ = motion->linearVelocity;
+        savedAngular_ = motion->angularVelocity;
         motion->linearVelocity.setZero();
         motion->angularVelocity.setZero();
-    } else if (!wasAnimating && state.animate) {
-        motion->linearVelocity = state.savedLinear;
-        motion->angularVelocity = state.savedAngular;
+    } else if (!wasAnimating && animate_) {
+        motion->linearVelocity = savedLinear_;
+        motion->angularVelocity = savedAngular_;
     }
 }
+
+void GjkView::draw(const World& world, DebugDraw& draw) const { drawGjkOverlay(world, draw, mode(), overlayAnchor_); }
 
 }  // namespace
 
@@ -214,8 +218,7 @@ void addChapter02Scenes(Registry& registry) {
     twoBoxes.observe = "The plank's end sweeps through the cube: both turn red exactly while they overlap, and above "
                        "them the origin (white cross) enters the Minkowski difference A - B, caught by a yellow tetrahedron.";
     twoBoxes.build = buildGjkTwoBoxes;
-    twoBoxes.draw = [](const World& world, DebugDraw& draw) { drawGjkOverlay(world, draw, currentMode(), Vec3(0, Real(4.5), 0)); };
-    twoBoxes.panel = gjkPanel;
+    twoBoxes.makeView = [] { return std::unique_ptr<SceneView>(std::make_unique<GjkView>(Vec3(0, Real(4.5), 0))); };
     registry.addScene(std::move(twoBoxes));
 
     SceneEntry sphereDiamond;
@@ -225,10 +228,7 @@ void addChapter02Scenes(Registry& registry) {
     sphereDiamond.observe = "Each tip of the spinning diamond dips into the sphere and the pair turns red; above, "
                             "A - B is the diamond grown by the sphere, and the label counts GJK's support points.";
     sphereDiamond.build = buildGjkSphereDiamond;
-    sphereDiamond.draw = [](const World& world, DebugDraw& draw) {
-        drawGjkOverlay(world, draw, currentMode(), Vec3(0, Real(3), 0));
-    };
-    sphereDiamond.panel = gjkPanel;
+    sphereDiamond.makeView = [] { return std::unique_ptr<SceneView>(std::make_unique<GjkView>(Vec3(0, Real(3), 0))); };
     registry.addScene(std::move(sphereDiamond));
 }
 

@@ -21,7 +21,7 @@ std::vector<double> nearContactGaps() {
 }
 
 std::vector<GapClassification> classifyNearContact(std::uint32_t seed, const std::vector<double>& gaps, int pairsPerGap) {
-    PairRandom random(seed);
+    Random random(seed);
     std::vector<GapClassification> rows;
     for (double gap : gaps) {
         GapClassification row;

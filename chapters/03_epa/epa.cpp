@@ -27,10 +27,8 @@ namespace {
 
 using namespace epa_polytope;
 
-// Two faces whose normals agree this well (0.26 degrees) are taken as lying in one plane.
-constexpr Real kCoplanar = Real(0.99999);
-// Chapter 2's GJK reports "intersect" for shapes this close (relative to their size).
-constexpr Real kTouching = 128 * kEpsilon;
+using tolerance::kCoplanar;
+constexpr Real kTouching = tolerance::kSeedContainment;
 
 // Support points the seed search may spend before it gives up on building a tetrahedron: the
 // search recurses over subsets of GJK's points and over directions, and a pathological input

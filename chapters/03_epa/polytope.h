@@ -4,19 +4,16 @@
 // Internal to chapter 3; the types it works on (EpaPolytope, EpaFace) are in epa.h so that the
 // demo can draw them.
 
+#include "02_gjk/tolerances.h"
 #include "03_epa/epa.h"
 
 #include <vector>
 
 namespace stepwise::epa_polytope {
 
-// Round-off thresholds, all relative to `scale`, the size of the pair. A float dot product of
-// vectors of that size is only good to a few ulps of it, so nothing finer than kRoundOff * scale
-// can be decided: the code treats smaller gaps as zero instead of chasing them.
-constexpr Real kRoundOff = 8 * kEpsilon;
-// A face is too thin to have a trustworthy normal when its cross product is within this factor
-// of the round-off the cross product itself carries (the normal would be off by > 1/64 rad).
-constexpr Real kThinFace = 64;
+// Round-off thresholds, all relative to `scale`, the size of the pair (02_gjk/tolerances.h).
+using tolerance::kRoundOff;
+using tolerance::kThinFace;
 
 /// One edge of the horizon: the border between the faces the new point sees and those it does
 /// not. `from -> to` runs the way the removed face ran it; `outside` keeps the edge as `to -> from`.

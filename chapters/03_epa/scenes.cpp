@@ -54,12 +54,20 @@ std::string describe(const char* format, double value) {
     return text;
 }
 
-/// Shared by the stepper's panel (which writes it) and its draw hook (which reads it).
-struct StepperState {
-    int expansions = 0;
-    bool converged = false;   // show the finished polytope instead of `expansions`
-    bool spin = true;
-    EpaResult last;
+/// The stepper's view: how far EPA runs in the picture, and whether box b turns.
+class EpaStepperView : public SceneView {
+public:
+    void draw(const World& world, DebugDraw& draw) const override {
+        drawEpaStep(world, 0, 1, shownExpansions(), kPolytopeAnchor, draw);
+    }
+    bool hasPanel() const override { return true; }
+    void panel(World& world, Panel& panel) override;
+
+private:
+    int shownExpansions() const { return converged_ ? -1 : expansions_; }
+    int expansions_ = 0;
+    bool converged_ = false;  // show the finished polytope instead of `expansions_`
+    bool spin_ = true;
 };
 
 }  // namespace
@@ -98,20 +106,26 @@ World buildContactGallery() {
     return world;
 }
 
-// [ch03-demo-draw]
-EpaResult drawEpaStep(const World& world, int bodyA, int bodyB, int expansions, const Vec3& polytopeAnchor,
-                      DebugDraw& draw) {
+std::optional<EpaResult> epaStoppedAfter(const World& world, int bodyA, int bodyB, int expansions) {
     const ConvexProxy a = makeProxy(world.bodies[bodyA]);
     const ConvexProxy b = makeProxy(world.bodies[bodyB]);
     const GjkResult gjk = gjkIntersect(a, b);
-    if (!gjk.intersect) {
-        draw.text(polytopeAnchor, "GJK: separated, nothing for EPA to do", colors::kWhite);
-        return EpaResult{};
-    }
+    if (!gjk.intersect) return std::nullopt;
     EpaSettings settings;
     settings.maxExpansions = expansions;
     settings.keepPolytope = true;
-    const EpaResult epa = epaPenetration(a, b, gjk.simplex, settings);
+    return epaPenetration(a, b, gjk.simplex, settings);
+}
+
+// [ch03-demo-draw]
+EpaResult drawEpaStep(const World& world, int bodyA, int bodyB, int expansions, const Vec3& polytopeAnchor,
+                      DebugDraw& draw) {
+    const std::optional<EpaResult> stopped = epaStoppedAfter(world, bodyA, bodyB, expansions);
+    if (!stopped) {
+        draw.text(polytopeAnchor, "GJK: separated, nothing for EPA to do", colors::kWhite);
+        return EpaResult{};
+    }
+    const EpaResult& epa = *stopped;
 
     // The polytope lives in the space of A - B, around its origin; draw it beside the bodies.
     const auto place = [&](const Vec3& w) { return Vec3(polytopeAnchor + kPolytopeScale * w); };
@@ -137,8 +151,22 @@ EpaResult drawEpaStep(const World& world, int bodyA, int bodyB, int expansions, 
 }
 // [ch03-demo-draw]
 
+void EpaStepperView::panel(World& world, Panel& panel) {
+    const int maxExpansions = EpaSettings{}.maxIterations;
+    panel.sliderInt("EPA expansions", expansions_, 0, maxExpansions);
+    if (panel.button("step")) expansions_ = std::min(expansions_ + 1, maxExpansions);
+    if (panel.button("reset")) expansions_ = 0;
+    panel.checkbox("run to convergence", converged_);
+    if (panel.checkbox("turn box b", spin_))
+        world.motionOf(1)->angularVelocity = spin_ ? Vec3(Real(0.1), Real(0.25), 0) : Vec3(Vec3::Zero());
+    // What the picture shows, recomputed rather than remembered from the last draw.
+    const EpaResult shown = epaStoppedAfter(world, 0, 1, shownExpansions()).value_or(EpaResult{});
+    panel.text(std::string("EPA stopped: ") + toString(shown.exit) + " after " + std::to_string(shown.iterations) +
+               " expansions");
+    panel.text(describe("depth %.6f m", double(shown.depth)));
+}
+
 void addChapter03Scenes(Registry& registry) {
-    auto state = std::make_shared<StepperState>();
     SceneEntry stepper;
     stepper.name = "epa-step-by-step";
     stepper.chapter = 3;
@@ -147,21 +175,7 @@ void addChapter03Scenes(Registry& registry) {
                       "half size) closes in on the boundary; red cubes mark the contact points inside the overlap "
                       "(Z: wireframe), the yellow arrow the normal.";
     stepper.build = buildEpaStepper;
-    stepper.draw = [state](const World& world, DebugDraw& draw) {
-        state->last = drawEpaStep(world, 0, 1, state->converged ? -1 : state->expansions, kPolytopeAnchor, draw);
-    };
-    stepper.panel = [state](World& world, Panel& panel) {
-        panel.sliderInt("EPA expansions", state->expansions, 0, EpaSettings{}.maxIterations);
-        if (panel.button("step")) state->expansions = std::min(state->expansions + 1, EpaSettings{}.maxIterations);
-        if (panel.button("reset")) state->expansions = 0;
-        panel.checkbox("run to convergence", state->converged);
-        if (panel.checkbox("turn box b", state->spin)) {
-            world.motionOf(1)->angularVelocity = state->spin ? Vec3(Real(0.1), Real(0.25), 0) : Vec3(Vec3::Zero());
-        }
-        panel.text(std::string("EPA stopped: ") + toString(state->last.exit) + " after " +
-                   std::to_string(state->last.iterations) + " expansions");
-        panel.text(describe("depth %.6f m", double(state->last.depth)));
-    };
+    stepper.makeView = viewOfType<EpaStepperView>();
     registry.addScene(std::move(stepper));
 
     SceneEntry gallery;
@@ -172,7 +186,7 @@ void addChapter03Scenes(Registry& registry) {
                       "contact (closed form or GJK + EPA), red cubes mark the points (Z: wireframe), yellow "
                       "arrows the normals.";
     gallery.build = buildContactGallery;
-    gallery.draw = [](const World& world, DebugDraw& draw) {
+    gallery.makeView = statelessView([](const World& world, DebugDraw& draw) {
         for (std::size_t i = 0; i + 1 < world.bodies.size(); i += 2) {
             const Body& a = world.bodies[i];
             const Body& b = world.bodies[i + 1];
@@ -182,7 +196,7 @@ void addChapter03Scenes(Registry& registry) {
                       colors::kWhite);
             if (query.intersect) drawContactMarkers(query.pointA, query.pointB, query.normal, draw);
         }
-    };
+    });
     registry.addScene(std::move(gallery));
 }
 

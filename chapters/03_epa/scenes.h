@@ -5,6 +5,8 @@
 #include "03_epa/epa.h"
 #include "world/world.h"
 
+#include <optional>
+
 namespace stepwise {
 
 class DebugDraw;
@@ -15,6 +17,10 @@ World buildEpaStepper();
 
 /// Pairs of every shape combination, overlapping, B turning: closed forms and GJK + EPA.
 World buildContactGallery();
+
+/// EPA on bodies A and B stopped after `expansions` (< 0: run to convergence), keeping the
+/// polytope; nullopt when GJK finds the pair apart.
+std::optional<EpaResult> epaStoppedAfter(const World& world, int bodyA, int bodyB, int expansions);
 
 /// What the stepper draws: the contact (red cubes on each shape, yellow normal arrow), and
 /// beside the bodies, at half size around `polytopeAnchor`, the EPA polytope of A - B in

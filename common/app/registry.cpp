@@ -5,6 +5,35 @@
 
 namespace stepwise {
 
+void SceneView::draw(const World&, DebugDraw&) const {}
+void SceneView::panel(World&, Panel&) {}
+
+namespace {
+
+class HookView : public SceneView {
+public:
+    HookView(SceneDrawHook draw, ScenePanelHook panel) : draw_(std::move(draw)), panel_(std::move(panel)) {}
+    void draw(const World& world, DebugDraw& draw) const override {
+        if (draw_) draw_(world, draw);
+    }
+    bool hasPanel() const override { return bool(panel_); }
+    void panel(World& world, Panel& panel) override {
+        if (panel_) panel_(world, panel);
+    }
+
+private:
+    SceneDrawHook draw_;
+    ScenePanelHook panel_;
+};
+
+}  // namespace
+
+SceneViewFactory statelessView(SceneDrawHook draw, ScenePanelHook panel) {
+    return [draw = std::move(draw), panel = std::move(panel)] {
+        return std::unique_ptr<SceneView>(std::make_unique<HookView>(draw, panel));
+    };
+}
+
 void Registry::addScene(SceneEntry entry) {
     if (findScene(entry.name)) throw std::logic_error("scene registered twice: " + entry.name);
     scenes_.push_back(std::move(entry));

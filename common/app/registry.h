@@ -21,17 +21,44 @@ namespace stepwise {
 class DebugDraw;
 class Panel;
 
-/// One demo scene (Jolt Samples style): a builder plus what the viewer should observe.
+/// A scene's demo-side companion (Jolt's Samples keep one test class per scene): extra
+/// drawing on top of the bodies and the scene's own controls. The demo makes a fresh view
+/// every time it loads the scene, so whatever a view remembers (the support map chosen, how
+/// many EPA expansions to show) starts over with the scene and never outlives it: no demo
+/// state hides in statics or in closures shared between loads.
+class SceneView {
+public:
+    virtual ~SceneView() = default;
+    /// Extra drawing (simplices, contacts, labels...). Const: drawing never changes the view,
+    /// so the demo may draw twice a frame (once to frame the camera, once to show).
+    virtual void draw(const World& world, DebugDraw& draw) const;
+    virtual bool hasPanel() const { return false; }
+    /// Per-scene controls in the demo panel; may change the world (sliders) and the view.
+    virtual void panel(World& world, Panel& panel);
+};
+
+using SceneDrawHook = std::function<void(const World&, DebugDraw&)>;
+using ScenePanelHook = std::function<void(World&, Panel&)>;
+using SceneViewFactory = std::function<std::unique_ptr<SceneView>()>;
+
+/// The factory for a view without memory: a draw hook and, optionally, a panel hook.
+SceneViewFactory statelessView(SceneDrawHook draw, ScenePanelHook panel = {});
+
+/// The factory for a view class with memory: `entry.makeView = viewOfType<EpaStepperView>();`
+template <class View>
+SceneViewFactory viewOfType() {
+    return [] { return std::unique_ptr<SceneView>(std::make_unique<View>()); };
+}
+
+/// One demo scene (Jolt Samples style): a builder, what the viewer should observe, and
+/// optionally the view the demo draws and controls it with.
 struct SceneEntry {
     std::string name;          // unique, kebab-case: "integrators-side-by-side"
     int chapter = 0;
     std::string category;      // groups scenes in the demo's picker
     std::string observe;       // one line: what to look for
     std::function<World()> build;
-    /// Optional extra drawing on top of the bodies (simplices, contacts, labels...).
-    std::function<void(const World&, DebugDraw&)> draw;
-    /// Optional per-scene controls in the demo panel.
-    std::function<void(World&, Panel&)> panel;
+    SceneViewFactory makeView; // empty: the bodies alone
 };
 
 /// The stages a chapter contributes, given the world they will run on (plan from the scene).

@@ -49,6 +49,11 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
     if (!world.joints.empty() && !pipeline.find("joints"))
         stats.warnings.push_back("the scene has " + std::to_string(world.joints.size()) +
                                  " joint(s) but no stage of this engine solves joints yet (chapter 8); they are ignored");
+    const int chapterInUse = std::min(options.maxChapter, registry.lastChapter());
+    for (const SettingUse& use : settingUses())
+        if (use.chapter > chapterInUse)
+            stats.unusedSettings.push_back(std::string(use.key) + " (chapter " + std::to_string(use.chapter) +
+                                           (use.chapter > registry.lastChapter() ? ", to come)" : ")"));
     const bool showProgress = options.progress && STEPWISE_ISATTY(STEPWISE_FILENO(stderr));
     std::map<std::string, double> stageTotals;
     for (long frame = 0; frame < options.frames; ++frame) {
@@ -91,6 +96,11 @@ void printSummary(std::ostream& out, const World& world, const RunStats& stats) 
     out << "energy     " << std::setprecision(6) << stats.initialEnergy.total() << " J -> " << stats.finalEnergy.total()
         << " J\n";
     out.unsetf(std::ios::floatfield);
+    if (!stats.unusedSettings.empty()) {
+        out << "not used   ";
+        for (size_t i = 0; i < stats.unusedSettings.size(); ++i) out << (i ? ", " : "") << stats.unusedSettings[i];
+        out << "\n";
+    }
     for (const std::string& warning : stats.warnings) out << "warning    " << warning << "\n";
 }
 

@@ -106,6 +106,14 @@ double median(std::vector<double> values) {
     return 0.5 * (lower + upper);
 }
 
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const double rank = std::ceil(std::clamp(p, 0.0, 1.0) * static_cast<double>(values.size()));
+    const std::size_t index = std::min(values.size() - 1, static_cast<std::size_t>(std::max(1.0, rank)) - 1);
+    return values[index];
+}
+
 std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {
     Json report;
     report["format"] = "stepwise-report";

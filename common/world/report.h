@@ -21,9 +21,14 @@ struct RunStats {
     Energy initialEnergy;
     Energy finalEnergy;
     std::vector<std::string> warnings;            // e.g. joints no stage handles yet
+    std::vector<std::string> unusedSettings;      // "ccd (chapter 7, to come)": no stage reads them yet
 };
 
+/// The middle of a sample (the mean of the two middle values for an even count); 0 when empty.
 double median(std::vector<double> values);
+
+/// The value below which a fraction p of the sample lies (nearest rank); 0 when empty.
+double percentile(std::vector<double> values, double p);
 
 /// The report as JSON text (2-space indent, keys in contract order).
 std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion);

@@ -2,6 +2,22 @@
 
 namespace stepwise {
 
+const std::vector<SettingUse>& settingUses() {
+    static const std::vector<SettingUse> uses = {
+        {"gravity", 1},        {"dt", 1},         {"substeps", 1},          {"integrator", 1},
+        {"gyroscopic", 1},     {"solver", 4},     {"solver_iterations", 4}, {"baumgarte", 4},
+        {"slop", 4},           {"restitution_threshold", 4},                {"broadphase", 5},
+        {"warm_starting", 6},  {"ccd", 7},
+    };
+    return uses;
+}
+
+int chapterReading(const std::string& key) {
+    for (const SettingUse& use : settingUses())
+        if (key == use.key) return use.chapter;
+    return 0;
+}
+
 // The spellings match the scene format (docs/scene-format.md).
 const char* toString(IntegratorKind kind) {
     switch (kind) {

@@ -5,6 +5,7 @@
 #include "math/math.h"
 
 #include <string>
+#include <vector>
 
 namespace stepwise {
 
@@ -29,6 +30,19 @@ struct Settings {
     GyroscopicMode gyroscopic = GyroscopicMode::Implicit;
     SolverKind solver = SolverKind::GaussSeidel;
 };
+
+/// A setting and the chapter whose stage first reads it. A scene file may set any of them, but
+/// the demo shows a control, and a run counts a setting, only from that chapter on; before,
+/// the demo and the run summary say "not used until chapter N".
+struct SettingUse {
+    const char* key;   // the scene-format key: "warm_starting"
+    int chapter;
+};
+
+/// Every setting, in scene-format order, with the chapter that reads it.
+const std::vector<SettingUse>& settingUses();
+/// The chapter that first reads `key` (0 for an unknown key).
+int chapterReading(const std::string& key);
 
 const char* toString(IntegratorKind kind);
 const char* toString(GyroscopicMode mode);

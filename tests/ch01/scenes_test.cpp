@@ -39,7 +39,7 @@ TEST_CASE("chapter 1 registers its scenes, pipeline and bench", "[ch01][scenes]"
         CHECK(entry->chapter == 1);
         CHECK_FALSE(entry->observe.empty());
         CHECK(entry->observe.find('\n') == std::string::npos);
-        REQUIRE(entry->draw);
+        REQUIRE(entry->makeView);
     }
     const BenchEntry* bench = registry.findBench("integrators");
     REQUIRE(bench);
@@ -63,7 +63,8 @@ TEST_CASE("every chapter 1 scene runs 10 s and stays finite, and its draw hook l
             CHECK(body.transform.rotation.coeffs().allFinite());
         }
         RecordingDraw draw;
-        entry.draw(world, draw);
+        REQUIRE(entry.makeView);
+        entry.makeView()->draw(world, draw);
         std::map<std::string, int> labels;
         for (const RecordingDraw::Command& command : draw.commands())
             if (command.kind == RecordingDraw::Kind::Text) ++labels[command.message];

@@ -59,7 +59,7 @@ double reference(const Vec3 points[4], int count) {
 }  // namespace
 
 TEST_CASE("closest point of every simplex size matches the reference", "[ch02][simplex]") {
-    PairRandom random(11);
+    Random random(11);
     int dropped[5] = {0, 0, 0, 0, 0};
     for (int count = 1; count <= 4; ++count) {
         for (int trial = 0; trial < 3000; ++trial) {

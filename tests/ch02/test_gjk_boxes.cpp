@@ -34,7 +34,7 @@ const char* modeName(SupportMode mode) { return mode == SupportMode::Extents ? "
 TEST_CASE("GJK agrees with the exact oracle on 10,000 random box pairs", "[ch02][gjk][oracle]") {
     const int pairCount = 10000;
     const double band = 1e-4;  // m: closer to contact than this either answer is acceptable
-    PairRandom random(0xC0FFEE02u);
+    Random random(0xC0FFEE02u);
     ModeTally tallies[2];
     int overlapping = 0;
     int disagreeModes = 0;

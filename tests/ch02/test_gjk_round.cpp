@@ -33,7 +33,7 @@ bool agrees(const ConvexProxy& a, const ConvexProxy& b, double exactSigned, doub
 }  // namespace
 
 TEST_CASE("sphere-sphere and sphere-box agree with the closed forms", "[ch02][gjk][round]") {
-    PairRandom random(31);
+    Random random(31);
     int mismatches = 0;
     for (int index = 0; index < 2000; ++index) {
         const Shape sphereA = Shape::sphere(Real(random.uniform(0.05, 1)));
@@ -64,7 +64,7 @@ TEST_CASE("sphere-sphere and sphere-box agree with the closed forms", "[ch02][gj
 }
 
 TEST_CASE("capsule-sphere agrees with the segment distance", "[ch02][gjk][round]") {
-    PairRandom random(32);
+    Random random(32);
     for (int index = 0; index < 1000; ++index) {
         const Shape capsule = Shape::capsule(Real(random.uniform(0.05, 0.5)), Real(random.uniform(0, 1)));
         const Shape sphere = Shape::sphere(Real(random.uniform(0.05, 0.5)));
@@ -79,7 +79,7 @@ TEST_CASE("capsule-sphere agrees with the segment distance", "[ch02][gjk][round]
 }
 
 TEST_CASE("a hull of a box's corners behaves exactly like the box", "[ch02][gjk][hull]") {
-    PairRandom random(33);
+    Random random(33);
     for (int index = 0; index < 500; ++index) {
         const BoxPair pair = randomBoxPair(random, 0.05, 2.0);
         std::vector<Vec3> corners;

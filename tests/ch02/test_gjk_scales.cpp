@@ -23,7 +23,7 @@ struct ScaleReport {
 // Random pairs of sizes [minSize, maxSize] around `origin`; agreement outside a band of 1e-4 of
 // the size, distances to distanceTolerance with the pair's own size.
 ScaleReport checkScale(std::uint32_t seed, int count, double minSize, double maxSize, const Vec3& origin) {
-    PairRandom random(seed);
+    Random random(seed);
     ScaleReport report;
     const double band = 1e-4 * maxSize / 2;
     for (int index = 0; index < count; ++index) {

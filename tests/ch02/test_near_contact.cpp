@@ -13,7 +13,7 @@ using namespace stepwise;
 using namespace stepwise::testing;
 
 TEST_CASE("near-contact pairs have the gap they were built with", "[ch02][oracle][near-contact]") {
-    PairRandom random(41);
+    Random random(41);
     for (double gap : nearContactGaps()) {
         for (int index = 0; index < 40; ++index) {
             const BoxPair pair = nearContactBoxPair(random, gap);

@@ -75,7 +75,7 @@ TEST_CASE("oracle: face, edge-edge and vertex configurations with known answers"
 }
 
 TEST_CASE("oracle: depth and distance are consistent with independent checks", "[ch02][oracle]") {
-    PairRandom random(2024);
+    Random random(2024);
     int separatedChecked = 0, overlapChecked = 0;
     for (int index = 0; index < 300; ++index) {
         const BoxPair pair = randomBoxPair(random, 0.05, 2.0);

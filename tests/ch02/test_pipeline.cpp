@@ -3,7 +3,7 @@
 
 #include "02_gjk/chapter.h"
 #include "02_gjk/scenes.h"
-#include "app/panel.h"
+#include "support/scripted_panel.h"
 #include "app/registry.h"
 #include "gjk_test_util.h"
 #include "world/debug_draw.h"
@@ -123,13 +123,14 @@ TEST_CASE("chapter 2 registers its scenes, pipeline and bench", "[ch02][registry
         const SceneEntry* entry = registry.findScene(name);
         REQUIRE(entry != nullptr);
         CHECK(entry->chapter == 2);
-        CHECK(entry->draw);
-        CHECK(entry->panel);
+        REQUIRE(entry->makeView);
+        const std::unique_ptr<SceneView> view = entry->makeView();
+        CHECK(view->hasPanel());
         World world = entry->build();
         Pipeline pipeline = registry.makePipeline(world, 2);
         CHECK(pipeline.find("narrowphase:gjk") != nullptr);
         RecordingDraw draw;
-        entry->draw(world, draw);
+        view->draw(world, draw);
         CHECK(draw.count(RecordingDraw::Kind::Text) >= 1);
     }
     const BenchEntry* bench = registry.findBench("gjk");
@@ -137,45 +138,16 @@ TEST_CASE("chapter 2 registers its scenes, pipeline and bench", "[ch02][registry
     CHECK(bench->chapter == 2);
 }
 
-namespace {
-
-// A panel that answers as a user would: moves one named slider, picks one combo entry.
-class ScriptedPanel final : public Panel {
-public:
-    std::string sliderToMove;
-    float sliderValue = 0;
-    int comboChoice = -1;
-    std::vector<std::string> lines;
-
-    void text(const std::string& line) override { lines.push_back(line); }
-    bool checkbox(const std::string&, bool&) override { return false; }
-    bool sliderFloat(const std::string& label, float& value, float, float) override {
-        if (label != sliderToMove) return false;
-        value = sliderValue;
-        return true;
-    }
-    bool sliderInt(const std::string&, int&, int, int) override { return false; }
-    bool button(const std::string&) override { return false; }
-    bool combo(const std::string&, int& index, const char* const*, int) override {
-        if (comboChoice < 0) return false;
-        index = comboChoice;
-        return true;
-    }
-};
-
-}  // namespace
-
 TEST_CASE("the panel moves body 1 and stops its spin", "[ch02][scenes]") {
     Registry registry;
     registerChapters(registry);
     const SceneEntry* entry = registry.findScene("gjk-two-boxes");
     REQUIRE(entry != nullptr);
     World world = entry->build();
-    ScriptedPanel panel;
-    panel.sliderToMove = "body 1 x (m)";
-    panel.sliderValue = 0.25f;
-    panel.comboChoice = 1;  // vertex-loop support
-    entry->panel(world, panel);
+    test::ScriptedPanel panel;
+    panel.floats = {{"body 1 x (m)", 0.25f}};
+    panel.ints = {{"box support map", 1}};  // vertex-loop support
+    entry->makeView()->panel(world, panel);
     CHECK(world.bodies[1].transform.position.x() == Approx(0.25));
     CHECK(world.motionOf(1)->angularVelocity.norm() == 0);
     REQUIRE_FALSE(panel.lines.empty());

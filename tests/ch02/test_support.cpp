@@ -23,7 +23,7 @@ std::vector<Vec3> boxCorners(const Vec3& h) {
 }  // namespace
 
 TEST_CASE("box support: extents and vertex loop give equally far points", "[ch02][support]") {
-    PairRandom random(7);
+    Random random(7);
     const Shape box = Shape::box(Vec3(Real(0.3), Real(1.2), Real(0.05)));
     for (int i = 0; i < 500; ++i) {
         Vec3 d = random.unitVector();
@@ -39,7 +39,7 @@ TEST_CASE("box support: extents and vertex loop give equally far points", "[ch02
 }
 
 TEST_CASE("sphere, capsule and hull supports", "[ch02][support]") {
-    PairRandom random(8);
+    Random random(8);
     const Shape sphere = Shape::sphere(Real(0.7));
     const Shape capsule = Shape::capsule(Real(0.2), Real(0.5));
     const std::vector<Vec3> points = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1),
@@ -76,7 +76,7 @@ TEST_CASE("supports of a zero, tiny or NaN direction are defined points", "[ch02
 }
 
 TEST_CASE("Minkowski support is the difference of the two supports", "[ch02][support]") {
-    PairRandom random(9);
+    Random random(9);
     const BoxPair pair = randomBoxPair(random, 0.1, 1.0, Vec3(Real(1e4), 0, Real(-1e4)));
     const testing::BoxPairProxies proxies(pair, SupportMode::Extents);
     for (int i = 0; i < 50; ++i) {

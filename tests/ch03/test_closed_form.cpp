@@ -11,7 +11,7 @@
 #include <vector>
 
 using namespace stepwise;
-using stepwise::test::Random;
+using stepwise::Random;
 using Vec3d = Eigen::Vector3d;
 
 namespace {
@@ -47,10 +47,10 @@ void checkAgainstCores(const ContactQuery& query, const Vec3d& coreA, double rad
 TEST_CASE("Sphere pairs are exact", "[ch03][closed_form]") {
     Random random(11u);
     for (int i = 0; i < 5000; ++i) {
-        const Real radiusA = Real(random.range(0.05, 1)), radiusB = Real(random.range(0.05, 1));
+        const Real radiusA = Real(random.uniform(0.05, 1)), radiusB = Real(random.uniform(0.05, 1));
         Transform poseA, poseB;
-        poseA.position = Vec3(Real(random.range(-3, 3)), Real(random.range(-3, 3)), Real(random.range(-3, 3)));
-        poseB.position = poseA.position + Real(random.range(0, 1.5 * (radiusA + radiusB))) * random.direction();
+        poseA.position = Vec3(Real(random.uniform(-3, 3)), Real(random.uniform(-3, 3)), Real(random.uniform(-3, 3)));
+        poseB.position = poseA.position + Real(random.uniform(0, 1.5 * (radiusA + radiusB))) * random.unitVector();
         const ContactQuery query = collideShapes(Shape::sphere(radiusA), poseA, Shape::sphere(radiusB), poseB);
         CHECK(std::string(query.routine) == "sphere_sphere");
         CHECK(query.gjkIterations == 0);
@@ -75,12 +75,12 @@ TEST_CASE("Box-sphere matches the distance to the box, inside and out, in either
     Random random(12u);
     int inside = 0;
     for (int i = 0; i < 5000; ++i) {
-        const Vec3 half(Real(random.range(0.1, 1)), Real(random.range(0.1, 1)), Real(random.range(0.1, 1)));
+        const Vec3 half(Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1)));
         Transform box;
         box.rotation = random.rotation();
-        const Real radius = Real(random.range(0.05, 1));
+        const Real radius = Real(random.uniform(0.05, 1));
         Transform sphere;
-        sphere.position = Real(random.range(0, half.norm() + 1.2 * radius)) * random.direction();
+        sphere.position = Real(random.uniform(0, half.norm() + 1.2 * radius)) * random.unitVector();
         const oracle::OracleBox oracleBox = oracle::makeOracleBox(half, box);
         const Vec3d center = sphere.position.cast<double>();
         const Vec3d local = oracleBox.axes.transpose() * (center - oracleBox.center);
@@ -111,12 +111,12 @@ TEST_CASE("Box-sphere matches the distance to the box, inside and out, in either
 TEST_CASE("Capsule pairs match segment distances", "[ch03][closed_form]") {
     Random random(13u);
     for (int i = 0; i < 5000; ++i) {
-        const Real radiusA = Real(random.range(0.05, 0.6)), radiusB = Real(random.range(0.05, 0.6));
-        const Real halfA = Real(random.range(0, 1)), halfB = Real(random.range(0, 1));
+        const Real radiusA = Real(random.uniform(0.05, 0.6)), radiusB = Real(random.uniform(0.05, 0.6));
+        const Real halfA = Real(random.uniform(0, 1)), halfB = Real(random.uniform(0, 1));
         Transform poseA, poseB;
         poseA.rotation = random.rotation();
         poseB.rotation = random.rotation();
-        poseB.position = Real(random.range(0, 1.2 * (radiusA + radiusB + halfA + halfB))) * random.direction();
+        poseB.position = Real(random.uniform(0, 1.2 * (radiusA + radiusB + halfA + halfB))) * random.unitVector();
         const auto endpoints = [](const Transform& pose, Real half, Vec3d& p, Vec3d& q) {
             p = pose.apply(Vec3(0, -half, 0)).cast<double>();
             q = pose.apply(Vec3(0, half, 0)).cast<double>();
@@ -169,14 +169,14 @@ TEST_CASE("GJK + EPA agrees with the closed forms on curved shapes", "[ch03][clo
     for (int attempt = 0; errors.size() < 3000; ++attempt) {
         // Alternate sphere-box and capsule-capsule (capsule-box has no closed form to compare).
         const bool sphereBox = attempt % 2 == 0;
-        const Shape a = sphereBox ? Shape::sphere(Real(random.range(0.1, 1)))
-                                  : Shape::capsule(Real(random.range(0.1, 0.5)), Real(random.range(0.1, 1)));
-        const Shape b = sphereBox ? Shape::box(Vec3(Real(random.range(0.1, 1)), Real(random.range(0.1, 1)), Real(random.range(0.1, 1))))
-                                  : Shape::capsule(Real(random.range(0.1, 0.5)), Real(random.range(0.1, 1)));
+        const Shape a = sphereBox ? Shape::sphere(Real(random.uniform(0.1, 1)))
+                                  : Shape::capsule(Real(random.uniform(0.1, 0.5)), Real(random.uniform(0.1, 1)));
+        const Shape b = sphereBox ? Shape::box(Vec3(Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1))))
+                                  : Shape::capsule(Real(random.uniform(0.1, 0.5)), Real(random.uniform(0.1, 1)));
         Transform poseA, poseB;
         poseA.rotation = random.rotation();
         poseB.rotation = random.rotation();
-        poseB.position = Real(random.range(0, boundingRadius(a) + boundingRadius(b))) * random.direction();
+        poseB.position = Real(random.uniform(0, boundingRadius(a) + boundingRadius(b))) * random.unitVector();
         const ContactQuery exact = collideShapes(a, poseA, b, poseB);
         if (!exact.intersect || exact.depth < Real(0.02) * std::min(a.radius, b.type == ShapeType::Box ? a.radius : b.radius)) {
             continue;  // a relative error means little at a depth of a few ulps
@@ -188,10 +188,10 @@ TEST_CASE("GJK + EPA agrees with the closed forms on curved shapes", "[ch03][clo
         errors.push_back(std::abs(double(viaEpa.depth - exact.depth)) / double(exact.depth));
     }
     std::printf("curved pairs through EPA: %zu, depth rel. error p50 %.2e p95 %.2e max %.2e\n", errors.size(),
-                test::percentile(errors, 0.5), test::percentile(errors, 0.95), test::percentile(errors, 1.0));
+                percentile(errors, 0.5), percentile(errors, 0.95), percentile(errors, 1.0));
     CHECK(routed == static_cast<int>(errors.size()));
-    CHECK(test::percentile(errors, 0.95) <= 1e-3);
-    CHECK(test::percentile(errors, 1.0) <= 2e-2);
+    CHECK(percentile(errors, 0.95) <= 1e-3);
+    CHECK(percentile(errors, 1.0) <= 2e-2);
 }
 
 TEST_CASE("The narrowphase knows which pairs have closed forms", "[ch03][closed_form]") {

@@ -10,7 +10,7 @@
 #include <vector>
 
 using namespace stepwise;
-using stepwise::test::Random;
+using stepwise::Random;
 
 namespace {
 
@@ -28,13 +28,13 @@ std::vector<BoxPair> makeOverlappingBoxes(unsigned seed, int count, double minDe
     std::vector<BoxPair> pairs;
     while (static_cast<int>(pairs.size()) < count) {
         BoxPair pair;
-        pair.halfA = Vec3(Real(random.range(0.05, 1)), Real(random.range(0.05, 1)), Real(random.range(0.05, 1)));
-        pair.halfB = Vec3(Real(random.range(0.05, 1)), Real(random.range(0.05, 1)), Real(random.range(0.05, 1)));
-        pair.poseA.position = Vec3(Real(random.range(-2, 2)), Real(random.range(-2, 2)), Real(random.range(-2, 2)));
+        pair.halfA = Vec3(Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)));
+        pair.halfB = Vec3(Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)));
+        pair.poseA.position = Vec3(Real(random.uniform(-2, 2)), Real(random.uniform(-2, 2)), Real(random.uniform(-2, 2)));
         pair.poseA.rotation = random.rotation();
         pair.poseB.rotation = random.rotation();
         const double reach = pair.halfA.norm() + pair.halfB.norm();
-        pair.poseB.position = pair.poseA.position + Real(random.range(0, reach)) * random.direction();
+        pair.poseB.position = pair.poseA.position + Real(random.uniform(0, reach)) * random.unitVector();
         pair.sat = oracle::boxSat(oracle::makeOracleBox(pair.halfA, pair.poseA), oracle::makeOracleBox(pair.halfB, pair.poseB));
         const double smallest = std::min(pair.halfA.minCoeff(), pair.halfB.minCoeff());
         if (pair.sat.overlap && pair.sat.depth >= minDepthFraction * smallest) pairs.push_back(pair);
@@ -83,9 +83,9 @@ Errors measure(const std::vector<BoxPair>& pairs, SupportMode mode) {
 void print(const char* label, const Errors& errors) {
     std::printf("%s: %zu pairs, depth rel. error p50 %.2e p95 %.2e max %.2e; normal p95 %.3g deg max %.3g deg; "
                 "surface %.2e m; separation %.2e m; overlap along normal %.2e; failures %d\n",
-                label, errors.depth.size(), test::percentile(errors.depth, 0.5), test::percentile(errors.depth, 0.95),
-                test::percentile(errors.depth, 1.0), test::percentile(errors.angle, 0.95),
-                test::percentile(errors.angle, 1.0), errors.worstSurface, errors.worstSeparation,
+                label, errors.depth.size(), percentile(errors.depth, 0.5), percentile(errors.depth, 0.95),
+                percentile(errors.depth, 1.0), percentile(errors.angle, 0.95),
+                percentile(errors.angle, 1.0), errors.worstSurface, errors.worstSeparation,
                 errors.worstAxisOverlap, errors.failures);
 }
 
@@ -97,9 +97,9 @@ TEST_CASE("EPA matches the exact SAT depth and axis of 20,000 random overlapping
     print("boxes (extents support)", errors);
     // [ch03-accuracy]
     CHECK(errors.failures == 0);
-    CHECK(test::percentile(errors.depth, 0.95) <= 1e-5);
-    CHECK(test::percentile(errors.depth, 1.0) <= 1e-3);
-    CHECK(test::percentile(errors.angle, 0.95) <= 0.1);
+    CHECK(percentile(errors.depth, 0.95) <= 1e-5);
+    CHECK(percentile(errors.depth, 1.0) <= 1e-3);
+    CHECK(percentile(errors.angle, 0.95) <= 0.1);
     CHECK(errors.worstSurface <= 1e-4);
     CHECK(errors.worstSeparation <= 1e-4);
     CHECK(errors.worstAxisOverlap <= 1e-3);
@@ -111,9 +111,9 @@ TEST_CASE("EPA gives the same answers with vertex support", "[ch03][epa]") {
     const Errors errors = measure(pairs, SupportMode::Vertices);
     print("boxes (vertex support)", errors);
     CHECK(errors.failures == 0);
-    CHECK(test::percentile(errors.depth, 0.95) <= 1e-5);
-    CHECK(test::percentile(errors.depth, 1.0) <= 1e-3);
-    CHECK(test::percentile(errors.angle, 0.95) <= 0.1);
+    CHECK(percentile(errors.depth, 0.95) <= 1e-5);
+    CHECK(percentile(errors.depth, 1.0) <= 1e-3);
+    CHECK(percentile(errors.angle, 0.95) <= 0.1);
     CHECK(errors.worstSurface <= 1e-4);
 }
 

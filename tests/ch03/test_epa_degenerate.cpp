@@ -11,7 +11,7 @@
 #include <string>
 
 using namespace stepwise;
-using stepwise::test::Random;
+using stepwise::Random;
 
 namespace {
 
@@ -58,7 +58,7 @@ TEST_CASE("A box deep inside another leaves through the nearest face", "[ch03][e
     const Vec3 small(Real(0.1), Real(0.2), Real(0.15));
     Random random(21u);
     for (int i = 0; i < 200; ++i) {
-        const Vec3 inside(Real(random.range(-1.8, 1.8)), Real(random.range(-1.2, 1.2)), Real(random.range(-0.8, 0.8)));
+        const Vec3 inside(Real(random.uniform(-1.8, 1.8)), Real(random.uniform(-1.2, 1.2)), Real(random.uniform(-0.8, 0.8)));
         checkBoxes(big, at(Vec3::Zero()), small, at(inside, random.rotation()));
         checkBoxes(small, at(inside, random.rotation()), big, at(Vec3::Zero()));
     }
@@ -70,7 +70,7 @@ TEST_CASE("A box deep inside another leaves through the nearest face", "[ch03][e
 TEST_CASE("Identical coincident boxes: every axis ties", "[ch03][epa][degenerate]") {
     Random random(22u);
     for (int i = 0; i < 50; ++i) {
-        const Transform pose = at(Vec3(Real(random.range(-5, 5)), 0, 0), random.rotation());
+        const Transform pose = at(Vec3(Real(random.uniform(-5, 5)), 0, 0), random.rotation());
         const ContactQuery cube = checkBoxes(Vec3::Ones(), pose, Vec3::Ones(), pose);
         CHECK(cube.depth == Approx(2).epsilon(1e-5));
     }
@@ -113,10 +113,10 @@ TEST_CASE("Tiny and huge boxes keep their relative accuracy", "[ch03][epa][degen
     Random random(23u);
     for (double scale : {1e-3, 1.0, 1e3}) {
         for (int i = 0; i < 100; ++i) {
-            const Vec3 halfA = Real(scale) * Vec3(Real(random.range(0.2, 1)), Real(random.range(0.2, 1)), Real(random.range(0.2, 1)));
-            const Vec3 halfB = Real(scale) * Vec3(Real(random.range(0.2, 1)), Real(random.range(0.2, 1)), Real(random.range(0.2, 1)));
-            const Transform poseA = at(Real(scale) * Vec3(Real(random.range(-3, 3)), 0, 0), random.rotation());
-            const Transform poseB = at(poseA.position + Real(random.range(0, 0.7) * scale) * random.direction(), random.rotation());
+            const Vec3 halfA = Real(scale) * Vec3(Real(random.uniform(0.2, 1)), Real(random.uniform(0.2, 1)), Real(random.uniform(0.2, 1)));
+            const Vec3 halfB = Real(scale) * Vec3(Real(random.uniform(0.2, 1)), Real(random.uniform(0.2, 1)), Real(random.uniform(0.2, 1)));
+            const Transform poseA = at(Real(scale) * Vec3(Real(random.uniform(-3, 3)), 0, 0), random.rotation());
+            const Transform poseB = at(poseA.position + Real(random.uniform(0, 0.7) * scale) * random.unitVector(), random.rotation());
             checkBoxes(halfA, poseA, halfB, poseB, 1e-3);
         }
     }
@@ -167,13 +167,13 @@ TEST_CASE("Random nasty poses: right-angle turns, flush offsets, mixed sizes", "
     int checked = 0;
     for (int i = 0; i < 2000; ++i) {
         const auto quarterTurns = [&] {
-            return (about(Vec3::UnitX(), Real(kPi / 2 * int(random.range(0, 4)))) *
-                    about(Vec3::UnitY(), Real(kPi / 2 * int(random.range(0, 4))))).normalized();
+            return (about(Vec3::UnitX(), Real(kPi / 2 * int(random.uniform(0, 4)))) *
+                    about(Vec3::UnitY(), Real(kPi / 2 * int(random.uniform(0, 4))))).normalized();
         };
-        const auto gridSize = [&] { return Real(0.25 * (1 + int(random.range(0, 4)))); };
+        const auto gridSize = [&] { return Real(0.25 * (1 + int(random.uniform(0, 4)))); };
         const Vec3 halfA(gridSize(), gridSize(), gridSize()), halfB(gridSize(), gridSize(), gridSize());
-        const Vec3 offset(Real(0.125 * int(random.range(-8, 9))), Real(0.125 * int(random.range(-8, 9))),
-                          Real(0.125 * int(random.range(-8, 9))));
+        const Vec3 offset(Real(0.125 * int(random.uniform(-8, 9))), Real(0.125 * int(random.uniform(-8, 9))),
+                          Real(0.125 * int(random.uniform(-8, 9))));
         const Transform poseA = at(Vec3::Zero(), quarterTurns()), poseB = at(offset, quarterTurns());
         const oracle::SatResult sat = oracle::boxSat(oracle::makeOracleBox(halfA, poseA), oracle::makeOracleBox(halfB, poseB));
         if (!sat.overlap || sat.depth < 1e-3) {

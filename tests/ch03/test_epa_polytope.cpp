@@ -8,7 +8,7 @@
 #include <cmath>
 
 using namespace stepwise;
-using stepwise::test::Random;
+using stepwise::Random;
 
 namespace {
 
@@ -19,13 +19,13 @@ struct Case {
 
 Case randomOverlap(Random& random, int kind) {
     Case c;
-    const Vec3 half(Real(random.range(0.1, 1)), Real(random.range(0.1, 1)), Real(random.range(0.1, 1)));
+    const Vec3 half(Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1)));
     c.a = Shape::box(half);
-    c.b = kind == 0 ? Shape::box(half.reverse()) : kind == 1 ? Shape::sphere(Real(random.range(0.2, 1)))
-                                                 : Shape::capsule(Real(random.range(0.1, 0.5)), Real(random.range(0.1, 1)));
+    c.b = kind == 0 ? Shape::box(half.reverse()) : kind == 1 ? Shape::sphere(Real(random.uniform(0.2, 1)))
+                                                 : Shape::capsule(Real(random.uniform(0.1, 0.5)), Real(random.uniform(0.1, 1)));
     c.poseA.rotation = random.rotation();
     c.poseB.rotation = random.rotation();
-    c.poseB.position = Real(random.range(0, 0.6)) * random.direction();
+    c.poseB.position = Real(random.uniform(0, 0.6)) * random.unitVector();
     return c;
 }
 

@@ -3,7 +3,7 @@
 #include "03_epa/bench_epa.h"
 #include "03_epa/chapter.h"
 #include "03_epa/scenes.h"
-#include "app/panel.h"
+#include "support/scripted_panel.h"
 #include "app/registry.h"
 #include "support/fixture.h"
 #include "world/debug_draw.h"
@@ -31,29 +31,6 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-/// A panel that presses every button once and records what it was shown.
-class ScriptedPanel final : public Panel {
-public:
-    std::vector<std::string> lines;
-    int sliders = 0, buttons = 0, checkboxes = 0;
-    void text(const std::string& line) override { lines.push_back(line); }
-    bool checkbox(const std::string&, bool& value) override {
-        ++checkboxes;
-        value = !value;
-        return true;
-    }
-    bool sliderFloat(const std::string&, float&, float, float) override { return false; }
-    bool sliderInt(const std::string&, int& value, int, int max) override {
-        ++sliders;
-        value = std::min(2, max);
-        return true;
-    }
-    bool button(const std::string&) override {
-        ++buttons;
-        return true;
-    }
-    bool combo(const std::string&, int&, const char* const*, int) override { return false; }
-};
 
 }  // namespace
 
@@ -162,14 +139,26 @@ TEST_CASE("The EPA stepper draws the polytope, its closest face and the contact"
     CHECK(first.depth <= converged.depth + Real(1e-6));
 
     // The panel drives the step count; the draw hook follows it.
-    ScriptedPanel panel;
-    scene->panel(world, panel);
+    test::ScriptedPanel panel;
+    panel.ints = {{"EPA expansions", 2}};
+    panel.pressEveryButton = true;   // step, then reset
+    panel.flipEveryCheckbox = true;  // run to convergence; stop turning box b
+    const std::unique_ptr<SceneView> view = scene->makeView();
+    view->panel(world, panel);
     CHECK(panel.sliders == 1);
     CHECK(panel.buttons == 2);
     CHECK(panel.lines.size() >= 2);
     draw.clear();
-    scene->draw(world, draw);
+    view->draw(world, draw);
     CHECK(draw.count(RecordingDraw::Kind::Triangle) == 1);
+    REQUIRE_FALSE(panel.lines.empty());
+    CHECK(panel.lines[0].find("converged") != std::string::npos);
+
+    // The demo makes a view afresh at every load: nothing the first one was told carries over.
+    test::ScriptedPanel freshPanel;
+    scene->makeView()->panel(world, freshPanel);
+    REQUIRE_FALSE(freshPanel.lines.empty());
+    CHECK(freshPanel.lines[0].find("after 0 expansions") != std::string::npos);
 }
 
 TEST_CASE("The contact gallery runs through the chapter 3 pipeline with finite contacts", "[ch03][scenes]") {
@@ -191,7 +180,7 @@ TEST_CASE("The contact gallery runs through the chapter 3 pipeline with finite c
     });
     CHECK(mostContacts >= 5);
     RecordingDraw draw;
-    scene->draw(world, draw);
+    scene->makeView()->draw(world, draw);
     CHECK(draw.count(RecordingDraw::Kind::Text) == 6);
 }
 

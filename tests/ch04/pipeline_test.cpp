@@ -4,7 +4,7 @@
 #include "04_pgs/chapter.h"
 #include "04_pgs/contact_constraints.h"
 #include "04_pgs/scenes.h"
-#include "app/panel.h"
+#include "support/scripted_panel.h"
 #include "app/registry.h"
 #include "support/fixture.h"
 #include "world/debug_draw.h"
@@ -68,9 +68,11 @@ TEST_CASE("every chapter 4 scene runs finite, keeps its bodies above the ground,
         Pipeline pipeline = registry.makePipeline(world, 4);
         int arrows = 0;
         RecordingDraw draw;
+        REQUIRE(entry.makeView);
+        const std::unique_ptr<SceneView> view = entry.makeView();
         test::simulate(world, pipeline, 2, [&](const World& w) {
             draw.clear();
-            entry.draw(w, draw);
+            view->draw(w, draw);
             arrows = std::max(arrows, draw.count(RecordingDraw::Kind::Arrow));
         });
         for (const Motion& motion : world.motions) {
@@ -78,7 +80,7 @@ TEST_CASE("every chapter 4 scene runs finite, keeps its bodies above the ground,
             CHECK(world.bodies[motion.bodyIndex].transform.position.y() > -0.1);  // nothing fell through
         }
         CHECK(arrows > 0);
-        REQUIRE(entry.panel);
+        CHECK(view->hasPanel());
     }
     CHECK(scenes >= 4);
 }
@@ -115,56 +117,16 @@ TEST_CASE("bench solver measures: more iterations give less residual and Gauss-S
     CHECK(runSolverBench(bad) == 2);
 }
 
-namespace {
-
-// A panel that records the controls it is shown and "moves" the ones a test names.
-class ScriptedPanel final : public Panel {
-public:
-    std::map<std::string, float> floats;
-    std::map<std::string, int> ints;
-    std::vector<std::string> labels;
-
-    void text(const std::string&) override {}
-    bool checkbox(const std::string& label, bool&) override { return seen(label); }
-    bool sliderFloat(const std::string& label, float& value, float, float) override {
-        seen(label);
-        if (!floats.count(label)) return false;
-        value = floats[label];
-        return true;
-    }
-    bool sliderInt(const std::string& label, int& value, int, int) override {
-        seen(label);
-        if (!ints.count(label)) return false;
-        value = ints[label];
-        return true;
-    }
-    bool button(const std::string& label) override { return seen(label); }
-    bool combo(const std::string& label, int& index, const char* const*, int) override {
-        seen(label);
-        if (!ints.count(label)) return false;
-        index = ints[label];
-        return true;
-    }
-
-private:
-    bool seen(const std::string& label) {
-        labels.push_back(label);
-        return false;
-    }
-};
-
-}  // namespace
-
 TEST_CASE("the solver panel sets iterations, beta, slop, restitution, friction and the solver", "[ch04][pipeline]") {
     Registry registry;
     registerChapters(registry);
     const SceneEntry* entry = registry.findScene("pgs-drop");
     REQUIRE(entry);
     World world = entry->build();
-    ScriptedPanel panel;
+    test::ScriptedPanel panel;
     panel.ints = {{"iterations", 3}, {"substeps", 2}, {"solver", 1}};
     panel.floats = {{"Baumgarte beta", 0.5f}, {"slop (mm)", 10.0f}, {"restitution", 0.7f}, {"friction", 0.2f}};
-    entry->panel(world, panel);
+    entry->makeView()->panel(world, panel);
     CHECK(world.settings.solverIterations == 3);
     CHECK(world.settings.substeps == 2);
     CHECK(world.settings.solver == SolverKind::Jacobi);

@@ -1,0 +1,51 @@
+#pragma once
+// The engine's one seeded random source, for scenes, tests and benches. std::mt19937 is specified
+// bit for bit by the standard; the mappings below are ours (std::uniform_real_distribution
+// differs between standard libraries), so every platform draws the same numbers.
+
+#include "math/math.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+namespace stepwise {
+
+class Random {
+public:
+    explicit Random(std::uint32_t seed) : engine_(seed) {}
+
+    /// Uniform in [0, 1) with 32 random bits.
+    double uniform() { return static_cast<double>(engine_()) * (1.0 / 4294967296.0); }
+    double uniform(double low, double high) { return low + (high - low) * uniform(); }
+
+    // [common-uniform-rotation]
+    /// Uniform over rotations (Shoemake, "Uniform random rotations", Graphics Gems III, 1992):
+    /// a unit quaternion from three uniform numbers, as two circles weighted by sqrt(1 - u1)
+    /// and sqrt(u1).
+    Quat rotation() {
+        const double u1 = uniform();
+        const double u2 = uniform() * 2 * 3.14159265358979323846;
+        const double u3 = uniform() * 2 * 3.14159265358979323846;
+        const double a = std::sqrt(1 - u1);
+        const double b = std::sqrt(u1);
+        Quat q(Real(b * std::cos(u3)), Real(a * std::sin(u2)), Real(a * std::cos(u2)), Real(b * std::sin(u3)));
+        q.normalize();
+        return q;
+    }
+    // [common-uniform-rotation]
+
+    /// Uniform over the unit sphere (Archimedes: z is uniform on [-1, 1]).
+    Vec3 unitVector() {
+        const double z = uniform(-1, 1);
+        const double angle = uniform() * 2 * 3.14159265358979323846;
+        const double r = std::sqrt(std::max(0.0, 1 - z * z));
+        return Vec3(Real(r * std::cos(angle)), Real(r * std::sin(angle)), Real(z));
+    }
+
+private:
+    std::mt19937 engine_;
+};
+
+}  // namespace stepwise
