@@ -318,7 +318,7 @@ void ratiosTable(bool quick) {
                 "heavier by the ratio; %ld frames, %s build. Sink: how far the top ball pressed into the lower one\n"
                 "beyond the slop it started at, while on it; drift: how far the top ball moved; stands: still on\n"
                 "the lower ball at the end, within 1 cm.\n\n", frames, precision());
-    std::printf("%-10s %12s %12s %12s %14s %8s\n", "top:lower", "max sink m", "drift m", "end speed m/s", "finite",
+    std::printf("%-10s %12s %12s %14s %8s %8s\n", "top:lower", "max sink m", "drift m", "end speed m/s", "finite",
                 "stands");
     for (double ratio : {1.0, 10.0, 100.0, 1000.0}) {
         World world;
@@ -335,7 +335,7 @@ void ratiosTable(bool quick) {
         const int top = addBody(world, ball);
         const Outcome outcome = settle(world, top, lower, 1 - double(slop), frames);
         const bool stands = outcome.finite && std::abs(outcome.endSink) < 0.01;
-        std::printf("%-10s %12.3g %12.3g %12.3g %14.3g %8s\n", ("1:" + std::to_string(int(ratio))).c_str(), outcome.sink,
+        std::printf("%-10s %12.3g %12.3g %14.3g %8s %8s\n", ("1:" + std::to_string(int(ratio))).c_str(), outcome.sink,
                     outcome.drift, outcome.speed, outcome.finite ? "yes" : "no", stands ? "yes" : "no");
     }
 }
