@@ -35,7 +35,8 @@ const char* precision() { return sizeof(Real) == sizeof(double) ? "double" : "fl
 
 Quat randomRotation(std::mt19937& random) {
     std::normal_distribution<double> gauss;
-    Eigen::Vector4d q(gauss(random), gauss(random), gauss(random), gauss(random));
+    Eigen::Vector4d q;
+    for (int i = 0; i < 4; ++i) q[i] = gauss(random);  // one draw per statement: argument order is unspecified
     q.normalize();
     return Quat(Real(q.w()), Real(q.x()), Real(q.y()), Real(q.z())).normalized();
 }
@@ -83,9 +84,10 @@ void narrowphaseTable(bool quick) {
             // is turned at random and moved `distance` from the origin.
             const Quat turn = trial == 0 ? Quat::Identity() : randomRotation(random);
             std::uniform_real_distribution<double> slide(-0.5, 0.5);
-            const Eigen::Vector3d offset(slide(random) * double(pair.halfA.x()), 
-                                         double(pair.halfA.y() + pair.halfB.y()) - pair.overlap,
-                                         slide(random) * double(pair.halfA.z()));
+            const double slideX = slide(random);  // one draw per statement: argument order is unspecified
+            const double slideZ = slide(random);
+            const Eigen::Vector3d offset(slideX * double(pair.halfA.x()), double(pair.halfA.y() + pair.halfB.y()) - pair.overlap,
+                                         slideZ * double(pair.halfA.z()));
             const Eigen::Vector3d away = pair.distance * Eigen::Vector3d(0.6, 0.48, 0.64);
             Transform poseA, poseB;
             poseA.position = away.cast<Real>();
@@ -231,9 +233,14 @@ World mixedScene() {
                     : kind == 1 ? Shape::capsule(Real(0.2), Real(0.3 + 0.3 * unit(random)))
                                 : Shape::convex({Vec3(0, 0, 0), Vec3(Real(0.6), 0, 0), Vec3(0, Real(0.6), 0),
                                                  Vec3(0, 0, Real(0.6)), Vec3(Real(0.4), Real(0.4), Real(0.4))});
-        def.transform.position = Vec3(Real(-5 + 10 * unit(random)), Real(2 + 4 * unit(random)), Real(-1 + 5 * unit(random)));
+        const double x = -5 + 10 * unit(random);  // one draw per statement: argument order is unspecified
+        const double y = 2 + 4 * unit(random);
+        const double z = -1 + 5 * unit(random);
+        def.transform.position = Vec3(Real(x), Real(y), Real(z));
         def.transform.rotation = randomRotation(random);
-        def.linearVelocity = Vec3(Real(10 * unit(random) - 5), 0, Real(10 * unit(random) - 5));
+        const double vx = 10 * unit(random) - 5;
+        const double vz = 10 * unit(random) - 5;
+        def.linearVelocity = Vec3(Real(vx), 0, Real(vz));
         def.material.restitution = Real(0.3);
         addBody(world, def);
     }

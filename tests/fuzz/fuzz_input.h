@@ -5,6 +5,8 @@
 // input, even an empty one, is a complete test case. (Clang's FuzzedDataProvider does the same;
 // this one also builds with GCC, where the targets replay their corpora as plain tests.)
 
+#include <Eigen/Core>
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -30,6 +32,15 @@ public:
     double uniform(double low, double high) { return low + (high - low) * (bits32() / 4294967295.0); }
     /// A positive number between low and high spread evenly over the decades between them.
     double logUniform(double low, double high) { return std::exp(uniform(std::log(low), std::log(high))); }
+    /// Three numbers in [low, high], read x, y, z in that order. (Never write
+    /// Vec3(input.uniform(..), input.uniform(..), ..): a call's arguments are evaluated in an
+    /// unspecified order, so GCC and Clang would read the same bytes into different axes.)
+    Eigen::Vector3d vector(double low, double high) {
+        const double x = uniform(low, high);
+        const double y = uniform(low, high);
+        const double z = uniform(low, high);
+        return Eigen::Vector3d(x, y, z);
+    }
     bool empty() const { return position_ >= size_; }
 
 private:

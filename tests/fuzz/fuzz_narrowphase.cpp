@@ -90,7 +90,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // A somewhere within 100 m of the origin; B at a distance that makes overlap and separation
     // both common: up to 1.5 times the sum of the bounding radii, in a random direction.
     Transform poseA, poseB;
-    poseA.position = Vec3(Real(input.uniform(-100, 100)), Real(input.uniform(-100, 100)), Real(input.uniform(-100, 100)));
+    poseA.position = input.vector(-100, 100).cast<Real>();
     poseA.rotation = randomRotation(input);
     const Real reach = boundingRadius(*shapeA) + boundingRadius(*shapeB);
     Vec3 direction = randomRotation(input) * Vec3::UnitX();

@@ -96,11 +96,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const Real radius = boundingRadius(def.shape);
         // Side by side without overlap at the start, from resting on the ground to 3 m above it.
         x += double(radius) + 0.05;
-        def.transform.position = Vec3(Real(x), radius + Real(input.uniform(0, 3)), Real(input.uniform(-1, 1)));
+        const Real height = Real(input.uniform(0, 3));
+        const Real depth = Real(input.uniform(-1, 1));
+        def.transform.position = Vec3(Real(x), radius + height, depth);
         x += double(radius) + 0.05;
         def.transform.rotation = randomRotation(input);
-        def.linearVelocity = Vec3(Real(input.uniform(-10, 10)), Real(input.uniform(-10, 10)), Real(input.uniform(-10, 10)));
-        def.angularVelocity = Vec3(Real(input.uniform(-10, 10)), Real(input.uniform(-10, 10)), Real(input.uniform(-10, 10)));
+        def.linearVelocity = input.vector(-10, 10).cast<Real>();
+        def.angularVelocity = input.vector(-10, 10).cast<Real>();
         def.density = Real(input.logUniform(10, 10000));
         def.material.friction = Real(input.uniform(0, 1.2));
         def.material.restitution = Real(input.uniform(0, 1));
@@ -120,8 +122,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         joint.bodyA = input.integer(0, int(world.bodies.size()) - 1);
         joint.bodyB = input.integer(0, int(world.bodies.size()) - 1);
         if (joint.bodyA == joint.bodyB) continue;
-        joint.localAnchorA = Vec3(Real(input.uniform(-1, 1)), Real(input.uniform(-1, 1)), Real(input.uniform(-1, 1)));
-        joint.localAnchorB = Vec3(Real(input.uniform(-1, 1)), Real(input.uniform(-1, 1)), Real(input.uniform(-1, 1)));
+        joint.localAnchorA = input.vector(-1, 1).cast<Real>();
+        joint.localAnchorB = input.vector(-1, 1).cast<Real>();
         joint.axis = randomRotation(input) * Vec3::UnitY();
         joint.coneAngle = Real(input.uniform(0, 3));
         world.joints.push_back(joint);

@@ -11,7 +11,7 @@ namespace {
 using Vec3d = Eigen::Vector3d;
 
 Vec3d randomPointInCube(FuzzInput& input) {
-    return Vec3d(input.uniform(-1, 1), input.uniform(-1, 1), input.uniform(-1, 1));
+    return input.vector(-1, 1);
 }
 
 /// 4 to 64 points in one of the hard families a hull builder and GJK/EPA meet in practice.
@@ -48,7 +48,8 @@ std::vector<Vec3d> hullPoints(FuzzInput& input) {
         for (int i = 0; i < count; ++i) {
             Vec3d point = randomPointInCube(input);
             const int axis = input.integer(0, 2);
-            point[axis] = (input.flag() ? 1 : -1) * (1 + offPlane * input.uniform(-1, 1));
+            const double side = input.flag() ? 1 : -1;
+            point[axis] = side * (1 + offPlane * input.uniform(-1, 1));
             points.push_back(point);
         }
         break;
@@ -67,7 +68,8 @@ std::vector<Vec3d> hullPoints(FuzzInput& input) {
 }  // namespace
 
 Quat randomRotation(FuzzInput& input) {
-    Eigen::Vector4d q(input.uniform(-1, 1), input.uniform(-1, 1), input.uniform(-1, 1), input.uniform(-1, 1));
+    const Eigen::Vector3d xyz = input.vector(-1, 1);
+    Eigen::Vector4d q(xyz.x(), xyz.y(), xyz.z(), input.uniform(-1, 1));
     if (q.norm() < 1e-3) q = Eigen::Vector4d(0, 0, 0, 1);
     q.normalize();
     return Quat(Real(q.w()), Real(q.x()), Real(q.y()), Real(q.z())).normalized();
@@ -76,8 +78,10 @@ Quat randomRotation(FuzzInput& input) {
 std::optional<Shape> randomShape(FuzzInput& input, double size) {
     switch (input.integer(0, 3)) {
     case 0: {
-        const Vec3 halfExtents(Real(size * input.logUniform(0.01, 1)), Real(size * input.logUniform(0.01, 1)),
-                               Real(size * input.logUniform(0.01, 1)));
+        const double x = size * input.logUniform(0.01, 1);
+        const double y = size * input.logUniform(0.01, 1);
+        const double z = size * input.logUniform(0.01, 1);
+        const Vec3 halfExtents = Vec3(Real(x), Real(y), Real(z));
         return Shape::box(halfExtents);
     }
     case 1: return Shape::sphere(Real(size));
