@@ -1,8 +1,9 @@
 // stepwise_extremes: where the engine's accuracy ends, measured (docs/reliability.md). The docs
 // build runs it with --quick and shows its tables; without --quick it runs the long forms.
 //
-//   stepwise_extremes [--quick] [--only narrowphase|far|soak|ratios|sizes|speed]
+//   stepwise_extremes [--quick] [--check] [--only narrowphase|far|soak|ratios|sizes|speed]
 //
+// --check: exit 1 when the soak broke a promise (ctest reliability.soak runs the quick soak so).
 // Each table says what was run and what held, in numbers, for this build's Real.
 #include "app/registry.h"
 #include "02_gjk/box_oracle.h"
@@ -247,7 +248,9 @@ World mixedScene() {
     return world;
 }
 
-void soakTable(bool quick) {
+/// Returns false when the soak broke a promise: a non-finite body, the energy above its start by
+/// more than 1%, or resident memory grown by more than 10% after the first 1,000 frames.
+bool soakTable(bool quick) {
     const long frames = quick ? 5000 : 100000;
     World world = mixedScene();
     Pipeline pipeline = chapters().makePipeline(world);
@@ -287,6 +290,9 @@ void soakTable(bool quick) {
     std::printf("%-40s %.4g J\n", "energy at the end", computeEnergy(world).total());
     std::printf("%-40s %ld KiB -> %ld KiB\n", "resident memory, frame 1000 -> end", memoryAfterWarmUp, residentKiB());
     std::printf("%-40s %.3g ms\n", "mean step time", 1000 * seconds / double(std::max(finite, 1L)));
+    const long memoryAtEnd = residentKiB();
+    return finite == frames && highest <= startEnergy + 0.01 * std::abs(startEnergy) &&
+           (memoryAfterWarmUp <= 0 || memoryAtEnd <= memoryAfterWarmUp + memoryAfterWarmUp / 10);
 }
 
 // --- 4. mass ratios, sizes and speeds -------------------------------------------------------------
@@ -404,23 +410,29 @@ void speedTable(bool quick) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool quick = false;
+    bool quick = false, check = false;
     std::string only;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument == "--quick") quick = true;
         else if (argument == "--only" && i + 1 < argc) only = argv[++i];
+        else if (argument == "--check") check = true;
         else {
-            std::fprintf(stderr, "usage: stepwise_extremes [--quick] [--only narrowphase|far|soak|ratios|sizes|speed]\n");
+            std::fprintf(stderr, "usage: stepwise_extremes [--quick] [--check] [--only narrowphase|far|soak|ratios|sizes|speed]\n");
             return 2;
         }
     }
     std::printf("stepwise_extremes, %s build%s\n", precision(), quick ? ", quick form (the docs build)" : "");
     if (only.empty() || only == "narrowphase") narrowphaseTable(quick);
     if (only.empty() || only == "far") farTable(quick);
-    if (only.empty() || only == "soak") soakTable(quick);
+    bool soakHeld = true;
+    if (only.empty() || only == "soak") soakHeld = soakTable(quick);
     if (only.empty() || only == "ratios") ratiosTable(quick);
     if (only.empty() || only == "sizes") sizesTable(quick);
     if (only.empty() || only == "speed") speedTable(quick);
+    if (check && !soakHeld) {
+        std::fprintf(stderr, "stepwise_extremes: the soak broke a promise (non-finite, energy or memory; see above)\n");
+        return 1;
+    }
     return 0;
 }
