@@ -2,6 +2,7 @@
 
 #include "app/runner.h"
 #include "bounds_draw.h"
+#include "world/contact_draw.h"
 #include "world/shape.h"
 
 #include <algorithm>
@@ -171,14 +172,11 @@ void DemoState::buildDrawList(DrawList& list, const ViewOptions& options) const 
         list.lineWidth(Vec3(0, y, 0), Vec3(0, y, 1), colors::kBlue, 3);
     }
     drawWorld(list, world);
-    if (options.showContacts) {
-        for (const Contact& contact : world.contacts) {
-            for (int i = 0; i < std::clamp(contact.pointCount, 0, 4); ++i) {
-                const Vec3 at = Real(0.5) * (contact.points[i].pointA + contact.points[i].pointB);
-                list.point(at, 6, colors::kYellow);
-                list.arrow(at, at + Real(0.3) * contact.normal, colors::kYellow);
-            }
-        }
+    if (options.showContacts || options.showImpulses) {
+        ContactDrawOptions contactOptions;
+        contactOptions.points = contactOptions.normals = options.showContacts;
+        contactOptions.impulses = options.showImpulses && chapterReading("solver") <= chapter_;
+        drawContacts(list, world, contactOptions);
     }
     if (view_) view_->draw(world, list);
     if (!options.showLabels) list.labels.clear();

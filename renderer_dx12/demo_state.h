@@ -18,6 +18,7 @@ struct ViewOptions {
     float lineWidth = 2.0f;       // pixels
     bool showGrid = true;
     bool showContacts = true;
+    bool showImpulses = true;     // the solver's impulses as arrows, once a chapter has a solver
     bool showLabels = true;
     bool showHelp = false;        // F1 overlay
     bool showPanel = true;        // F2 hides the whole ImGui shell

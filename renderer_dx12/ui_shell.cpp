@@ -235,6 +235,10 @@ void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellI
         ImGui::Checkbox("grid (G)", &view.showGrid);
         ImGui::SameLine();
         ImGui::Checkbox("contacts", &view.showContacts);
+        if (chapterReading("solver") <= state.chapter()) {
+            ImGui::SameLine();
+            ImGui::Checkbox("impulses", &view.showImpulses);
+        }
         ImGui::SameLine();
         ImGui::Checkbox("labels", &view.showLabels);
         int mode = camera.mode == Camera::Mode::Orbit ? 0 : 1;

@@ -6,12 +6,13 @@
 #include "01_integrators/bench_integrators.h"
 
 #include "01_integrators/integrate.h"
+#include "01_integrators/oscillator.h"
+#include "math/random.h"
 #include "app/bench_util.h"
 
 #include <cmath>
 #include <exception>
 #include <iostream>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -24,18 +25,13 @@ constexpr double kDuration = 2.3;                      // s; not a whole number 
                                                        // no error term happens to vanish there
 constexpr int kBodies = 8;
 
-struct Oscillator {
-    Vec3 anchor;
-    Vec3 offset;     // initial displacement from the anchor, m
-    Vec3 velocity;   // initial velocity, m/s
-};
-
-// Seeded, with our own mapping to [-1, 1] so every standard library gives the same numbers.
+// Eight oscillators at random displacements and velocities, one per body, 3 m apart.
 std::vector<Oscillator> makeOscillators() {
-    std::mt19937 random(20240601u);
-    auto uniform = [&] { return Real(2.0 * (random() / 4294967295.0) - 1.0); };
+    Random random(20240601u);
+    auto uniform = [&] { return Real(random.uniform(-1, 1)); };
     std::vector<Oscillator> oscillators(kBodies);
     for (int i = 0; i < kBodies; ++i) {
+        oscillators[i].omega = kOmega;
         oscillators[i].anchor = Vec3(Real(3 * i), 0, 0);
         // One draw per statement (z, y, x): a call's arguments are evaluated in an unspecified
         // order, so draws inside one expression would give GCC and Clang different oscillators.
@@ -51,29 +47,14 @@ World makeOscillatorWorld(const std::vector<Oscillator>& oscillators, Integrator
     World world;
     world.settings.gravity = Vec3::Zero();
     world.settings.integrator = method;
-    for (const Oscillator& oscillator : oscillators) {
-        BodyDef def;
-        def.shape = Shape::sphere(Real(0.1));
-        def.transform.position = oscillator.anchor + oscillator.offset;
-        def.linearVelocity = oscillator.velocity;
-        def.mass = Real(1);
-        Spring spring;
-        spring.bodyA = addBody(world, def);
-        spring.anchorB = oscillator.anchor;
-        spring.stiffness = Real(kOmega * kOmega);  // k = m w^2
-        world.springs.push_back(spring);
-    }
+    for (const Oscillator& oscillator : oscillators) addOscillator(world, oscillator);
     return world;
 }
 
 double maxErrorAgainstExact(const World& world, const std::vector<Oscillator>& oscillators, double t) {
     double worst = 0;
-    for (size_t i = 0; i < oscillators.size(); ++i) {
-        const Oscillator& o = oscillators[i];
-        const Eigen::Vector3d exact = o.anchor.cast<double>() + o.offset.cast<double>() * std::cos(kOmega * t) +
-                                      o.velocity.cast<double>() * (std::sin(kOmega * t) / kOmega);
-        worst = std::max(worst, (world.bodies[i].transform.position.cast<double>() - exact).norm());
-    }
+    for (size_t i = 0; i < oscillators.size(); ++i)
+        worst = std::max(worst, (world.bodies[i].transform.position.cast<double>() - oscillators[i].exactPosition(t)).norm());
     return worst;
 }
 

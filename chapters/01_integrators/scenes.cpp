@@ -66,27 +66,10 @@ void drawSprings(const World& world, DebugDraw& draw) {
 // Kinetic, gravitational and spring energy of the bodies on one method (springs count for the
 // body at their A end), so the panel can show each chain's energy drift.
 double methodEnergy(const World& world, IntegratorKind method) {
-    auto onMethod = [&](int bodyIndex) {
+    return computeEnergy(world, [&](int bodyIndex) {
         const Motion* motion = world.motionOf(bodyIndex);
-        return motion && world.bodies[bodyIndex].type == BodyType::Dynamic && integratorOf(world, *motion) == method;
-    };
-    double energy = 0;
-    for (const Motion& motion : world.motions) {
-        if (!onMethod(motion.bodyIndex)) continue;
-        const Vec3 center = worldCenterOfMass(world, motion.bodyIndex);
-        energy += 0.5 * motion.mass * motion.linearVelocity.squaredNorm();
-        energy += 0.5 * motion.angularVelocity.dot(angularMomentum(world, motion.bodyIndex));
-        energy -= motion.mass * world.settings.gravity.dot(center);
-    }
-    for (const Spring& spring : world.springs) {
-        if (!onMethod(spring.bodyA)) continue;
-        const Vec3 endA = world.bodies[spring.bodyA].transform.apply(spring.localAnchorA);
-        const Vec3 endB =
-            spring.bodyB < 0 ? spring.anchorB : world.bodies[spring.bodyB].transform.apply(spring.anchorB);
-        const double stretch = (endB - endA).norm() - spring.restLength;
-        energy += 0.5 * spring.stiffness * stretch * stretch;
-    }
-    return energy;
+        return motion && integratorOf(world, *motion) == method;
+    }).total();
 }
 
 // Side by side: the chain geometry, shared by the builder and nothing else.
@@ -163,80 +146,75 @@ World buildProjectile() {
     return world;
 }
 
+namespace {
+
+// The demo views: chapter 1 scenes remember nothing, so plain functions serve.
+void drawChains(const World& world, DebugDraw& draw) {
+    drawSprings(world, draw);
+    labelBodies(world, draw);
+}
+
+void chainPanel(World& world, Panel& panel) {
+    for (IntegratorKind method : kMethods)
+        panel.text(formatValue((std::string(toString(method)) + " energy").c_str(), methodEnergy(world, method), "J"));
+    float stiffness = world.springs.empty() ? 0.0f : static_cast<float>(world.springs[0].stiffness);
+    if (panel.sliderFloat("spring stiffness (N/m)", stiffness, 10.0f, 20000.0f))
+        for (Spring& spring : world.springs) spring.stiffness = static_cast<Real>(stiffness);
+    panel.text("Stable while h*w < 2 (Euler, Verlet) or < 2.83 (RK4); the chain's fastest mode has w = 1.6 sqrt(k/m).");
+}
+
+void drawHandle(const World& world, DebugDraw& draw) {
+    labelBodies(world, draw);
+    const Body& body = world.bodies[0];
+    const Vec3 center = worldCenterOfMass(world, 0);
+    draw.arrow(center, center + Real(0.3) * angularMomentum(world, 0), colors::kYellow);
+    draw.arrow(center, center + body.transform.rotate(Vec3(0, 0, Real(0.6))), colors::kGreen);
+    draw.text(center + Real(0.3) * angularMomentum(world, 0), "L", colors::kYellow);
+    draw.text(center + body.transform.rotate(Vec3(0, 0, Real(0.6))), "intermediate axis", colors::kGreen);
+}
+
+void handlePanel(World& world, Panel& panel) {
+    static const char* const modes[] = {"off", "explicit", "implicit"};
+    int mode = static_cast<int>(world.settings.gyroscopic);
+    if (panel.combo("gyroscopic term", mode, modes, 3)) world.settings.gyroscopic = static_cast<GyroscopicMode>(mode);
+    panel.text(formatValue("|L|", angularMomentum(world, 0).norm(), "kg m^2/s"));
+    panel.text(formatValue("energy", 0.5 * world.motions[0].angularVelocity.dot(angularMomentum(world, 0)), "J"));
+    panel.text("Off: no flip. Explicit: energy grows. Implicit: flips, energy kept.");
+}
+
+void drawProjectile(const World& world, DebugDraw& draw) {
+    labelBodies(world, draw);
+    const Vec3 gravity = world.settings.gravity;
+    auto exact = [&](double t, const Vec3& lane) {
+        return Vec3(kLaunchPoint + lane + kLaunchVelocity * Real(t) + Real(0.5 * t * t) * gravity);
+    };
+    for (int slot = 0; slot < 3; ++slot) {
+        const Vec3 lane(0, 0, (slot - 1) * Real(0.6));
+        const double duration = world.time + 0.5;
+        const int segments = 60;
+        for (int i = 0; i < segments; ++i)
+            draw.line(exact(duration * i / segments, lane), exact(duration * (i + 1) / segments, lane),
+                      colors::kWhite);
+        draw.point(exact(world.time, lane), 6, colors::kWhite);
+    }
+}
+
+}  // namespace
+
 void addChapter01Scenes(Registry& registry) {
-    SceneEntry sideBySide;
-    sideBySide.name = "integrators-side-by-side";
-    sideBySide.chapter = 1;
-    sideBySide.category = "Integrators";
-    sideBySide.observe = "Three identical spring chains: RK4's swing slowly dies down, Verlet and "
-                         "semi-implicit Euler keep their energy within a band.";
-    sideBySide.build = buildIntegratorsSideBySide;
-    const SceneDrawHook drawChains = [](const World& world, DebugDraw& draw) {
-        drawSprings(world, draw);
-        labelBodies(world, draw);
-    };
-    const ScenePanelHook chainPanel = [](World& world, Panel& panel) {
-        for (IntegratorKind method : kMethods)
-            panel.text(formatValue((std::string(toString(method)) + " energy").c_str(), methodEnergy(world, method), "J"));
-        float stiffness = world.springs.empty() ? 0.0f : static_cast<float>(world.springs[0].stiffness);
-        if (panel.sliderFloat("spring stiffness (N/m)", stiffness, 10.0f, 20000.0f))
-            for (Spring& spring : world.springs) spring.stiffness = static_cast<Real>(stiffness);
-        panel.text("Stable while h*w < 2 (Euler, Verlet) or < 2.83 (RK4); the chain's fastest mode has w = 1.6 sqrt(k/m).");
-    };
-    sideBySide.makeView = statelessView(drawChains, chainPanel);
-    registry.addScene(std::move(sideBySide));
-
-    SceneEntry handle;
-    handle.name = "t-handle";
-    handle.chapter = 1;
-    handle.category = "Integrators";
-    handle.observe = "Spun about its intermediate axis, the handle flips over every few seconds while its "
-                     "angular momentum (arrow) stays put.";
-    handle.build = [] { return buildTHandle(); };
-    const SceneDrawHook drawHandle = [](const World& world, DebugDraw& draw) {
-        labelBodies(world, draw);
-        const Body& body = world.bodies[0];
-        const Vec3 center = worldCenterOfMass(world, 0);
-        draw.arrow(center, center + Real(0.3) * angularMomentum(world, 0), colors::kYellow);
-        draw.arrow(center, center + body.transform.rotate(Vec3(0, 0, Real(0.6))), colors::kGreen);
-        draw.text(center + Real(0.3) * angularMomentum(world, 0), "L", colors::kYellow);
-        draw.text(center + body.transform.rotate(Vec3(0, 0, Real(0.6))), "intermediate axis", colors::kGreen);
-    };
-    const ScenePanelHook handlePanel = [](World& world, Panel& panel) {
-        static const char* const modes[] = {"off", "explicit", "implicit"};
-        int mode = static_cast<int>(world.settings.gyroscopic);
-        if (panel.combo("gyroscopic term", mode, modes, 3)) world.settings.gyroscopic = static_cast<GyroscopicMode>(mode);
-        panel.text(formatValue("|L|", angularMomentum(world, 0).norm(), "kg m^2/s"));
-        panel.text(formatValue("energy", 0.5 * world.motions[0].angularVelocity.dot(angularMomentum(world, 0)), "J"));
-        panel.text("Off: no flip. Explicit: energy grows. Implicit: flips, energy kept.");
-    };
-    handle.makeView = statelessView(drawHandle, handlePanel);
-    registry.addScene(std::move(handle));
-
-    SceneEntry projectile;
-    projectile.name = "projectile";
-    projectile.chapter = 1;
-    projectile.category = "Integrators";
-    projectile.observe = "Verlet and RK4 stay on the exact parabola (white); semi-implicit Euler runs "
-                         "below it by |g| h t / 2.";
-    projectile.build = buildProjectile;
-    projectile.makeView = statelessView([](const World& world, DebugDraw& draw) {
-        labelBodies(world, draw);
-        const Vec3 gravity = world.settings.gravity;
-        auto exact = [&](double t, const Vec3& lane) {
-            return Vec3(kLaunchPoint + lane + kLaunchVelocity * Real(t) + Real(0.5 * t * t) * gravity);
-        };
-        for (int slot = 0; slot < 3; ++slot) {
-            const Vec3 lane(0, 0, (slot - 1) * Real(0.6));
-            const double duration = world.time + 0.5;
-            const int segments = 60;
-            for (int i = 0; i < segments; ++i)
-                draw.line(exact(duration * i / segments, lane), exact(duration * (i + 1) / segments, lane),
-                          colors::kWhite);
-            draw.point(exact(world.time, lane), 6, colors::kWhite);
-        }
-    });
-    registry.addScene(std::move(projectile));
+    const char* const category = "Integrators";
+    registry.addScene({"integrators-side-by-side", 1, category,
+                       "Three identical spring chains: RK4's swing slowly dies down, Verlet and "
+                       "semi-implicit Euler keep their energy within a band.",
+                       buildIntegratorsSideBySide, statelessView(drawChains, chainPanel)});
+    registry.addScene({"t-handle", 1, category,
+                       "Spun about its intermediate axis, the handle flips over every few seconds while its "
+                       "angular momentum (arrow) stays put.",
+                       [] { return buildTHandle(); }, statelessView(drawHandle, handlePanel)});
+    registry.addScene({"projectile", 1, category,
+                       "Verlet and RK4 stay on the exact parabola (white); semi-implicit Euler runs "
+                       "below it by |g| h t / 2.",
+                       buildProjectile, statelessView(drawProjectile)});
 }
 
 }  // namespace stepwise

@@ -13,6 +13,7 @@
 // again such pairs), so the distance is the minimum over the 16 vertex-versus-box distances
 // and the 144 edge-edge segment distances (Ericson 5.1.9 for segment-segment).
 
+#include "02_gjk/segments.h"
 #include "math/math.h"
 
 #include <Eigen/Core>
@@ -126,42 +127,11 @@ inline double pointBoxDistance(const Vec3d& point, const OracleBox& box, Vec3d* 
     return (local - clamped).norm();
 }
 
-/// Closest points of segments p1q1 and p2q2 (Ericson, Real-Time Collision Detection, 5.1.9).
+/// Distance of segments p1q1 and p2q2, and optionally their closest points, in double.
 inline double segmentSegmentDistance(const Vec3d& p1, const Vec3d& q1, const Vec3d& p2, const Vec3d& q2,
                                      Vec3d* closest1 = nullptr, Vec3d* closest2 = nullptr) {
-    const Vec3d d1 = q1 - p1;
-    const Vec3d d2 = q2 - p2;
-    const Vec3d r = p1 - p2;
-    const double a = d1.squaredNorm();
-    const double e = d2.squaredNorm();
-    const double f = d2.dot(r);
-    const double tiny = 1e-300;
-    double s = 0;
-    double t = 0;
-    if (a <= tiny && e <= tiny) {
-        s = t = 0;
-    } else if (a <= tiny) {
-        t = std::clamp(f / e, 0.0, 1.0);
-    } else {
-        const double c = d1.dot(r);
-        if (e <= tiny) {
-            s = std::clamp(-c / a, 0.0, 1.0);
-        } else {
-            const double b = d1.dot(d2);
-            const double denom = a * e - b * b;
-            s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-            t = (b * s + f) / e;
-            if (t < 0) {
-                t = 0;
-                s = std::clamp(-c / a, 0.0, 1.0);
-            } else if (t > 1) {
-                t = 1;
-                s = std::clamp((b - c) / a, 0.0, 1.0);
-            }
-        }
-    }
-    const Vec3d c1 = p1 + d1 * s;
-    const Vec3d c2 = p2 + d2 * t;
+    Vec3d c1, c2;
+    closestPointsOfSegments(p1, q1, p2, q2, c1, c2);
     if (closest1) *closest1 = c1;
     if (closest2) *closest2 = c2;
     return (c1 - c2).norm();

@@ -1,4 +1,4 @@
-// GJK, the distance query: the closest points of two separated shapes (chapter 7 builds
+// GJK, the distance query: the closest points of two separated shapes (chapter 7, to come, builds
 // continuous collision on it).
 
 #include "02_gjk/gjk_walk.h"

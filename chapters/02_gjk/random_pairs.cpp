@@ -1,5 +1,7 @@
 #include "02_gjk/random_pairs.h"
 
+#include "02_gjk/box_oracle.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,6 +26,33 @@ BoxPair randomBoxPair(Random& random, double minSize, double maxSize, const Vec3
     pair.poseA.position = origin;
     pair.poseB.position = origin + offset;
     return pair;
+}
+
+BoxPair overlappingBoxPair(Random& random, double minDepthFraction, double centreSpread) {
+    auto halfExtents = [&] {  // one draw per statement (z, y, x), as in randomBoxPair
+        const double z = random.uniform(0.05, 1);
+        const double y = random.uniform(0.05, 1);
+        const double x = random.uniform(0.05, 1);
+        return Vec3(Real(x), Real(y), Real(z));
+    };
+    for (;;) {
+        BoxPair pair;
+        pair.halfExtentsA = halfExtents();
+        pair.halfExtentsB = halfExtents();
+        pair.poseA.position = Vec3(Real(random.uniform(-centreSpread, centreSpread)),
+                                   Real(random.uniform(-centreSpread, centreSpread)),
+                                   Real(random.uniform(-centreSpread, centreSpread)));
+        pair.poseA.rotation = random.rotation();
+        pair.poseB.rotation = random.rotation();
+        const double reach = pair.halfExtentsA.cast<double>().norm() + pair.halfExtentsB.cast<double>().norm();
+        pair.poseB.position = pair.poseA.position + Real(random.uniform(0, reach)) * random.unitVector();
+        const oracle::SatResult sat = oracle::boxSat(oracle::makeOracleBox(pair.halfExtentsA, pair.poseA),
+                                                     oracle::makeOracleBox(pair.halfExtentsB, pair.poseB));
+        const double smallest = std::min(pair.halfExtentsA.minCoeff(), pair.halfExtentsB.minCoeff());
+        if (!sat.overlap || sat.depth < minDepthFraction * smallest) continue;
+        pair.exactGap = -sat.depth;
+        return pair;
+    }
 }
 
 BoxPair nearContactBoxPair(Random& random, double gap) {

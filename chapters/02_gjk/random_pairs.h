@@ -10,8 +10,8 @@ struct BoxPair {
     Vec3 halfExtentsB = Vec3::Ones();
     Transform poseA;
     Transform poseB;
-    /// nearContactBoxPair only: the exact signed distance (m) of the pair as stored, computed in
-    /// double; > 0 separated, < 0 overlapping.
+    /// nearContactBoxPair and overlappingBoxPair only: the exact signed distance (m) of the pair
+    /// as stored, computed in double; > 0 separated, < 0 overlapping.
     double exactGap = 0;
 };
 
@@ -19,6 +19,13 @@ struct BoxPair {
 /// random direction from A's, at up to 1.2 times the sum of their bounding radii, so about half
 /// the pairs overlap. Everything is shifted by `origin`.
 BoxPair randomBoxPair(Random& random, double minSize, double maxSize, const Vec3& origin = Vec3::Zero());
+
+/// Two randomly sized (half extents 0.05..1 m) and oriented boxes that overlap by at least
+/// `minDepthFraction` of the smallest half extent (a relative depth error means little at a
+/// depth of a few ulps), drawn until one does. A's centre is uniform in a cube of half side
+/// `centreSpread` around the origin; B's lies in a random direction from A's, within the sum of
+/// their bounding radii. exactGap is minus the exact (SAT, double) depth.
+BoxPair overlappingBoxPair(Random& random, double minDepthFraction, double centreSpread = 0);
 
 /// A pair whose signed distance is `gap` by construction: A axis aligned, B randomly rotated and
 /// smaller, placed so its lowest corner along +X sits `gap` beyond A's +X face, well inside the

@@ -143,6 +143,11 @@ void GjkView::panel(World& world, Panel& panel) {
 
 void GjkView::draw(const World& world, DebugDraw& draw) const { drawGjkOverlay(world, draw, mode(), overlayAnchor_); }
 
+/// A fresh GjkView, its overlay above the bodies at `overlayAnchor`, at every load.
+static SceneViewFactory gjkView(Vec3 overlayAnchor) {
+    return [overlayAnchor] { return std::unique_ptr<SceneView>(std::make_unique<GjkView>(overlayAnchor)); };
+}
+
 }  // namespace
 
 std::vector<Vec3> minkowskiPoints(const Body& a, const Body& b, SupportMode mode) {
@@ -211,25 +216,16 @@ void drawGjkOverlay(const World& world, DebugDraw& draw, SupportMode mode, const
 // [ch02-overlay]
 
 void addChapter02Scenes(Registry& registry) {
-    SceneEntry twoBoxes;
-    twoBoxes.name = "gjk-two-boxes";
-    twoBoxes.chapter = 2;
-    twoBoxes.category = "GJK";
-    twoBoxes.observe = "The plank's end sweeps through the cube: both turn red exactly while they overlap, and above "
-                       "them the origin (white cross) enters the Minkowski difference A - B, caught by a yellow tetrahedron.";
-    twoBoxes.build = buildGjkTwoBoxes;
-    twoBoxes.makeView = [] { return std::unique_ptr<SceneView>(std::make_unique<GjkView>(Vec3(0, Real(4.5), 0))); };
-    registry.addScene(std::move(twoBoxes));
-
-    SceneEntry sphereDiamond;
-    sphereDiamond.name = "gjk-sphere-diamond";
-    sphereDiamond.chapter = 2;
-    sphereDiamond.category = "GJK";
-    sphereDiamond.observe = "Each tip of the spinning diamond dips into the sphere and the pair turns red; above, "
-                            "A - B is the diamond grown by the sphere, and the label counts GJK's support points.";
-    sphereDiamond.build = buildGjkSphereDiamond;
-    sphereDiamond.makeView = [] { return std::unique_ptr<SceneView>(std::make_unique<GjkView>(Vec3(0, Real(3), 0))); };
-    registry.addScene(std::move(sphereDiamond));
+    const char* const category = "GJK";
+    registry.addScene({"gjk-two-boxes", 2, category,
+                       "The plank's end sweeps through the cube: both turn red exactly while they overlap, and above "
+                       "them the origin (white cross) enters the Minkowski difference A - B, caught by a yellow "
+                       "tetrahedron.",
+                       buildGjkTwoBoxes, gjkView(Vec3(0, Real(4.5), 0))});
+    registry.addScene({"gjk-sphere-diamond", 2, category,
+                       "Each tip of the spinning diamond dips into the sphere and the pair turns red; above, "
+                       "A - B is the diamond grown by the sphere, and the label counts GJK's support points.",
+                       buildGjkSphereDiamond, gjkView(Vec3(0, Real(3), 0))});
 }
 
 }  // namespace stepwise

@@ -13,12 +13,13 @@
 
 // The exact box-box oracle is shared with the test suites (header-only, double precision).
 #include "02_gjk/box_oracle.h"
+#include "02_gjk/random_pairs.h"
+#include "math/random.h"
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
 #include <iostream>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -48,58 +49,32 @@ struct PairSet {
     std::vector<BenchPair> pairs;
 };
 
-// Seeded, with our own mapping to [0, 1) so every standard library draws the same pairs.
-class Draw {
-public:
-    explicit Draw(unsigned seed) : engine_(seed) {}
-    double range(double lo, double hi) { return lo + (hi - lo) * (engine_() / 4294967296.0); }
-    Vec3 vector(double lo, double hi) { return Vec3(Real(range(lo, hi)), Real(range(lo, hi)), Real(range(lo, hi))); }
-    Quat rotation() {  // Shoemake's uniform rotation
-        const double u1 = range(0, 1), u2 = range(0, 6.283185307179586), u3 = range(0, 6.283185307179586);
-        const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-        return Quat(Real(a * std::sin(u2)), Real(a * std::cos(u2)), Real(b * std::sin(u3)), Real(b * std::cos(u3)))
-            .normalized();
-    }
-    Vec3 direction() {
-        const double z = range(-1, 1), phi = range(0, 6.283185307179586), r = std::sqrt(std::max(0.0, 1 - z * z));
-        return Vec3(Real(r * std::cos(phi)), Real(r * std::sin(phi)), Real(z));
-    }
-
-private:
-    std::mt19937 engine_;
-};
-
 PairSet makeBoxPairs(int count) {
-    Draw draw(20240605u);
+    Random random(20240605u);
     PairSet set{"boxes", {}};
     while (static_cast<int>(set.pairs.size()) < count) {
-        BenchPair pair;
-        pair.a = Shape::box(draw.vector(0.05, 1));
-        pair.b = Shape::box(draw.vector(0.05, 1));
-        pair.poseA.rotation = draw.rotation();
-        pair.poseB.rotation = draw.rotation();
-        const double reach = pair.a.halfExtents.norm() + pair.b.halfExtents.norm();
-        pair.poseB.position = Real(draw.range(0, reach)) * draw.direction();
-        const oracle::SatResult sat = oracle::boxSat(oracle::makeOracleBox(pair.a.halfExtents, pair.poseA),
-                                                     oracle::makeOracleBox(pair.b.halfExtents, pair.poseB));
-        const double smallest = std::min(pair.a.halfExtents.minCoeff(), pair.b.halfExtents.minCoeff());
-        if (!sat.overlap || sat.depth < 0.02 * smallest) continue;
-        pair.exactDepth = sat.depth;
-        set.pairs.push_back(pair);
+        const BoxPair drawn = overlappingBoxPair(random, 0.02);
+        set.pairs.push_back(BenchPair{Shape::box(drawn.halfExtentsA), Shape::box(drawn.halfExtentsB), drawn.poseA,
+                                      drawn.poseB, -drawn.exactGap});
     }
     return set;
 }
 
 PairSet makeSphereBoxPairs(int count) {
-    Draw draw(20240606u);
+    Random random(20240606u);
     PairSet set{"sphere-box", {}};
     while (static_cast<int>(set.pairs.size()) < count) {
         BenchPair pair;
-        pair.a = Shape::sphere(Real(draw.range(0.1, 1)));
-        pair.b = Shape::box(draw.vector(0.1, 1));
-        pair.poseB.rotation = draw.rotation();
+        pair.a = Shape::sphere(Real(random.uniform(0.1, 1)));
+        // One draw per statement (z, y, x): a call's arguments are evaluated in an unspecified
+        // order, so draws inside one expression would give GCC and Clang different pairs.
+        const double halfZ = random.uniform(0.1, 1);
+        const double halfY = random.uniform(0.1, 1);
+        const double halfX = random.uniform(0.1, 1);
+        pair.b = Shape::box(Vec3(Real(halfX), Real(halfY), Real(halfZ)));
+        pair.poseB.rotation = random.rotation();
         const double reach = pair.a.radius + pair.b.halfExtents.norm();
-        pair.poseB.position = Real(draw.range(0, reach)) * draw.direction();
+        pair.poseB.position = Real(random.uniform(0, reach)) * random.unitVector();
         // Exact depth in double: a centre outside the box loses its distance to the box from the
         // radius, a centre inside adds its distance to the nearest face.
         const oracle::OracleBox box = oracle::makeOracleBox(pair.b.halfExtents, pair.poseB);

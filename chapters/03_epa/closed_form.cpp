@@ -1,6 +1,7 @@
 // Closed-form contacts: closest points of the shapes' cores, inflated by their radii.
 #include "03_epa/closed_form.h"
 
+#include "02_gjk/segments.h"
 #include "02_gjk/tolerances.h"
 
 #include <algorithm>
@@ -9,8 +10,6 @@
 namespace stepwise {
 
 namespace {
-
-Real clamp01(Real value) { return std::min(std::max(value, Real(0)), Real(1)); }
 
 // [ch03-inflate]
 /// Contact of two "fat points": cores coreA and coreB with radii. The normal runs from core to
@@ -123,44 +122,6 @@ ContactQuery collideBoxSphere(const Vec3& halfExtents, const Transform& box, con
     return query;
 }
 // [ch03-box-sphere]
-
-void closestPointsOfSegments(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2, Vec3& onFirst,
-                             Vec3& onSecond) {
-    const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-    const Real a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-    const Real tiny = kEpsilon * kEpsilon * std::max({a, e, r.squaredNorm(), Real(1e-30)});
-    Real s = 0, t = 0;
-    if (a <= tiny && e <= tiny) {
-        s = t = 0;  // both segments are points
-    } else if (a <= tiny) {
-        t = clamp01(f / e);
-    } else {
-        const Real c = d1.dot(r);
-        if (e <= tiny) {
-            s = clamp01(-c / a);
-        } else {
-            const Real b = d1.dot(d2);
-            const Real denominator = a * e - b * b;
-            if (denominator > kEpsilon * a * e) {
-                s = clamp01((b * f - c * e) / denominator);
-            } else {
-                // Parallel: every point of the overlap is equally close; take its middle so a
-                // single contact point sits in the centre of the touching stretch.
-                s = Real(0.5) * (clamp01((p2 - p1).dot(d1) / a) + clamp01((q2 - p1).dot(d1) / a));
-            }
-            t = (b * s + f) / e;
-            if (t < 0) {
-                t = 0;
-                s = clamp01(-c / a);
-            } else if (t > 1) {
-                t = 1;
-                s = clamp01((b - c) / a);
-            }
-        }
-    }
-    onFirst = p1 + s * d1;
-    onSecond = p2 + t * d2;
-}
 
 ContactQuery collideCapsuleSphere(Real capsuleRadius, Real halfHeight, const Transform& capsule,
                                   const Vec3& center, Real radius) {

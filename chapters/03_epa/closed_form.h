@@ -25,8 +25,4 @@ ContactQuery collideCapsules(Real radiusA, Real halfHeightA, const Transform& ca
 /// The same contact seen with A and B swapped.
 ContactQuery swapped(const ContactQuery& query);
 
-/// Closest points of segments p1-q1 and p2-q2 (Ericson, Real-Time Collision Detection, 5.1.9).
-void closestPointsOfSegments(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2, Vec3& onFirst,
-                             Vec3& onSecond);
-
 }  // namespace stepwise

@@ -4,6 +4,7 @@
 #include "03_epa/narrowphase.h"
 #include "app/panel.h"
 #include "app/registry.h"
+#include "world/contact_draw.h"
 #include "world/debug_draw.h"
 
 #include <cstdio>
@@ -14,8 +15,6 @@ namespace stepwise {
 
 namespace {
 
-constexpr Real kMarkerHalfSize = Real(0.03);   // m, the red contact cubes
-constexpr Real kNormalLength = Real(0.6);      // m, the yellow arrow
 const Vec3 kPolytopeAnchor(Real(3), Real(1.5), 0);  // where the stepper draws A - B's origin
 constexpr Real kPolytopeScale = Real(0.5);            // A - B is drawn at half size beside the bodies
 
@@ -37,15 +36,6 @@ Quat tilt(Real x, Real y, Real z) {
     return (Eigen::AngleAxis<Real>(x, Vec3::UnitX()) * Eigen::AngleAxis<Real>(y, Vec3::UnitY()) *
             Eigen::AngleAxis<Real>(z, Vec3::UnitZ()))
         .normalized();
-}
-
-void drawContactMarkers(const Vec3& pointA, const Vec3& pointB, const Vec3& normal, DebugDraw& draw) {
-    Transform marker;
-    marker.position = pointA;
-    draw.box(marker, Vec3::Constant(kMarkerHalfSize), colors::kRed, Fill::Solid);
-    marker.position = pointB;
-    draw.box(marker, Vec3::Constant(kMarkerHalfSize), colors::kRed, Fill::Solid);
-    draw.arrow(pointB, pointB + kNormalLength * normal, colors::kYellow);
 }
 
 std::string describe(const char* format, double value) {
@@ -146,7 +136,7 @@ EpaResult drawEpaStep(const World& world, int bodyA, int bodyB, int expansions, 
               colors::kWhite);
 
     // Back in the world: the two contact points and the normal from A to B.
-    drawContactMarkers(epa.pointA, epa.pointB, epa.normal, draw);
+    drawContact(draw, epa.pointA, epa.pointB, epa.normal);
     return epa;
 }
 // [ch03-demo-draw]
@@ -166,38 +156,35 @@ void EpaStepperView::panel(World& world, Panel& panel) {
     panel.text(describe("depth %.6f m", double(shown.depth)));
 }
 
-void addChapter03Scenes(Registry& registry) {
-    SceneEntry stepper;
-    stepper.name = "epa-step-by-step";
-    stepper.chapter = 3;
-    stepper.category = "Contacts";
-    stepper.observe = "Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right, "
-                      "half size) closes in on the boundary; red cubes mark the contact points inside the overlap "
-                      "(Z: wireframe), the yellow arrow the normal.";
-    stepper.build = buildEpaStepper;
-    stepper.makeView = viewOfType<EpaStepperView>();
-    registry.addScene(std::move(stepper));
+namespace {
 
-    SceneEntry gallery;
-    gallery.name = "epa-contact-gallery";
-    gallery.chapter = 3;
-    gallery.category = "Contacts";
-    gallery.observe = "Six shape pairs turning into each other; each label names the routine that found the "
-                      "contact (closed form or GJK + EPA), red cubes mark the points (Z: wireframe), yellow "
-                      "arrows the normals.";
-    gallery.build = buildContactGallery;
-    gallery.makeView = statelessView([](const World& world, DebugDraw& draw) {
-        for (std::size_t i = 0; i + 1 < world.bodies.size(); i += 2) {
-            const Body& a = world.bodies[i];
-            const Body& b = world.bodies[i + 1];
-            const ContactQuery query = collideShapes(a.shape, a.transform, b.shape, b.transform);
-            const Vec3 label = a.transform.position + Vec3(0, Real(-1.1), 0);
-            draw.text(label, std::string(query.routine) + (query.intersect ? describe(" %.3f m", double(query.depth)) : " apart"),
-                      colors::kWhite);
-            if (query.intersect) drawContactMarkers(query.pointA, query.pointB, query.normal, draw);
-        }
-    });
-    registry.addScene(std::move(gallery));
+// Labels each lane with the routine that found its contact and marks the contact.
+void drawGallery(const World& world, DebugDraw& draw) {
+    for (std::size_t i = 0; i + 1 < world.bodies.size(); i += 2) {
+        const Body& a = world.bodies[i];
+        const Body& b = world.bodies[i + 1];
+        const ContactQuery query = collideShapes(a.shape, a.transform, b.shape, b.transform);
+        const Vec3 label = a.transform.position + Vec3(0, Real(-1.1), 0);
+        draw.text(label, std::string(query.routine) + (query.intersect ? describe(" %.3f m", double(query.depth)) : " apart"),
+                  colors::kWhite);
+        if (query.intersect) drawContact(draw, query.pointA, query.pointB, query.normal);
+    }
+}
+
+}  // namespace
+
+void addChapter03Scenes(Registry& registry) {
+    const char* const category = "Contacts";
+    registry.addScene({"epa-step-by-step", 3, category,
+                       "Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right, "
+                       "half size) closes in on the boundary; red cubes mark the contact points inside the overlap "
+                       "(Z: wireframe), the yellow arrow the normal.",
+                       buildEpaStepper, viewOfType<EpaStepperView>()});
+    registry.addScene({"epa-contact-gallery", 3, category,
+                       "Six shape pairs turning into each other; each label names the routine that found the "
+                       "contact (closed form or GJK + EPA), red cubes mark the points (Z: wireframe), yellow "
+                       "arrows the normals.",
+                       buildContactGallery, statelessView(drawGallery)});
 }
 
 }  // namespace stepwise

@@ -5,9 +5,7 @@
 // contact point, and how deep a 1 kg ball is pressed by a 10 kg ball on top of it.
 #include "04_pgs/benches.h"
 
-#include "03_epa/narrowphase.h"
-#include "04_pgs/chapter.h"
-#include "04_pgs/scenes.h"
+#include "04_pgs/resting_study.h"
 #include "app/bench_util.h"
 
 #include <algorithm>
@@ -17,64 +15,16 @@
 
 namespace stepwise {
 
-namespace {
-
-struct RestingRun {
-    std::string label;
-    std::vector<double> depth;      // m, per frame
-    std::vector<double> tilt;       // rad between the body's up axis and +Y, per frame
-    double drift = 0;               // m, horizontal distance from the start after the run
-};
-
-enum class Subject { Ball, Box, Stack };
-
-RestingRun runResting(Subject subject, StepOrder order, int frames) {
-    World world;
-    world.name = "resting";
-    addGroundPlane(world);
-    const Real drop = Real(0.01);  // m above the ground
-    int body = -1;    // the body whose overlap with `below` is recorded
-    int below = 0;
-    const Vec3 start(0, Real(0.5) + drop, 0);
-    if (subject == Subject::Ball) body = addBall(world, "ball", start, Real(0.5), 1, Material{});
-    if (subject == Subject::Box)
-        body = addCrate(world, "box", start, Vec3(Real(0.5), Real(0.5), Real(0.5)), 1, Material{});
-    if (subject == Subject::Stack) {
-        body = addBall(world, "light", Vec3(0, Real(0.4) + drop, 0), Real(0.4), 1, Material{});
-        addBall(world, "heavy", Vec3(0, Real(1.2) + 2 * drop, 0), Real(0.4), 10, Material{});
-    }
-    Pipeline pipeline = makeChapter04Pipeline(world, order);
-    RestingRun run;
-    const char* names[] = {"ball", "box, one point", "1 kg under 10 kg"};
-    run.label = std::string(names[static_cast<int>(subject)]) +
-                (order == StepOrder::SplitIntegration ? (subject == Subject::Ball ? ", split" : "") : ", integrate first");
-    const Vec3 startPosition = world.bodies[body].transform.position;
-    for (int frame = 0; frame < frames; ++frame) {
-        pipeline.step(world);
-        const Body& lower = world.bodies[below];
-        const Body& moving = world.bodies[body];
-        const ContactQuery query = collideShapes(lower.shape, lower.transform, moving.shape, moving.transform);
-        run.depth.push_back(query.intersect ? static_cast<double>(query.depth) : 0.0);
-        const Vec3 up = moving.transform.rotate(Vec3::UnitY());
-        run.tilt.push_back(std::acos(std::clamp(static_cast<double>(up.y()), -1.0, 1.0)));
-    }
-    const Vec3 offset = world.bodies[body].transform.position - startPosition;
-    run.drift = std::hypot(static_cast<double>(offset.x()), static_cast<double>(offset.z()));
-    return run;
-}
-
-}  // namespace
-
 int runRestingBench(const BenchOptions& options) {
     if (!benchOutputsWritable(options, "resting")) return 2;
     std::ostream& out = options.out ? *options.out : std::cout;
     const Settings defaults;
     const int frames = static_cast<int>(std::lround((options.quick ? 3.0 : 10.0) / static_cast<double>(defaults.dt)));
     std::vector<RestingRun> runs;
-    runs.push_back(runResting(Subject::Ball, StepOrder::SplitIntegration, frames));
-    runs.push_back(runResting(Subject::Ball, StepOrder::IntegrateFirst, frames));
-    runs.push_back(runResting(Subject::Box, StepOrder::SplitIntegration, frames));
-    runs.push_back(runResting(Subject::Stack, StepOrder::SplitIntegration, frames));
+    runs.push_back(runRestingStudy({RestingSubject::Ball, StepOrder::SplitIntegration}, frames));
+    runs.push_back(runRestingStudy({RestingSubject::Ball, StepOrder::IntegrateFirst}, frames));
+    runs.push_back(runRestingStudy({RestingSubject::Box, StepOrder::SplitIntegration}, frames));
+    runs.push_back(runRestingStudy({RestingSubject::Stack, StepOrder::SplitIntegration}, frames));
 
     CsvTable series({"time_s", "ball_split_depth", "ball_first_depth", "box_depth", "stack_bottom_depth", "box_tilt"});
     for (int frame = 0; frame < frames; ++frame)
@@ -90,9 +40,8 @@ int runRestingBench(const BenchOptions& options) {
         for (auto it = begin; it != run.depth.end(); ++it) sum += *it;
         const double count = static_cast<double>(run.depth.end() - begin);
         const double maxTilt = *std::max_element(run.tilt.begin() + frames / 2, run.tilt.end());
-        summary.addRow({run.label, formatNumber(sum / count), formatNumber(*std::min_element(begin, run.depth.end())),
-                        formatNumber(*std::max_element(begin, run.depth.end())), formatNumber(maxTilt),
-                        formatNumber(run.drift)});
+        summary.addRow({run.label, formatNumber(sum / count), formatNumber(run.minDepth(frames / 2)),
+                        formatNumber(run.maxDepth(frames / 2)), formatNumber(maxTilt), formatNumber(run.drift(0))});
     }
     out << "slop " << defaults.slop << " m, baumgarte " << defaults.baumgarte << ", dt " << defaults.dt
         << " s; settled half of " << frames << " frames:\n"

@@ -1,11 +1,10 @@
-// Chapter 4 in the programs: its scenes (with the solver panel and the impulse arrows), its
+// Chapter 4 in the programs: its scenes (with the solver panel; the demo draws the impulses), its
 // pipeline and its benches.
 #include "app/panel.h"
 #include "app/registry.h"
 
 #include "04_pgs/benches.h"
 #include "04_pgs/chapter.h"
-#include "04_pgs/contact_draw.h"
 #include "04_pgs/scenes.h"
 
 namespace stepwise {
@@ -46,61 +45,32 @@ void solverPanel(World& world, Panel& panel) {
     panel.text("arrows: yellow normal impulse, orange friction (as force, 0.05 m/N)");
 }
 
-void drawImpulses(const World& world, DebugDraw& draw) { drawContactImpulses(world, draw); }
-
 }  // namespace
 
 void registerChapter04(Registry& registry) {
-    SceneEntry drop;
-    drop.name = "pgs-drop";
-    drop.chapter = 4;
-    drop.category = "Sequential impulses";
-    drop.observe = "boxes and spheres fall, bounce (two have restitution 0.5) and come to rest; try Jacobi "
-                       "and few iterations";
-    drop.build = buildDropScene;
-    drop.makeView = statelessView(drawImpulses, solverPanel);
-    registry.addScene(std::move(drop));
-
-    SceneEntry bounce;
-    bounce.name = "pgs-bounce";
-    bounce.chapter = 4;
-    bounce.category = "Sequential impulses";
-    bounce.observe = "balls with restitution 0.3, 0.6, 0.9 and 1 bounce to about e^2 of their drop height; e = 1 "
-                       "keeps its height";
-    bounce.build = [] { return buildBounceScene(); };
-    bounce.makeView = statelessView(drawImpulses, solverPanel);
-    registry.addScene(std::move(bounce));
-
-    SceneEntry resting;
-    resting.name = "pgs-resting";
-    resting.chapter = 4;
-    resting.category = "Sequential impulses";
-    resting.observe = "the ball rests still at the slop depth; the box, held by one contact point, rocks and "
-                       "wanders (chapter 6 fixes it); the 1 kg ball under the 10 kg one is pressed deeper than the "
-                       "slop (no warm starting yet: try 20 iterations)";
-    resting.build = buildRestingScene;
-    resting.makeView = statelessView(drawImpulses, solverPanel);
-    registry.addScene(std::move(resting));
-
-    SceneEntry friction;
-    friction.name = "pgs-friction";
-    friction.chapter = 4;
-    friction.category = "Sequential impulses";
-    friction.observe = "at 8 substeps the box on the ramp steeper than atan(mu) slides and the one on the gentler "
+    const char* const category = "Sequential impulses";
+    const SceneViewFactory solverControls = statelessView({}, solverPanel);
+    registry.addScene({"pgs-drop", 4, category,
+                       "Boxes and spheres fall, bounce (two have restitution 0.5) and come to rest; try Jacobi "
+                       "and few iterations",
+                       buildDropScene, solverControls});
+    registry.addScene({"pgs-bounce", 4, category,
+                       "Balls with restitution 0.3, 0.6, 0.9 and 1 bounce to about e^2 of their drop height; e = 1 "
+                       "keeps its height",
+                       [] { return buildBounceScene(); }, solverControls});
+    registry.addScene({"pgs-resting", 4, category,
+                       "The ball rests still at the slop depth; the box, held by one contact point, rocks and "
+                       "wanders (chapter 6, to come, fixes it); the 1 kg ball under the 10 kg one is pressed deeper than the "
+                       "slop (no warm starting yet: try 20 iterations)",
+                       buildRestingScene, solverControls});
+    registry.addScene({"pgs-friction", 4, category,
+                       "At 8 substeps the box on the ramp steeper than atan(mu) slides and the one on the gentler "
                        "ramp stays (at 1 substep its rocking corner walks it down); the ball slides, then rolls at "
-                       "5/7 of its speed";
-    friction.build = [] { return buildFrictionScene(); };
-    friction.makeView = statelessView(drawImpulses, solverPanel);
-    registry.addScene(std::move(friction));
-
-    SceneEntry sphere;
-    sphere.name = "pgs-sphere-pit";
-    sphere.chapter = 4;
-    sphere.category = "Sequential impulses";
-    sphere.observe = "forty balls settle into a pile: many coupled contacts; compare Gauss-Seidel with Jacobi";
-    sphere.build = [] { return buildSpherePitScene(); };
-    sphere.makeView = statelessView(drawImpulses, solverPanel);
-    registry.addScene(std::move(sphere));
+                       "5/7 of its speed",
+                       [] { return buildFrictionScene(); }, solverControls});
+    registry.addScene({"pgs-sphere-pit", 4, category,
+                       "Forty balls settle into a pile: many coupled contacts; compare Gauss-Seidel with Jacobi",
+                       [] { return buildSpherePitScene(); }, solverControls});
 
     registry.addPipeline({4, [](const World& world) { return makeChapter04Pipeline(world); }});
 

@@ -1,18 +1,13 @@
 #include "04_pgs/scenes.h"
 
+#include "math/random.h"
+
 #include <cmath>
-#include <random>
 #include <string>
 
 namespace stepwise {
 
 namespace {
-
-// Uniform in [0, 1) from the raw generator output, the same on every standard library
-// (std::uniform_real_distribution is not).
-Real uniform01(std::mt19937& random) { return static_cast<Real>(random() >> 8) * Real(1.0 / 16777216.0); }
-
-Real uniform(std::mt19937& random, Real low, Real high) { return low + (high - low) * uniform01(random); }
 
 int addStaticBox(World& world, const std::string& name, const Vec3& position, const Vec3& halfExtents,
                  const Quat& rotation, const Material& material) {
@@ -65,24 +60,24 @@ int addCrate(World& world, const std::string& name, const Vec3& position, const 
 World buildDropScene() {
     World world = namedWorld("pgs-drop");
     addGroundPlane(world);
-    std::mt19937 random(4);
+    Random random(4);
     for (int i = 0; i < 8; ++i) {
         const Vec3 position(Real(-2.1) + Real(1.4) * static_cast<Real>(i % 4), Real(1.5) + Real(1.2) * static_cast<Real>(i / 4),
-                            uniform(random, Real(-0.4), Real(0.4)));
+                            random.uniformReal(Real(-0.4), Real(0.4)));
         const Material material{Real(0.6), i % 4 == 3 ? Real(0.5) : Real(0)};
         if (i % 2 == 0) {
             // One draw per statement: the order of a call's arguments is unspecified in C++ (GCC and Clang
             // differ), so draws inside one expression would give each compiler a different scene. z, y, x
             // is the order GCC evaluated them in, so the scenes are the ones GCC always built.
-            const Real axisZ = uniform(random, -1, 1);
-            const Real axisY = uniform(random, -1, 1);
-            const Real axisX = uniform(random, -1, 1);
+            const Real axisZ = random.uniformReal(-1, 1);
+            const Real axisY = random.uniformReal(-1, 1);
+            const Real axisX = random.uniformReal(-1, 1);
             const Vec3 axis = Vec3(axisX, axisY, axisZ).normalized();
-            const Quat rotation(Eigen::AngleAxis<Real>(uniform(random, 0, kPi), axis));
+            const Quat rotation(Eigen::AngleAxis<Real>(random.uniformReal(0, kPi), axis));
             addCrate(world, "box" + std::to_string(i), position, Vec3(Real(0.4), Real(0.3), Real(0.35)), 2, material,
                      rotation);
         } else {
-            addBall(world, "ball" + std::to_string(i), position, uniform(random, Real(0.25), Real(0.45)), 2, material);
+            addBall(world, "ball" + std::to_string(i), position, random.uniformReal(Real(0.25), Real(0.45)), 2, material);
         }
     }
     return world;
@@ -166,19 +161,19 @@ World buildSpherePitScene(int count) {
         const Vec3 half = alongX ? Vec3(wall, height, inner + 2 * wall) : Vec3(inner + 2 * wall, height, wall);
         addStaticBox(world, "wall" + std::to_string(side), center, half, Quat::Identity(), Material{});
     }
-    std::mt19937 random(7);
+    Random random(7);
     for (int i = 0; i < count; ++i) {
         const int layer = i / 9;
         const int cell = i % 9;
         // One draw per statement: the order of a call's arguments is unspecified in C++ (GCC and Clang
         // differ), so draws inside one expression would give each compiler a different scene. z, then x
         // is the order GCC evaluated them in, so the scenes are the ones GCC always built.
-        const Real jitterZ = uniform(random, Real(-0.03), Real(0.03));
-        const Real jitterX = uniform(random, Real(-0.03), Real(0.03));
+        const Real jitterZ = random.uniformReal(Real(-0.03), Real(0.03));
+        const Real jitterX = random.uniformReal(Real(-0.03), Real(0.03));
         const Vec3 position(Real(-0.6) + Real(0.6) * static_cast<Real>(cell % 3) + jitterX,
                             Real(0.4) + Real(0.6) * static_cast<Real>(layer),
                             Real(-0.6) + Real(0.6) * static_cast<Real>(cell / 3) + jitterZ);
-        addBall(world, "ball" + std::to_string(i), position, uniform(random, Real(0.2), Real(0.28)), 1, Material{});
+        addBall(world, "ball" + std::to_string(i), position, random.uniformReal(Real(0.2), Real(0.28)), 1, Material{});
     }
     return world;
 }

@@ -48,7 +48,7 @@ void Registry::addBench(BenchEntry entry) {
 
 void Registry::addCommand(CommandEntry entry) { commands_.push_back(std::move(entry)); }
 
-void Registry::setPenetrationProbe(PenetrationProbe probe) { probes_.push_back(std::move(probe)); }
+void Registry::addPenetrationProbe(PenetrationProbe probe) { probes_.push_back(std::move(probe)); }
 
 const SceneEntry* Registry::findScene(const std::string& name) const {
     for (const SceneEntry& entry : scenes_)

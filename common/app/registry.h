@@ -99,7 +99,7 @@ public:
     void addPipeline(PipelineEntry entry);
     void addBench(BenchEntry entry);
     void addCommand(CommandEntry entry);
-    void setPenetrationProbe(PenetrationProbe probe);
+    void addPenetrationProbe(PenetrationProbe probe);
 
     const std::vector<SceneEntry>& scenes() const { return scenes_; }
     const std::vector<BenchEntry>& benches() const { return benches_; }

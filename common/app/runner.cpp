@@ -48,7 +48,7 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
     stats.penetrationMeasured = probe != nullptr;
     if (!world.joints.empty() && !pipeline.find("joints"))
         stats.warnings.push_back("the scene has " + std::to_string(world.joints.size()) +
-                                 " joint(s) but no stage of this engine solves joints yet (chapter 8); they are ignored");
+                                 " joint(s) but no stage of this engine solves joints yet (chapter 8, to come); they are ignored");
     const int chapterInUse = std::min(options.maxChapter, registry.lastChapter());
     for (const SettingUse& use : settingUses())
         if (use.chapter > chapterInUse)

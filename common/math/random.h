@@ -20,6 +20,13 @@ public:
     double uniform() { return static_cast<double>(engine_()) * (1.0 / 4294967296.0); }
     double uniform(double low, double high) { return low + (high - low) * uniform(); }
 
+    /// Uniform in [low, high) from 24 random bits: the unit draw is exact in float, so the float
+    /// and double builds lay a scene out from the same numbers.
+    Real uniformReal(Real low, Real high) {
+        const Real unit = static_cast<Real>(engine_() >> 8) * Real(1.0 / 16777216.0);
+        return low + (high - low) * unit;
+    }
+
     // [common-uniform-rotation]
     /// Uniform over rotations (Shoemake, "Uniform random rotations", Graphics Gems III, 1992):
     /// a unit quaternion from three uniform numbers, as two circles weighted by sqrt(1 - u1)

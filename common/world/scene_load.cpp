@@ -24,7 +24,11 @@ const Names<BroadphaseMode> kBroadphase = {
     {"auto", BroadphaseMode::Auto}, {"sap", BroadphaseMode::Sap}, {"brute", BroadphaseMode::Brute}};
 const Names<CcdMode> kCcd = {{"auto", CcdMode::Auto}, {"on", CcdMode::On}, {"off", CcdMode::Off}};
 const Names<SolverKind> kSolvers = {{"gauss_seidel", SolverKind::GaussSeidel}, {"jacobi", SolverKind::Jacobi}};
-const char* const kJointTypes[] = {"distance", "ball_socket", "hinge", "cone_twist", "fixed"};
+const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
+                                      {"ball_socket", JointType::BallSocket},
+                                      {"hinge", JointType::Hinge},
+                                      {"cone_twist", JointType::ConeTwist},
+                                      {"fixed", JointType::Fixed}};
 
 Settings readSettings(const JsonCursor& cursor) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
@@ -90,15 +94,11 @@ int bodyIndex(const JsonCursor& cursor, const World& world) {
 JointDesc readJoint(const JsonCursor& cursor, const World& world) {
     if (!cursor.json().is_object()) cursor.fail("must be an object");
     JointDesc joint;
-    const JsonCursor type = cursor.child("type");
-    joint.type = type.string();
+    joint.type = cursor.child("type").choice(kJointTypes);
     std::vector<const char*> keys = {"type", "a", "b", "anchor_a", "anchor_b"};
-    if (joint.type == "distance") keys.push_back("length");
-    if (joint.type == "hinge") keys.insert(keys.end(), {"axis", "limits"});
-    if (joint.type == "cone_twist") keys.insert(keys.end(), {"axis", "cone_angle", "twist_limits"});
-    if (std::find(std::begin(kJointTypes), std::end(kJointTypes), joint.type) == std::end(kJointTypes))
-        type.fail("must be one of \"distance\", \"ball_socket\", \"hinge\", \"cone_twist\", \"fixed\" (got \"" +
-                  joint.type + "\")");
+    if (joint.type == JointType::Distance) keys.push_back("length");
+    if (joint.type == JointType::Hinge) keys.insert(keys.end(), {"axis", "limits"});
+    if (joint.type == JointType::ConeTwist) keys.insert(keys.end(), {"axis", "cone_angle", "twist_limits"});
     cursor.expectObject(keys);
     joint.bodyA = bodyIndex(cursor.child("a"), world);
     joint.bodyB = bodyIndex(cursor.child("b"), world);

@@ -1,7 +1,7 @@
 #pragma once
 // What one step hands from stage to stage, and what the last step measured. It lives in the
 // World (never in a stage's closure) so that copying the World is a complete snapshot: a copy
-// stepped on gives exactly the states the original does (chapter 9's rewind relies on it).
+// stepped on gives exactly the states the original does (the rewind of chapter 9, to come, relies on it).
 
 #include "math/math.h"
 

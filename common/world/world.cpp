@@ -92,11 +92,23 @@ Mat3 worldInverseInertia(const Body& body, const Motion& motion) {
     return rotation * motion.inverseInertiaLocal * rotation.transpose();
 }
 
-Energy computeEnergy(const World& world) {
+const char* toString(JointType type) {
+    switch (type) {
+        case JointType::Distance: return "distance";
+        case JointType::BallSocket: return "ball_socket";
+        case JointType::Hinge: return "hinge";
+        case JointType::ConeTwist: return "cone_twist";
+        case JointType::Fixed: return "fixed";
+    }
+    return "?";
+}
+
+Energy computeEnergy(const World& world, const std::function<bool(int bodyIndex)>& countsBody) {
+    const auto counts = [&](int bodyIndex) { return !countsBody || countsBody(bodyIndex); };
     Energy energy;
     for (const Motion& motion : world.motions) {
         const Body& body = world.bodies[motion.bodyIndex];
-        if (body.type != BodyType::Dynamic) continue;
+        if (body.type != BodyType::Dynamic || !counts(motion.bodyIndex)) continue;
         const Mat3 rotation = body.transform.rotation.toRotationMatrix();
         const Vec3 angularLocal = rotation.transpose() * motion.angularVelocity;
         energy.kinetic += 0.5 * motion.mass * motion.linearVelocity.squaredNorm() +
@@ -104,6 +116,7 @@ Energy computeEnergy(const World& world) {
         energy.gravity -= motion.mass * world.settings.gravity.dot(body.transform.apply(motion.localCenter));
     }
     for (const Spring& spring : world.springs) {
+        if (!counts(spring.bodyA)) continue;
         const Vec3 endA = world.bodies[spring.bodyA].transform.apply(spring.localAnchorA);
         const Vec3 endB = spring.bodyB < 0 ? spring.anchorB : world.bodies[spring.bodyB].transform.apply(spring.anchorB);
         const double stretch = (endB - endA).norm() - spring.restLength;

@@ -8,6 +8,7 @@
 #include "world/step_state.h"
 
 #include <optional>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,9 +32,14 @@ struct Damping {
     Real angular = 0;                    // 1/s
 };
 
-/// A joint as the scene describes it; chapter 8 turns these into constraint rows.
+enum class JointType { Distance, BallSocket, Hinge, ConeTwist, Fixed };
+
+/// The scene-format spelling: "distance", "ball_socket", "hinge", "cone_twist", "fixed".
+const char* toString(JointType type);
+
+/// A joint as the scene describes it; chapter 8 (to come) turns these into constraint rows.
 struct JointDesc {
-    std::string type;                    // distance, ball_socket, hinge, cone_twist, fixed
+    JointType type = JointType::BallSocket;
     int bodyA = -1;
     int bodyB = -1;
     Vec3 localAnchorA = Vec3::Zero();
@@ -70,7 +76,7 @@ struct World {
     std::vector<JointDesc> joints;
 
     // Collision state. candidatePairs is rebuilt every frame by whatever finds candidates (all
-    // pairs in chapter 3, a broadphase from chapter 5); pairs lists the pairs the last narrowphase
+    // pairs in chapter 3, a broadphase from chapter 5, to come); pairs lists the pairs the last narrowphase
     // found overlapping. contacts is the contact cache: one record per touching pair, sorted by
     // pair, kept from step to step (contact.h).
     std::vector<BodyPair> candidatePairs;
@@ -105,7 +111,9 @@ struct Energy {
     double total() const { return kinetic + gravity + springs; }
 };
 
-/// Mechanical energy of the dynamic bodies (kinematic and static bodies carry none).
-Energy computeEnergy(const World& world);
+/// Mechanical energy of the dynamic bodies (kinematic and static bodies carry none). With
+/// `countsBody`, only the bodies it accepts, and the springs whose A end is such a body: the
+/// energy of one chain of several in a scene.
+Energy computeEnergy(const World& world, const std::function<bool(int bodyIndex)>& countsBody = {});
 
 }  // namespace stepwise

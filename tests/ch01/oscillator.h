@@ -1,10 +1,9 @@
 #pragma once
-// Shared by the chapter 1 suites: a body on a zero-rest-length spring to a world anchor,
-// without gravity, which is a harmonic oscillator with a closed-form solution
-//   x(t) = anchor + d0 cos(w t) + (v0 / w) sin(w t),  w = sqrt(k / m),
-// and a least-squares slope for measured convergence orders.
+// Shared by the chapter 1 suites: the chapter's harmonic oscillator (01_integrators/oscillator.h)
+// set up off the origin, and a least-squares slope for measured convergence orders.
 
 #include "01_integrators/integrate.h"
+#include "01_integrators/oscillator.h"
 #include "support/fixture.h"
 
 #include <cmath>
@@ -12,43 +11,30 @@
 
 namespace stepwise::test {
 
-struct OscillatorSetup {
-    double omega = 2 * 3.14159265358979323846;   // rad/s
-    Vec3 anchor = Vec3(1, 2, 3);
-    Vec3 offset = Vec3(Real(0.8), Real(-0.3), Real(0.5));
-    Vec3 velocity = Vec3(Real(1.5), Real(2.0), Real(-1.0));
-    Real mass = 2;
+/// The suites' oscillator: off the origin, moving in all three axes, heavier than 1 kg, so no
+/// term of the closed form is trivially zero.
+struct OscillatorSetup : Oscillator {
+    OscillatorSetup() {
+        anchor = Vec3(1, 2, 3);
+        offset = Vec3(Real(0.8), Real(-0.3), Real(0.5));
+        velocity = Vec3(Real(1.5), Real(2.0), Real(-1.0));
+        mass = 2;
+    }
 };
 
-inline World makeOscillator(const OscillatorSetup& setup, IntegratorKind method) {
+inline World makeOscillator(const Oscillator& setup, IntegratorKind method) {
     World world = makeWorld(zeroGravitySettings(), "oscillator");
     world.settings.integrator = method;
-    const int body = addSphere(world, setup.anchor + setup.offset, Real(0.1), BodyType::Dynamic, setup.mass);
-    setVelocity(world, body, setup.velocity);
-    Spring spring;
-    spring.bodyA = body;
-    spring.anchorB = setup.anchor;
-    spring.stiffness = Real(setup.omega * setup.omega * setup.mass);
-    world.springs.push_back(spring);
+    addOscillator(world, setup);
     return world;
 }
 
-inline Eigen::Vector3d exactOscillatorPosition(const OscillatorSetup& setup, double t) {
-    return setup.anchor.cast<double>() + setup.offset.cast<double>() * std::cos(setup.omega * t) +
-           setup.velocity.cast<double>() * (std::sin(setup.omega * t) / setup.omega);
-}
-
-inline Eigen::Vector3d exactOscillatorVelocity(const OscillatorSetup& setup, double t) {
-    return -setup.offset.cast<double>() * (setup.omega * std::sin(setup.omega * t)) +
-           setup.velocity.cast<double>() * std::cos(setup.omega * t);
-}
-
 /// Position error at `duration` after `steps` equal steps of integrate().
-inline double oscillatorError(const OscillatorSetup& setup, IntegratorKind method, double duration, int steps) {
+inline double oscillatorError(const Oscillator& setup, IntegratorKind method, double duration, int steps) {
     World world = makeOscillator(setup, method);
     const Real dt = Real(duration / steps);
     for (int i = 0; i < steps; ++i) integrate(world, dt);
-    return (world.bodies[0].transform.position.cast<double>() - exactOscillatorPosition(setup, duration)).norm();
+    return (world.bodies[0].transform.position.cast<double>() - setup.exactPosition(duration)).norm();
 }
 
 /// Least-squares slope of log(y) against log(x).

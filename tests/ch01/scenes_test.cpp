@@ -4,6 +4,7 @@
 #include "01_integrators/integrate.h"
 #include "01_integrators/scenes.h"
 #include "app/registry.h"
+#include "support/registry_fixture.h"
 #include "support/fixture.h"
 #include "world/debug_draw.h"
 
@@ -17,19 +18,6 @@
 
 using namespace stepwise;
 using namespace stepwise::test;
-
-namespace {
-
-const Registry& chapterRegistry() {
-    static const Registry registry = [] {
-        Registry r;
-        registerChapters(r);
-        return r;
-    }();
-    return registry;
-}
-
-}  // namespace
 
 TEST_CASE("chapter 1 registers its scenes, pipeline and bench", "[ch01][scenes]") {
     const Registry& registry = chapterRegistry();
@@ -79,21 +67,10 @@ TEST_CASE("side by side: the RK4 chain loses energy, Euler and Verlet keep their
     CHECK(pipeline.stages().at(0).name == "integrate:mixed");
     // Energy of each chain (kinetic + gravity + its springs), the same way the demo panel sums it.
     auto chainEnergy = [](const World& w, IntegratorKind method) {
-        double energy = 0;
-        for (const Motion& motion : w.motions) {
-            if (integratorOf(w, motion) != method) continue;
-            energy += 0.5 * motion.mass * motion.linearVelocity.cast<double>().squaredNorm() -
-                      motion.mass * w.settings.gravity.cast<double>().dot(
-                                        worldCenterOfMass(w, motion.bodyIndex).cast<double>());
-        }
-        for (const Spring& spring : w.springs) {
-            if (integratorOf(w, *w.motionOf(spring.bodyA)) != method) continue;
-            const Vec3 endA = w.bodies[spring.bodyA].transform.apply(spring.localAnchorA);
-            const Vec3 endB = spring.bodyB < 0 ? spring.anchorB : w.bodies[spring.bodyB].transform.apply(spring.anchorB);
-            const double stretch = (endB - endA).cast<double>().norm() - spring.restLength;
-            energy += 0.5 * spring.stiffness * stretch * stretch;
-        }
-        return energy;
+        return computeEnergy(w, [&](int bodyIndex) {
+            const Motion* motion = w.motionOf(bodyIndex);
+            return motion && integratorOf(w, *motion) == method;
+        }).total();
     };
     const IntegratorKind methods[] = {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Rk4};
     // Mean energy over the first and the last two seconds: averages out the band Euler and

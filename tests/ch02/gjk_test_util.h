@@ -5,8 +5,7 @@
 #include "02_gjk/random_pairs.h"
 #include "02_gjk/box_oracle.h"
 
-namespace stepwise {
-namespace testing {
+namespace stepwise::test {
 
 /// The two shapes of a box pair and their proxies (the proxies point into this struct: keep it
 /// alive and do not copy it while they are used).
@@ -49,5 +48,4 @@ inline bool tetrahedronHoldsOrigin(const Simplex& simplex, Real tolerance) {
     return closest.inside || closest.point.norm() <= tolerance;
 }
 
-}  // namespace testing
-}  // namespace stepwise
+}  // namespace stepwise::test

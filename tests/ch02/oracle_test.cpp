@@ -79,8 +79,8 @@ TEST_CASE("oracle: depth and distance are consistent with independent checks", "
     int separatedChecked = 0, overlapChecked = 0;
     for (int index = 0; index < 300; ++index) {
         const BoxPair pair = randomBoxPair(random, 0.05, 2.0);
-        const OracleBox a = testing::oracleA(pair);
-        OracleBox b = testing::oracleB(pair);
+        const OracleBox a = test::oracleA(pair);
+        OracleBox b = test::oracleB(pair);
         const SatResult sat = boxSat(a, b);
         if (sat.overlap) {
             // Moving B by the depth along the axis just separates it; a little less does not.

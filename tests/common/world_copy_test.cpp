@@ -4,6 +4,7 @@
 // substeps.
 #include <catch2/catch.hpp>
 
+#include "support/registry_fixture.h"
 #include "app/runner.h"
 
 #include <cstring>
@@ -44,8 +45,7 @@ bool identicalStates(const World& a, const World& b) {
 }  // namespace
 
 TEST_CASE("a copy of the world taken mid-run steps on exactly like the original", "[common][determinism]") {
-    Registry registry;
-    registerChapters(registry);
+    const Registry& registry = test::chapterRegistry();
     for (const SceneEntry& entry : registry.scenes()) {
         for (int substeps : {1, 4}) {
             INFO("scene " << entry.name << ", " << substeps << " substeps");

@@ -10,7 +10,7 @@
 #include <iostream>
 
 using namespace stepwise;
-using namespace stepwise::testing;
+using namespace stepwise::test;
 
 TEST_CASE("near-contact pairs have the gap they were built with", "[ch02][oracle][near-contact]") {
     Random random(41);

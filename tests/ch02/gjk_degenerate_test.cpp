@@ -9,7 +9,7 @@
 #include <limits>
 
 using namespace stepwise;
-using stepwise::testing::tetrahedronHoldsOrigin;
+using stepwise::test::tetrahedronHoldsOrigin;
 
 namespace {
 

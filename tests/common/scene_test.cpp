@@ -59,7 +59,7 @@ TEST_CASE("The contract's example scene loads with the values it states", "[comm
     CHECK(ball->mass == Approx(1000.0 * 4.0 / 3.0 * 3.14159265358979 * 0.25 * 0.25 * 0.25).epsilon(1e-5));
     CHECK(ball->linearVelocity.isApprox(Vec3(0, -1, 0)));
     REQUIRE(world.joints.size() == 1);
-    CHECK(world.joints[0].type == "distance");
+    CHECK(std::string(toString(world.joints[0].type)) == "distance");
     CHECK(world.joints[0].bodyA == 1);
     CHECK(world.joints[0].bodyB == 2);
     CHECK(world.joints[0].localAnchorA.isApprox(Vec3(0, 0.5, 0)));
@@ -391,7 +391,7 @@ TEST_CASE("A saved scene loads back to the same world", "[common][scene]") {
     for (std::size_t i = 0; i < first.joints.size(); ++i) {
         const JointDesc& a = first.joints[i];
         const JointDesc& b = second.joints[i];
-        INFO(a.type);
+        INFO(toString(a.type));
         CHECK(b.type == a.type);
         CHECK(b.bodyA == a.bodyA);
         CHECK(b.bodyB == a.bodyB);

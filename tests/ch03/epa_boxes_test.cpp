@@ -1,5 +1,6 @@
 // EPA against the exact separating-axis depth of overlapping boxes (chapters/02_gjk/box_oracle.h).
 #include "03_epa/narrowphase.h"
+#include "02_gjk/random_pairs.h"
 #include "ch03/random_pairs.h"
 
 #include <catch2/catch.hpp>
@@ -14,30 +15,20 @@ using stepwise::Random;
 
 namespace {
 
-struct BoxPair {
+struct SatPair {
     Vec3 halfA, halfB;
     Transform poseA, poseB;
     oracle::SatResult sat;
 };
 
-// Pairs are kept when they overlap by at least `minDepthFraction` of the smaller box's smallest
-// half extent: a relative depth error means little at a depth of a few ulps (the shallow end is
-// tested separately, with an absolute bound).
-std::vector<BoxPair> makeOverlappingBoxes(unsigned seed, int count, double minDepthFraction) {
+std::vector<SatPair> makeOverlappingBoxes(unsigned seed, int count, double minDepthFraction) {
     Random random(seed);
-    std::vector<BoxPair> pairs;
+    std::vector<SatPair> pairs;
     while (static_cast<int>(pairs.size()) < count) {
-        BoxPair pair;
-        pair.halfA = Vec3(Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)));
-        pair.halfB = Vec3(Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)));
-        pair.poseA.position = Vec3(Real(random.uniform(-2, 2)), Real(random.uniform(-2, 2)), Real(random.uniform(-2, 2)));
-        pair.poseA.rotation = random.rotation();
-        pair.poseB.rotation = random.rotation();
-        const double reach = pair.halfA.norm() + pair.halfB.norm();
-        pair.poseB.position = pair.poseA.position + Real(random.uniform(0, reach)) * random.unitVector();
+        const BoxPair drawn = overlappingBoxPair(random, minDepthFraction, 2.0);
+        SatPair pair{drawn.halfExtentsA, drawn.halfExtentsB, drawn.poseA, drawn.poseB, {}};
         pair.sat = oracle::boxSat(oracle::makeOracleBox(pair.halfA, pair.poseA), oracle::makeOracleBox(pair.halfB, pair.poseB));
-        const double smallest = std::min(pair.halfA.minCoeff(), pair.halfB.minCoeff());
-        if (pair.sat.overlap && pair.sat.depth >= minDepthFraction * smallest) pairs.push_back(pair);
+        pairs.push_back(pair);
     }
     return pairs;
 }
@@ -51,11 +42,11 @@ struct Errors {
     int failures = 0;              // no contact, or non-finite values
 };
 
-Errors measure(const std::vector<BoxPair>& pairs, SupportMode mode) {
+Errors measure(const std::vector<SatPair>& pairs, SupportMode mode) {
     Errors errors;
     CollideOptions options;
     options.supportMode = mode;
-    for (const BoxPair& pair : pairs) {
+    for (const SatPair& pair : pairs) {
         const ContactQuery query =
             collideShapes(Shape::box(pair.halfA), pair.poseA, Shape::box(pair.halfB), pair.poseB, options);
         if (!query.intersect || !isFinite(query.depth) || !isFinite(query.normal) || !isFinite(query.pointA) ||
@@ -92,7 +83,7 @@ void print(const char* label, const Errors& errors) {
 }  // namespace
 
 TEST_CASE("EPA matches the exact SAT depth and axis of 20,000 random overlapping box pairs", "[ch03][epa]") {
-    const std::vector<BoxPair> pairs = makeOverlappingBoxes(20240603u, 20000, 0.02);
+    const std::vector<SatPair> pairs = makeOverlappingBoxes(20240603u, 20000, 0.02);
     const Errors errors = measure(pairs, SupportMode::Extents);
     print("boxes (extents support)", errors);
     // [ch03-accuracy]
@@ -107,7 +98,7 @@ TEST_CASE("EPA matches the exact SAT depth and axis of 20,000 random overlapping
 }
 
 TEST_CASE("EPA gives the same answers with vertex support", "[ch03][epa]") {
-    const std::vector<BoxPair> pairs = makeOverlappingBoxes(77u, 2000, 0.02);
+    const std::vector<SatPair> pairs = makeOverlappingBoxes(77u, 2000, 0.02);
     const Errors errors = measure(pairs, SupportMode::Vertices);
     print("boxes (vertex support)", errors);
     CHECK(errors.failures == 0);
@@ -120,10 +111,10 @@ TEST_CASE("EPA gives the same answers with vertex support", "[ch03][epa]") {
 TEST_CASE("Shallow box overlaps: the depth is right to an absolute bound", "[ch03][epa]") {
     // Depths down to a millionth of the box size, where a relative error is dominated by the
     // float resolution of the positions: hold them to a few ulps of the pair's size instead.
-    const std::vector<BoxPair> pairs = makeOverlappingBoxes(4242u, 3000, 0.0);
+    const std::vector<SatPair> pairs = makeOverlappingBoxes(4242u, 3000, 0.0);
     int failures = 0;
     double worst = 0;
-    for (const BoxPair& pair : pairs) {
+    for (const SatPair& pair : pairs) {
         const ContactQuery query = collideShapes(Shape::box(pair.halfA), pair.poseA, Shape::box(pair.halfB), pair.poseB);
         if (!isFinite(query.depth) || !isFinite(query.pointA) || !isFinite(query.pointB)) ++failures;
         const double size = pair.halfA.norm() + pair.halfB.norm();

@@ -78,7 +78,7 @@ TEST_CASE("supports of a zero, tiny or NaN direction are defined points", "[ch02
 TEST_CASE("Minkowski support is the difference of the two supports", "[ch02][support]") {
     Random random(9);
     const BoxPair pair = randomBoxPair(random, 0.1, 1.0, Vec3(Real(1e4), 0, Real(-1e4)));
-    const testing::BoxPairProxies proxies(pair, SupportMode::Extents);
+    const test::BoxPairProxies proxies(pair, SupportMode::Extents);
     for (int i = 0; i < 50; ++i) {
         const Vec3 d = random.unitVector();
         const SupportPoint point = minkowskiSupport(proxies.a, proxies.b, d);

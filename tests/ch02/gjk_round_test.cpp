@@ -8,7 +8,7 @@
 #include <cmath>
 
 using namespace stepwise;
-using namespace stepwise::testing;
+using namespace stepwise::test;
 
 namespace {
 

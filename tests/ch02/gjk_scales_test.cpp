@@ -9,7 +9,7 @@
 #include <iostream>
 
 using namespace stepwise;
-using namespace stepwise::testing;
+using namespace stepwise::test;
 
 namespace {
 
