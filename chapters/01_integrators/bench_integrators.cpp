@@ -33,8 +33,12 @@ std::vector<Oscillator> makeOscillators() {
     for (int i = 0; i < kBodies; ++i) {
         oscillators[i].omega = kOmega;
         oscillators[i].anchor = Vec3(Real(3 * i), 0, 0);
-        oscillators[i].offset = Vec3(uniform(), uniform(), uniform());
-        oscillators[i].velocity = Real(kOmega) * Vec3(uniform(), uniform(), uniform());
+        // One draw per statement (z, y, x): a call's arguments are evaluated in an unspecified
+        // order, so draws inside one expression would give GCC and Clang different oscillators.
+        const Real offsetZ = uniform(), offsetY = uniform(), offsetX = uniform();
+        const Real speedZ = uniform(), speedY = uniform(), speedX = uniform();
+        oscillators[i].offset = Vec3(offsetX, offsetY, offsetZ);
+        oscillators[i].velocity = Real(kOmega) * Vec3(speedX, speedY, speedZ);
     }
     return oscillators;
 }

@@ -66,7 +66,12 @@ PairSet makeSphereBoxPairs(int count) {
     while (static_cast<int>(set.pairs.size()) < count) {
         BenchPair pair;
         pair.a = Shape::sphere(Real(random.uniform(0.1, 1)));
-        pair.b = Shape::box(Vec3(Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1)), Real(random.uniform(0.1, 1))));
+        // One draw per statement (z, y, x): a call's arguments are evaluated in an unspecified
+        // order, so draws inside one expression would give GCC and Clang different pairs.
+        const double halfZ = random.uniform(0.1, 1);
+        const double halfY = random.uniform(0.1, 1);
+        const double halfX = random.uniform(0.1, 1);
+        pair.b = Shape::box(Vec3(Real(halfX), Real(halfY), Real(halfZ)));
         pair.poseB.rotation = random.rotation();
         const double reach = pair.a.radius + pair.b.halfExtents.norm();
         pair.poseB.position = Real(random.uniform(0, reach)) * random.unitVector();

@@ -46,17 +46,6 @@ void rejectOtherFormats(const JsonCursor& root) {
         root.fail(std::string("this looks like collide's own output (it has \"results\"); ") + expected);
 }
 
-std::string readFile(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw SceneError(path, "no such file");
-    if (std::filesystem::is_directory(path, error)) throw SceneError(path, "is a directory, not a pairs file");
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw SceneError(path, "cannot open the file for reading");
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
 }  // namespace
 
 // [ch03-collide-parse]
@@ -70,7 +59,7 @@ std::vector<CollidePair> parseCollidePairs(const std::string& jsonText, const st
     std::vector<CollidePair> result;
     errors.attempt([&] {
         const JsonCursor pairs = root.child("pairs");
-        result.resize(pairs.arraySize());
+        result.resize(pairs.arraySizeAtMost(kMaxQueryPairs));
         for (std::size_t i = 0; i < result.size(); ++i) {
             errors.attempt([&] {
                 const JsonCursor pair = pairs.element(i);
@@ -107,7 +96,7 @@ std::string collideResultsToJson(const std::vector<ContactQuery>& results) {
 int runCollideCommand(const CollideArgs& args, std::ostream& out, std::ostream& err) {
     std::vector<CollidePair> pairs;
     try {
-        pairs = parseCollidePairs(readFile(args.inputPath), args.inputPath);
+        pairs = parseCollidePairs(readInputFile(args.inputPath, "a pairs file"), args.inputPath);
     } catch (const SceneError& error) {
         printSceneError(err, error);
         return 2;

@@ -13,7 +13,10 @@ namespace stepwise {
 
 namespace {
 
+// Exit codes (docs/scene-format.md, "Exit codes"): 0 done, 1 an internal error, 2 bad input
+// (the message names the JSON path), 3 a run stopped because the step became unstable.
 constexpr int kExitBadInput = 2;
+constexpr int kExitUnstable = 3;
 
 struct RunArgs {
     std::string scene;
@@ -40,7 +43,10 @@ int commandRun(const Registry& registry, const RunArgs& args) {
         writeReport(args.reportPath, world, stats, engineVersion());
         if (!args.quiet) std::cout << "report     " << args.reportPath << "\n";
     }
-    return stats.frames == args.frames ? 0 : 1;
+    if (stats.frames == args.frames) return 0;
+    // The runner stopped early: its last warning names the body and the frame.
+    std::cerr << "error: " << (stats.warnings.empty() ? "the run stopped early" : stats.warnings.back()) << "\n";
+    return kExitUnstable;
 }
 
 int commandScenes(const Registry& registry) {

@@ -8,6 +8,7 @@
 // `collide`).
 
 #include "world/scene.h"
+#include "world/scene_limits.h"
 #include "world/shape.h"
 
 #include <nlohmann/json.hpp>
@@ -100,6 +101,13 @@ public:
         if (!value_.is_array()) fail("must be an array");
         return value_.size();
     }
+    /// An array of at most `limit` entries (scene_limits.h).
+    std::size_t arraySizeAtMost(std::size_t limit) const {
+        const std::size_t size = arraySize();
+        if (size > limit)
+            fail("has " + std::to_string(size) + " entries; at most " + std::to_string(limit) + " are supported");
+        return size;
+    }
     JsonCursor element(std::size_t index) const {
         return JsonCursor(value_.at(index), path_ + "[" + std::to_string(index) + "]");
     }
@@ -110,7 +118,21 @@ public:
         if (!std::isfinite(value) || std::abs(value) > double(kRealMax)) fail("must be a finite number");
         return Real(value);
     }
+    /// A number no larger than `limit` in magnitude (scene_limits.h).
+    Real within(Real limit) const {
+        const Real value = number();
+        if (!(std::abs(value) <= limit))
+            fail("must be within [" + formatForMessage(-limit) + ", " + formatForMessage(limit) + "]");
+        return value;
+    }
     Real positive() const { return check(number() > 0, "must be > 0"); }
+    /// A number > 0 within [low, high].
+    Real positiveBetween(Real low, Real high) const {
+        const Real value = positive();
+        if (value < low || value > high)
+            fail("must be between " + formatForMessage(low) + " and " + formatForMessage(high));
+        return value;
+    }
     Real positiveAtMost(Real high) const {
         const Real value = number();
         if (!(value > 0 && value <= high)) fail("must be > 0 and <= " + formatForMessage(high));
@@ -144,6 +166,11 @@ public:
     Vec3 vec3() const {
         if (!value_.is_array() || value_.size() != 3) fail("must be an array of 3 numbers [x, y, z]");
         return Vec3(element(0).number(), element(1).number(), element(2).number());
+    }
+    /// [x, y, z], each no larger than `limit` in magnitude.
+    Vec3 vec3Within(Real limit) const {
+        vec3();
+        return Vec3(element(0).within(limit), element(1).within(limit), element(2).within(limit));
     }
     /// [lo, hi] with lo <= hi.
     std::pair<Real, Real> interval() const {
@@ -183,6 +210,10 @@ private:
     const Json& value_;
     std::string path_;
 };
+
+/// Reads a whole file of at most kMaxFileBytes. Throws SceneError(path, ...) when it is missing,
+/// a directory, unreadable or too large; `what` names the kind of file in messages.
+std::string readInputFile(const std::string& path, const char* what);
 
 /// Parses JSON text. nlohmann keeps the last of two equal keys silently, so a parser callback
 /// tracks the current path and rejects duplicates; the same path names a number that overflows.

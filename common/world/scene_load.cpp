@@ -9,10 +9,8 @@
 #include "world/scene.h"
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <ostream>
-#include <sstream>
 
 namespace stepwise {
 namespace {
@@ -38,7 +36,7 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     const auto read = [&](const char* key, auto assign) {
         if (auto v = cursor.optional(key)) errors.attempt([&] { assign(*v); });
     };
-    read("gravity", [&](const JsonCursor& v) { settings.gravity = v.vec3(); });
+    read("gravity", [&](const JsonCursor& v) { settings.gravity = v.vec3Within(kMaxGravity); });
     read("dt", [&](const JsonCursor& v) { settings.dt = v.positiveAtMost(1); });
     read("substeps", [&](const JsonCursor& v) { settings.substeps = v.integer(1, 64); });
     read("solver_iterations", [&](const JsonCursor& v) { settings.solverIterations = v.integer(0, 1000); });
@@ -81,9 +79,9 @@ JointDesc readJoint(const JsonCursor& cursor, const World& world, ErrorList& err
     const auto read = [&](const char* key, auto assign) {
         if (auto v = cursor.optional(key)) errors.attempt([&] { assign(*v); });
     };
-    read("anchor_a", [&](const JsonCursor& v) { joint.localAnchorA = v.vec3(); });
-    read("anchor_b", [&](const JsonCursor& v) { joint.localAnchorB = v.vec3(); });
-    read("length", [&](const JsonCursor& v) { joint.length = v.nonNegative(); });
+    read("anchor_a", [&](const JsonCursor& v) { joint.localAnchorA = v.vec3Within(kMaxCoordinate); });
+    read("anchor_b", [&](const JsonCursor& v) { joint.localAnchorB = v.vec3Within(kMaxCoordinate); });
+    read("length", [&](const JsonCursor& v) { joint.length = v.inRange(0, kMaxCoordinate); });
     read("axis", [&](const JsonCursor& v) {
         const Vec3 axis = v.vec3();
         if (axis.norm() < Real(1e-6)) v.fail("must not be zero");
@@ -114,8 +112,8 @@ void readForce(const JsonCursor& cursor, World& world) {
     spring.bodyA = bodyIndex(cursor.child("a"), world);
     if (auto v = cursor.optional("b")) spring.bodyB = bodyIndex(*v, world);
     if (spring.bodyA == spring.bodyB) cursor.child("b").fail("a spring needs two different bodies");
-    if (auto v = cursor.optional("anchor_a")) spring.localAnchorA = v->vec3();
-    if (auto v = cursor.optional("anchor_b")) spring.anchorB = v->vec3();
+    if (auto v = cursor.optional("anchor_a")) spring.localAnchorA = v->vec3Within(kMaxCoordinate);
+    if (auto v = cursor.optional("anchor_b")) spring.anchorB = v->vec3Within(kMaxCoordinate);
     spring.stiffness = cursor.child("stiffness").nonNegative();
     if (auto v = cursor.optional("damping")) spring.damping = v->nonNegative();
     // Without a rest length the spring starts relaxed: the anchors' distance at load time.
@@ -123,14 +121,14 @@ void readForce(const JsonCursor& cursor, World& world) {
     const Vec3 pointB =
         spring.bodyB < 0 ? spring.anchorB : world.bodies[std::size_t(spring.bodyB)].transform.apply(spring.anchorB);
     spring.restLength = (pointB - pointA).norm();
-    if (auto v = cursor.optional("rest_length")) spring.restLength = v->nonNegative();
+    if (auto v = cursor.optional("rest_length")) spring.restLength = v->inRange(0, kMaxCoordinate);
     world.springs.push_back(spring);
 }
 
 // The bodies, each key checked on its own (readBodyDef); names must be unique.
 void readBodies(const JsonCursor& bodies, World& world, ErrorList& errors) {
     std::map<std::string, std::size_t> firstUse;
-    for (std::size_t i = 0; i < bodies.arraySize(); ++i) {
+    for (std::size_t i = 0; i < bodies.arraySizeAtMost(kMaxBodies); ++i) {
         const JsonCursor cursor = bodies.element(i);
         if (!cursor.json().is_object()) {
             errors.attempt([&] { cursor.fail("must be an object"); });
@@ -195,12 +193,12 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
     if (bodiesRead) {
         errors.attempt([&] {
             if (auto joints = root.optional("joints"))
-                for (std::size_t i = 0; i < joints->arraySize(); ++i)
+                for (std::size_t i = 0; i < joints->arraySizeAtMost(kMaxJoints); ++i)
                     errors.attempt([&] { world.joints.push_back(readJoint(joints->element(i), world, errors)); });
         });
         errors.attempt([&] {
             if (auto forces = root.optional("forces"))
-                for (std::size_t i = 0; i < forces->arraySize(); ++i)
+                for (std::size_t i = 0; i < forces->arraySizeAtMost(kMaxForces); ++i)
                     errors.attempt([&] { readForce(forces->element(i), world); });
         });
     }
@@ -220,14 +218,7 @@ World loadSceneFromString(const std::string& jsonText, const std::string& source
 }
 
 World loadSceneFile(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw SceneError(path, "no such file");
-    if (std::filesystem::is_directory(path, error)) throw SceneError(path, "is a directory, not a scene file");
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (!file) throw SceneError(path, "cannot read the file");
-    return loadScene(text.str(), path, std::filesystem::path(path).stem().string());
+    return loadScene(readInputFile(path, "a scene file"), path, std::filesystem::path(path).stem().string());
 }
 
 }  // namespace stepwise
