@@ -24,6 +24,11 @@ execute_process(COMMAND ${FIGURES} ${IMAGES} RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "stepwise_figures failed (${status})")
 endif()
+# The extremes tables of docs/reliability.md, quick form (bench/extremes.cpp).
+execute_process(COMMAND ${EXTREMES} --quick OUTPUT_FILE ${IMAGES}/extremes.txt RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "stepwise_extremes --quick failed (${status})")
+endif()
 # "What you should see": a page that includes run-chNN-SCENE.txt gets what a headless run of
 # SCENE with chapter NN's engine prints over 600 frames (10 s), from this build's program.
 file(GLOB pages ${SOURCE}/docs/*.md)

@@ -2,7 +2,9 @@
 # Installs the Debian packages the native build, tests and docs need, if any is missing.
 # Idempotent; needs root (or sudo). Nothing is fetched from outside Debian's archive.
 set -euo pipefail
-packages=(cmake ninja-build g++ libeigen3-dev nlohmann-json3-dev libcli11-dev catch2 doxygen libjs-mathjax chromium)
+# clang and libclang-rt-dev: the sanitizer build and its libFuzzer targets (linux-asan preset).
+packages=(cmake ninja-build g++ clang libclang-rt-dev libeigen3-dev nlohmann-json3-dev libcli11-dev catch2 doxygen
+          libjs-mathjax chromium)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

@@ -85,9 +85,12 @@ SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Rea
         return edgeResult(points, ib, ic, (d4 - d3) / ((d4 - d3) + (d5 - d6)));
 
     // Face region. va + vb + vc = |ab x ac|^2; when that is ~0 the triangle is a sliver whose
-    // "face" has no well-defined plane: fall back to the best of its three edges.
+    // "face" has no well-defined plane: fall back to the best of its three edges. The test is
+    // sin^2 of the angle at a against the square of the fraction (as for the segment's length
+    // above): a sliver is a triangle thinner than 256 rounding errors, not thinner than 0.3
+    // degrees, which the Minkowski difference of a 100:1 needle and a small box routinely is.
     const Real denominator = va + vb + vc;
-    if (!(denominator > kDegenerateFraction * ab.squaredNorm() * ac.squaredNorm())) {
+    if (!(denominator > kDegenerateFraction * kDegenerateFraction * ab.squaredNorm() * ac.squaredNorm())) {
         SimplexClosest best = closestOnSegment(points, ia, ib, scale);
         for (const SimplexClosest& edge : {closestOnSegment(points, ia, ic, scale), closestOnSegment(points, ib, ic, scale)})
             if (edge.point.squaredNorm() < best.point.squaredNorm()) best = edge;

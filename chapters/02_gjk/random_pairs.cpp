@@ -9,9 +9,13 @@ namespace stepwise {
 
 BoxPair randomBoxPair(Random& random, double minSize, double maxSize, const Vec3& origin) {
     BoxPair pair;
+    // One draw per statement (z, y, x): a call's arguments are evaluated in an unspecified
+    // order, so draws inside one expression would give GCC and Clang different pairs.
     auto halfExtents = [&] {
-        return Vec3(Real(0.5 * random.uniform(minSize, maxSize)), Real(0.5 * random.uniform(minSize, maxSize)),
-                    Real(0.5 * random.uniform(minSize, maxSize)));
+        const double z = random.uniform(minSize, maxSize);
+        const double y = random.uniform(minSize, maxSize);
+        const double x = random.uniform(minSize, maxSize);
+        return Vec3(Real(0.5 * x), Real(0.5 * y), Real(0.5 * z));
     };
     pair.halfExtentsA = halfExtents();
     pair.halfExtentsB = halfExtents();
@@ -25,8 +29,11 @@ BoxPair randomBoxPair(Random& random, double minSize, double maxSize, const Vec3
 }
 
 BoxPair overlappingBoxPair(Random& random, double minDepthFraction, double centreSpread) {
-    auto halfExtents = [&] {
-        return Vec3(Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)), Real(random.uniform(0.05, 1)));
+    auto halfExtents = [&] {  // one draw per statement (z, y, x), as in randomBoxPair
+        const double z = random.uniform(0.05, 1);
+        const double y = random.uniform(0.05, 1);
+        const double x = random.uniform(0.05, 1);
+        return Vec3(Real(x), Real(y), Real(z));
     };
     for (;;) {
         BoxPair pair;
@@ -50,8 +57,15 @@ BoxPair overlappingBoxPair(Random& random, double minDepthFraction, double centr
 
 BoxPair nearContactBoxPair(Random& random, double gap) {
     BoxPair pair;
-    pair.halfExtentsA = Vec3(Real(random.uniform(0.5, 1.0)), Real(random.uniform(0.5, 1.0)), Real(random.uniform(0.5, 1.0)));
-    pair.halfExtentsB = Vec3(Real(random.uniform(0.05, 0.2)), Real(random.uniform(0.05, 0.2)), Real(random.uniform(0.05, 0.2)));
+    // One draw per statement (z, y, x), as in randomBoxPair.
+    auto halfExtents = [&random](double low, double high) {
+        const double z = random.uniform(low, high);
+        const double y = random.uniform(low, high);
+        const double x = random.uniform(low, high);
+        return Vec3(Real(x), Real(y), Real(z));
+    };
+    pair.halfExtentsA = halfExtents(0.5, 1.0);
+    pair.halfExtentsB = halfExtents(0.05, 0.2);
     pair.poseB.rotation = random.rotation();
     // B's corners in double, from the rounded rotation and half extents (the stored pose is
     // what both GJK and this construction must agree on).
@@ -69,8 +83,10 @@ BoxPair nearContactBoxPair(Random& random, double gap) {
     };
     const Eigen::Vector3d arm = lowestCorner();
     // The corner lands on A's +X face at (hA.x + gap, y, z) with y, z in the middle half of it.
-    const Eigen::Vector3d target(double(pair.halfExtentsA.x()) + gap, random.uniform(-0.5, 0.5) * pair.halfExtentsA.y(),
-                                 random.uniform(-0.5, 0.5) * pair.halfExtentsA.z());
+    const double alongZ = random.uniform(-0.5, 0.5);  // one draw per statement, z first
+    const double alongY = random.uniform(-0.5, 0.5);
+    const Eigen::Vector3d target(double(pair.halfExtentsA.x()) + gap, alongY * pair.halfExtentsA.y(),
+                                 alongZ * pair.halfExtentsA.z());
     pair.poseB.position = (target - arm).cast<Real>();
     // Rounding the position moved the corner by up to half an ulp: measure the gap again.
     pair.exactGap = pair.poseB.position.cast<double>().x() + arm.x() - double(pair.halfExtentsA.x());

@@ -66,7 +66,13 @@ World buildDropScene() {
                             random.uniformReal(Real(-0.4), Real(0.4)));
         const Material material{Real(0.6), i % 4 == 3 ? Real(0.5) : Real(0)};
         if (i % 2 == 0) {
-            const Vec3 axis = Vec3(random.uniformReal(-1, 1), random.uniformReal(-1, 1), random.uniformReal(-1, 1)).normalized();
+            // One draw per statement: the order of a call's arguments is unspecified in C++ (GCC and Clang
+            // differ), so draws inside one expression would give each compiler a different scene. z, y, x
+            // is the order GCC evaluated them in, so the scenes are the ones GCC always built.
+            const Real axisZ = random.uniformReal(-1, 1);
+            const Real axisY = random.uniformReal(-1, 1);
+            const Real axisX = random.uniformReal(-1, 1);
+            const Vec3 axis = Vec3(axisX, axisY, axisZ).normalized();
             const Quat rotation(Eigen::AngleAxis<Real>(random.uniformReal(0, kPi), axis));
             addCrate(world, "box" + std::to_string(i), position, Vec3(Real(0.4), Real(0.3), Real(0.35)), 2, material,
                      rotation);
@@ -159,9 +165,14 @@ World buildSpherePitScene(int count) {
     for (int i = 0; i < count; ++i) {
         const int layer = i / 9;
         const int cell = i % 9;
-        const Vec3 position(Real(-0.6) + Real(0.6) * static_cast<Real>(cell % 3) + random.uniformReal(Real(-0.03), Real(0.03)),
+        // One draw per statement: the order of a call's arguments is unspecified in C++ (GCC and Clang
+        // differ), so draws inside one expression would give each compiler a different scene. z, then x
+        // is the order GCC evaluated them in, so the scenes are the ones GCC always built.
+        const Real jitterZ = random.uniformReal(Real(-0.03), Real(0.03));
+        const Real jitterX = random.uniformReal(Real(-0.03), Real(0.03));
+        const Vec3 position(Real(-0.6) + Real(0.6) * static_cast<Real>(cell % 3) + jitterX,
                             Real(0.4) + Real(0.6) * static_cast<Real>(layer),
-                            Real(-0.6) + Real(0.6) * static_cast<Real>(cell / 3) + random.uniformReal(Real(-0.03), Real(0.03)));
+                            Real(-0.6) + Real(0.6) * static_cast<Real>(cell / 3) + jitterZ);
         addBall(world, "ball" + std::to_string(i), position, random.uniformReal(Real(0.2), Real(0.28)), 1, Material{});
     }
     return world;

@@ -276,17 +276,9 @@ int crossoverCount(const std::vector<std::pair<int, double>>& bruteOverSap) {
     return crossover;
 }
 
-}  // namespace
-
-int runBroadphaseBench(const BenchOptions& options) {
-    for (const std::string& path : {options.csvPath, options.plotPath}) {
-        if (!path.empty() && !std::ofstream(path, std::ios::binary | std::ios::app)) {
-            std::cerr << "error: bench broadphase: cannot write '" << path << "'\n";
-            return 2;
-        }
-    }
-    std::ostream& out = options.out ? *options.out : std::cout;
-    const bool quick = options.quick;
+void measureBroadphase(BenchRun& run) {
+    std::ostream& out = run.out();
+    const bool quick = run.quick();
     CsvTable table({"part", "density", "shape", "bodies", "method", "broadphase_ms", "step_ms", "sort_ms",
                     "candidates", "axis_overlaps", "contacts", "narrowphase_ms", "solve_ms"});
     Series broadphasePlot, stepPlot;
@@ -296,8 +288,10 @@ int runBroadphaseBench(const BenchOptions& options) {
     std::map<StressDensity, int> crossover;
     const std::vector<int> smallCounts = {8, 16, 24, 32, 48, 64, 96, 128, 192, 256};
     for (StressDensity density : densities) {
+        run.progress().stage(std::string("crossover, ") + toString(density), long(smallCounts.size()));
         std::vector<std::pair<int, double>> ratios;
         for (int count : smallCounts) {
+            run.progress().advance();
             SceneRun run;
             run.params.count = count;
             run.params.density = density;
@@ -320,7 +314,9 @@ int runBroadphaseBench(const BenchOptions& options) {
                                           : std::vector<int>{100, 300, 1000, 3000, 10000, 30000, 100000};
     std::map<std::pair<StressDensity, int>, SceneResult> scaling;
     for (StressDensity density : densities) {
+        run.progress().stage(std::string("scaling, ") + toString(density), long(counts.size()));
         for (int count : counts) {
+            run.progress().advance();
             // Dense scenes pile up: their step grows fast, so quick runs stop at 10,000.
             if (quick && density == StressDensity::Dense && count > 10000) continue;
             SceneRun run;
@@ -355,7 +351,10 @@ int runBroadphaseBench(const BenchOptions& options) {
 
     // Settled: incremental against full sort.
     std::map<int, SettledResult> settled;
-    for (int count : quick ? std::vector<int>{10000} : std::vector<int>{10000, 100000}) {
+    const std::vector<int> settledCounts = quick ? std::vector<int>{10000} : std::vector<int>{10000, 100000};
+    run.progress().stage("settled spheres, incremental and full sort", long(settledCounts.size()) + 2);
+    for (int count : settledCounts) {
+        run.progress().advance();
         const SettledResult result = measureSettled(count, quick ? 40 : 60, quick ? 10 : 30);
         settled[count] = result;
         table.addRow({"settled", "sparse", "sphere", std::to_string(count + 1), "sap_incremental", cell(result.incrementalMs),
@@ -370,6 +369,7 @@ int runBroadphaseBench(const BenchOptions& options) {
             << " bodies (sparse) and " << crossover[StressDensity::Dense] << " bodies (dense); auto uses "
             << kAutoSapMinBodies << " (kAutoSapMinBodies)\n";
     const AxisComparison axes = compareAxes(StressDensity::Sparse, 10000);
+    run.progress().advance();
     const char* const axisNames[] = {"x", "y", "z"};
     summary << "axis choice, sparse 10,001 bodies on the ground: pairs the sweep looks at along";
     for (int axis = 0; axis < 3; ++axis)
@@ -394,6 +394,7 @@ int runBroadphaseBench(const BenchOptions& options) {
             << verdict(rest.fullSortMs >= 3 * rest.insertionSortMs) << "; whole broadphase "
             << formatNumber(rest.incrementalMs, 3) << " against " << formatNumber(rest.fullMs, 3) << " ms\n";
     const PhaseCosts phases = measurePhases(10000, quick ? 30 : 100);
+    run.progress().endStage();
     const double perBody = phases.bounds + phases.variance + phases.sort + phases.sweep + phases.pairSort;
     summary << "where the time goes, sparse 10,001 bodies, ns per body: bounds " << formatNumber(phases.bounds, 3)
             << ", variance " << formatNumber(phases.variance, 3) << ", sort " << formatNumber(phases.sort, 3)
@@ -416,37 +417,53 @@ int runBroadphaseBench(const BenchOptions& options) {
     }
     out << "\n" << summary.str();
 
-    try {
-        if (!options.csvPath.empty()) table.write(options.csvPath);
-        if (!options.plotPath.empty()) {
-            PlotSpec plot;
-            plot.title = "Broadphase time against body count (stress scene, one thread)";
-            plot.xLabel = "bodies";
-            plot.yLabel = "broadphase ms per step (median)";
-            plot.xCounts = true;
-            for (auto& [name, series] : broadphasePlot.byName) plot.series.push_back(series);
-            writeSvgPlot(options.plotPath, plot);
-            PlotSpec stepSpec = plot;
-            stepSpec.title = "Whole step against body count: where the time goes";
-            stepSpec.yLabel = "ms per step (median)";
-            stepSpec.series.clear();
-            for (auto& [name, series] : stepPlot.byName) stepSpec.series.push_back(series);
-            std::string stepPath = options.plotPath;
-            const std::size_t dot = stepPath.rfind(".svg");
-            stepPath = dot == std::string::npos ? stepPath + "-step" : stepPath.substr(0, dot) + "-step.svg";
-            writeSvgPlot(stepPath, stepSpec);
-            // The summary beside the plots, for the page (the table is in the CSV).
-            std::string summaryPath = options.plotPath;
-            summaryPath = dot == std::string::npos ? summaryPath + "-summary.txt" : summaryPath.substr(0, dot) + "-summary.txt";
-            std::ofstream summaryFile(summaryPath, std::ios::binary);
-            summaryFile << summary.str();
-            if (!summaryFile) throw std::runtime_error("cannot write '" + summaryPath + "'");
-        }
-    } catch (const std::runtime_error& error) {
-        std::cerr << "error: bench broadphase: " << error.what() << "\n";
-        return 2;
-    }
-    return 0;
+    CsvTable targets({"target (one thread, CPU time)", "asked", "measured", ""});
+    targets.addRow({"sparse 10,001 bodies: SAP against brute force", "at least 100x",
+                    formatNumber(speedup10k, 3) + "x", verdict(speedup10k >= 100)});
+    targets.addRow({"sparse 10,001 bodies: SAP broadphase", "under 2 ms", formatNumber(sap10k, 3) + " ms", verdict(sap10k < 2)});
+    targets.addRow({"sparse 100,001 bodies: SAP broadphase", "under 25 ms", formatNumber(sap100k, 3) + " ms", verdict(sap100k < 25)});
+    targets.addRow({"settled 10,001 spheres: full sort against insertion sort", "at least 3x",
+                    formatNumber(rest.fullSortMs / rest.insertionSortMs, 3) + "x", verdict(rest.fullSortMs >= 3 * rest.insertionSortMs)});
+    std::vector<std::string> notes;
+    for (std::string line; std::getline(summary, line);)
+        if (line.rfind("targets", 0) != 0 && line.rfind("  sparse 1", 0) != 0 && line.rfind("  settled", 0) != 0) notes.push_back(line);
+
+    run.writeCsv(table);
+    PlotSpec plot("Broadphase time against body count (stress scene, one thread)", "bodies", "broadphase ms per step (median)");
+    plot.integerX = true;
+    plot.caption = "The stress scene (mixed spheres, diamonds and boxes on one ground), sparse (one layer, 4 m apart) and "
+                   "dense (a block of 1 m cells, measured once it has piled up). Each point: the median over the measured "
+                   "frames of the broadphase's CPU time; every method found the same pairs. Brute force tests all pairs "
+                   "against the same grown boxes; SAP full sort sorts the interval ends from scratch every step.";
+    for (auto& [name, series] : broadphasePlot.byName) plot.series.push_back(series);
+    run.writePlot(plot);
+    PlotSpec stepSpec("Whole step against body count: where the time goes", "bodies", "ms per step (median)");
+    stepSpec.integerX = true;
+    stepSpec.caption = "The whole step with each broadphase (the rest of the step is the same, since every broadphase "
+                       "hands the narrowphase the same pairs), and its narrowphase and solve alone (narrow+solve).";
+    for (auto& [name, series] : stepPlot.byName) stepSpec.series.push_back(series);
+    run.writePlot(stepSpec, "-step");
+    run.writeTables({FigureTable{notes, &targets}}, "-summary");
+}
+
+}  // namespace
+
+BenchEntry broadphaseBench() {
+    return BenchEntry{"broadphase", 5,
+                      "chapter 5: broadphase and step time against body count (100 to 100,000), sparse and dense, "
+                      "brute force vs sweep and prune (full sort, incremental); the crossover auto uses",
+                      runBroadphaseBench,
+                      {{BenchFile::Kind::Csv, "", "per part, density, body count and method: broadphase, step, sort, "
+                                                  "narrowphase and solve ms, candidate pairs, pairs looked at"},
+                       {BenchFile::Kind::Plot, "", "plot: broadphase time against body count"},
+                       {BenchFile::Kind::Plot, "-step", "plot: whole step, and narrowphase + solve, against body count"},
+                       {BenchFile::Kind::Plot, "-summary", "table: the targets, the crossover, the axis choice, dense "
+                                                           "against sparse"}}};
+}
+
+int runBroadphaseBench(const BenchOptions& options) {
+    static const BenchEntry entry = broadphaseBench();
+    return runBench(entry, options, measureBroadphase);
 }
 
 }  // namespace stepwise

@@ -8,6 +8,7 @@ namespace stepwise {
 /// `stepwise bench broadphase`: broadphase and whole-step time against body count, sparse and
 /// dense, brute force against sweep and prune (full sort and incremental); the crossover count
 /// `auto` uses; incremental against full sort on a settled scene; the chapter's targets.
+BenchEntry broadphaseBench();
 int runBroadphaseBench(const BenchOptions& options);
 
 }  // namespace stepwise

@@ -12,10 +12,7 @@ namespace stepwise {
 void registerChapter05(Registry& registry) {
     addChapter05Scenes(registry);
     registry.addPipeline({5, [](const World& world) { return makeChapter05Pipeline(world); }});
-    registry.addBench({"broadphase", 5,
-                       "chapter 5: broadphase and step time against body count (100 to 100,000), sparse and dense, "
-                       "brute force vs sweep and prune (full sort, incremental); the crossover auto uses",
-                       runBroadphaseBench});
+    registry.addBench(broadphaseBench());
     registry.addCommand({5, installStressCommand});
     registry.addGenerator({"stress", [](World& world, const JsonCursor& parameters) {
                                addStressBodies(world, readStressParams(parameters));

@@ -38,7 +38,7 @@ int runStressCommand(const StressArgs& args, std::ostream& out, std::ostream& er
     Pipeline pipeline = makeChapter05Pipeline(world);
     // Chapter 3's probe measures the deepest overlap, as `stepwise run` does.
     Registry probeOnly;
-    probeOnly.setPenetrationProbe(PenetrationProbe{3, measureDeepestPenetration});
+    probeOnly.addPenetrationProbe(PenetrationProbe{3, measureDeepestPenetration});
     RunOptions options;
     options.frames = args.frames;
     options.progress = true;

@@ -4,6 +4,7 @@
 // or a mix. One generator for the demo, the benches, the tests, `stepwise stress` and scene
 // files ({ "generator": { "stress": { ... } } }, docs/scene-format.md).
 
+#include "world/scene_limits.h"
 #include "world/world.h"
 
 #include <cstdint>
@@ -27,7 +28,8 @@ struct StressParams {
     std::uint32_t seed = 5;                   // jitter of positions and orientations
 };
 
-constexpr int kStressMaxCount = 1000000;
+/// At most the bodies a scene file may list (world/scene_limits.h).
+constexpr int kStressMaxCount = static_cast<int>(kMaxBodies);
 constexpr Real kStressMaxDropHeight = 1000;   // m
 
 /// Centre spacing of the bodies, m. Every body fits in a ball of 1 m across: dense packs those

@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/bench_util.h"
 #include "app/runner.h"
 #include "world/report.h"
 #include "world/scene.h"
@@ -12,7 +13,10 @@ namespace stepwise {
 
 namespace {
 
+// Exit codes (docs/scene-format.md, "Exit codes"): 0 done, 1 an internal error, 2 bad input
+// (the message names the JSON path), 3 a run stopped because the step became unstable.
 constexpr int kExitBadInput = 2;
+constexpr int kExitUnstable = 3;
 
 struct RunArgs {
     std::string scene;
@@ -30,12 +34,19 @@ int commandRun(const Registry& registry, const RunArgs& args) {
     options.maxChapter = args.chapter;
     options.progress = !args.quiet;
     const RunStats stats = runHeadless(world, pipeline, registry, options);
-    if (!args.quiet) printSummary(std::cout, world, stats);
+    if (!args.quiet) {
+        // A built-in scene says what it is for, so the numbers below can be read against it.
+        if (const SceneEntry* entry = registry.findScene(args.scene)) std::cout << "observe    " << entry->observe << "\n";
+        printSummary(std::cout, world, stats);
+    }
     if (!args.reportPath.empty()) {
         writeReport(args.reportPath, world, stats, engineVersion());
         if (!args.quiet) std::cout << "report     " << args.reportPath << "\n";
     }
-    return stats.frames == args.frames ? 0 : 1;
+    if (stats.frames == args.frames) return 0;
+    // The runner stopped early: its last warning names the body and the frame.
+    std::cerr << "error: " << (stats.warnings.empty() ? "the run stopped early" : stats.warnings.back()) << "\n";
+    return kExitUnstable;
 }
 
 int commandScenes(const Registry& registry) {
@@ -90,7 +101,9 @@ int runCli(int argc, char** argv, const Registry& registry) {
     bench->add_option("--csv", benchOptions.csvPath, "Write the measurements as CSV");
     bench->add_option("--plot", benchOptions.plotPath, "Write the plot as SVG");
     bench->add_flag("--quick", benchOptions.quick, "Smaller sizes (docs build, smoke tests)");
+    bench->add_flag("--quiet", benchOptions.quiet, "No progress bar and no list of the files written");
     bench->add_flag("--list", listBenches, "List the suites");
+    bench->footer(benchFilesHelp(registry.benches()));
 
     for (const CommandEntry& command : registry.commands()) command.install(app, exitCode);
 
@@ -115,7 +128,7 @@ int runCli(int argc, char** argv, const Registry& registry) {
         std::cerr << "error: " << error.what() << "\n\n" << app.help();
         return kExitBadInput;
     } catch (const SceneError& error) {
-        std::cerr << "error: " << error.what() << "\n";
+        printSceneError(std::cerr, error);
         return kExitBadInput;
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << "\n";

@@ -53,7 +53,7 @@ void Registry::addGenerator(GeneratorEntry entry) {
         throw std::logic_error("generator registered twice: " + entry.name);
 }
 
-void Registry::setPenetrationProbe(PenetrationProbe probe) { probes_.push_back(std::move(probe)); }
+void Registry::addPenetrationProbe(PenetrationProbe probe) { probes_.push_back(std::move(probe)); }
 
 const SceneEntry* Registry::findScene(const std::string& name) const {
     for (const SceneEntry& entry : scenes_)

@@ -1,6 +1,9 @@
 #include "world/json_reader.h"
 
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -50,54 +53,192 @@ std::string JsonCursor::unknownKeyMessage(const std::string& key, const std::vec
 }
 
 
-Json parseStrictJson(const std::string& text, const std::string& source) {
+std::string readInputFile(const std::string& path, const char* what) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) throw SceneError(path, "no such file");
+    if (std::filesystem::is_directory(path, error)) throw SceneError(path, std::string("is a directory, not ") + what);
+    const auto bytes = std::filesystem::file_size(path, error);
+    if (!error && bytes > kMaxFileBytes)
+        throw SceneError(path, "is " + std::to_string(bytes >> 20) + " MiB; at most " +
+                                   std::to_string(kMaxFileBytes >> 20) + " MiB are read");
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw SceneError(path, "cannot open the file for reading");
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (!file) throw SceneError(path, "cannot read the file");
+    return text.str();
+}
+
+namespace {
+
+/// A first pass over the text that builds nothing: it tracks the path of the current value and
+/// rejects duplicate keys, numbers that overflow and documents of more than kMaxJsonValues
+/// values, before the DOM parse allocates anything. (nlohmann's callback parser does the same
+/// checks, but scans the enclosing array after every object, quadratic in the array's length:
+/// 100,000 bodies took seconds and a million query pairs minutes.)
+class StrictJsonChecker {
+public:
+    using Number = nlohmann::json::number_float_t;
+    explicit StrictJsonChecker(const std::string& source) : source_(source) {}
+
+    bool null() { return value(); }
+    bool boolean(bool) { return value(); }
+    bool number_integer(nlohmann::json::number_integer_t) { return value(); }
+    bool number_unsigned(nlohmann::json::number_unsigned_t) { return value(); }
+    bool number_float(Number, const std::string&) { return value(); }
+    bool string(std::string&) { return value(); }
+    bool binary(nlohmann::json::binary_t&) { return value(); }
+    bool start_object(std::size_t) {
+        count();
+        frames_.push_back(Frame{});
+        return true;
+    }
+    bool start_array(std::size_t) {
+        count();
+        frames_.push_back(Frame{true, 0, {}, {}});
+        return true;
+    }
+    bool end_object() { return end(); }
+    bool end_array() { return end(); }
+    bool key(std::string& name) {
+        Frame& frame = frames_.back();
+        frame.key = name;
+        if (!frame.keys.insert(name).second) throw SceneError(path(false), "duplicate key \"" + name + "\"");
+        return true;
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& error) {
+        // 406: the lexer read a number such as 1e999 that overflows a double.
+        if (error.id == 406) throw SceneError(path(true), "must be a finite number");
+        // "[json.exception.parse_error.101] parse error at line 2, column 7: syntax error ..."
+        const std::string what = error.what();
+        const std::size_t line = what.find("line ");
+        const std::string detail = line == std::string::npos ? what : what.substr(line);
+        throw SceneError("", "malformed JSON in " + source_ + " at " + detail);
+    }
+
+private:
     struct Frame {
         bool isArray = false;
         std::size_t index = 0;
         std::string key;
         std::set<std::string> keys;
     };
-    std::vector<Frame> frames;
-    const auto currentPath = [&frames](bool withLastDesignator) {
-        std::string path;
-        for (std::size_t i = 0; i < frames.size(); ++i) {
-            if (i + 1 == frames.size() && !withLastDesignator) break;
-            const Frame& frame = frames[i];
-            path += frame.isArray ? "[" + std::to_string(frame.index) + "]" : (path.empty() ? "" : ".") + frame.key;
+
+    /// The path of the current value; without its last designator, the path of its container.
+    std::string path(bool withLastDesignator) const {
+        std::string text;
+        for (std::size_t i = 0; i < frames_.size(); ++i) {
+            if (i + 1 == frames_.size() && !withLastDesignator) break;
+            const Frame& frame = frames_[i];
+            text += frame.isArray ? "[" + std::to_string(frame.index) + "]" : (text.empty() ? "" : ".") + frame.key;
         }
-        return path;
-    };
-    const auto valueDone = [&frames] {
-        if (!frames.empty() && frames.back().isArray) ++frames.back().index;
-    };
-    using Event = nlohmann::json::parse_event_t;
-    const Json::parser_callback_t callback = [&](int, Event event, Json& parsed) {
-        switch (event) {
-        case Event::object_start: frames.push_back(Frame{}); break;
-        case Event::array_start: frames.push_back(Frame{true, 0, {}, {}}); break;
-        case Event::object_end:
-        case Event::array_end: frames.pop_back(); valueDone(); break;
-        case Event::value: valueDone(); break;
-        case Event::key:
-            frames.back().key = parsed.get<std::string>();
-            if (!frames.back().keys.insert(frames.back().key).second)
-                throw SceneError(currentPath(false), "duplicate key \"" + frames.back().key + "\"");
-            break;
-        }
-        return true;
-    };
-    try {
-        return Json::parse(text, callback);
-    } catch (const nlohmann::json::parse_error& error) {
-        // "[json.exception.parse_error.101] parse error at line 2, column 7: syntax error ..."
-        const std::string what = error.what();
-        const std::size_t line = what.find("line ");
-        const std::string detail = line == std::string::npos ? what : what.substr(line);
-        throw SceneError("", "malformed JSON in " + source + " at " + detail);
-    } catch (const nlohmann::json::out_of_range&) {
-        // Raised by the lexer for numbers such as 1e999 that overflow a double.
-        throw SceneError(currentPath(true), "must be a finite number");
+        return text;
     }
+    void count() {
+        if (++values_ > kMaxJsonValues)
+            throw SceneError(path(true), "the document has more than " + std::to_string(kMaxJsonValues) +
+                                             " values; larger ones are not read");
+    }
+    bool value() {
+        count();
+        valueDone();
+        return true;
+    }
+    void valueDone() {
+        if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
+    }
+    bool end() {
+        frames_.pop_back();
+        valueDone();
+        return true;
+    }
+
+    const std::string& source_;
+    std::vector<Frame> frames_;
+    std::size_t values_ = 0;
+};
+
+}  // namespace
+
+Json parseStrictJson(const std::string& text, const std::string& source) {
+    StrictJsonChecker checker(source);
+    nlohmann::json::sax_parse(text, &checker);
+    return Json::parse(text);  // well-formed, no duplicate keys, bounded: the checker saw to it
+}
+
+const Names<IntegratorKind>& integratorNames() {
+    static const Names<IntegratorKind> names = {{"semi_implicit_euler", IntegratorKind::SemiImplicitEuler},
+                                                {"rk4", IntegratorKind::Rk4},
+                                                {"verlet", IntegratorKind::Verlet}};
+    return names;
+}
+
+BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors) {
+    static const Names<BodyType> kBodyTypes = {
+        {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}, {"dynamic", BodyType::Dynamic}};
+    cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
+                         "density", "friction", "restitution", "bullet", "integrator"},
+                        &errors);
+    BodyDef def;
+    def.name = "body" + std::to_string(index);
+    errors.attempt([&] {
+        if (auto v = cursor.optional("name")) def.name = v->nonEmptyString();
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypes);
+    });
+    // A placeholder keeps the body, so joints and forces that name it can still be checked.
+    if (!errors.attempt([&] { def.shape = readShape(cursor.child("shape")); })) def.shape = Shape::sphere(1);
+    errors.attempt([&] {
+        if (auto v = cursor.optional("position")) def.transform.position = v->vec3Within(kMaxCoordinate);
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("orientation")) def.transform.rotation = v->unitQuaternion();
+    });
+    // What a body's type rules out: motion on a static body, mass on one that is not dynamic.
+    if (def.type == BodyType::Static)
+        for (const char* key : {"velocity", "angular_velocity", "integrator"})
+            if (cursor.has(key))
+                errors.attempt([&] { cursor.child(key).fail("not allowed on a static body (it never moves)"); });
+    if (def.type != BodyType::Dynamic)
+        for (const char* key : {"mass", "density"})
+            if (cursor.has(key))
+                errors.attempt([&] {
+                    cursor.child(key).fail(std::string("only dynamic bodies have mass (this body is ") +
+                                           toString(def.type) + ")");
+                });
+    if (cursor.has("mass") && cursor.has("density"))
+        errors.attempt([&] { cursor.child("density").fail("give mass or density, not both"); });
+    if (def.type != BodyType::Static) {
+        errors.attempt([&] {
+            if (auto v = cursor.optional("velocity")) def.linearVelocity = v->vec3Within(kMaxSpeed);
+        });
+        errors.attempt([&] {
+            if (auto v = cursor.optional("angular_velocity")) def.angularVelocity = v->vec3Within(kMaxAngularSpeed);
+        });
+    }
+    if (def.type == BodyType::Dynamic) {
+        errors.attempt([&] {
+            if (auto v = cursor.optional("mass")) def.mass = v->positiveBetween(kMinMass, kMaxMass);
+        });
+        errors.attempt([&] {
+            if (auto v = cursor.optional("density")) def.density = v->positiveBetween(kMinDensity, kMaxDensity);
+        });
+    }
+    errors.attempt([&] {
+        if (auto v = cursor.optional("friction")) def.material.friction = v->nonNegative();
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("restitution")) def.material.restitution = v->inRange(0, 1);
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("bullet")) def.bullet = v->boolean();
+    });
+    if (def.type != BodyType::Static)
+        errors.attempt([&] {
+            if (auto v = cursor.optional("integrator")) def.integrator = v->choice(integratorNames());
+        });
+    return def;
 }
 
 Shape readShape(const JsonCursor& cursor) {
@@ -112,22 +253,22 @@ Shape readShape(const JsonCursor& cursor) {
         params.expectObject({"half_extents"});
         const JsonCursor size = params.child("half_extents");
         const Vec3 halfExtents = size.vec3();
-        for (int axis = 0; axis < 3; ++axis) size.element(std::size_t(axis)).positive();
+        for (int axis = 0; axis < 3; ++axis) size.element(std::size_t(axis)).positiveBetween(kMinShapeSize, kMaxShapeSize);
         return Shape::box(halfExtents);
     }
     if (kind == "sphere") {
         params.expectObject({"radius"});
-        return Shape::sphere(params.child("radius").positive());
+        return Shape::sphere(params.child("radius").positiveBetween(kMinShapeSize, kMaxShapeSize));
     }
     if (kind == "capsule") {
         params.expectObject({"radius", "half_height"});
-        const Real radius = params.child("radius").positive();
-        return Shape::capsule(radius, params.child("half_height").positive());
+        const Real radius = params.child("radius").positiveBetween(kMinShapeSize, kMaxShapeSize);
+        return Shape::capsule(radius, params.child("half_height").positiveBetween(kMinShapeSize, kMaxShapeSize));
     }
     params.expectObject({"vertices"});
     const JsonCursor list = params.child("vertices");
-    std::vector<Vec3> points(list.arraySize());
-    for (std::size_t i = 0; i < points.size(); ++i) points[i] = list.element(i).vec3();
+    std::vector<Vec3> points(list.arraySizeAtMost(std::size_t(kMaxHullPoints)));
+    for (std::size_t i = 0; i < points.size(); ++i) points[i] = list.element(i).vec3Within(kMaxShapeSize);
     if (points.size() < 4)
         list.fail("needs at least 4 points that span a volume (got " + std::to_string(points.size()) + ")");
     try {

@@ -64,14 +64,14 @@ std::string saveSceneToString(const World& world) {
     scene["bodies"] = bodies;
     Json joints = Json::array();
     for (const JointDesc& joint : world.joints) {
-        Json out = {{"type", joint.type}, {"a", bodyName(world, joint.bodyA)}, {"b", bodyName(world, joint.bodyB)},
+        Json out = {{"type", toString(joint.type)}, {"a", bodyName(world, joint.bodyA)}, {"b", bodyName(world, joint.bodyB)},
                     {"anchor_a", toJson(joint.localAnchorA)}, {"anchor_b", toJson(joint.localAnchorB)}};
-        if (joint.type == "distance" && joint.length) out["length"] = tidyNumber(*joint.length);
-        if (joint.type == "hinge" || joint.type == "cone_twist") out["axis"] = toJson(joint.axis);
-        if (joint.type == "hinge" && joint.limits)
+        if (joint.type == JointType::Distance && joint.length) out["length"] = tidyNumber(*joint.length);
+        if (joint.type == JointType::Hinge || joint.type == JointType::ConeTwist) out["axis"] = toJson(joint.axis);
+        if (joint.type == JointType::Hinge && joint.limits)
             out["limits"] = {tidyNumber(joint.limits->first), tidyNumber(joint.limits->second)};
-        if (joint.type == "cone_twist") out["cone_angle"] = tidyNumber(joint.coneAngle);
-        if (joint.type == "cone_twist" && joint.twistLimits)
+        if (joint.type == JointType::ConeTwist) out["cone_angle"] = tidyNumber(joint.coneAngle);
+        if (joint.type == JointType::ConeTwist && joint.twistLimits)
             out["twist_limits"] = {tidyNumber(joint.twistLimits->first), tidyNumber(joint.twistLimits->second)};
         joints.push_back(out);
     }

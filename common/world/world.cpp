@@ -92,6 +92,17 @@ Mat3 worldInverseInertia(const Body& body, const Motion& motion) {
     return rotation * motion.inverseInertiaLocal * rotation.transpose();
 }
 
+const char* toString(JointType type) {
+    switch (type) {
+        case JointType::Distance: return "distance";
+        case JointType::BallSocket: return "ball_socket";
+        case JointType::Hinge: return "hinge";
+        case JointType::ConeTwist: return "cone_twist";
+        case JointType::Fixed: return "fixed";
+    }
+    return "?";
+}
+
 Energy computeEnergy(const World& world, const std::function<bool(int bodyIndex)>& countsBody) {
     const auto counts = [&](int bodyIndex) { return !countsBody || countsBody(bodyIndex); };
     Energy energy;

@@ -33,9 +33,14 @@ struct Damping {
     Real angular = 0;                    // 1/s
 };
 
+enum class JointType { Distance, BallSocket, Hinge, ConeTwist, Fixed };
+
+/// The scene-format spelling: "distance", "ball_socket", "hinge", "cone_twist", "fixed".
+const char* toString(JointType type);
+
 /// A joint as the scene describes it; chapter 8 (to come) turns these into constraint rows.
 struct JointDesc {
-    std::string type;                    // distance, ball_socket, hinge, cone_twist, fixed
+    JointType type = JointType::BallSocket;
     int bodyA = -1;
     int bodyB = -1;
     Vec3 localAnchorA = Vec3::Zero();

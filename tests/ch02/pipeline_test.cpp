@@ -3,6 +3,7 @@
 
 #include "02_gjk/chapter.h"
 #include "02_gjk/scenes.h"
+#include "support/registry_fixture.h"
 #include "support/scripted_panel.h"
 #include "app/registry.h"
 #include "gjk_test_util.h"
@@ -117,8 +118,7 @@ TEST_CASE("the overlay draws A - B, the origin, the simplex and the iteration co
 }
 
 TEST_CASE("chapter 2 registers its scenes, pipeline and bench", "[ch02][registry]") {
-    Registry registry;
-    registerChapters(registry);
+    const Registry& registry = test::chapterRegistry();
     for (const char* name : {"gjk-two-boxes", "gjk-sphere-diamond"}) {
         const SceneEntry* entry = registry.findScene(name);
         REQUIRE(entry != nullptr);
@@ -139,10 +139,7 @@ TEST_CASE("chapter 2 registers its scenes, pipeline and bench", "[ch02][registry
 }
 
 TEST_CASE("the panel moves body 1 and stops its spin", "[ch02][scenes]") {
-    Registry registry;
-    registerChapters(registry);
-    const SceneEntry* entry = registry.findScene("gjk-two-boxes");
-    REQUIRE(entry != nullptr);
+    const SceneEntry* entry = &test::sceneNamed("gjk-two-boxes");
     World world = entry->build();
     test::ScriptedPanel panel;
     panel.floats = {{"body 1 x (m)", 0.25f}};

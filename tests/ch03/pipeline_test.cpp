@@ -3,6 +3,7 @@
 #include "03_epa/bench_epa.h"
 #include "03_epa/chapter.h"
 #include "03_epa/scenes.h"
+#include "support/registry_fixture.h"
 #include "support/scripted_panel.h"
 #include "app/registry.h"
 #include "support/fixture.h"
@@ -92,8 +93,7 @@ TEST_CASE("The penetration probe finds the deepest of many overlaps", "[ch03][pi
 }
 
 TEST_CASE("Chapter 3 registers its pipeline, probe, bench, command and scenes", "[ch03][registry]") {
-    Registry registry;
-    registerChapters(registry);
+    const Registry& registry = test::chapterRegistry();
     World world = test::makeWorld();
     test::addGround(world);
     test::addBox(world, Vec3(0, Real(0.4), 0), Vec3::Constant(Real(0.5)));
@@ -110,10 +110,7 @@ TEST_CASE("Chapter 3 registers its pipeline, probe, bench, command and scenes", 
 }
 
 TEST_CASE("The EPA stepper draws the polytope, its closest face and the contact", "[ch03][scenes]") {
-    Registry registry;
-    registerChapters(registry);
-    const SceneEntry* scene = registry.findScene("epa-step-by-step");
-    REQUIRE(scene != nullptr);
+    const SceneEntry* scene = &test::sceneNamed("epa-step-by-step");
     World world = scene->build();
     RecordingDraw draw;
     const EpaResult converged = drawEpaStep(world, 0, 1, -1, Vec3(3, 0, 0), draw);
@@ -162,10 +159,8 @@ TEST_CASE("The EPA stepper draws the polytope, its closest face and the contact"
 }
 
 TEST_CASE("The contact gallery runs through the chapter 3 pipeline with finite contacts", "[ch03][scenes]") {
-    Registry registry;
-    registerChapters(registry);
-    const SceneEntry* scene = registry.findScene("epa-contact-gallery");
-    REQUIRE(scene != nullptr);
+    const Registry& registry = test::chapterRegistry();
+    const SceneEntry* scene = &test::sceneNamed("epa-contact-gallery");
     World world = scene->build();
     Pipeline pipeline = registry.makePipeline(world, 3);
     CHECK(contains(pipeline.enabledStageNames(), "narrowphase:gjk_epa"));

@@ -4,6 +4,7 @@
 #include "04_pgs/chapter.h"
 #include "04_pgs/contact_constraints.h"
 #include "04_pgs/scenes.h"
+#include "support/registry_fixture.h"
 #include "support/scripted_panel.h"
 #include "world/contact_draw.h"
 #include "app/registry.h"
@@ -48,8 +49,7 @@ TEST_CASE("the solve stage reports what it did", "[ch04][pipeline]") {
 }
 
 TEST_CASE("the registry's chapter 4 pipeline is this chapter's", "[ch04][pipeline]") {
-    Registry registry;
-    registerChapters(registry);
+    const Registry& registry = test::chapterRegistry();
     const World world = buildDropScene();
     CHECK(registry.makePipeline(world).enabledStageNames() == makeChapter04Pipeline(world).enabledStageNames());
     CHECK(registry.findBench("solver") != nullptr);
@@ -58,8 +58,7 @@ TEST_CASE("the registry's chapter 4 pipeline is this chapter's", "[ch04][pipelin
 
 TEST_CASE("every chapter 4 scene runs finite, keeps its bodies above the ground, and draws its impulses",
           "[ch04][pipeline]") {
-    Registry registry;
-    registerChapters(registry);
+    const Registry& registry = test::chapterRegistry();
     int scenes = 0;
     for (const SceneEntry& entry : registry.scenes()) {
         if (entry.chapter != 4) continue;
@@ -101,7 +100,7 @@ TEST_CASE("bench solver measures: more iterations give less residual and Gauss-S
     REQUIRE(file.good());
     std::string line;
     std::getline(file, line);
-    CHECK(line == "part,solver,iterations,solve_ms,velocity_residual,max_penetration");
+    CHECK(line == "part,solver,iterations,solve_ms,velocity_residual,max_penetration,solve_ms_q1,solve_ms_q3");
     std::map<std::string, std::map<int, double>> residual;
     while (std::getline(file, line)) {
         std::stringstream cells(line);
@@ -122,10 +121,7 @@ TEST_CASE("bench solver measures: more iterations give less residual and Gauss-S
 }
 
 TEST_CASE("the solver panel sets iterations, beta, slop, restitution, friction and the solver", "[ch04][pipeline]") {
-    Registry registry;
-    registerChapters(registry);
-    const SceneEntry* entry = registry.findScene("pgs-drop");
-    REQUIRE(entry);
+    const SceneEntry* entry = &test::sceneNamed("pgs-drop");
     World world = entry->build();
     test::ScriptedPanel panel;
     panel.ints = {{"iterations", 3}, {"substeps", 2}, {"solver", 1}};

@@ -1,6 +1,7 @@
 // Resting contact: bodies settle at the slop and stay; a heavy ball on a light one barely sinks;
 // and why the pipeline splits integration around the solve.
 #include "04_pgs/chapter.h"
+#include "04_pgs/resting_study.h"
 #include "04_pgs/scenes.h"
 #include "ch04_support.h"
 #include "support/fixture.h"
@@ -13,26 +14,18 @@ using namespace stepwise;
 
 namespace {
 
-struct RestingRecord {
-    double minDepth = 1e9, maxDepth = 0;  // after the first second
-    double drift = 0;                     // horizontal, m, from the first second to the end
-};
+constexpr int kFramesPerSecond = 60;
 
-RestingRecord rest(World& world, Pipeline& pipeline, int body, double seconds) {
-    Vec3 start = Vec3::Zero();
-    bool settled = false;
-    RestingRecord record;
-    test::simulate(world, pipeline, seconds, [&](const World& w) {
-        if (w.time < 1) return;
-        if (!settled) start = w.bodies[body].transform.position;
-        settled = true;
-        const double depth = test::overlapDepth(w, 0, body);
-        record.minDepth = std::min(record.minDepth, depth);
-        record.maxDepth = std::max(record.maxDepth, depth);
-    });
-    const Vec3 offset = world.bodies[body].transform.position - start;
-    record.drift = std::hypot(static_cast<double>(offset.x()), static_cast<double>(offset.z()));
-    return record;
+// After its first second the body stays at the slop depth (within 10%) and drifts sideways less
+// than `driftLimit` (m) for the rest of the run.
+void checkSettlesToSlop(const RestingRun& run, double driftLimit) {
+    const double slop = Settings{}.slop;
+    const double minDepth = run.minDepth(kFramesPerSecond), maxDepth = run.maxDepth(kFramesPerSecond);
+    const double drift = run.drift(kFramesPerSecond);
+    INFO(run.label << ": depth " << minDepth << " to " << maxDepth << " m, slop " << slop << " m, drift " << drift);
+    CHECK(test::relativeError(minDepth, slop) < 0.1);
+    CHECK(test::relativeError(maxDepth, slop) < 0.1);
+    CHECK(drift < driftLimit);
 }
 
 }  // namespace
@@ -41,16 +34,7 @@ RestingRecord rest(World& world, Pipeline& pipeline, int body, double seconds) {
 // within the step, and Baumgarte takes them back to exactly the slop. (Set down just touching, a
 // body stays just touching: any depth between 0 and the slop is at rest.)
 TEST_CASE("a ball dropped on the ground settles to the slop and does not drift over 10 s", "[ch04][resting]") {
-    World world = test::makeWorld();
-    test::addGround(world);
-    const int ball = test::addSphere(world, Vec3(0, Real(0.51), 0), Real(0.5), BodyType::Dynamic, 1);
-    Pipeline pipeline = makeChapter04Pipeline(world);
-    const RestingRecord record = rest(world, pipeline, ball, 10);
-    const double slop = world.settings.slop;
-    INFO("depth " << record.minDepth << " to " << record.maxDepth << " m, slop " << slop << " m, drift " << record.drift);
-    CHECK(test::relativeError(record.minDepth, slop) < 0.1);
-    CHECK(test::relativeError(record.maxDepth, slop) < 0.1);
-    CHECK(record.drift < 1e-4);
+    checkSettlesToSlop(runRestingStudy({RestingSubject::Ball}, 10 * kFramesPerSecond), 1e-4);
 }
 
 // A box lying on a face touches the ground along a whole face, but chapter 3 reports one point,
@@ -60,18 +44,11 @@ TEST_CASE("a ball dropped on the ground settles to the slop and does not drift o
 // the step, so the claim "settles to the slop" is checked at 8 substeps (480 Hz), with a 10 cm
 // drop so that the box lands deeper than the slop at that step.
 TEST_CASE("a box dropped on the ground settles to the slop at 480 Hz and does not drift over 10 s", "[ch04][resting]") {
-    World world = test::makeWorld();
-    world.settings.substeps = 8;
-    test::addGround(world);
-    const int box = test::addBox(world, Vec3(0, Real(0.6), 0), Vec3(Real(0.5), Real(0.5), Real(0.5)),
-                                 BodyType::Dynamic, Quat::Identity(), 1);
-    Pipeline pipeline = makeChapter04Pipeline(world);
-    const RestingRecord record = rest(world, pipeline, box, 10);
-    const double slop = world.settings.slop;
-    INFO("depth " << record.minDepth << " to " << record.maxDepth << " m, slop " << slop << " m, drift " << record.drift);
-    CHECK(test::relativeError(record.minDepth, slop) < 0.1);
-    CHECK(test::relativeError(record.maxDepth, slop) < 0.1);
-    CHECK(record.drift < 1e-3);
+    RestingSetup setup;
+    setup.subject = RestingSubject::Box;
+    setup.substeps = 8;
+    setup.drop = Real(0.1);
+    checkSettlesToSlop(runRestingStudy(setup, 10 * kFramesPerSecond), 1e-3);
 }
 
 // The 10 kg ball sinks into the 1 kg ball no further than the slop at the default settings. The
@@ -145,7 +122,7 @@ TEST_CASE("Baumgarte's correction adds energy: a ball spawned deep in the ground
     CHECK(stiff > 0.05);   // beta = 0.8: thrown clear of the ground
 }
 
-TEST_CASE("split integration rests at the slop and the seed integrate-first order sinks by g dt^2 / beta more",
+TEST_CASE("split integration rests at the slop and the integrate-first order sinks by g dt^2 / beta more",
           "[ch04][resting]") {
     // Integrate-first: the solver's velocity only moves the body next step, after gravity took
     // g dt off it again, so at rest Baumgarte must keep asking for +g dt: beta/dt (d - slop) = g dt,

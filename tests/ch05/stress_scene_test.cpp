@@ -115,7 +115,7 @@ TEST_CASE("a scene file can name the generator with its parameters", "[ch05][str
     CHECK(world.bodies[2].shape.type == ShapeType::Box);
     // Bad parameters name their JSON path.
     CHECK(sceneError(R"({"generator": {"stress": {"count": 0}}})") ==
-          "generator.stress.count: must be an integer in [1, 1000000]");
+          "generator.stress.count: must be an integer in [1, 100000]");
     CHECK(sceneError(R"({"generator": {"stress": {"density": "thick"}}})") ==
           "generator.stress.density: must be one of \"sparse\", \"dense\" (got \"thick\")");
     CHECK(sceneError(R"({"generator": {"stress": {"shape": "cube"}}})").find("generator.stress.shape: must be one of") == 0);

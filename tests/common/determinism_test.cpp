@@ -2,6 +2,7 @@
 // scene of every chapter, through the latest chapter's pipeline.
 #include <catch2/catch.hpp>
 
+#include "support/registry_fixture.h"
 #include "app/runner.h"
 #include "world/report.h"
 
@@ -25,8 +26,7 @@ std::string reportWithoutTimings(const Registry& registry, const SceneEntry& ent
 }  // namespace
 
 TEST_CASE("every built-in scene runs deterministically", "[common][determinism]") {
-    Registry registry;
-    registerChapters(registry);
+    const Registry& registry = test::chapterRegistry();
     REQUIRE_FALSE(registry.scenes().empty());
     for (const SceneEntry& entry : registry.scenes()) {
         INFO("scene " << entry.name);

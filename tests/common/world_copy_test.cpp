@@ -4,6 +4,7 @@
 // substeps, with the broadphase auto chooses and with sweep and prune.
 #include <catch2/catch.hpp>
 
+#include "support/registry_fixture.h"
 #include "app/runner.h"
 
 #include <cstring>
@@ -44,8 +45,7 @@ bool identicalStates(const World& a, const World& b) {
 }  // namespace
 
 TEST_CASE("a copy of the world taken mid-run steps on exactly like the original", "[common][determinism]") {
-    Registry registry;
-    registerChapters(registry);
+    const Registry& registry = test::chapterRegistry();
     for (const SceneEntry& entry : registry.scenes()) {
         // Auto (brute force for small scenes), and sweep and prune forced: its kept order and
         // axis travel with the copy (World::broadphase).

@@ -1,0 +1,27 @@
+#pragma once
+// Shapes and poses drawn from fuzzer bytes, for the narrowphase and stepper targets: every kind
+// of shape, and convex hulls made to be hard (flat, needle-like, with duplicated points, with
+// many nearly coplanar points).
+
+#include "fuzz_input.h"
+
+#include "math/math.h"
+#include "world/shape.h"
+
+#include <optional>
+
+namespace stepwise::fuzz {
+
+/// A shape of any kind whose bounding radius is about `size` (hulls may be thinner).
+/// nullopt when the drawn points span no volume (the hull builder rejects them, correctly).
+std::optional<Shape> randomShape(FuzzInput& input, double size);
+
+/// A uniformly random rotation.
+Quat randomRotation(FuzzInput& input);
+
+/// The signed distance of a point (in the shape's frame) to the shape's surface: < 0 inside.
+/// Exact for boxes, spheres and capsules; for hulls the largest face-plane distance, exact
+/// inside and never larger than the true distance outside.
+double signedDistance(const Shape& shape, const Eigen::Vector3d& localPoint);
+
+}  // namespace stepwise::fuzz

@@ -1,0 +1,26 @@
+#pragma once
+// The runs that golden hashes pin: every built-in scene and every scene file of scenes/, each
+// through the latest chapter's pipeline for a fixed number of frames.
+
+#include "app/registry.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace stepwise::reliability {
+
+constexpr long kGoldenFrames = 240;  // 4 s at 60 Hz: long enough for stacks to settle, bounces to land
+
+struct GoldenRun {
+    std::string scene;      // built-in name, or "scenes/<file>.json"
+    std::uint64_t hash = 0; // stateHash after kGoldenFrames frames
+};
+
+/// The built-in scenes in registry order, then the scene files of `sceneFolder` by name.
+std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder);
+
+/// Runs one scene for `frames` frames and returns its final state hash.
+std::uint64_t finalHash(const Registry& registry, World world, long frames);
+
+}  // namespace stepwise::reliability

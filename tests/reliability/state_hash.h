@@ -1,0 +1,18 @@
+#pragma once
+// A 64-bit fingerprint of a world's state: the exact bits of every body's pose and velocities,
+// the simulated time and the frame count. Two runs that agree to the last bit give the same
+// hash; one flipped bit anywhere gives a different one (FNV-1a, Fowler, Noll and Vo).
+
+#include "world/world.h"
+
+#include <cstdint>
+#include <string>
+
+namespace stepwise::reliability {
+
+std::uint64_t stateHash(const World& world);
+
+/// "0x0123456789abcdef".
+std::string hexHash(std::uint64_t hash);
+
+}  // namespace stepwise::reliability
