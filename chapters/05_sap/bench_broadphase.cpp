@@ -276,9 +276,9 @@ int crossoverCount(const std::vector<std::pair<int, double>>& bruteOverSap) {
     return crossover;
 }
 
-void measureBroadphase(BenchRun& run) {
-    std::ostream& out = run.out();
-    const bool quick = run.quick();
+void measureBroadphase(BenchRun& bench) {
+    std::ostream& out = bench.out();
+    const bool quick = bench.quick();
     CsvTable table({"part", "density", "shape", "bodies", "method", "broadphase_ms", "step_ms", "sort_ms",
                     "candidates", "axis_overlaps", "contacts", "narrowphase_ms", "solve_ms"});
     Series broadphasePlot, stepPlot;
@@ -288,10 +288,10 @@ void measureBroadphase(BenchRun& run) {
     std::map<StressDensity, int> crossover;
     const std::vector<int> smallCounts = {8, 16, 24, 32, 48, 64, 96, 128, 192, 256};
     for (StressDensity density : densities) {
-        run.progress().stage(std::string("crossover, ") + toString(density), long(smallCounts.size()));
+        bench.progress().stage(std::string("crossover, ") + toString(density), long(smallCounts.size()));
         std::vector<std::pair<int, double>> ratios;
         for (int count : smallCounts) {
-            run.progress().advance();
+            bench.progress().advance();
             SceneRun run;
             run.params.count = count;
             run.params.density = density;
@@ -314,9 +314,9 @@ void measureBroadphase(BenchRun& run) {
                                           : std::vector<int>{100, 300, 1000, 3000, 10000, 30000, 100000};
     std::map<std::pair<StressDensity, int>, SceneResult> scaling;
     for (StressDensity density : densities) {
-        run.progress().stage(std::string("scaling, ") + toString(density), long(counts.size()));
+        bench.progress().stage(std::string("scaling, ") + toString(density), long(counts.size()));
         for (int count : counts) {
-            run.progress().advance();
+            bench.progress().advance();
             // Dense scenes pile up: their step grows fast, so quick runs stop at 10,000.
             if (quick && density == StressDensity::Dense && count > 10000) continue;
             SceneRun run;
@@ -352,9 +352,9 @@ void measureBroadphase(BenchRun& run) {
     // Settled: incremental against full sort.
     std::map<int, SettledResult> settled;
     const std::vector<int> settledCounts = quick ? std::vector<int>{10000} : std::vector<int>{10000, 100000};
-    run.progress().stage("settled spheres, incremental and full sort", long(settledCounts.size()) + 2);
+    bench.progress().stage("settled spheres, incremental and full sort", long(settledCounts.size()) + 2);
     for (int count : settledCounts) {
-        run.progress().advance();
+        bench.progress().advance();
         const SettledResult result = measureSettled(count, quick ? 40 : 60, quick ? 10 : 30);
         settled[count] = result;
         table.addRow({"settled", "sparse", "sphere", std::to_string(count + 1), "sap_incremental", cell(result.incrementalMs),
@@ -369,7 +369,7 @@ void measureBroadphase(BenchRun& run) {
             << " bodies (sparse) and " << crossover[StressDensity::Dense] << " bodies (dense); auto uses "
             << kAutoSapMinBodies << " (kAutoSapMinBodies)\n";
     const AxisComparison axes = compareAxes(StressDensity::Sparse, 10000);
-    run.progress().advance();
+    bench.progress().advance();
     const char* const axisNames[] = {"x", "y", "z"};
     summary << "axis choice, sparse 10,001 bodies on the ground: pairs the sweep looks at along";
     for (int axis = 0; axis < 3; ++axis)
@@ -394,7 +394,7 @@ void measureBroadphase(BenchRun& run) {
             << verdict(rest.fullSortMs >= 3 * rest.insertionSortMs) << "; whole broadphase "
             << formatNumber(rest.incrementalMs, 3) << " against " << formatNumber(rest.fullMs, 3) << " ms\n";
     const PhaseCosts phases = measurePhases(10000, quick ? 30 : 100);
-    run.progress().endStage();
+    bench.progress().endStage();
     const double perBody = phases.bounds + phases.variance + phases.sort + phases.sweep + phases.pairSort;
     summary << "where the time goes, sparse 10,001 bodies, ns per body: bounds " << formatNumber(phases.bounds, 3)
             << ", variance " << formatNumber(phases.variance, 3) << ", sort " << formatNumber(phases.sort, 3)
@@ -425,10 +425,11 @@ void measureBroadphase(BenchRun& run) {
     targets.addRow({"settled 10,001 spheres: full sort against insertion sort", "at least 3x",
                     formatNumber(rest.fullSortMs / rest.insertionSortMs, 3) + "x", verdict(rest.fullSortMs >= 3 * rest.insertionSortMs)});
     std::vector<std::string> notes;
-    for (std::string line; std::getline(summary, line);)
+    std::istringstream lines(summary.str());
+    for (std::string line; std::getline(lines, line);)
         if (line.rfind("targets", 0) != 0 && line.rfind("  sparse 1", 0) != 0 && line.rfind("  settled", 0) != 0) notes.push_back(line);
 
-    run.writeCsv(table);
+    bench.writeCsv(table);
     PlotSpec plot("Broadphase time against body count (stress scene, one thread)", "bodies", "broadphase ms per step (median)");
     plot.integerX = true;
     plot.caption = "The stress scene (mixed spheres, diamonds and boxes on one ground), sparse (one layer, 4 m apart) and "
@@ -436,14 +437,14 @@ void measureBroadphase(BenchRun& run) {
                    "frames of the broadphase's CPU time; every method found the same pairs. Brute force tests all pairs "
                    "against the same grown boxes; SAP full sort sorts the interval ends from scratch every step.";
     for (auto& [name, series] : broadphasePlot.byName) plot.series.push_back(series);
-    run.writePlot(plot);
+    bench.writePlot(plot);
     PlotSpec stepSpec("Whole step against body count: where the time goes", "bodies", "ms per step (median)");
     stepSpec.integerX = true;
     stepSpec.caption = "The whole step with each broadphase (the rest of the step is the same, since every broadphase "
                        "hands the narrowphase the same pairs), and its narrowphase and solve alone (narrow+solve).";
     for (auto& [name, series] : stepPlot.byName) stepSpec.series.push_back(series);
-    run.writePlot(stepSpec, "-step");
-    run.writeTables({FigureTable{notes, &targets}}, "-summary");
+    bench.writePlot(stepSpec, "-step");
+    bench.writeTables({FigureTable{notes, &targets}}, "-summary");
 }
 
 }  // namespace
