@@ -1,5 +1,7 @@
 #include "app/bench_util.h"
 
+#include "app/runner.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,16 +12,6 @@
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <time.h>
-#endif
-
-#ifdef _WIN32
-#include <io.h>
-#define STEPWISE_ISATTY _isatty
-#define STEPWISE_FILENO _fileno
-#else
-#include <unistd.h>
-#define STEPWISE_ISATTY isatty
-#define STEPWISE_FILENO fileno
 #endif
 
 namespace stepwise {
@@ -121,7 +113,7 @@ void BenchProgress::draw() {
 
 BenchRun::BenchRun(const BenchEntry& entry, const BenchOptions& options)
     : entry_(entry), options_(options),
-      progress_(entry.name, !options.quiet && STEPWISE_ISATTY(STEPWISE_FILENO(stderr))) {}
+      progress_(entry.name, !options.quiet && stderrIsTerminal()) {}
 
 std::ostream& BenchRun::out() const { return options_.out ? *options_.out : std::cout; }
 

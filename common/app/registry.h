@@ -146,4 +146,7 @@ private:
 /// Generated from the chapter list: calls registerChapter01..NN for the program's chapters.
 void registerChapters(Registry& registry);
 
+/// Every chapter of the program, registered once on first use (tests, tools, fuzz targets).
+const Registry& chapterRegistry();
+
 }  // namespace stepwise

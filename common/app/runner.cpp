@@ -28,6 +28,8 @@ std::string engineVersion() {
 #endif
 }
 
+bool stderrIsTerminal() { return STEPWISE_ISATTY(STEPWISE_FILENO(stderr)) != 0; }
+
 static bool stateIsFinite(const World& world, std::string& badBody) {
     for (const Motion& motion : world.motions) {
         const Body& body = world.bodies[motion.bodyIndex];
@@ -92,7 +94,7 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
     stats.energyByIntegrator = energyByIntegrator(world);
     for (const Stage& stage : pipeline.stages())
         if (stage.enabled && stageGroup(stage.name) == stage_group::kNarrowphase) stats.overlapsMeasured = true;
-    const bool showProgress = options.progress && STEPWISE_ISATTY(STEPWISE_FILENO(stderr));
+    const bool showProgress = options.progress && stderrIsTerminal();
     std::map<std::string, double> stageTotals;
     for (long frame = 0; frame < options.frames; ++frame) {
         pipeline.step(world);

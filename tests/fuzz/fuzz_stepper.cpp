@@ -33,15 +33,6 @@ namespace {
 
 constexpr const char* kTarget = "fuzz_stepper";
 
-const Registry& registry() {
-    static const Registry instance = [] {
-        Registry r;
-        registerChapters(r);
-        return r;
-    }();
-    return instance;
-}
-
 Settings randomSettings(FuzzInput& input) {
     Settings settings;
     settings.substeps = input.integer(1, 4);
@@ -131,7 +122,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // STEPWISE_FUZZ_SCENE=1 prints the scene (as a scene file) before stepping it: a failing input
     // becomes a file `stepwise run` can replay and a test can load.
     if (std::getenv("STEPWISE_FUZZ_SCENE")) std::fprintf(stderr, "%s\n", saveSceneToString(world).c_str());
-    Pipeline pipeline = registry().makePipeline(world);
+    Pipeline pipeline = chapterRegistry().makePipeline(world);
     const double startEnergy = computeEnergy(world).total();
     const bool claimsStability = world.settings.integrator == IntegratorKind::SemiImplicitEuler &&
                                  world.settings.gyroscopic != GyroscopicMode::Explicit;
