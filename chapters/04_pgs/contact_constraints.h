@@ -49,6 +49,10 @@ void frictionDirections(const Vec3& normal, const Vec3& relativeVelocity, Vec3& 
 /// before the velocity integration). Without it the approach speed includes this step's
 /// gravity, and a ball with e = 1 gains about v dt of height per bounce (tests/ch04/bounce_test.cpp).
 ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt);
+/// The same with the fraction of penetration fed back per step given rather than read from
+/// Settings::baumgarte: chapter 6's split impulses and soft step build their velocity rows with
+/// 0 here and correct positions their own way.
+ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt, Real baumgarte);
 
 /// Copies the solved impulses into World::contacts: normalImpulse, tangentImpulse (in
 /// tangentBasis(normal)) and the normal row's effective mass. Points without rows get zeros. It

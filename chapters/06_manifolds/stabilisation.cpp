@@ -1,0 +1,181 @@
+#include "06_manifolds/stabilisation.h"
+
+#include "01_integrators/rotation.h"
+#include "03_epa/chapter.h"
+#include "06_manifolds/warm_start.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+// [ch06-make-softness]
+// A spring of angular frequency omega and damping ratio zeta, stepped implicitly over h, asks a
+// row for biasRate * error and scales its impulse (Catto, "Solver2D", 2024; Box2D v3 b2MakeSoft).
+Softness makeSoftness(Real hertz, Real dampingRatio, Real h) {
+    if (hertz <= 0) return Softness{};
+    const Real omega = 2 * Real(kPi) * hertz;
+    const Real a1 = 2 * dampingRatio + h * omega;
+    const Real a2 = h * omega * a1;
+    const Real a3 = 1 / (1 + a2);
+    return Softness{omega / a1, a2 * a3, a3};
+}
+// [ch06-make-softness]
+
+std::string stabilisedSolveStageName(Stabilisation stabilisation) {
+    return stageName(stage_group::kSolve, toString(stabilisation));
+}
+
+bool hasRelaxPass(Stabilisation stabilisation) {
+    return stabilisation == Stabilisation::Relax || stabilisation == Stabilisation::SoftStep;
+}
+
+static void applyImpulse(const ConstraintRow& row, Real impulse, std::vector<SolverBody>& bodies) {
+    SolverBody& a = bodies[row.bodyA];
+    SolverBody& b = bodies[row.bodyB];
+    a.linearVelocity += a.inverseMass * impulse * row.linearA;
+    a.angularVelocity += a.inverseInertia * (impulse * row.angularA);
+    b.linearVelocity += b.inverseMass * impulse * row.linearB;
+    b.angularVelocity += b.inverseInertia * (impulse * row.angularB);
+}
+
+// [ch06-soft-pgs]
+void solveSoftGaussSeidel(std::vector<ConstraintRow>& rows, const std::vector<Softness>& softness,
+                          std::vector<SolverBody>& bodies, int iterations) {
+    for (int iteration = 0; iteration < iterations; ++iteration) {
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            ConstraintRow& row = rows[i];
+            if (row.effectiveMass == 0) continue;
+            Real lower = row.lower, upper = row.upper;
+            if (row.boundRow >= 0) {
+                upper = row.boundScale * rows[static_cast<std::size_t>(row.boundRow)].impulse;
+                lower = -upper;
+            }
+            const Softness& soft = softness[i];
+            const Real velocityError = row.bias - rowVelocity(row, bodies);
+            const Real previous = row.impulse;
+            const Real increment = soft.massScale * row.effectiveMass * velocityError - soft.impulseScale * previous;
+            row.impulse = std::clamp(previous + increment, lower, upper);
+            applyImpulse(row, row.impulse - previous, bodies);
+        }
+    }
+}
+// [ch06-soft-pgs]
+
+namespace {
+
+const ContactPoint& pointOf(const World& world, const ContactRowRef& ref) {
+    return world.contacts[static_cast<std::size_t>(ref.contactIndex)].points[ref.pointIndex];
+}
+
+// Soft step's rows: each normal row of a point deeper than the slop becomes a spring towards the
+// slop, pushing out no faster than kMaxPushOutSpeed; the others stay rigid.
+std::vector<Softness> softenContactRows(const World& world, ContactRows& contactRows,
+                                        const std::vector<SolverBody>& bodies, Real dt) {
+    std::vector<Softness> softness(contactRows.rows.size());
+    const Real hertz = std::min(kContactHertz, Real(0.25) / dt);
+    const Softness dynamicSoftness = makeSoftness(hertz, kContactDampingRatio, dt);
+    const Softness staticSoftness = makeSoftness(2 * hertz, kContactDampingRatio, dt);
+    for (const ContactRowRef& ref : contactRows.points) {
+        const Real depth = pointOf(world, ref).depth;
+        if (depth <= world.settings.slop) continue;
+        ConstraintRow& row = contactRows.rows[static_cast<std::size_t>(ref.normalRow)];
+        const bool againstStatic = bodies[row.bodyA].inverseMass == 0 || bodies[row.bodyB].inverseMass == 0;
+        const Softness& soft = againstStatic ? staticSoftness : dynamicSoftness;
+        softness[static_cast<std::size_t>(ref.normalRow)] = soft;
+        row.bias = std::max(row.bias, std::min(soft.biasRate * (depth - world.settings.slop), kMaxPushOutSpeed));
+    }
+    return softness;
+}
+
+// Moves a body's centre of mass by `linear` dt and turns it by `angular` dt about it.
+void nudgeBody(World& world, int bodyIndex, const Vec3& linear, const Vec3& angular, Real dt) {
+    const Motion* motion = world.motionOf(bodyIndex);
+    if (!motion) return;
+    Transform& pose = world.bodies[static_cast<std::size_t>(bodyIndex)].transform;
+    const Vec3 center = pose.apply(motion->localCenter) + linear * dt;
+    pose.rotation = integrateRotation(pose.rotation, angular, dt);
+    pose.position = center - pose.rotation * motion->localCenter;
+}
+
+}  // namespace
+
+// [ch06-split-impulse]
+Real splitImpulseCorrection(World& world, const ContactRows& contactRows, const std::vector<SolverBody>& bodies,
+                            Real dt, int iterations) {
+    if (!(dt > 0)) return 0;
+    std::vector<SolverBody> pseudo = bodies;
+    for (SolverBody& body : pseudo) body.linearVelocity = body.angularVelocity = Vec3::Zero();
+    std::vector<ConstraintRow> pushRows;
+    for (const ContactRowRef& ref : contactRows.points) {
+        const Real excess = pointOf(world, ref).depth - world.settings.slop;
+        if (excess <= 0) continue;
+        ConstraintRow row = contactRows.rows[static_cast<std::size_t>(ref.normalRow)];
+        row.bias = world.settings.baumgarte * excess / dt;
+        row.impulse = 0;
+        pushRows.push_back(row);
+    }
+    if (pushRows.empty()) return 0;
+    solveGaussSeidel(pushRows, pseudo, iterations);
+    Real fastest = 0;
+    for (const Motion& motion : world.motions) {
+        if (world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type != BodyType::Dynamic) continue;
+        const SolverBody& push = pseudo[static_cast<std::size_t>(motion.bodyIndex)];
+        if (push.linearVelocity.isZero(0) && push.angularVelocity.isZero(0)) continue;
+        fastest = std::max(fastest, push.linearVelocity.norm());
+        nudgeBody(world, motion.bodyIndex, push.linearVelocity, push.angularVelocity, dt);
+    }
+    return fastest;
+}
+// [ch06-split-impulse]
+
+// [ch06-solve]
+SolverStats solveStabilised(World& world, Real dt) {
+    const Settings& settings = world.settings;
+    SolverStats stats;
+    for (const Contact& contact : world.contacts) stats.contactPoints += contact.pointCount;
+    std::vector<SolverBody> bodies = gatherSolverBodies(world);
+    // Only Baumgarte and relax feed the penetration back through the velocity rows.
+    const bool velocityBias =
+        settings.stabilisation == Stabilisation::Baumgarte || settings.stabilisation == Stabilisation::Relax;
+    ContactRows contactRows = buildContactRows(world, bodies, dt, velocityBias ? settings.baumgarte : Real(0));
+    const int iterations = std::max(0, settings.solverIterations);
+    if (settings.warmStarting) warmStart(world, contactRows, bodies);
+    if (settings.stabilisation == Stabilisation::SoftStep) {
+        const std::vector<Softness> softness = softenContactRows(world, contactRows, bodies, dt);
+        solveSoftGaussSeidel(contactRows.rows, softness, bodies, iterations);
+    } else {
+        solveRows(contactRows.rows, bodies, settings.solver, iterations);
+    }
+    if (settings.stabilisation == Stabilisation::SplitImpulse)
+        splitImpulseCorrection(world, contactRows, bodies, dt, iterations);
+    stats.rows = static_cast<int>(contactRows.rows.size());
+    stats.invalidSkipped = contactRows.invalidSkipped;
+    const Residual residual = measureResidual(contactRows.rows, bodies);
+    stats.residualRms = residual.rms;
+    stats.residualMax = residual.max;
+    scatterSolverBodies(world, bodies);
+    storeContactImpulses(world, contactRows);
+    world.step.solver = stats;
+    return stats;
+}
+// [ch06-solve]
+
+// [ch06-relax]
+void relaxContacts(World& world, Real dt) {
+    followContactAnchors(world);  // the depths after this substep's motion
+    std::vector<SolverBody> bodies = gatherSolverBodies(world);
+    ContactRows contactRows = buildContactRows(world, bodies, dt, 0);
+    // The biased solve's impulses are already in the velocities: they are where the accumulated
+    // impulses start, not pushed again.
+    loadCarriedImpulses(world, contactRows);
+    solveRows(contactRows.rows, bodies, world.settings.solver, std::max(0, world.settings.solverIterations));
+    const Residual residual = measureResidual(contactRows.rows, bodies);
+    world.step.solver.residualRms = residual.rms;
+    world.step.solver.residualMax = residual.max;
+    scatterSolverBodies(world, bodies);
+    storeContactImpulses(world, contactRows);
+}
+// [ch06-relax]
+
+}  // namespace stepwise
