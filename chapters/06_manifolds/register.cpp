@@ -1,9 +1,14 @@
-// Chapter 6 in the programs. (The pipeline, scenes, benches and demo are registered here by the
-// solver half of the chapter.)
+// Chapter 6 in the programs: the stacking scenes with their view, the pipeline with manifolds,
+// warm starting and the chosen stabilisation, and the stacking bench.
+#include "06_manifolds/chapter.h"
+#include "06_manifolds/scenes.h"
 #include "app/registry.h"
 
 namespace stepwise {
 
-void registerChapter06(Registry& /*registry*/) {}
+void registerChapter06(Registry& registry) {
+    addChapter06Scenes(registry);
+    registry.addPipeline({6, [](const World& world) { return makeChapter06Pipeline(world); }});
+}
 
 }  // namespace stepwise
