@@ -5,6 +5,7 @@
 // (round_manifolds.h); persistence.h matches the new points to last step's and carries their
 // impulses.
 
+#include "03_epa/narrowphase.h"
 #include "world/world.h"
 
 namespace stepwise {
@@ -26,5 +27,26 @@ struct ManifoldOptions {
 /// a contact with speculative points (depth < 0). 0: overlapping pairs only. Returns the number of
 /// shape queries made.
 int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options = ManifoldOptions{});
+
+/// One pair's manifold from chapter 3's query of the same pair (no persistence): contact.normal
+/// and up to four points with world points, anchors, depths and feature ids; bodyA and bodyB are
+/// left as they are. Points more than keepDistance apart (above the reference face) are left out.
+/// False when no point is left or the input is invalid (then contact.pointCount is 0).
+bool buildManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const ContactQuery& query,
+                   Real keepDistance, const ManifoldOptions& options, Contact& contact);
+
+/// collideShapes (with the separation distance when keepDistance > 0), then buildManifold.
+bool collideManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, Real keepDistance,
+                     Contact& contact, const ManifoldOptions& options = ManifoldOptions{});
+
+/// The speculative margin of a pair `lookAhead` substeps ahead (chapter 3's speculativeMargin,
+/// which is linear in the substeps, so fractions are allowed). 0 for lookAhead <= 0.
+Real manifoldMargin(const World& world, int bodyA, int bodyB, Real lookAhead);
+
+/// How far above the reference face a point of a contact is kept, beyond the pair's margin: one
+/// slop. A box rocking on one corner keeps its other corners as speculative points, whose rows
+/// only act if they close faster than the gap allows (Box2D keeps 4 slops, its "speculative
+/// distance").
+Real pointSlack(const World& world);
 
 }  // namespace stepwise

@@ -68,6 +68,8 @@ struct Contact {
     Vec3 normal = Vec3::UnitY();       // unit, from A towards B
     ContactPoint points[4];
     int pointCount = 0;
+    int missedSteps = 0;               // searches since the narrowphase last found the pair close
+                                       // enough; chapter 6 keeps a record a few searches more
 
     BodyPair pair() const { return BodyPair{bodyA, bodyB}; }
 };

@@ -1,0 +1,183 @@
+// Face and edge-edge contacts of polytopes.
+#include "06_manifolds/polytope_manifold.h"
+
+#include "02_gjk/segments.h"
+#include "06_manifolds/clipping.h"
+#include "06_manifolds/polytope_faces.h"
+#include "world/contact.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+namespace {
+
+/// A face in world coordinates.
+struct WorldFace {
+    FacePolygon local;
+    Vec3 normal = Vec3::Zero();
+    Real offset = 0;
+    std::vector<Vec3> corners;
+};
+
+WorldFace placeFace(const Shape& shape, const Transform& transform, int face) {
+    WorldFace placed;
+    placed.local = polytopeFace(shape, face);
+    placed.normal = transform.rotate(placed.local.normal);
+    for (const Vec3& corner : placed.local.corners) placed.corners.push_back(transform.apply(corner));
+    placed.offset = placed.local.offset + placed.normal.dot(transform.position);
+    return placed;
+}
+
+// [ch06-face-contact]
+/// Clips the incident face against the reference face's side planes and keeps what lies at most
+/// keepDistance above the reference face. `referenceIsA` says which body owns the reference face.
+bool faceContact(const Shape& reference, const Transform& referenceTransform, int referenceFace,
+                 const Shape& incident, const Transform& incidentTransform, bool referenceIsA, Real keepDistance,
+                 ManifoldCandidates& out) {
+    const WorldFace ref = placeFace(reference, referenceTransform, referenceFace);
+    Real alignment = 0;
+    const int incidentFace = mostAlignedFace(incident, incidentTransform, -ref.normal, alignment);
+    if (incidentFace < 0 || ref.corners.size() < 3) return false;
+    const WorldFace inc = placeFace(incident, incidentTransform, incidentFace);
+    const std::size_t incidentCount = inc.corners.size();
+    if (incidentCount < 3) return false;
+
+    // The incident face as a polygon whose vertices and edges know their features.
+    std::vector<ClipVertex> polygon(incidentCount);
+    for (std::size_t k = 0; k < incidentCount; ++k) {
+        polygon[k].position = inc.corners[k];
+        polygon[k].referenceFeature = makeFeature(FeatureKind::Face, static_cast<std::uint32_t>(referenceFace));
+        polygon[k].incidentFeature = makeFeature(FeatureKind::Vertex, static_cast<std::uint32_t>(inc.local.vertexIndices[k]));
+        // Vertices and edges by their indices in the shape, not in the face: when two faces tie
+        // for incident (an edge resting on a face), either gives the same ids.
+        polygon[k].edgeFeature = makeFeature(
+            FeatureKind::Edge, edgeIndexOf(inc.local.vertexIndices[k], inc.local.vertexIndices[(k + 1) % incidentCount]));
+    }
+    // Side planes: through each reference edge, perpendicular to the face, facing out. The corners
+    // run counter-clockwise seen from outside, so edge x normal points away from the face.
+    std::vector<ClipPlane> planes;
+    const std::size_t referenceCount = ref.corners.size();
+    for (std::size_t k = 0; k < referenceCount; ++k) {
+        const Vec3& start = ref.corners[k];
+        const Vec3& end = ref.corners[(k + 1) % referenceCount];
+        const Vec3 outward = (end - start).cross(ref.normal);
+        const Real length = outward.norm();
+        if (!(length > kEpsilon)) continue;  // a degenerate edge bounds nothing
+        ClipPlane plane;
+        plane.normal = outward / length;
+        plane.offset = plane.normal.dot(start);
+        plane.sideStart = ref.local.vertexIndices[k];
+        plane.sideEnd = ref.local.vertexIndices[(k + 1) % referenceCount];
+        plane.sideFeature = makeFeature(FeatureKind::Edge, edgeIndexOf(plane.sideStart, plane.sideEnd));
+        planes.push_back(plane);
+    }
+    CrossingFeatures crossing;
+    crossing.incidentFaceFeature = makeFeature(FeatureKind::Face, static_cast<std::uint32_t>(incidentFace));
+    const std::vector<ClipVertex> clipped = clipPolygon(std::move(polygon), planes, crossing);
+
+    out.normal = referenceIsA ? ref.normal : Vec3(-ref.normal);
+    out.kind = referenceIsA ? "face_a" : "face_b";
+    out.points.clear();
+    for (const ClipVertex& vertex : clipped) {
+        const Real separation = ref.normal.dot(vertex.position) - ref.offset;
+        if (!(separation <= keepDistance)) continue;
+        // The incident point, and its projection on the reference face.
+        const Vec3 onReference = vertex.position - separation * ref.normal;
+        ManifoldPoint point;
+        point.depth = -separation;
+        point.pointA = referenceIsA ? onReference : vertex.position;
+        point.pointB = referenceIsA ? vertex.position : onReference;
+        point.featureId = referenceIsA ? makeFeatureId(vertex.referenceFeature, vertex.incidentFeature)
+                                       : makeFeatureId(vertex.incidentFeature, vertex.referenceFeature);
+        out.points.push_back(point);
+    }
+    return !out.points.empty();
+}
+// [ch06-face-contact]
+
+/// The edges of a shape lying (within `tolerance`) in its supporting plane along `direction`.
+std::vector<PolytopeEdge> supportingEdges(const Shape& shape, const Transform& transform, const Vec3& direction,
+                                          Real tolerance) {
+    const Vec3 local = transform.rotateInverse(direction);
+    const Real height = polytopeSupport(shape, local).dot(local);
+    std::vector<PolytopeEdge> found;
+    for (const PolytopeEdge& edge : polytopeEdges(shape)) {
+        if (edge.start.dot(local) >= height - tolerance && edge.end.dot(local) >= height - tolerance) {
+            found.push_back(PolytopeEdge{transform.apply(edge.start), transform.apply(edge.end), edge.id});
+        }
+    }
+    return found;
+}
+
+// [ch06-edge-contact]
+/// One point where an edge of A crosses an edge of B: of the edges that support each shape along
+/// the normal, the pair whose cross product is most parallel to it, and their closest points.
+bool edgeContact(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const Vec3& normal,
+                 Real keepDistance, ManifoldCandidates& out) {
+    const Real tolerance = Real(0.01) * std::max({boundingRadius(a), boundingRadius(b), Real(1e-3)});
+    const std::vector<PolytopeEdge> edgesA = supportingEdges(a, ta, normal, tolerance);
+    const std::vector<PolytopeEdge> edgesB = supportingEdges(b, tb, -normal, tolerance);
+    const PolytopeEdge* bestA = nullptr;
+    const PolytopeEdge* bestB = nullptr;
+    Real bestAlignment = -1;
+    Vec3 bestAxis = normal;
+    for (const PolytopeEdge& edgeA : edgesA) {
+        for (const PolytopeEdge& edgeB : edgesB) {
+            const Vec3 axis = (edgeA.end - edgeA.start).cross(edgeB.end - edgeB.start);
+            const Real length = axis.norm();
+            if (!(length > kEpsilon)) continue;
+            const Real alignment = std::abs(axis.dot(normal)) / length;
+            if (alignment > bestAlignment) {
+                bestAlignment = alignment;
+                bestA = &edgeA;
+                bestB = &edgeB;
+                bestAxis = axis / length;
+            }
+        }
+    }
+    if (!bestA) return false;
+    if (bestAxis.dot(normal) < 0) bestAxis = -bestAxis;
+    Vec3 onA, onB;
+    closestPointsOfSegments<Real>(bestA->start, bestA->end, bestB->start, bestB->end, onA, onB);
+    ManifoldPoint point;
+    point.pointA = onA;
+    point.pointB = onB;
+    point.depth = bestAxis.dot(onA - onB);
+    if (!(-point.depth <= keepDistance)) return false;
+    point.featureId = makeFeatureId(makeFeature(FeatureKind::Edge, bestA->id), makeFeature(FeatureKind::Edge, bestB->id));
+    out.normal = bestAxis;
+    out.kind = "edge_edge";
+    out.points.assign(1, point);
+    return true;
+}
+// [ch06-edge-contact]
+
+}  // namespace
+
+// [ch06-polytope-manifold]
+bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
+                      const ContactQuery& query, Real keepDistance, ManifoldCandidates& out) {
+    const Vec3 normal = query.normal;
+    Real alignmentA = 0, alignmentB = 0;
+    const int faceA = mostAlignedFace(a, ta, normal, alignmentA);
+    const int faceB = mostAlignedFace(b, tb, -normal, alignmentB);
+    if (faceA < 0 || faceB < 0) return false;
+    // SAT's three candidates (Gregorius, GDC 2013): A's face, B's face, and the axis chapter 3
+    // found, whose separation is minus its depth and is the largest of all when it is exact.
+    const Real separationA = faceSeparation(a, ta, faceA, b, tb);
+    const Real separationB = faceSeparation(b, tb, faceB, a, ta);
+    const Real axisSeparation = -query.depth;
+    if (std::max(separationA, separationB) + kFaceTolerance < axisSeparation) {
+        return edgeContact(a, ta, b, tb, normal, keepDistance, out);
+    }
+    // A's face is the reference unless B's is clearly better: the bias keeps the choice steady
+    // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same).
+    const bool referenceIsA = separationB <= separationA + kFaceTolerance;
+    return referenceIsA ? faceContact(a, ta, faceA, b, tb, true, keepDistance, out)
+                        : faceContact(b, tb, faceB, a, ta, false, keepDistance, out);
+}
+// [ch06-polytope-manifold]
+
+}  // namespace stepwise
