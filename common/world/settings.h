@@ -29,7 +29,7 @@ struct Settings {
     Real slop = Real(0.005);                          // m of penetration left uncorrected
     Real restitutionThreshold = Real(1.0);            // m/s closing speed below which contacts do not bounce
     bool warmStarting = true;
-    Stabilisation stabilisation = Stabilisation::SplitImpulse;  // chapter 6 on
+    Stabilisation stabilisation = Stabilisation::Relax;  // chapter 6 on
     BroadphaseMode broadphase = BroadphaseMode::Auto;
     CcdMode ccd = CcdMode::Auto;
     IntegratorKind integrator = IntegratorKind::SemiImplicitEuler;

@@ -2,6 +2,7 @@
 #include "06_manifolds/stacking_study.h"
 #include <catch2/catch.hpp>
 #include <cstdio>
+#include <string>
 using namespace stepwise;
 TEST_CASE("scratch", "[.scratch]") {
     struct Item { const char* name; World (*build)(); };
@@ -11,6 +12,9 @@ TEST_CASE("scratch", "[.scratch]") {
     for (Stabilisation s : {Stabilisation::Baumgarte, Stabilisation::Relax, Stabilisation::SplitImpulse, Stabilisation::SoftStep})
         for (bool warm : {true, false})
             for (const Item& item : items) {
+                if (std::getenv("ONLY") && std::string(std::getenv("ONLY")).find(item.name) == std::string::npos) continue;
+                if (std::getenv("STABS") && std::string(std::getenv("STABS")).find(toString(s)) == std::string::npos) continue;
+                if (std::getenv("WARMONLY") && !warm) continue;
                 StackingConfig config;
                 config.stabilisation = s;
                 config.warmStarting = warm;
