@@ -79,6 +79,7 @@ bool faceContact(const Shape& reference, const Transform& referenceTransform, in
 
     out.normal = referenceIsA ? ref.normal : Vec3(-ref.normal);
     out.kind = referenceIsA ? "face_a" : "face_b";
+    out.referenceSide = referenceIsA ? 1 : 2;
     out.points.clear();
     for (const ClipVertex& vertex : clipped) {
         const Real separation = ref.normal.dot(vertex.position) - ref.offset;
@@ -158,7 +159,8 @@ bool edgeContact(const Shape& a, const Transform& ta, const Shape& b, const Tran
 
 // [ch06-polytope-manifold]
 bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
-                      const ContactQuery& query, Real keepDistance, ManifoldCandidates& out) {
+                      const ContactQuery& query, Real keepDistance, ManifoldCandidates& out,
+                      ReferenceSide preferred) {
     const Vec3 normal = query.normal;
     Real alignmentA = 0, alignmentB = 0;
     const int faceA = mostAlignedFace(a, ta, normal, alignmentA);
@@ -169,12 +171,17 @@ bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const
     const Real separationA = faceSeparation(a, ta, faceA, b, tb);
     const Real separationB = faceSeparation(b, tb, faceB, a, ta);
     const Real axisSeparation = -query.depth;
-    if (std::max(separationA, separationB) + kFaceTolerance < axisSeparation) {
+    // A pair that touched face to face last step stays a face contact within the hysteresis.
+    const Real edgeTolerance = preferred == ReferenceSide::None ? kFaceTolerance : kReferenceHysteresis;
+    if (std::max(separationA, separationB) + edgeTolerance < axisSeparation) {
         return edgeContact(a, ta, b, tb, normal, keepDistance, out);
     }
     // A's face is the reference unless B's is clearly better: the bias keeps the choice steady
-    // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same).
-    const bool referenceIsA = separationB <= separationA + kFaceTolerance;
+    // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same). Last
+    // step's choice, when known, holds within the larger hysteresis.
+    bool referenceIsA = separationB <= separationA + kFaceTolerance;
+    if (preferred == ReferenceSide::A) referenceIsA = separationB <= separationA + kReferenceHysteresis;
+    if (preferred == ReferenceSide::B) referenceIsA = separationA > separationB + kReferenceHysteresis;
     return referenceIsA ? faceContact(a, ta, faceA, b, tb, true, keepDistance, out)
                         : faceContact(b, tb, faceB, a, ta, false, keepDistance, out);
 }

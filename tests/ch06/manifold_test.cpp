@@ -134,7 +134,7 @@ TEST_CASE("box-box edge-face: the two ends of the resting edge", "[ch06][manifol
     requireMatchesReference(kSlab, pose(Vec3::Zero()), kUnitBox, pose(Vec3(Real(0.1), lift, Real(0.05)), edgeDown));
     // Over the slab's rim: the edge is cut by a side plane.
     requireMatchesReference(kSlab, pose(Vec3::Zero()), kUnitBox,
-                            pose(Vec3(0, lift, Real(0.55)), axisAngle(Vec3::UnitX(), 45) * axisAngle(Vec3::UnitY(), 15)));
+                            pose(Vec3(0, lift, Real(0.55)), axisAngle(Vec3::UnitY(), 15) * axisAngle(Vec3::UnitX(), 45)));
     Contact contact;
     REQUIRE(collideManifold(kSlab, pose(Vec3::Zero()), kUnitBox, pose(Vec3(Real(0.1), lift, Real(0.05)), edgeDown), 0, contact));
     REQUIRE(contact.pointCount == 2);
