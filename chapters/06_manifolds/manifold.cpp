@@ -35,8 +35,9 @@ Transform shifted(const Transform& transform, const Vec3& origin) {
 
 // [ch06-build-manifold]
 bool buildManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const ContactQuery& query,
-                   Real keepDistance, const ManifoldOptions& options, Contact& contact) {
+                   Real keepDistance, const ManifoldOptions& options, Contact& contact, const Contact* previous) {
     contact.pointCount = 0;
+    contact.referenceSide = 0;
     if (query.routine == std::string("invalid") || !isValidRealPose(ta) || !isValidRealPose(tb)) return false;
     if (!isFinite(keepDistance)) return false;
     // Work in a frame centred on A, as chapter 3's collideShapes does: far from the origin, world
@@ -50,7 +51,10 @@ bool buildManifold(const Shape& a, const Transform& ta, const Shape& b, const Tr
     ManifoldCandidates candidates;
     bool found = false;
     if (options.multiPoint && isPolytope(a) && isPolytope(b)) {
-        found = polytopeManifold(a, localA, b, localB, local, keepDistance, candidates);
+        ReferenceSide preferred = ReferenceSide::None;
+        if (previous && previous->referenceSide == 1) preferred = ReferenceSide::A;
+        if (previous && previous->referenceSide == 2) preferred = ReferenceSide::B;
+        found = polytopeManifold(a, localA, b, localB, local, keepDistance, candidates, preferred);
     } else if (options.multiPoint) {
         found = roundManifold(a, localA, b, localB, local, keepDistance, candidates);
     }
@@ -66,6 +70,7 @@ bool buildManifold(const Shape& a, const Transform& ta, const Shape& b, const Tr
     int chosen[kMaxManifoldPoints];
     const int count = reduceManifold(candidates.points, candidates.normal, chosen);
     contact.normal = candidates.normal;
+    contact.referenceSide = candidates.referenceSide;
     for (int i = 0; i < count; ++i) {
         const ManifoldPoint& candidate = candidates.points[static_cast<std::size_t>(chosen[i])];
         if (!isFinite(candidate.pointA) || !isFinite(candidate.pointB) || !isFinite(candidate.depth)) continue;
@@ -84,7 +89,7 @@ bool buildManifold(const Shape& a, const Transform& ta, const Shape& b, const Tr
 // [ch06-build-manifold]
 
 bool collideManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, Real keepDistance,
-                     Contact& contact, const ManifoldOptions& options) {
+                     Contact& contact, const ManifoldOptions& options, const Contact* previous) {
     CollideOptions collide;
     collide.separationDistance = keepDistance > 0;
     const ContactQuery query = collideShapes(a, ta, b, tb, collide);
@@ -92,7 +97,7 @@ bool collideManifold(const Shape& a, const Transform& ta, const Shape& b, const 
         contact.pointCount = 0;
         return false;
     }
-    return buildManifold(a, ta, b, tb, query, keepDistance, options, contact);
+    return buildManifold(a, ta, b, tb, query, keepDistance, options, contact, previous);
 }
 
 // [ch06-update-manifolds]
@@ -127,7 +132,7 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
         contact.bodyB = pair.bodyB;
         const Real keepDistance = options.multiPoint ? margin + pointSlack(world) : margin;
         if (close && buildManifold(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, query, keepDistance,
-                                   options, contact)) {
+                                   options, contact, old)) {
             if (query.intersect) world.pairs.push_back(pair);
             if (old) matchContactPoints(contact, *old, options.matchDistance);
             world.contacts.push_back(contact);

@@ -32,12 +32,16 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
 /// and up to four points with world points, anchors, depths and feature ids; bodyA and bodyB are
 /// left as they are. Points more than keepDistance apart (above the reference face) are left out.
 /// False when no point is left or the input is invalid (then contact.pointCount is 0).
+/// `previous`: the pair's last record, if any; its reference face is kept while nearly as good,
+/// so the points (and their feature ids) do not flip with the face. Sets contact.referenceSide.
 bool buildManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const ContactQuery& query,
-                   Real keepDistance, const ManifoldOptions& options, Contact& contact);
+                   Real keepDistance, const ManifoldOptions& options, Contact& contact,
+                   const Contact* previous = nullptr);
 
 /// collideShapes (with the separation distance when keepDistance > 0), then buildManifold.
 bool collideManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, Real keepDistance,
-                     Contact& contact, const ManifoldOptions& options = ManifoldOptions{});
+                     Contact& contact, const ManifoldOptions& options = ManifoldOptions{},
+                     const Contact* previous = nullptr);
 
 /// The speculative margin of a pair `lookAhead` substeps ahead (chapter 3's speculativeMargin,
 /// which is linear in the substeps, so fractions are allowed). 0 for lookAhead <= 0.

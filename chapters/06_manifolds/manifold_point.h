@@ -21,6 +21,7 @@ struct ManifoldCandidates {
     Vec3 normal = Vec3::UnitY();
     std::vector<ManifoldPoint> points;
     const char* kind = "none";   // "face_a", "face_b", "edge_edge", "single", "round"
+    int referenceSide = 0;       // 1: clipped against A's face, 2: against B's, 0: neither
 };
 
 }  // namespace stepwise

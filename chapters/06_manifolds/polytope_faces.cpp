@@ -113,7 +113,9 @@ Vec3 polytopeSupport(const Shape& shape, const Vec3& localDirection) {
 Real faceSeparation(const Shape& shape, const Transform& transform, int face, const Shape& other,
                     const Transform& otherTransform) {
     const Vec3 normal = transform.rotate(polytopeFaceNormal(shape, face));
-    const Real offset = face >= 0 && face < polytopeFaceCount(shape) ? polytopeFace(shape, face).offset : 0;
+    if (face < 0 || face >= polytopeFaceCount(shape)) return -kRealMax;
+    const Real offset = shape.type == ShapeType::Box ? shape.halfExtents[face / 2]
+                                                     : shape.hull->faces[static_cast<std::size_t>(face)].offset;
     // Plane in world: n . x = offset + n . position.
     const Vec3 deepest = otherTransform.apply(polytopeSupport(other, otherTransform.rotateInverse(-normal)));
     return normal.dot(deepest - transform.position) - offset;

@@ -79,6 +79,7 @@ bool faceContact(const Shape& reference, const Transform& referenceTransform, in
 
     out.normal = referenceIsA ? ref.normal : Vec3(-ref.normal);
     out.kind = referenceIsA ? "face_a" : "face_b";
+    out.referenceSide = referenceIsA ? 1 : 2;
     out.points.clear();
     for (const ClipVertex& vertex : clipped) {
         const Real separation = ref.normal.dot(vertex.position) - ref.offset;
@@ -157,24 +158,51 @@ bool edgeContact(const Shape& a, const Transform& ta, const Shape& b, const Tran
 }  // namespace
 
 // [ch06-polytope-manifold]
+namespace {
+
+/// SAT's face query: the face of `shape` that separates `other` the most (least negative).
+int bestSeparatingFace(const Shape& shape, const Transform& transform, const Shape& other,
+                       const Transform& otherTransform, Real& separation) {
+    int best = -1;
+    separation = -kRealMax;
+    const int count = polytopeFaceCount(shape);
+    for (int face = 0; face < count; ++face) {
+        const Real faceSeparationValue = faceSeparation(shape, transform, face, other, otherTransform);
+        // Ties go to the lower index, so the same pose always picks the same face.
+        if (faceSeparationValue > separation) {
+            separation = faceSeparationValue;
+            best = face;
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
 bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
-                      const ContactQuery& query, Real keepDistance, ManifoldCandidates& out) {
-    const Vec3 normal = query.normal;
-    Real alignmentA = 0, alignmentB = 0;
-    const int faceA = mostAlignedFace(a, ta, normal, alignmentA);
-    const int faceB = mostAlignedFace(b, tb, -normal, alignmentB);
+                      const ContactQuery& query, Real keepDistance, ManifoldCandidates& out,
+                      ReferenceSide preferred) {
+    // SAT's three candidates (Gregorius, GDC 2013): the best face of A, the best face of B, and
+    // for edge pairs the axis chapter 3 found, whose separation is minus its depth. The faces are
+    // searched in full rather than taken from chapter 3's normal: for shapes that just touch, EPA's
+    // depth is zero along any of many normals and its normal says nothing about the faces.
+    Real separationA = 0, separationB = 0;
+    const int faceA = bestSeparatingFace(a, ta, b, tb, separationA);
+    const int faceB = bestSeparatingFace(b, tb, a, ta, separationB);
     if (faceA < 0 || faceB < 0) return false;
-    // SAT's three candidates (Gregorius, GDC 2013): A's face, B's face, and the axis chapter 3
-    // found, whose separation is minus its depth and is the largest of all when it is exact.
-    const Real separationA = faceSeparation(a, ta, faceA, b, tb);
-    const Real separationB = faceSeparation(b, tb, faceB, a, ta);
+    const Vec3 normal = query.normal;
     const Real axisSeparation = -query.depth;
-    if (std::max(separationA, separationB) + kFaceTolerance < axisSeparation) {
+    // A pair that touched face to face last step stays a face contact within the hysteresis.
+    const Real edgeTolerance = preferred == ReferenceSide::None ? kFaceTolerance : kReferenceHysteresis;
+    if (std::max(separationA, separationB) + edgeTolerance < axisSeparation) {
         return edgeContact(a, ta, b, tb, normal, keepDistance, out);
     }
     // A's face is the reference unless B's is clearly better: the bias keeps the choice steady
-    // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same).
-    const bool referenceIsA = separationB <= separationA + kFaceTolerance;
+    // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same). Last
+    // step's choice, when known, holds within the larger hysteresis.
+    bool referenceIsA = separationB <= separationA + kFaceTolerance;
+    if (preferred == ReferenceSide::A) referenceIsA = separationB <= separationA + kReferenceHysteresis;
+    if (preferred == ReferenceSide::B) referenceIsA = separationA > separationB + kReferenceHysteresis;
     return referenceIsA ? faceContact(a, ta, faceA, b, tb, true, keepDistance, out)
                         : faceContact(b, tb, faceB, a, ta, false, keepDistance, out);
 }

@@ -70,6 +70,8 @@ struct Contact {
     int pointCount = 0;
     int missedSteps = 0;               // searches since the narrowphase last found the pair close
                                        // enough; chapter 6 keeps a record a few searches more
+    int referenceSide = 0;             // chapter 6: whose face the points were clipped against,
+                                       // 1 A's, 2 B's, 0 neither (kept next step while nearly as good)
 
     BodyPair pair() const { return BodyPair{bodyA, bodyB}; }
 };
