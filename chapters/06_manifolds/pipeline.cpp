@@ -1,6 +1,6 @@
 #include "06_manifolds/chapter.h"
 
-#include "01_integrators/integrate.h"
+#include <algorithm>
 
 namespace stepwise {
 
@@ -16,42 +16,48 @@ Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& option
 Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& options, StepOrder order,
                                ContactSearch search) {
     Pipeline pipeline = makeChapter05Pipeline(world, order, search);
+    const bool split = order == StepOrder::SplitIntegration;
 
-    // The narrowphase keeps its place and frequency; it now builds and keeps manifolds.
+    // The narrowphase keeps its place and frequency; it now builds and keeps manifolds. A
+    // substepped solve moves the bodies through the whole step after the search, so it looks one
+    // step further ahead for speculative points.
     if (Stage* narrowphase = pipeline.find(stage_group::kNarrowphase)) {
         narrowphase->name = stageName(stage_group::kNarrowphase, options.multiPoint ? "manifold" : "one_point");
-        narrowphase->run = [search, options](World& stepWorld, Real) {
-            updateManifolds(stepWorld, static_cast<Real>(substepsAhead(stepWorld, search)), options);
+        narrowphase->run = [search, options, split](World& stepWorld, Real) {
+            const int ahead = substepsAhead(stepWorld, search) + (split && isSubstepped(stepWorld.settings.stabilisation) ? 1 : 0);
+            updateManifolds(stepWorld, static_cast<Real>(ahead), options);
         };
     }
 
-    // The solve: warm started, stabilised as the settings say (read every step, so the demo's
-    // toggles act at once). When the contacts were found earlier in the frame, their points first
-    // move with their bodies. Without a relax pass, restitution's approach speeds are used here
-    // once; with one, the relax pass needs them too and clears them.
+    // The solve reads Settings::stabilisation every step, so the demo's toggle acts at once. The
+    // substepped ones (relax, soft_step) integrate the bodies themselves, so with them the
+    // integration stages stand aside; they need the split step order (RK4 and Verlet bodies get
+    // a single warm-started solve instead).
     if (Stage* solve = pipeline.find(stage_group::kSolve)) {
         solve->name = stabilisedSolveStageName(world.settings.stabilisation);
-        solve->run = [](World& stepWorld, Real dt) {
+        solve->run = [split](World& stepWorld, Real dt) {
+            if (split && isSubstepped(stepWorld.settings.stabilisation)) {
+                substeppedSolve(stepWorld, dt);
+                return;
+            }
             if (stepWorld.step.substep > 0 && stepWorld.step.contactsFoundAtSubstep < stepWorld.step.substep)
                 followContactAnchors(stepWorld);
-            solveStabilised(stepWorld, dt);
-            if (!hasRelaxPass(stepWorld.settings.stabilisation)) stepWorld.step.velocitiesBeforeForces.clear();
+            solveStabilised(stepWorld, dt, std::max(0, stepWorld.settings.solverIterations));
+            stepWorld.step.velocitiesBeforeForces.clear();
         };
+    }
+    if (split) {
+        for (const char* variant : {"velocities", "positions"}) {
+            Stage* stage = pipeline.find(stageName(stage_group::kIntegrate, variant));
+            if (!stage) continue;
+            stage->run = [integrate = stage->run](World& stepWorld, Real dt) {
+                if (!isSubstepped(stepWorld.settings.stabilisation)) integrate(stepWorld, dt);
+            };
+        }
     }
 
     // What a pair remembers is its manifold's life cycle now, not chapter 4's load test.
     pipeline.remove(stageName(stage_group::kContacts, "drop_unloaded"));
-
-    // The relax pass runs after the positions moved, so it needs the split step.
-    if (order == StepOrder::SplitIntegration) {
-        Stage relax;
-        relax.name = stageName(stage_group::kSolve, "relax");
-        relax.run = [](World& stepWorld, Real dt) {
-            if (hasRelaxPass(stepWorld.settings.stabilisation)) relaxContacts(stepWorld, dt);
-            stepWorld.step.velocitiesBeforeForces.clear();
-        };
-        pipeline.add(std::move(relax));
-    }
     return pipeline;
 }
 // [ch06-pipeline]

@@ -1,5 +1,6 @@
 #include "06_manifolds/stabilisation.h"
 
+#include "01_integrators/integrate.h"
 #include "01_integrators/rotation.h"
 #include "03_epa/chapter.h"
 #include "06_manifolds/warm_start.h"
@@ -26,7 +27,7 @@ std::string stabilisedSolveStageName(Stabilisation stabilisation) {
     return stageName(stage_group::kSolve, toString(stabilisation));
 }
 
-bool hasRelaxPass(Stabilisation stabilisation) {
+bool isSubstepped(Stabilisation stabilisation) {
     return stabilisation == Stabilisation::Relax || stabilisation == Stabilisation::SoftStep;
 }
 
@@ -39,28 +40,44 @@ static void applyImpulse(const ConstraintRow& row, Real impulse, std::vector<Sol
     b.angularVelocity += b.inverseInertia * (impulse * row.angularB);
 }
 
-// [ch06-soft-pgs]
-void solveSoftGaussSeidel(std::vector<ConstraintRow>& rows, const std::vector<Softness>& softness,
-                          std::vector<SolverBody>& bodies, int iterations) {
+// [ch06-manifold-pgs]
+void solveByManifold(ContactRows& contactRows, const std::vector<Softness>& softness, std::vector<SolverBody>& bodies,
+                     int iterations, int manifoldSweeps) {
+    // [first row, end row) of each contact: buildContactRows appends a contact's rows together.
+    std::vector<std::pair<int, int>> ranges;
+    const std::vector<ContactRowRef>& points = contactRows.points;
+    for (std::size_t first = 0; first < points.size();) {
+        std::size_t end = first;
+        while (end < points.size() && points[end].contactIndex == points[first].contactIndex) ++end;
+        ranges.push_back({points[first].normalRow, points[end - 1].tangentRow[1] + 1});
+        first = end;
+    }
+    std::vector<ConstraintRow>& rows = contactRows.rows;
+    const Softness rigid;
     for (int iteration = 0; iteration < iterations; ++iteration) {
-        for (std::size_t i = 0; i < rows.size(); ++i) {
-            ConstraintRow& row = rows[i];
-            if (row.effectiveMass == 0) continue;
-            Real lower = row.lower, upper = row.upper;
-            if (row.boundRow >= 0) {
-                upper = row.boundScale * rows[static_cast<std::size_t>(row.boundRow)].impulse;
-                lower = -upper;
+        for (const auto& [begin, end] : ranges) {
+            for (int sweep = 0; sweep < manifoldSweeps; ++sweep) {
+                for (int i = begin; i < end; ++i) {
+                    ConstraintRow& row = rows[static_cast<std::size_t>(i)];
+                    if (row.effectiveMass == 0) continue;
+                    Real lower = row.lower, upper = row.upper;
+                    if (row.boundRow >= 0) {
+                        upper = row.boundScale * rows[static_cast<std::size_t>(row.boundRow)].impulse;
+                        lower = -upper;
+                    }
+                    const Softness& soft = softness.empty() ? rigid : softness[static_cast<std::size_t>(i)];
+                    const Real velocityError = row.bias - rowVelocity(row, bodies);
+                    const Real previous = row.impulse;
+                    const Real increment =
+                        soft.massScale * row.effectiveMass * velocityError - soft.impulseScale * previous;
+                    row.impulse = std::clamp(previous + increment, lower, upper);
+                    applyImpulse(row, row.impulse - previous, bodies);
+                }
             }
-            const Softness& soft = softness[i];
-            const Real velocityError = row.bias - rowVelocity(row, bodies);
-            const Real previous = row.impulse;
-            const Real increment = soft.massScale * row.effectiveMass * velocityError - soft.impulseScale * previous;
-            row.impulse = std::clamp(previous + increment, lower, upper);
-            applyImpulse(row, row.impulse - previous, bodies);
         }
     }
 }
-// [ch06-soft-pgs]
+// [ch06-manifold-pgs]
 
 namespace {
 
@@ -130,7 +147,26 @@ Real splitImpulseCorrection(World& world, const ContactRows& contactRows, const 
 // [ch06-split-impulse]
 
 // [ch06-solve]
-SolverStats solveStabilised(World& world, Real dt) {
+namespace {
+
+// Chapter 4's Jacobi when asked for (it knows no softness); Gauss-Seidel by manifold otherwise.
+void iterate(const World& world, ContactRows& contactRows, const std::vector<Softness>& softness,
+             std::vector<SolverBody>& bodies, int iterations) {
+    if (world.settings.solver == SolverKind::Jacobi)
+        solveRows(contactRows.rows, bodies, SolverKind::Jacobi, iterations);
+    else
+        solveByManifold(contactRows, softness, bodies, iterations);
+}
+
+void recordResidual(World& world, const ContactRows& contactRows, const std::vector<SolverBody>& bodies) {
+    const Residual residual = measureResidual(contactRows.rows, bodies);
+    world.step.solver.residualRms = residual.rms;
+    world.step.solver.residualMax = residual.max;
+}
+
+}  // namespace
+
+SolverStats solveStabilised(World& world, Real dt, int iterations) {
     const Settings& settings = world.settings;
     SolverStats stats;
     for (const Contact& contact : world.contacts) stats.contactPoints += contact.pointCount;
@@ -139,43 +175,55 @@ SolverStats solveStabilised(World& world, Real dt) {
     const bool velocityBias =
         settings.stabilisation == Stabilisation::Baumgarte || settings.stabilisation == Stabilisation::Relax;
     ContactRows contactRows = buildContactRows(world, bodies, dt, velocityBias ? settings.baumgarte : Real(0));
-    const int iterations = std::max(0, settings.solverIterations);
     if (settings.warmStarting) warmStart(world, contactRows, bodies);
-    if (settings.stabilisation == Stabilisation::SoftStep) {
-        const std::vector<Softness> softness = softenContactRows(world, contactRows, bodies, dt);
-        solveSoftGaussSeidel(contactRows.rows, softness, bodies, iterations);
-    } else {
-        solveRows(contactRows.rows, bodies, settings.solver, iterations);
-    }
-    if (settings.stabilisation == Stabilisation::SplitImpulse)
-        splitImpulseCorrection(world, contactRows, bodies, dt, iterations);
+    std::vector<Softness> softness;
+    if (settings.stabilisation == Stabilisation::SoftStep) softness = softenContactRows(world, contactRows, bodies, dt);
+    iterate(world, contactRows, softness, bodies, iterations);
+    if (settings.stabilisation == Stabilisation::SplitImpulse) splitImpulseCorrection(world, contactRows, bodies, dt, iterations);
     stats.rows = static_cast<int>(contactRows.rows.size());
     stats.invalidSkipped = contactRows.invalidSkipped;
-    const Residual residual = measureResidual(contactRows.rows, bodies);
-    stats.residualRms = residual.rms;
-    stats.residualMax = residual.max;
+    world.step.solver = stats;
+    recordResidual(world, contactRows, bodies);
     scatterSolverBodies(world, bodies);
     storeContactImpulses(world, contactRows);
-    world.step.solver = stats;
-    return stats;
+    return world.step.solver;
 }
 // [ch06-solve]
 
 // [ch06-relax]
-void relaxContacts(World& world, Real dt) {
-    followContactAnchors(world);  // the depths after this substep's motion
+void relaxContacts(World& world, Real dt, int iterations) {
+    followContactAnchors(world);  // the depths after the positions moved
     std::vector<SolverBody> bodies = gatherSolverBodies(world);
     ContactRows contactRows = buildContactRows(world, bodies, dt, 0);
     // The biased solve's impulses are already in the velocities: they are where the accumulated
     // impulses start, not pushed again.
     loadCarriedImpulses(world, contactRows);
-    solveRows(contactRows.rows, bodies, world.settings.solver, std::max(0, world.settings.solverIterations));
-    const Residual residual = measureResidual(contactRows.rows, bodies);
-    world.step.solver.residualRms = residual.rms;
-    world.step.solver.residualMax = residual.max;
+    iterate(world, contactRows, {}, bodies, iterations);
+    recordResidual(world, contactRows, bodies);
     scatterSolverBodies(world, bodies);
     storeContactImpulses(world, contactRows);
 }
 // [ch06-relax]
+
+// [ch06-substepped]
+void substeppedSolve(World& world, Real dt) {
+    const int substeps = std::max(1, world.settings.solverIterations);
+    const Real h = dt / static_cast<Real>(substeps);
+    for (int substep = 0; substep < substeps; ++substep) {
+        // Restitution reverses the approach speed from before this substep's forces.
+        world.step.velocitiesBeforeForces.resize(world.bodies.size());
+        for (const Motion& motion : world.motions)
+            world.step.velocitiesBeforeForces[static_cast<std::size_t>(motion.bodyIndex)] =
+                BodyVelocity{motion.linearVelocity, motion.angularVelocity};
+        applyForces(world);
+        integrateVelocities(world, h);
+        followContactAnchors(world);  // where the points are now (a no-op right after the search)
+        solveStabilised(world, h, world.settings.solverIterations > 0 ? 1 : 0);
+        integratePositions(world, h);
+        relaxContacts(world, h, world.settings.solverIterations > 0 ? 1 : 0);
+    }
+    world.step.velocitiesBeforeForces.clear();
+}
+// [ch06-substepped]
 
 }  // namespace stepwise

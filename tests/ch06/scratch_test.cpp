@@ -8,7 +8,10 @@ TEST_CASE("scratch", "[.scratch]") {
     struct Item { const char* name; World (*build)(); };
     Item items[] = {{"stack16", +[] { return buildBoxStack(16); }}, {"pyramid20", +[] { return buildPyramid(20); }},
                     {"heavy", +[] { return buildHeavyOnLight(); }}, {"towerBelow", +[] { return buildMassTower(true); }},
-                    {"towerAbove", +[] { return buildMassTower(false); }}, {"ramp", +[] { return buildStickingRamp(); }}};
+                    {"towerAbove", +[] { return buildMassTower(false); }}, {"ramp", +[] { return buildStickingRamp(); }},
+                    {"stagger", +[] { World w = buildBoxStack(16); for (std::size_t i = 1; i < w.bodies.size(); ++i) w.bodies[i].transform.position.x() += Real(0.02) * Real(i % 2); return w; }},
+                    {"shrink", +[] { World w = buildBoxStack(16); for (std::size_t i = 1; i < w.bodies.size(); ++i) if (i % 2) w.bodies[i].shape.halfExtents = Vec3(Real(0.45), Real(0.5), Real(0.45)); return w; }},
+                    {"stack8", +[] { return buildBoxStack(8); }}};
     for (Stabilisation s : {Stabilisation::Baumgarte, Stabilisation::Relax, Stabilisation::SplitImpulse, Stabilisation::SoftStep})
         for (bool warm : {true, false})
             for (const Item& item : items) {
