@@ -33,7 +33,7 @@ Real speculativeMargin(const World& world, int bodyA, int bodyB, int substepsAhe
 int substepsAhead(const World& world, ContactSearch search);
 
 /// Chapter 3's own candidate source: every pair that can collide whose bounds (grown by the
-/// speculative margin) overlap, in canonical order. Chapter 5 (to come) finds them faster.
+/// speculative margin) overlap, in canonical order. Chapter 5 finds them faster (sweep and prune).
 std::vector<BodyPair> findAllPairCandidates(const World& world, int lookAhead = 0);
 
 /// The narrowphase entry point. Tests the candidate pairs (any order; they are handled in

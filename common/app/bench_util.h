@@ -28,6 +28,20 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
+/// Seconds of CPU time this thread used since construction: on a machine shared with other
+/// programs, wall-clock time also counts the time they held the core. POSIX only; elsewhere the
+/// steady clock (wall time).
+class ThreadStopwatch {
+public:
+    ThreadStopwatch() { restart(); }
+    double seconds() const { return now() - start_; }
+    void restart() { start_ = now(); }
+
+private:
+    static double now();
+    double start_ = 0;
+};
+
 /// Rows of a table, written as CSV. Cells are strings; numbers go through formatNumber.
 class CsvTable {
 public:

@@ -48,6 +48,11 @@ void Registry::addBench(BenchEntry entry) {
 
 void Registry::addCommand(CommandEntry entry) { commands_.push_back(std::move(entry)); }
 
+void Registry::addGenerator(GeneratorEntry entry) {
+    if (!generators_.emplace(entry.name, entry.generate).second)
+        throw std::logic_error("generator registered twice: " + entry.name);
+}
+
 void Registry::addPenetrationProbe(PenetrationProbe probe) { probes_.push_back(std::move(probe)); }
 
 const SceneEntry* Registry::findScene(const std::string& name) const {

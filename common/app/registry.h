@@ -4,6 +4,7 @@
 // CMake generates the function that calls them all in order (cmake/StepwiseChapters.cmake).
 
 #include "world/pipeline.h"
+#include "world/scene.h"
 #include "world/world.h"
 
 #include <functional>
@@ -98,6 +99,12 @@ struct CommandEntry {
     std::function<void(CLI::App& app, int& exitCode)> install;
 };
 
+/// A scene generator scene files can name ("generator": { "<name>": { ... } }).
+struct GeneratorEntry {
+    std::string name;          // the key in the scene file: "stress"
+    SceneGenerator generate;
+};
+
 /// Measures the deepest overlap in a world; chapters that can answer register one.
 struct PenetrationProbe {
     int chapter = 0;
@@ -110,11 +117,14 @@ public:
     void addPipeline(PipelineEntry entry);
     void addBench(BenchEntry entry);
     void addCommand(CommandEntry entry);
+    void addGenerator(GeneratorEntry entry);
     void addPenetrationProbe(PenetrationProbe probe);
 
     const std::vector<SceneEntry>& scenes() const { return scenes_; }
     const std::vector<BenchEntry>& benches() const { return benches_; }
     const std::vector<CommandEntry>& commands() const { return commands_; }
+    /// The generators scene files may name, for loadSceneFile.
+    const SceneGenerators& sceneGenerators() const { return generators_; }
     const SceneEntry* findScene(const std::string& name) const;
     const BenchEntry* findBench(const std::string& name) const;
 
@@ -129,6 +139,7 @@ private:
     std::vector<PipelineEntry> pipelines_;
     std::vector<BenchEntry> benches_;
     std::vector<CommandEntry> commands_;
+    SceneGenerators generators_;
     std::vector<PenetrationProbe> probes_;
 };
 

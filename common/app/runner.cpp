@@ -145,6 +145,9 @@ void printSummary(std::ostream& out, const World& world, const RunStats& stats) 
         out << "max depth  not measured (this chapter's narrowphase finds whether shapes overlap, not how deep)\n";
     else
         out << "max depth  not measured (no collision stage in this chapter)\n";
+    if (world.broadphase.used != BroadphaseMode::Auto)
+        out << "broadphase " << toString(world.broadphase.used) << " (" << world.broadphase.reason << "), "
+            << world.candidatePairs.size() << " candidate pairs in the last step\n";
     out << "energy     " << std::setprecision(6) << stats.initialEnergy.total() << " J -> " << stats.finalEnergy.total()
         << " J" << (stats.energyByIntegrator.empty() ? "" : "; by integrator (its bodies and their springs):") << "\n";
     for (const RunStats::GroupEnergy& group : stats.energyByIntegrator)
@@ -170,7 +173,7 @@ World loadSceneOrBuiltin(const Registry& registry, const std::string& nameOrPath
         world.name = entry->name;
         return world;
     }
-    if (endsWith(nameOrPath, ".json") || std::ifstream(nameOrPath).good()) return loadSceneFile(nameOrPath);
+    if (endsWith(nameOrPath, ".json") || std::ifstream(nameOrPath).good()) return loadSceneFile(nameOrPath, registry.sceneGenerators());
     throw SceneError("", "'" + nameOrPath + "' is neither a scene file nor a built-in scene (see `stepwise scenes`)");
 }
 

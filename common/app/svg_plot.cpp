@@ -86,6 +86,16 @@ std::string tickLabel(double value) {
     return mantissa + "e" + (negative ? "-" : "") + exponent;
 }
 
+/// A count's label, a whole number with thousands separators: 100000 -> "100,000".
+std::string countLabel(double value) {
+    if (std::abs(value) < 1) return tickLabel(value);
+    std::string digits = std::to_string(static_cast<long long>(std::llround(value)));
+    const std::ptrdiff_t sign = digits[0] == '-' ? 1 : 0;
+    for (std::ptrdiff_t at = static_cast<std::ptrdiff_t>(digits.size()) - 3; at > sign; at -= 3)
+        digits.insert(static_cast<std::size_t>(at), ",");
+    return digits;
+}
+
 std::string escapeXml(const std::string& text) {
     std::string out;
     for (char c : text) {
@@ -163,13 +173,13 @@ void writeSvgPlot(const std::string& path, const PlotSpec& spec) {
         const double x = xAxis.toPixel(value);
         svg << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << axisBottom
             << "\" stroke=\"#ddd\"/>\n<text x=\"" << x << "\" y=\"" << axisBottom + 16 << "\" text-anchor=\"middle\">"
-            << tickLabel(value) << "</text>\n";
+            << (spec.integerX ? countLabel(value) : tickLabel(value)) << "</text>\n";
     }
     for (double value : yAxis.ticks) {
         const double y = yAxis.toPixel(value);
         svg << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << plotRight << "\" y2=\"" << y
             << "\" stroke=\"#ddd\"/>\n<text x=\"" << left - 6 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">"
-            << tickLabel(value) << "</text>\n";
+            << (spec.integerY ? countLabel(value) : tickLabel(value)) << "</text>\n";
     }
     svg << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << plotWidth << "\" height=\"" << plotHeight
         << "\" fill=\"none\" stroke=\"black\"/>\n"

@@ -37,7 +37,7 @@ struct PlotSpec {
     std::string yLabel;
     bool logX = true;
     bool logY = true;
-    bool integerX = false;      // a count axis: ticks on whole numbers only
+    bool integerX = false;      // a count axis: ticks on whole numbers only, labelled "100,000"
     bool integerY = false;
     /// What the plot shows and how it was measured, written under it (wrapped); every bench
     /// plot has one, so the SVG file explains itself outside the course pages too.
@@ -46,7 +46,8 @@ struct PlotSpec {
 };
 
 /// Writes an SVG line plot (log axes by default; non-positive values are skipped on log axes).
-/// Linear axes get ticks at 1, 2 or 5 times a power of ten; count axes only whole numbers.
+/// Linear axes get ticks at 1, 2 or 5 times a power of ten; count axes only whole numbers,
+/// written out with thousands separators (also on log axes: "100,000", not "1e5").
 /// Throws std::runtime_error naming the path when the file cannot be written.
 void writeSvgPlot(const std::string& path, const PlotSpec& spec);
 

@@ -138,6 +138,12 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
     report["max_penetration"] = statistic(stats.maxPenetration);
     report["penetration_measured"] = stats.penetrationMeasured;
     report["max_contacts"] = stats.maxContacts;
+    // Extension: which broadphase found the candidate pairs and why (chapter 5 on).
+    if (world.broadphase.used != BroadphaseMode::Auto) {
+        report["broadphase"] = {{"used", toString(world.broadphase.used)},
+                                {"reason", world.broadphase.reason},
+                                {"candidate_pairs", world.candidatePairs.size()}};
+    }
     report["energy"] = energyJson(stats.initialEnergy, stats.finalEnergy);
 
     std::vector<std::string> warnings = stats.warnings;

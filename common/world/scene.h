@@ -4,7 +4,9 @@
 
 #include "world/world.h"
 
+#include <functional>
 #include <iosfwd>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -45,11 +47,21 @@ private:
 /// Prints every issue of `error` as its own "error: path: message" line.
 void printSceneError(std::ostream& out, const SceneError& error);
 
+class JsonCursor;
+
+/// A generator a scene file can name instead of listing bodies one by one:
+/// "generator": { "<name>": { parameters } } (docs/scene-format.md). It adds its bodies to the
+/// world read from the rest of the file, and throws SceneError naming the JSON path of a bad
+/// parameter. Chapters provide them (chapter 5's stress scene); the loader only dispatches.
+using SceneGenerator = std::function<void(World& world, const JsonCursor& parameters)>;
+using SceneGenerators = std::map<std::string, SceneGenerator>;
+
 /// Parses and validates a scene from JSON text. `source` names the file in messages.
-World loadSceneFromString(const std::string& jsonText, const std::string& source = "scene");
+World loadSceneFromString(const std::string& jsonText, const std::string& source = "scene",
+                          const SceneGenerators& generators = {});
 
 /// Reads a scene file. Throws SceneError on unreadable files, malformed JSON or invalid values.
-World loadSceneFile(const std::string& path);
+World loadSceneFile(const std::string& path, const SceneGenerators& generators = {});
 
 /// Writes a world back out as a scene (the inverse of loading, up to float round-off).
 std::string saveSceneToString(const World& world);

@@ -161,12 +161,28 @@ void readBodies(const JsonCursor& bodies, World& world, ErrorList& errors) {
     }
 }
 
-World loadScene(const std::string& jsonText, const std::string& source, const std::string& defaultName) {
+/// "generator": { "<name>": { parameters } }: exactly one generator the program knows.
+void runGenerator(const JsonCursor& cursor, const SceneGenerators& generators, World& world) {
+    if (!cursor.json().is_object() || cursor.json().size() != 1)
+        cursor.fail("must be an object with one key, the generator's name: { \"stress\": { ... } }");
+    const std::string name = cursor.json().begin().key();
+    const auto generator = generators.find(name);
+    if (generator == generators.end()) {
+        std::string known;
+        for (const auto& entry : generators) known += std::string(known.empty() ? "" : ", ") + "\"" + entry.first + "\"";
+        cursor.fail("unknown generator \"" + name + "\" (" + (known.empty() ? "this program knows none" : "known: " + known) + ")");
+    }
+    generator->second(world, cursor.child(name.c_str()));
+}
+
+World loadScene(const std::string& jsonText, const std::string& source, const std::string& defaultName,
+                const SceneGenerators& generators) {
     const Json document = parseStrictJson(jsonText, source);
     const JsonCursor root(document, "");
     if (!document.is_object()) root.fail("a scene must be a JSON object { ... }");
     ErrorList errors;
-    root.expectObject({"format", "version", "name", "description", "settings", "bodies", "joints", "forces"}, &errors);
+    root.expectObject({"format", "version", "name", "description", "settings", "bodies", "generator", "joints", "forces"},
+                      &errors);
     errors.attempt([&] {
         if (auto v = root.optional("format"); v && v->string() != "stepwise-scene") v->fail("must be \"stepwise-scene\"");
     });
@@ -191,6 +207,10 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
         if (auto bodies = root.optional("bodies")) readBodies(*bodies, world, errors);
     });
     if (bodiesRead) {
+        // Generated bodies come after the listed ones, so joints and forces can name either.
+        errors.attempt([&] {
+            if (auto generator = root.optional("generator")) runGenerator(*generator, generators, world);
+        });
         errors.attempt([&] {
             if (auto joints = root.optional("joints"))
                 for (std::size_t i = 0; i < joints->arraySizeAtMost(kMaxJoints); ++i)
@@ -213,12 +233,12 @@ void printSceneError(std::ostream& out, const SceneError& error) {
     if (error.truncated()) out << "error: stopped after " << error.issues().size() << " errors\n";
 }
 
-World loadSceneFromString(const std::string& jsonText, const std::string& source) {
-    return loadScene(jsonText, source, "untitled");
+World loadSceneFromString(const std::string& jsonText, const std::string& source, const SceneGenerators& generators) {
+    return loadScene(jsonText, source, "untitled", generators);
 }
 
-World loadSceneFile(const std::string& path) {
-    return loadScene(readInputFile(path, "a scene file"), path, std::filesystem::path(path).stem().string());
+World loadSceneFile(const std::string& path, const SceneGenerators& generators) {
+    return loadScene(readInputFile(path, "a scene file"), path, std::filesystem::path(path).stem().string(), generators);
 }
 
 }  // namespace stepwise

@@ -3,6 +3,7 @@
 // here knows which stages exist.
 
 #include "world/body.h"
+#include "world/broadphase_state.h"
 #include "world/contact.h"
 #include "world/settings.h"
 #include "world/step_state.h"
@@ -76,12 +77,13 @@ struct World {
     std::vector<JointDesc> joints;
 
     // Collision state. candidatePairs is rebuilt every frame by whatever finds candidates (all
-    // pairs in chapter 3, a broadphase from chapter 5, to come); pairs lists the pairs the last narrowphase
+    // pairs in chapter 3, a broadphase from chapter 5); pairs lists the pairs the last narrowphase
     // found overlapping. contacts is the contact cache: one record per touching pair, sorted by
     // pair, kept from step to step (contact.h).
     std::vector<BodyPair> candidatePairs;
     std::vector<BodyPair> pairs;
     std::vector<Contact> contacts;
+    BroadphaseState broadphase;          // what the broadphase keeps between steps (chapter 5)
 
     StepState step;                      // what stages hand each other, and what they measured
 

@@ -14,5 +14,6 @@ bool drawEpaHorizon(const std::string& path);       // chapter 3: the polytope a
 bool drawContactArms(const std::string& path);      // chapter 4: the Jacobian's arms
 bool drawFrictionPyramid(const std::string& path);  // chapter 4: friction pyramid against cone
 bool drawBaumgarteEnergy(const std::string& path);  // chapter 4: Baumgarte's energy gain
+bool drawSweepIntervals(const std::string& path);   // chapter 5: boxes, intervals, pairs
 
 }  // namespace figures

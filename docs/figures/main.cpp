@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
                           {"fig-epa-horizon.svg", figures::drawEpaHorizon},
                           {"fig-contact-arms.svg", figures::drawContactArms},
                           {"fig-friction-pyramid.svg", figures::drawFrictionPyramid},
-                          {"fig-baumgarte-energy.svg", figures::drawBaumgarteEnergy}};
+                          {"fig-baumgarte-energy.svg", figures::drawBaumgarteEnergy},
+                          {"fig-sweep-intervals.svg", figures::drawSweepIntervals}};
     for (const Figure& figure : all) {
         const std::string path = dir + "/" + figure.file;
         if (!figure.draw(path)) {

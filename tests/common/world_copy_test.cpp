@@ -1,7 +1,7 @@
 // Copying the World is a complete snapshot: stages keep nothing of their own, so a copy taken
 // mid-run and stepped on gives bit-identical states to the original (what rewind and replay
 // rely on). Every built-in scene, through the latest chapter's pipeline, with and without
-// substeps.
+// substeps, with the broadphase auto chooses and with sweep and prune.
 #include <catch2/catch.hpp>
 
 #include "support/registry_fixture.h"
@@ -47,24 +47,36 @@ bool identicalStates(const World& a, const World& b) {
 TEST_CASE("a copy of the world taken mid-run steps on exactly like the original", "[common][determinism]") {
     const Registry& registry = test::chapterRegistry();
     for (const SceneEntry& entry : registry.scenes()) {
-        for (int substeps : {1, 4}) {
-            INFO("scene " << entry.name << ", " << substeps << " substeps");
-            World original = loadSceneOrBuiltin(registry, entry.name);
-            original.settings.substeps = substeps;
-            Pipeline pipeline = registry.makePipeline(original);
-            for (int frame = 0; frame < 40; ++frame) pipeline.step(original);
+        // Auto (brute force for small scenes), and sweep and prune forced: its kept order and
+        // axis travel with the copy (World::broadphase).
+        for (BroadphaseMode broadphase : {BroadphaseMode::Auto, BroadphaseMode::Sap}) {
+            for (int substeps : {1, 4}) {
+                INFO("scene " << entry.name << ", " << substeps << " substeps, broadphase " << toString(broadphase));
+                World original = loadSceneOrBuiltin(registry, entry.name);
+                original.settings.substeps = substeps;
+                original.settings.broadphase = broadphase;
+                Pipeline pipeline = registry.makePipeline(original);
+                for (int frame = 0; frame < 40; ++frame) pipeline.step(original);
 
-            World copy = original;
-            Pipeline copyPipeline = registry.makePipeline(copy);  // a fresh pipeline: nothing lives in it
-            Pipeline sharedPipeline = pipeline;                   // or a copy of the running one
-            World third = original;
-            for (int frame = 0; frame < 60; ++frame) {
-                pipeline.step(original);
-                copyPipeline.step(copy);
-                sharedPipeline.step(third);
+                World copy = original;
+                Pipeline copyPipeline = registry.makePipeline(copy);  // a fresh pipeline: nothing lives in it
+                Pipeline sharedPipeline = pipeline;                   // or a copy of the running one
+                World third = original;
+                for (int frame = 0; frame < 60; ++frame) {
+                    pipeline.step(original);
+                    copyPipeline.step(copy);
+                    sharedPipeline.step(third);
+                }
+                CHECK(identicalStates(original, copy));
+                CHECK(identicalStates(original, third));
+                CHECK(copy.candidatePairs == original.candidatePairs);
+                if (original.broadphase.used == BroadphaseMode::Sap) {
+                    // The copy went on from the original's sorted order, not from scratch.
+                    CHECK(copy.broadphase.axis == original.broadphase.axis);
+                    CHECK(copy.broadphase.fullSort == original.broadphase.fullSort);
+                    CHECK(copy.broadphase.sortMoves == original.broadphase.sortMoves);
+                }
             }
-            CHECK(identicalStates(original, copy));
-            CHECK(identicalStates(original, third));
         }
     }
 }

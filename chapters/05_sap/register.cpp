@@ -1,0 +1,22 @@
+// Chapter 5 in the programs: the stress scenes with the broadphase overlay, the pipeline with
+// its broadphase stage, the broadphase bench, `stepwise stress` and the scene files' "stress"
+// generator.
+#include "05_sap/benches.h"
+#include "05_sap/chapter.h"
+#include "05_sap/scenes.h"
+#include "05_sap/stress_command.h"
+#include "app/registry.h"
+
+namespace stepwise {
+
+void registerChapter05(Registry& registry) {
+    addChapter05Scenes(registry);
+    registry.addPipeline({5, [](const World& world) { return makeChapter05Pipeline(world); }});
+    registry.addBench(broadphaseBench());
+    registry.addCommand({5, installStressCommand});
+    registry.addGenerator({"stress", [](World& world, const JsonCursor& parameters) {
+                               addStressBodies(world, readStressParams(parameters));
+                           }});
+}
+
+}  // namespace stepwise

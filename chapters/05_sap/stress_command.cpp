@@ -1,0 +1,78 @@
+// `stepwise stress` (stress_command.h).
+#include "05_sap/stress_command.h"
+
+#include "05_sap/chapter.h"
+#include "app/runner.h"
+#include "world/report.h"
+
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace stepwise {
+
+int runStressCommand(const StressArgs& args, std::ostream& out, std::ostream& err) {
+    Settings settings;
+    settings.broadphase = args.broadphase == "sap" ? BroadphaseMode::Sap
+                          : args.broadphase == "brute" ? BroadphaseMode::Brute
+                                                       : BroadphaseMode::Auto;
+    if (!args.savePath.empty()) {
+        std::ofstream file(args.savePath, std::ios::binary);
+        file << stressSceneFile(args.params, settings, "sap-stress");
+        if (!file) {
+            err << "error: " << args.savePath << ": cannot write the file\n";
+            return 2;
+        }
+        out << "scene      " << args.savePath << " (run it with: stepwise run " << args.savePath << ")\n";
+        return 0;
+    }
+    if (!args.reportPath.empty() && !std::ofstream(args.reportPath, std::ios::binary | std::ios::app)) {
+        err << "error: " << args.reportPath << ": cannot write the file\n";
+        return 2;
+    }
+    World world = buildStressScene(args.params);
+    world.settings = settings;
+    Pipeline pipeline = makeChapter05Pipeline(world);
+    // Chapter 3's probe measures the deepest overlap, as `stepwise run` does.
+    Registry probeOnly;
+    probeOnly.addPenetrationProbe(PenetrationProbe{3, measureDeepestPenetration});
+    RunOptions options;
+    options.frames = args.frames;
+    options.progress = true;
+    const RunStats stats = runHeadless(world, pipeline, probeOnly, options);
+    printSummary(out, world, stats);
+    if (!args.reportPath.empty()) {
+        writeReport(args.reportPath, world, stats, engineVersion());
+        out << "report     " << args.reportPath << "\n";
+    }
+    return stats.frames == args.frames ? 0 : 1;
+}
+
+void installStressCommand(CLI::App& app, int& exitCode) {
+    auto args = std::make_shared<StressArgs>();
+    CLI::App* stress = app.add_subcommand(
+        "stress", "The stress scene (chapter 5): many bodies dropped dense or sparse, run headless or saved as a scene");
+    const std::map<std::string, StressDensity> densities = {{"sparse", StressDensity::Sparse}, {"dense", StressDensity::Dense}};
+    const std::map<std::string, StressShape> shapes = {{"sphere", StressShape::Sphere},
+                                                       {"diamond", StressShape::Diamond},
+                                                       {"box", StressShape::Box},
+                                                       {"mixed", StressShape::Mixed}};
+    stress->add_option("--count", args->params.count, "Dynamic bodies")->check(CLI::Range(1, kStressMaxCount));
+    stress->add_option("--density", args->params.density, "sparse (3 m apart) or dense (5 cm apart)")
+        ->transform(CLI::CheckedTransformer(densities, CLI::ignore_case));
+    stress->add_option("--shape", args->params.shape, "sphere, diamond (convex hull), box or mixed")
+        ->transform(CLI::CheckedTransformer(shapes, CLI::ignore_case));
+    stress->add_option("--height", args->params.dropHeight, "Drop height of the lowest bodies, m")
+        ->check(CLI::Range(Real(0), kStressMaxDropHeight));
+    stress->add_option("--seed", args->params.seed, "Seed of the positions' jitter and the orientations");
+    stress->add_option("--broadphase", args->broadphase, "auto, sap or brute")->check(CLI::IsMember({"auto", "sap", "brute"}));
+    stress->add_option("--frames", args->frames, "Frames to simulate")->check(CLI::Range(0L, 100000000L));
+    stress->add_option("--report", args->reportPath, "Write the run report (JSON) here");
+    stress->add_option("--save", args->savePath, "Write a scene file naming the generator instead of running");
+    stress->callback([args, &exitCode] { exitCode = runStressCommand(*args, std::cout, std::cerr); });
+}
+
+}  // namespace stepwise

@@ -1,0 +1,88 @@
+#pragma once
+// Sweep and prune, the pieces one at a time: bounds that cover a frame's motion, the axis with
+// the largest spread, the interval ends sorted along it (from scratch, or from last step's order
+// by insertion sort), and the sweep with an active list. After Baraff's sort and sweep
+// (Dynamic Simulation of Non-Penetrating Rigid Bodies, PhD thesis, Cornell, 1992), Cohen, Lin,
+// Manocha and Ponamgi (I-COLLIDE, I3D 1995), who keep the sorted lists from step to step, and
+// Ericson (Real-Time Collision Detection, 2005, section 7.5). The stage that strings the pieces
+// together is in broadphase.cpp.
+
+#include "world/world.h"
+
+#include <vector>
+
+namespace stepwise {
+
+// [ch05-needs-contact]
+/// A contact is worth finding only when one of the two bodies is dynamic: static and kinematic
+/// bodies follow their own paths whatever touches them, so a pair of them has nothing to solve
+/// (Box2D v3 and Jolt skip such pairs in their broadphase too).
+inline bool needsContact(bool aDynamic, bool bDynamic) { return aDynamic || bDynamic; }
+// [ch05-needs-contact]
+
+/// Added to every body's bounds on each side, m: a guard against round-off in the bounds, so a
+/// contact the narrowphase would find is never lost to the last bit of a box.
+constexpr Real kBoundsMargin = Real(1e-3);
+
+/// How far the bounds of a body are grown on each side, m: its share of the speculative margin
+/// over a whole frame (chapter 3), i.e. its fastest point's speed times dt plus what gravity adds
+/// over the frame, plus kBoundsMargin. A pair that can touch during the frame overlaps.
+Real boundsGrowth(const World& world, int bodyIndex);
+
+/// Every body's world box grown by boundsGrowth (computed here in one pass per body, with the
+/// same bound on the speed as chapter 3's speculative margin). A body whose pose is not finite gets an empty
+/// box (min > max) that overlaps nothing. `dynamic` gets 1 per dynamic body, 0 per other: the
+/// sweep reads it from a small array rather than from the bodies, which are large.
+void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std::vector<char>& dynamic);
+
+/// Variance of the bounds' centres along x, y and z, m^2 (computed in double: bodies far from
+/// the origin would lose it to cancellation in float).
+Vec3 centreVariance(const std::vector<Aabb>& bounds);
+
+/// An axis must spread the centres this much more than the current one to take over: without
+/// the hysteresis, a square layout (equal variance on x and z) would flip axes on round-off and
+/// lose the incremental sort every step.
+constexpr Real kAxisSwitchRatio = Real(1.2);
+
+/// The axis with the largest variance (ties: the lower index), kept from `previousAxis` unless
+/// another exceeds it by kAxisSwitchRatio. `previousAxis` -1: no previous axis.
+int chooseSweepAxis(const Vec3& variance, int previousAxis);
+
+/// The sort order of interval ends: by value, lower ends before upper ends at equal values (so
+/// touching intervals overlap, as Aabb::overlaps says), then by body. A total order.
+inline bool endpointBefore(const SweepEndpoint& a, const SweepEndpoint& b) {
+    if (a.value != b.value) return a.value < b.value;
+    if (a.isUpper != b.isUpper) return !a.isUpper;
+    return a.body < b.body;
+}
+
+/// Two ends per body, in body order, with their values on `axis` (unsorted).
+void makeEndpoints(const std::vector<Aabb>& bounds, int axis, std::vector<SweepEndpoint>& endpoints);
+
+/// Sets each end's value from the bounds, keeping the order of the list.
+void refreshEndpointValues(const std::vector<Aabb>& bounds, int axis, std::vector<SweepEndpoint>& endpoints);
+
+/// Insertion sort from the list's current order: near O(n) when little moved since the last
+/// step. Gives up once it has moved ends `moveBudget` times (the list is then only partly
+/// sorted) and returns -1; else returns the number of moves.
+long insertionSortEndpoints(std::vector<SweepEndpoint>& endpoints, long moveBudget);
+
+/// A full sort, O(n log n) whatever the starting order.
+void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints);
+
+/// Walks the sorted ends with active lists: a lower end meets every interval still open on the
+/// axis; those whose boxes also overlap on the other two axes, and that need a contact, are
+/// pairs. Appends them (bodyA < bodyB, in sweep order) and returns how many pairs the sweep
+/// looked at: the pairs that overlap on the axis and need a contact.
+long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
+                    const std::vector<char>& dynamic, int axis, std::vector<BodyPair>& pairs);
+
+/// Every pair whose boxes overlap and that needs a contact, tested one by one: O(n^2), in
+/// canonical order. The reference sweep and prune must agree with.
+void bruteForcePairs(const std::vector<Aabb>& bounds, const std::vector<char>& dynamic, std::vector<BodyPair>& pairs);
+
+/// Sorts pairs into canonical order (by bodyA, then bodyB) in O(n + k): counting by bodyA, then
+/// each body's few partners sorted.
+void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount);
+
+}  // namespace stepwise
