@@ -32,7 +32,6 @@ using namespace stepwise::fuzz;
 namespace {
 
 constexpr const char* kTarget = "fuzz_stepper";
-const char* const kJointTypes[] = {"distance", "ball_socket", "hinge", "cone_twist", "fixed"};
 
 const Registry& registry() {
     static const Registry instance = [] {
@@ -118,7 +117,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const int jointCount = input.integer(0, 3);
     for (int j = 0; j < jointCount; ++j) {
         JointDesc joint;
-        joint.type = kJointTypes[input.integer(0, 4)];
+        joint.type = JointType(input.integer(0, 4));  // distance, ball socket, hinge, cone twist, fixed
         joint.bodyA = input.integer(0, int(world.bodies.size()) - 1);
         joint.bodyB = input.integer(0, int(world.bodies.size()) - 1);
         if (joint.bodyA == joint.bodyB) continue;
