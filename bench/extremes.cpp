@@ -23,15 +23,6 @@ using namespace stepwise;
 
 namespace {
 
-const Registry& chapters() {
-    static const Registry registry = [] {
-        Registry r;
-        registerChapters(r);
-        return r;
-    }();
-    return registry;
-}
-
 const char* precision() { return sizeof(Real) == sizeof(double) ? "double" : "float"; }
 
 Quat randomRotation(std::mt19937& random) {
@@ -164,8 +155,8 @@ World farScene(double offset, bool stack) {
 double strayFromOrigin(double offset, long frames) {
     World reference = farScene(0, false);
     World world = farScene(offset, false);
-    Pipeline referencePipeline = chapters().makePipeline(reference);
-    Pipeline pipeline = chapters().makePipeline(world);
+    Pipeline referencePipeline = chapterRegistry().makePipeline(reference);
+    Pipeline pipeline = chapterRegistry().makePipeline(world);
     double stray = 0;
     for (long frame = 0; frame < frames; ++frame) {
         referencePipeline.step(reference);
@@ -182,7 +173,7 @@ double strayFromOrigin(double offset, long frames) {
 /// The top box's height after `frames` frames: 2.5 m when the stack stands.
 double stackTop(double offset, long frames) {
     World world = farScene(offset, true);
-    Pipeline pipeline = chapters().makePipeline(world);
+    Pipeline pipeline = chapterRegistry().makePipeline(world);
     for (long frame = 0; frame < frames; ++frame) pipeline.step(world);
     return double(world.bodies.back().transform.position.y());
 }
@@ -253,7 +244,7 @@ World mixedScene() {
 bool soakTable(bool quick) {
     const long frames = quick ? 5000 : 100000;
     World world = mixedScene();
-    Pipeline pipeline = chapters().makePipeline(world);
+    Pipeline pipeline = chapterRegistry().makePipeline(world);
     const double startEnergy = computeEnergy(world).total();
     double highest = startEnergy;
     long memoryAfterWarmUp = 0, highestFrame = 0, fastestFrame = 0;
@@ -306,7 +297,7 @@ struct Outcome {
 };
 
 Outcome settle(World world, int top, int below, double restingGap, long frames) {
-    Pipeline pipeline = chapters().makePipeline(world);
+    Pipeline pipeline = chapterRegistry().makePipeline(world);
     const Vec3 start = world.bodies[std::size_t(top)].transform.position;
     Outcome outcome;
     for (long frame = 0; frame < frames; ++frame) {
@@ -391,7 +382,7 @@ void speedTable(bool quick) {
     ball.shape = Shape::sphere(Real(0.1));
     ball.linearVelocity = Vec3(1000, 0, 0);
     addBody(free, ball);
-    Pipeline pipeline = chapters().makePipeline(free);
+    Pipeline pipeline = chapterRegistry().makePipeline(free);
     const double before = computeEnergy(free).total();
     for (int frame = 0; frame < 60; ++frame) pipeline.step(free);
     std::printf("%-40s %.3g (relative)\n", "energy change flying free", (computeEnergy(free).total() - before) / before);
@@ -401,7 +392,7 @@ void speedTable(bool quick) {
     wall.settings.gravity = Vec3::Zero();
     addBox(wall, "wall", BodyType::Static, Vec3(100, 0, 0), Vec3(Real(0.5), 10, 10));
     addBody(wall, ball);
-    Pipeline wallPipeline = chapters().makePipeline(wall);
+    Pipeline wallPipeline = chapterRegistry().makePipeline(wall);
     for (int frame = 0; frame < 60; ++frame) wallPipeline.step(wall);
     const double x = double(wall.bodies[1].transform.position.x());
     std::printf("%-40s %s (ball at x = %.4g m after 1 s)\n", "ball stopped by the wall", x < 100 ? "yes" : "no, it tunnelled", x);

@@ -7,8 +7,8 @@
 
 #include "01_integrators/integrate.h"
 #include "01_integrators/oscillator.h"
-#include "math/random.h"
 #include "app/bench_util.h"
+#include "math/random.h"
 
 #include <cmath>
 #include <exception>
@@ -63,18 +63,18 @@ struct Measurement {
     int steps;
     double dt;
     double error;
-    double seconds;   // median wall time of one run to kDuration
+    Spread seconds;   // wall time of one run to kDuration: median and quartiles of the runs
 };
 
-// Runs one configuration often enough that the timer sees real numbers: at least five runs
-// and at least `minimumSeconds` of stepping in total; reports the median run.
+// Runs one configuration often enough that the timer sees real numbers: at least seven runs
+// and at least `minimumSeconds` of stepping in total.
 Measurement measure(const std::vector<Oscillator>& oscillators, IntegratorKind method, int steps, double minimumSeconds) {
     const World initial = makeOscillatorWorld(oscillators, method);
     const Real dt = Real(kDuration / steps);
-    Measurement result{method, steps, kDuration / steps, 0, 0};
+    Measurement result{method, steps, kDuration / steps, 0, {}};
     std::vector<double> runSeconds;
     double total = 0;
-    while (runSeconds.size() < 5 || total < minimumSeconds) {
+    while (runSeconds.size() < 7 || total < minimumSeconds) {
         World world = initial;
         Stopwatch stopwatch;
         for (int step = 0; step < steps; ++step) integrate(world, dt);
@@ -83,7 +83,7 @@ Measurement measure(const std::vector<Oscillator>& oscillators, IntegratorKind m
         total += seconds;
         if (runSeconds.size() == 1) result.error = maxErrorAgainstExact(world, oscillators, kDuration);
     }
-    result.seconds = median(runSeconds);
+    result.seconds = spreadOf(runSeconds);
     return result;
 }
 
@@ -101,43 +101,50 @@ double observedOrder(const std::vector<Measurement>& rows, IntegratorKind method
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-std::string withSuffix(const std::string& path, const std::string& suffix) {
-    const std::string extension = ".svg";
-    if (path.size() > extension.size() && path.compare(path.size() - extension.size(), extension.size(), extension) == 0)
-        return path.substr(0, path.size() - extension.size()) + suffix + extension;
-    return path + suffix + extension;
-}
-
-}  // namespace
-
-int runIntegratorsBench(const BenchOptions& options) {
-    std::ostream& out = options.out ? *options.out : std::cout;
+void measureIntegrators(BenchRun& run) {
     const std::vector<Oscillator> oscillators = makeOscillators();
     const IntegratorKind methods[] = {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Rk4};
-    const std::vector<int> stepCounts = options.quick ? std::vector<int>{16, 32, 64, 128, 256, 512, 1024}
-                                                      : std::vector<int>{16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192};
-    const double minimumSeconds = options.quick ? 0.01 : 0.2;
+    const std::vector<int> stepCounts = run.quick() ? std::vector<int>{16, 32, 64, 128, 256, 512, 1024}
+                                                    : std::vector<int>{16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192};
+    const double minimumSeconds = run.quick() ? 0.01 : 0.2;
 
+    run.progress().stage("3 integrators x " + std::to_string(stepCounts.size()) + " step sizes",
+                         long(std::size(methods) * stepCounts.size()));
     // [ch01-bench]
     std::vector<Measurement> rows;
     for (IntegratorKind method : methods)
-        for (int steps : stepCounts) rows.push_back(measure(oscillators, method, steps, minimumSeconds));
+        for (int steps : stepCounts) {
+            rows.push_back(measure(oscillators, method, steps, minimumSeconds));
+            run.progress().advance();
+        }
     // [ch01-bench]
+    run.progress().endStage();
 
-    CsvTable table({"method", "steps", "dt_s", "h_omega", "error_m", "run_ms", "ns_per_body_step"});
-    PlotSpec workPrecision{"Work-precision: " + std::to_string(kBodies) + " oscillators to t = 2.3 s (Real = " +
-                               (sizeof(Real) == 4 ? "float" : "double") + ")",
-                           "run time (s)", "max position error (m)", true, true, {}};
-    PlotSpec errorByStep{std::string("Error against step size (Real = ") + (sizeof(Real) == 4 ? "float" : "double") + ")", "dt (s)", "max position error (m)", true, true, {}};
+    const std::string precision = realTypeName();
+    CsvTable table({"method", "steps", "dt_s", "h_omega", "error_m", "run_ms", "ns_per_body_step", "run_ms_q1",
+                    "run_ms_q3"});
+    PlotSpec workPrecision{"Work-precision: " + std::to_string(kBodies) + " oscillators to t = 2.3 s (Real = " + precision + ")",
+                           "run time (s)", "max position error (m)"};
+    workPrecision.caption = "Each point is one integrator at one step size: the largest distance from the exact "
+                            "solution at t = 2.3 s against the time the run took (median of at least 7 runs; "
+                            "whiskers span the middle half of the runs). Lower left is better: for any error you "
+                            "can afford, the leftmost method reaches it soonest.";
+    PlotSpec errorByStep{"Error against step size (Real = " + precision + ")", "dt (s)", "max position error (m)"};
+    errorByStep.caption = "The same errors against the step size dt. On log axes a method of order p is a line of "
+                          "slope p (1 for semi-implicit Euler, 2 for Verlet, 4 for RK4) until the error reaches "
+                          "the round-off of Real.";
     for (IntegratorKind method : methods) {
-        PlotSeries byTime{toString(method), {}, {}, false};
-        PlotSeries byStep{toString(method), {}, {}, false};
+        PlotSeries byTime(toString(method));
+        PlotSeries byStep(toString(method));
         for (const Measurement& row : rows) {
             if (row.method != method) continue;
             table.addRow({toString(method), std::to_string(row.steps), formatNumber(row.dt), formatNumber(row.dt * kOmega),
-                          formatNumber(row.error), formatNumber(row.seconds * 1e3),
-                          formatNumber(row.seconds * 1e9 / (double(row.steps) * kBodies))});
-            byTime.x.push_back(row.seconds);
+                          formatNumber(row.error), formatNumber(row.seconds.median * 1e3),
+                          formatNumber(row.seconds.median * 1e9 / (double(row.steps) * kBodies)),
+                          formatNumber(row.seconds.lower * 1e3), formatNumber(row.seconds.upper * 1e3)});
+            byTime.x.push_back(row.seconds.median);
+            byTime.xLow.push_back(row.seconds.lower);
+            byTime.xHigh.push_back(row.seconds.upper);
             byTime.y.push_back(row.error);
             byStep.x.push_back(row.dt);
             byStep.y.push_back(row.error);
@@ -146,21 +153,27 @@ int runIntegratorsBench(const BenchOptions& options) {
         errorByStep.series.push_back(byStep);
     }
 
-    out << table.toText() << "\nobserved order (slope of log error against log dt):\n";
+    run.out() << table.toText() << "\nobserved order (slope of log error against log dt):\n";
     for (IntegratorKind method : methods)
-        out << "  " << toString(method) << "  " << formatNumber(observedOrder(rows, method), 3) << "\n";
+        run.out() << "  " << toString(method) << "  " << formatNumber(observedOrder(rows, method), 3) << "\n";
+    run.writeCsv(table);
+    run.writePlot(workPrecision);
+    run.writePlot(errorByStep, "-dt");
+}
 
-    try {
-        if (!options.csvPath.empty()) table.write(options.csvPath);
-        if (!options.plotPath.empty()) {
-            writeSvgPlot(options.plotPath, workPrecision);
-            writeSvgPlot(withSuffix(options.plotPath, "-dt"), errorByStep);
-        }
-    } catch (const std::exception& error) {
-        std::cerr << "error: bench integrators: " << error.what() << "\n";
-        return 2;
-    }
-    return 0;
+}  // namespace
+
+BenchEntry integratorsBench() {
+    return BenchEntry{"integrators", 1, "integrator error against run time on a spring oscillator (work-precision)",
+                      runIntegratorsBench,
+                      {{BenchFile::Kind::Csv, "", "per integrator and step count: dt, error, run time (median, quartiles)"},
+                       {BenchFile::Kind::Plot, "", "work-precision diagram: error against run time"},
+                       {BenchFile::Kind::Plot, "-dt", "error against step size (the slopes are the orders)"}}};
+}
+
+int runIntegratorsBench(const BenchOptions& options) {
+    static const BenchEntry entry = integratorsBench();
+    return runBench(entry, options, measureIntegrators);
 }
 
 }  // namespace stepwise

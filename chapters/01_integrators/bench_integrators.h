@@ -6,8 +6,11 @@
 
 namespace stepwise {
 
-/// Runs the bench; writes options.csvPath and options.plotPath (plus "<plot>-dt.svg", error
-/// against step size) when given. Returns 0, or 2 when an output file cannot be written.
+/// The registry entry: name, description and the files the bench writes.
+BenchEntry integratorsBench();
+
+/// Runs the bench; writes the table (--csv), the work-precision plot (--plot) and the error
+/// against step size next to it (<plot>-dt.svg). Returns 0, or 2 when an output cannot be written.
 int runIntegratorsBench(const BenchOptions& options);
 
 }  // namespace stepwise

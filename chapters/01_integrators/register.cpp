@@ -10,9 +10,7 @@ namespace stepwise {
 void registerChapter01(Registry& registry) {
     addChapter01Scenes(registry);
     registry.addPipeline(PipelineEntry{1, makeChapter01Pipeline});
-    registry.addBench(BenchEntry{"integrators", 1,
-                                 "integrator error against run time on a spring oscillator (work-precision)",
-                                 runIntegratorsBench});
+    registry.addBench(integratorsBench());
 }
 
 }  // namespace stepwise

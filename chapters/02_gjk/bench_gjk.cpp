@@ -1,8 +1,6 @@
 // `stepwise bench gjk`: what a GJK query costs with each box support map and for hulls, how many
 // iterations it takes, and how often each box support map misjudges near-contact pairs.
-// Writes the timing table as CSV (--csv), the iteration histogram as SVG (--plot), and next to
-// them <name>-iterations.csv, <name>-classification.csv and <name>-table.svg (both tables as a
-// figure for the chapter page).
+// The files it writes are listed in gjkBench() (and by `stepwise bench --help`).
 
 #include "02_gjk/bench_gjk.h"
 
@@ -11,11 +9,8 @@
 #include "app/bench_util.h"
 
 #include <algorithm>
-#include <fstream>
-#include <iostream>
+#include <cmath>
 #include <map>
-#include <sstream>
-#include <stdexcept>
 
 namespace stepwise {
 namespace {
@@ -78,8 +73,8 @@ std::vector<QueryCase> makeCases(int pairCount) {
 }
 
 struct CaseMeasurement {
-    double intersectNs = 1e300;           // best run
-    double distanceNs = 1e300;
+    std::vector<double> intersectNs;      // ns per query, one sample per timed pass
+    std::vector<double> distanceNs;
     double meanIterations = 0;
     int maxIterations = 0;
     double meanDistanceIterations = 0;
@@ -122,98 +117,46 @@ void countIterations(const CaseProxies& proxies, CaseMeasurement& measurement) {
 }
 
 // [ch02-bench-timing]
-// One timed pass per query kind; keeps the best time per query seen so far. The best of many
-// short runs is the estimate least disturbed by other processes on a shared machine, and the
-// cases take turns within each repetition (runGjkBench), so a burst of load hits all alike.
+// One timed pass per query kind, recording ns per query. The cases take turns within each
+// repetition (measureGjk), so a burst of load elsewhere on a shared machine hits all alike; the
+// table reports the median pass with its quartiles, which such bursts cannot move far.
 long timeOnce(const CaseProxies& proxies, CaseMeasurement& measurement) {
     const double count = double(proxies.a.size());
     long sink = 0;
     Stopwatch clock;
     for (size_t i = 0; i < proxies.a.size(); ++i) sink += gjkIntersect(proxies.a[i], proxies.b[i]).iterations;
-    measurement.intersectNs = std::min(measurement.intersectNs, clock.seconds() * 1e9 / count);
+    measurement.intersectNs.push_back(clock.seconds() * 1e9 / count);
     clock.restart();
     for (size_t i = 0; i < proxies.a.size(); ++i) sink += gjkDistance(proxies.a[i], proxies.b[i]).iterations;
-    measurement.distanceNs = std::min(measurement.distanceNs, clock.seconds() * 1e9 / count);
+    measurement.distanceNs.push_back(clock.seconds() * 1e9 / count);
     return sink;
 }
 // [ch02-bench-timing]
 
-std::string withSuffix(const std::string& path, const std::string& extension, const std::string& suffix) {
-    const bool hasExtension = path.size() >= extension.size() &&
-                              path.compare(path.size() - extension.size(), extension.size(), extension) == 0;
-    return (hasExtension ? path.substr(0, path.size() - extension.size()) : path) + suffix + extension;
+// "412 (405-420)": a median with its quartiles in whole nanoseconds, for the table figure.
+std::string withQuartiles(const Spread& spread) {
+    const auto ns = [](double value) { return std::to_string(std::lround(value)); };
+    return ns(spread.median) + " (" + ns(spread.lower) + "-" + ns(spread.upper) + ")";
 }
 
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    for (char c : text) out += c == '<' ? std::string("&lt;") : c == '>' ? std::string("&gt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
-    return out;
-}
-
-// A titled table for the SVG figure.
-struct FigureTable {
-    std::vector<std::string> notes;   // lines of text above the table
-    const CsvTable* table = nullptr;
-};
-
-// The tables as an SVG figure the chapter page can show (Doxygen includes images, not CSV): one
-// <text> per cell, columns placed by their widest cell, so no renderer needs a monospace font.
-void writeSvgTables(const std::string& path, const std::vector<FigureTable>& figures) {
-    const double lineHeight = 17, charWidth = 7.0, margin = 10;
-    std::ostringstream body;
-    double y = margin + 12, width = 0;
-    auto textAt = [&](double x, const std::string& text, bool bold) {
-        body << "<text x=\"" << x << "\" y=\"" << y << "\"" << (bold ? " font-weight=\"bold\"" : "") << ">"
-             << escapeXml(text) << "</text>\n";
-    };
-    for (const FigureTable& figure : figures) {
-        for (const std::string& note : figure.notes) {
-            textAt(margin, note, false);
-            width = std::max(width, 2 * margin + charWidth * double(note.size()));
-            y += lineHeight;
-        }
-        const CsvTable& table = *figure.table;
-        std::vector<double> columnX;
-        double x = margin;
-        for (size_t c = 0; c < table.columns().size(); ++c) {
-            size_t widest = table.columns()[c].size();
-            for (const auto& row : table.rows()) widest = std::max(widest, c < row.size() ? row[c].size() : 0);
-            columnX.push_back(x);
-            x += charWidth * double(widest + 2);
-        }
-        width = std::max(width, x + margin);
-        for (size_t c = 0; c < table.columns().size(); ++c) textAt(columnX[c], table.columns()[c], true);
-        y += lineHeight;
-        for (const auto& row : table.rows()) {
-            for (size_t c = 0; c < row.size() && c < columnX.size(); ++c) textAt(columnX[c], row[c], false);
-            y += lineHeight;
-        }
-        y += lineHeight;
-    }
-    std::ofstream file(path, std::ios::binary);
-    if (!file) throw std::runtime_error("cannot write '" + path + "'");
-    file << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << y
-         << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-         << body.str() << "</svg>\n";
-}
-
-}  // namespace
-
-int runGjkBench(const BenchOptions& options) {
-    std::ostream& out = options.out ? *options.out : std::cout;
-    const int pairCount = options.quick ? 2000 : 20000;
-    const int repetitions = options.quick ? 15 : 40;
-    const int pairsPerGap = options.quick ? 300 : 3000;
+void measureGjk(BenchRun& run) {
+    const int pairCount = run.quick() ? 2000 : 20000;
+    const int repetitions = run.quick() ? 15 : 41;
+    const int pairsPerGap = run.quick() ? 300 : 3000;
 
     CsvTable timing({"pair", "support", "ns_intersect", "ns_distance", "mean_iterations", "max_iterations",
-                     "mean_distance_iterations", "intersecting"});
+                     "mean_distance_iterations", "intersecting", "ns_intersect_q1", "ns_intersect_q3",
+                     "ns_distance_q1", "ns_distance_q3"});
+    CsvTable timingFigure({"pair", "support", "ns intersect (quartiles)", "ns distance (quartiles)", "mean it",
+                           "max it", "mean distance it", "intersecting"});
     CsvTable iterations({"pair", "support", "iterations", "fraction"});
-    PlotSpec plot;
-    plot.title = "GJK: support points per query (boolean unless marked distance)";
-    plot.xLabel = "support points evaluated";
-    plot.yLabel = "fraction of queries";
-    plot.logX = false;
-    plot.logY = false;
+    PlotSpec plot("GJK: support points per query", "support points evaluated (GJK iterations)", "fraction of queries",
+                  false, false);
+    plot.integerX = true;
+    plot.caption = "How many support points GJK evaluates before it answers, over " + std::to_string(pairCount) +
+                   " random box-sized pairs per kind: the boolean query of each kind, and for comparison the "
+                   "distance query on the box pairs, which cannot stop at the first separating plane.";
+    run.progress().stage("building pairs, counting iterations", 1);
     const std::vector<QueryCase> cases = makeCases(pairCount);
     std::vector<CaseProxies> proxies;
     std::vector<CaseMeasurement> measurements(cases.size());
@@ -221,19 +164,26 @@ int runGjkBench(const BenchOptions& options) {
         proxies.push_back(makeProxies(cases[c]));
         countIterations(proxies[c], measurements[c]);
     }
-    // Cases take turns within each repetition, so a burst of load elsewhere hits all alike.
+    run.progress().stage("timing " + std::to_string(cases.size()) + " query kinds, in turns", repetitions);
     long sink = 0;
-    for (int repetition = 0; repetition < repetitions; ++repetition)
+    for (int repetition = 0; repetition < repetitions; ++repetition) {
         for (size_t c = 0; c < cases.size(); ++c) sink += timeOnce(proxies[c], measurements[c]);
-    if (sink == 42) out << "";  // a use of the results the optimiser cannot prove away
+        run.progress().advance();
+    }
+    if (sink == 42) run.out() << "";  // a use of the results the optimiser cannot prove away
     for (size_t c = 0; c < cases.size(); ++c) {
         const QueryCase& queryCase = cases[c];
         const CaseMeasurement& m = measurements[c];
-        timing.addRow({queryCase.name, queryCase.support, formatNumber(m.intersectNs, 3), formatNumber(m.distanceNs, 3),
+        const Spread intersect = spreadOf(m.intersectNs), distance = spreadOf(m.distanceNs);
+        timing.addRow({queryCase.name, queryCase.support, formatNumber(intersect.median, 3), formatNumber(distance.median, 3),
                        formatNumber(m.meanIterations, 3), std::to_string(m.maxIterations),
-                       formatNumber(m.meanDistanceIterations, 3), formatNumber(m.intersectingFraction, 3)});
-        PlotSeries series;
-        series.title = queryCase.name + " " + queryCase.support;
+                       formatNumber(m.meanDistanceIterations, 3), formatNumber(m.intersectingFraction, 3),
+                       formatNumber(intersect.lower, 3), formatNumber(intersect.upper, 3),
+                       formatNumber(distance.lower, 3), formatNumber(distance.upper, 3)});
+        timingFigure.addRow({queryCase.name, queryCase.support, withQuartiles(intersect), withQuartiles(distance),
+                             formatNumber(m.meanIterations, 3), std::to_string(m.maxIterations),
+                             formatNumber(m.meanDistanceIterations, 3), formatNumber(m.intersectingFraction, 3)});
+        PlotSeries series(queryCase.name + " " + queryCase.support);
         for (const auto& [count, queries] : m.iterationCounts) {
             const double fraction = double(queries) / double(pairCount);
             iterations.addRow({queryCase.name, queryCase.support, std::to_string(count), formatNumber(fraction, 4)});
@@ -243,8 +193,7 @@ int runGjkBench(const BenchOptions& options) {
         plot.series.push_back(series);
     }
     // One distance-query distribution for comparison: it cannot stop at a separating plane.
-    PlotSeries distanceSeries;
-    distanceSeries.title = "box-box extents, distance";
+    PlotSeries distanceSeries("box-box extents, distance");
     for (const auto& [count, queries] : measurements[0].distanceIterationCounts) {
         distanceSeries.x.push_back(count);
         distanceSeries.y.push_back(double(queries) / double(pairCount));
@@ -253,6 +202,7 @@ int runGjkBench(const BenchOptions& options) {
 
     // Columns per variant: wrong answers, exits other than intersect/separated, and queries in
     // which the newest support point was dropped (a region the "skip" shortcut never tests).
+    run.progress().stage("near-contact pairs at known gaps", 1);
     std::vector<std::string> columns = {"gap_m", "pairs", "touching_m"};
     for (const char* what : {"wrong", "unclean", "dropped"})
         for (const char* variant : {"ext", "vert", "ext_sum"}) columns.push_back(std::string(what) + "_" + variant);
@@ -264,36 +214,45 @@ int runGjkBench(const BenchOptions& options) {
             for (int variant = 0; variant < kVariantCount; ++variant) cells.push_back(std::to_string(counts[variant]));
         classification.addRow(cells);
     }
+    run.progress().endStage();
 
-    const std::string precision = sizeof(Real) == 4 ? "float" : "double";
+    const std::string precision = realTypeName();
     const std::vector<FigureTable> figures = {
-        {{"GJK per query: " + std::to_string(pairCount) + " random box-sized pairs, Real = " + precision + ", best of " +
-          std::to_string(repetitions) + " runs"},
-         &timing},
+        {{"GJK per query: " + std::to_string(pairCount) + " random box-sized pairs, Real = " + precision +
+          "; ns: median of " + std::to_string(repetitions) + " timed passes (quartiles in brackets), it = iterations"},
+         &timingFigure},
         {{"Near-contact box pairs (gap > 0: wrong = false positive, gap < 0: wrong = false negative)",
           "ext = extents support, vert = vertex loop, ext_sum = extents with the barycentric-sum face point",
           "unclean = exit other than intersect/separated; dropped = newest support point not kept"},
          &classification}};
     for (const FigureTable& figure : figures) {
-        for (const std::string& note : figure.notes) out << note << "\n";
-        out << figure.table->toText() << "\n";
+        for (const std::string& note : figure.notes) run.out() << note << "\n";
+        run.out() << figure.table->toText() << "\n";
     }
+    run.writeCsv(timing);
+    run.writeCsv(iterations, "-iterations");
+    run.writeCsv(classification, "-classification");
+    run.writePlot(plot);
+    run.writeTables(figures, "-table");
+}
 
-    try {
-        if (!options.csvPath.empty()) {
-            timing.write(options.csvPath);
-            iterations.write(withSuffix(options.csvPath, ".csv", "-iterations"));
-            classification.write(withSuffix(options.csvPath, ".csv", "-classification"));
-        }
-        if (!options.plotPath.empty()) {
-            writeSvgPlot(options.plotPath, plot);
-            writeSvgTables(withSuffix(options.plotPath, ".svg", "-table"), figures);
-        }
-    } catch (const std::exception& error) {
-        std::cerr << "error: bench gjk: " << error.what() << "\n";
-        return 2;  // a path the user gave cannot be written: bad input
-    }
-    return 0;
+}  // namespace
+
+BenchEntry gjkBench() {
+    return BenchEntry{"gjk", 2,
+                      "GJK: ns per query (box support by extents vs vertices, hulls), iterations, near-contact "
+                      "misjudgements",
+                      runGjkBench,
+                      {{BenchFile::Kind::Csv, "", "per query kind: ns per query (median, quartiles), iterations"},
+                       {BenchFile::Kind::Csv, "-iterations", "histogram: how many queries needed each iteration count"},
+                       {BenchFile::Kind::Csv, "-classification", "near-contact pairs: wrong answers per gap and variant"},
+                       {BenchFile::Kind::Plot, "", "plot of the iteration histogram"},
+                       {BenchFile::Kind::Plot, "-table", "both tables as a figure for the chapter page"}}};
+}
+
+int runGjkBench(const BenchOptions& options) {
+    static const BenchEntry entry = gjkBench();
+    return runBench(entry, options, measureGjk);
 }
 
 }  // namespace stepwise

@@ -5,6 +5,9 @@
 
 namespace stepwise {
 
+/// The registry entry: name, description and the files the bench writes.
+BenchEntry gjkBench();
+
 /// Runs the GJK bench; returns the process exit code.
 int runGjkBench(const BenchOptions& options);
 

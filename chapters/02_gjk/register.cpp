@@ -10,10 +10,7 @@ namespace stepwise {
 void registerChapter02(Registry& registry) {
     addChapter02Scenes(registry);
     registry.addPipeline(PipelineEntry{2, makeChapter02Pipeline});
-    registry.addBench(BenchEntry{"gjk", 2,
-                                 "GJK: ns per query (box support by extents vs vertices, hulls), iterations, "
-                                 "near-contact misjudgements",
-                                 runGjkBench});
+    registry.addBench(gjkBench());
 }
 
 }  // namespace stepwise

@@ -4,12 +4,14 @@
 //   sphere-box  spheres against boxes forced through GJK + EPA; exact depth from the closed form
 //               in double. A - B is curved here, so EPA can only approach it: this is where the
 //               tolerance and the iteration cap trade time for accuracy.
-// Each configuration runs the whole query (GJK, then EPA) over its set until enough time has
-// passed to measure, and reports ns per query and the relative depth error.
+// Each configuration runs the whole query (GJK, then EPA) over its set once for the relative
+// depth error, then all configurations are timed in turns, round after round, and report the
+// median ns per query with its quartiles.
 #include "03_epa/bench_epa.h"
 
 #include "03_epa/narrowphase.h"
 #include "app/bench_util.h"
+#include "math/random.h"
 
 // The exact box-box oracle is shared with the test suites (header-only, double precision).
 #include "02_gjk/box_oracle.h"
@@ -18,8 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <iostream>
 #include <string>
 #include <vector>
 
@@ -89,62 +89,67 @@ PairSet makeSphereBoxPairs(int count) {
     return set;
 }
 
+// One configuration of the sweep: a pair set, the query's options, and what it measured.
 struct Row {
-    std::string set;
+    const PairSet* set = nullptr;
+    CollideOptions options;
     std::string support;
     std::string sweep;
-    double tolerance = 0;
-    int cap = 0;
-    double nsPerQuery = 0;
+    std::vector<double> nsSamples;  // ns per query, one per timed round
+    double depthChecksum = 0;       // keeps the timed queries' results in use for the optimiser
     double medianError = 0, p95Error = 0, maxError = 0;
     double meanEpaIterations = 0;
     int failures = 0;
 };
 
-double percentile(std::vector<double> values, double p) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t rank = static_cast<std::size_t>(std::ceil(p * double(values.size())));
-    return values[std::min(values.size() - 1, rank > 0 ? rank - 1 : 0)];
+Row makeRow(const PairSet& set, const CollideOptions& options, const std::string& sweep) {
+    Row row;
+    row.set = &set;
+    row.options = options;
+    row.support = options.supportMode == SupportMode::Extents ? "extents" : "vertices";
+    row.sweep = sweep;
+    return row;
 }
 
-// [ch03-bench]
-Row measure(const PairSet& set, const CollideOptions& options, const std::string& sweep, double minimumSeconds) {
-    Row row{set.name, options.supportMode == SupportMode::Extents ? "extents" : "vertices", sweep,
-            double(options.epa.relativeTolerance), options.epa.maxIterations};
-    // Rounds over the whole set until enough time has passed; the fastest round counts, since
-    // other processes on the machine can only ever add time to a round.
-    std::vector<ContactQuery> results(set.pairs.size());
-    double fastestRound = 0;
-    int rounds = 0;
-    const Stopwatch total;
-    do {
-        const Stopwatch round;
-        for (std::size_t i = 0; i < set.pairs.size(); ++i) {
-            const BenchPair& pair = set.pairs[i];
-            results[i] = collideShapes(pair.a, pair.poseA, pair.b, pair.poseB, options);
-        }
-        const double seconds = round.seconds();
-        fastestRound = rounds++ == 0 ? seconds : std::min(fastestRound, seconds);
-    } while (rounds < 3 || total.seconds() < minimumSeconds);
-    row.nsPerQuery = fastestRound * 1e9 / double(set.pairs.size());
-
+// Accuracy: one pass over the whole set against the exact depths.
+void measureErrors(Row& row) {
     std::vector<double> errors;
     double iterations = 0;
-    for (std::size_t i = 0; i < set.pairs.size(); ++i) {
-        const ContactQuery& query = results[i];
+    for (const BenchPair& pair : row.set->pairs) {
+        const ContactQuery query = collideShapes(pair.a, pair.poseA, pair.b, pair.poseB, row.options);
         if (!query.intersect || !std::isfinite(double(query.depth))) {
             ++row.failures;
             continue;
         }
-        errors.push_back(std::abs(double(query.depth) - set.pairs[i].exactDepth) / set.pairs[i].exactDepth);
+        errors.push_back(std::abs(double(query.depth) - pair.exactDepth) / pair.exactDepth);
         iterations += query.epaIterations;
     }
     row.medianError = percentile(errors, 0.5);
     row.p95Error = percentile(errors, 0.95);
     row.maxError = percentile(errors, 1.0);
-    row.meanEpaIterations = iterations / double(set.pairs.size());
-    return row;
+    row.meanEpaIterations = iterations / double(row.set->pairs.size());
+}
+
+// [ch03-bench]
+// Speed: one round times every configuration once on the same chunk of pairs; the next round
+// takes the next chunk, so over all rounds every pair is timed about equally often. A chunk
+// takes well under a millisecond, so most escape the moments when the machine (shared with
+// other processes) runs something else; the configurations take turns, starting one further
+// along each round, so those moments land on a different one each time. The median over the
+// rounds ignores them; the quartiles show the scatter that is left.
+void timeRound(std::vector<Row>& rows, std::size_t chunkSize, std::size_t round) {
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        Row& row = rows[(k + round) % rows.size()];
+        const std::size_t setSize = row.set->pairs.size();
+        Real depthSum = 0;
+        const Stopwatch clock;
+        for (std::size_t i = 0; i < chunkSize; ++i) {
+            const BenchPair& pair = row.set->pairs[(round * chunkSize + i) % setSize];
+            depthSum += collideShapes(pair.a, pair.poseA, pair.b, pair.poseB, row.options).depth;
+        }
+        row.nsSamples.push_back(clock.seconds() * 1e9 / double(chunkSize));
+        row.depthChecksum += double(depthSum);
+    }
 }
 // [ch03-bench]
 
@@ -163,27 +168,22 @@ std::string peerStatus() {
     return status + ". Only Stepwise is measured.\n";
 }
 
-}  // namespace
-
-int runEpaBench(const BenchOptions& options) {
-    std::ostream& out = options.out ? *options.out : std::cout;
-    const int pairCount = options.quick ? 1000 : 5000;
-    const double minimumSeconds = options.quick ? 0.01 : 0.2;
+void measureEpa(BenchRun& run) {
+    const int pairCount = run.quick() ? 1000 : 5000;
+    const std::size_t chunkSize = 100;
+    const int rounds = run.quick() ? 60 : 200;  // every pair timed 6 (quick) or 4 times
     const std::vector<double> tolerances = {1e-1, 3e-2, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
     const std::vector<int> caps = {1, 2, 4, 8, 16, 32, 50, 100};
+    run.progress().stage("drawing pairs with exact depths", 1);
     const PairSet sets[2] = {makeBoxPairs(pairCount), makeSphereBoxPairs(pairCount)};
 
-    std::vector<Row> rows;
-    PlotSpec plot{std::string("EPA work-precision, Real = ") + (sizeof(Real) == 4 ? "float" : "double"),
-                  "ns per query (GJK + EPA, fastest round)", "95th percentile relative depth error", true, true, {}};
-    const auto addSeries = [&](const std::string& title, std::size_t first, bool markersOnly) {
-        PlotSeries series{title, {}, {}, markersOnly};
-        for (std::size_t i = first; i < rows.size(); ++i) {
-            series.x.push_back(rows[i].nsPerQuery);
-            series.y.push_back(rows[i].p95Error);
-        }
-        plot.series.push_back(series);
+    // The sweeps: per set and support map, the tolerance, then (extents only) the iteration cap.
+    struct Sweep {
+        std::string label;
+        std::size_t first = 0, end = 0;   // its rows
     };
+    std::vector<Row> rows;
+    std::vector<Sweep> sweeps;
     for (const PairSet& set : sets) {
         const std::vector<SupportMode> modes = set.name == "boxes" ? std::vector<SupportMode>{SupportMode::Extents, SupportMode::Vertices}
                                                                    : std::vector<SupportMode>{SupportMode::Extents};
@@ -192,48 +192,93 @@ int runEpaBench(const BenchOptions& options) {
             base.closedForms = false;  // the point is EPA, even for spheres
             base.supportMode = mode;
             const std::string label = set.name + (mode == SupportMode::Vertices ? ", vertices" : "");
-            std::size_t first = rows.size();
+            sweeps.push_back({label + ": tolerance", rows.size(), 0});
             for (double tolerance : tolerances) {
-                CollideOptions run = base;
-                run.epa.relativeTolerance = Real(tolerance);
-                rows.push_back(measure(set, run, "tolerance", minimumSeconds));
+                CollideOptions options = base;
+                options.epa.relativeTolerance = Real(tolerance);
+                rows.push_back(makeRow(set, options, "tolerance"));
             }
-            addSeries(label + ": tolerance", first, false);
+            sweeps.back().end = rows.size();
             if (mode == SupportMode::Vertices) continue;
-            first = rows.size();
+            sweeps.push_back({label + ": iteration cap", rows.size(), 0});
             for (int cap : caps) {
-                CollideOptions run = base;
-                run.epa.maxIterations = cap;
-                rows.push_back(measure(set, run, "iteration_cap", minimumSeconds));
+                CollideOptions options = base;
+                options.epa.maxIterations = cap;
+                rows.push_back(makeRow(set, options, "iteration_cap"));
             }
-            addSeries(label + ": iteration cap", first, false);
+            sweeps.back().end = rows.size();
         }
     }
     // The closed form the sphere-box pairs normally take, for scale.
-    const std::size_t closedFormRow = rows.size();
-    rows.push_back(measure(sets[1], CollideOptions{}, "closed_form", minimumSeconds));
+    sweeps.push_back({"sphere-box: closed form", rows.size(), rows.size() + 1});
+    rows.push_back(makeRow(sets[1], CollideOptions{}, "closed_form"));
     rows.back().support = "closed_form";
-    addSeries("sphere-box: closed form", closedFormRow, true);
+
+    run.progress().stage("depth errors of " + std::to_string(rows.size()) + " configurations", long(rows.size()));
+    for (Row& row : rows) {
+        measureErrors(row);
+        run.progress().advance();
+    }
+    run.progress().stage("timing them in turns", rounds);
+    for (int round = 0; round < rounds; ++round) {
+        timeRound(rows, chunkSize, std::size_t(round));
+        run.progress().advance();
+    }
+    run.progress().endStage();
+
+    const std::string precision = realTypeName();
+    PlotSpec plot("EPA work-precision, Real = " + precision, "ns per query (GJK + EPA)",
+                  "95th percentile relative depth error");
+    plot.caption = "Each point is one setting of EPA's relative tolerance or iteration cap: the 95th percentile "
+                   "of the relative depth error over " + std::to_string(pairCount) + " overlapping pairs against "
+                   "the time per query (median of " + std::to_string(rounds) + " rounds of " +
+                   std::to_string(chunkSize) + " pairs, all settings timed in turns on the same pairs; whiskers "
+                   "span the middle half of the rounds). Lower left is better.";
+    for (const Sweep& sweep : sweeps) {
+        PlotSeries series(sweep.label, sweep.end - sweep.first == 1);
+        for (std::size_t i = sweep.first; i < sweep.end; ++i) {
+            const Spread ns = spreadOf(rows[i].nsSamples);
+            series.x.push_back(ns.median);
+            series.xLow.push_back(ns.lower);
+            series.xHigh.push_back(ns.upper);
+            series.y.push_back(rows[i].p95Error);
+        }
+        plot.series.push_back(series);
+    }
 
     CsvTable table({"pairs", "support", "sweep", "relative_tolerance", "max_iterations", "ns_per_query",
-                    "median_rel_error", "p95_rel_error", "max_rel_error", "mean_epa_iterations", "failures"});
+                    "median_rel_error", "p95_rel_error", "max_rel_error", "mean_epa_iterations", "failures",
+                    "ns_q1", "ns_q3"});
     for (const Row& row : rows) {
-        table.addRow({row.set, row.support, row.sweep, formatNumber(row.tolerance), std::to_string(row.cap),
-                      formatNumber(row.nsPerQuery), formatNumber(row.medianError), formatNumber(row.p95Error),
-                      formatNumber(row.maxError), formatNumber(row.meanEpaIterations, 3), std::to_string(row.failures)});
+        const Spread ns = spreadOf(row.nsSamples);
+        table.addRow({row.set->name, row.support, row.sweep, formatNumber(double(row.options.epa.relativeTolerance)),
+                      std::to_string(row.options.epa.maxIterations), formatNumber(ns.median),
+                      formatNumber(row.medianError), formatNumber(row.p95Error), formatNumber(row.maxError),
+                      formatNumber(row.meanEpaIterations, 3), std::to_string(row.failures), formatNumber(ns.lower),
+                      formatNumber(ns.upper)});
     }
-    out << "EPA bench: " << pairCount << " overlapping pairs per set, Real = " << (sizeof(Real) == 4 ? "float" : "double")
-        << ", default tolerance " << formatNumber(double(kEpaDefaultRelativeTolerance)) << ", cap "
-        << EpaSettings{}.maxIterations << "\n"
-        << table.toText() << peerStatus();
-    try {
-        if (!options.csvPath.empty()) table.write(options.csvPath);
-        if (!options.plotPath.empty()) writeSvgPlot(options.plotPath, plot);
-    } catch (const std::exception& error) {
-        std::cerr << "error: bench epa: " << error.what() << "\n";
-        return 2;
-    }
-    return 0;
+    run.out() << "EPA bench: " << pairCount << " overlapping pairs per set, Real = " << precision
+              << ", default tolerance " << formatNumber(double(kEpaDefaultRelativeTolerance)) << ", cap "
+              << EpaSettings{}.maxIterations << "; ns: median of " << rounds << " rounds (ns_q1, ns_q3: quartiles)\n"
+              << table.toText() << peerStatus();
+    run.writeCsv(table);
+    run.writePlot(plot);
+}
+
+}  // namespace
+
+BenchEntry epaBench() {
+    return BenchEntry{"epa", 3,
+                      "EPA depth error against run time as tolerance and iteration cap vary; extents against "
+                      "vertex support (work-precision)",
+                      runEpaBench,
+                      {{BenchFile::Kind::Csv, "", "per setting: ns per query (median, quartiles), depth errors, iterations"},
+                       {BenchFile::Kind::Plot, "", "work-precision plot: depth error against ns per query"}}};
+}
+
+int runEpaBench(const BenchOptions& options) {
+    static const BenchEntry entry = epaBench();
+    return runBench(entry, options, measureEpa);
 }
 
 }  // namespace stepwise

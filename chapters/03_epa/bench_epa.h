@@ -6,6 +6,9 @@
 
 namespace stepwise {
 
+/// The registry entry: name, description and the files the bench writes.
+BenchEntry epaBench();
+
 /// Runs the bench; writes options.csvPath and options.plotPath when given. Returns 0, or 2 when
 /// an output file cannot be written.
 int runEpaBench(const BenchOptions& options);

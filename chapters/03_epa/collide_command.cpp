@@ -17,16 +17,33 @@ namespace stepwise {
 
 namespace {
 
-/// One BODY of a pair: a shape and a pose, read with the scene loader's rules and messages
-/// (json_reader.h), so `pairs[2].b.shape.box.half_extents[1]: must be > 0` names the value.
-/// The other keys of a scene body are accepted and ignored: a query has no dynamics.
-void readQueryBody(const JsonCursor& body, Shape& shape, Transform& pose) {
-    body.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
-                       "density", "friction", "restitution", "bullet", "integrator"});
-    shape = readShape(body.child("shape"));
-    pose = Transform{};
-    if (auto position = body.optional("position")) pose.position = position->vec3Within(kMaxCoordinate);
-    if (auto orientation = body.optional("orientation")) pose.rotation = orientation->unitQuaternion();
+/// One BODY of a pair, read by the scene loader's own body reader (json_reader.h): the same
+/// keys, rules and messages as a scene body, so a static body with a mass is rejected here as
+/// it is by `run`, and `pairs[2].b.shape.box.half_extents[1]: must be > 0` names the value. A
+/// query uses only the shape and the pose; the other keys are checked and then unused.
+void readQueryBody(const JsonCursor& body, std::size_t index, Shape& shape, Transform& pose, ErrorList& errors) {
+    if (!body.json().is_object()) body.fail("must be an object");
+    const BodyDef def = readBodyDef(body, index, errors);
+    shape = def.shape;
+    pose = def.transform;
+}
+
+/// A file in one of the project's other formats, recognised by its "format" key or its keys,
+/// is named as such: "unknown key \"format\"" would not tell the user what went wrong.
+void rejectOtherFormats(const JsonCursor& root) {
+    const Json& document = root.json();
+    const std::string format = document.contains("format") && document["format"].is_string()
+                                   ? document["format"].get<std::string>()
+                                   : "";
+    const char* expected = "collide reads a query file: { \"pairs\": [ { \"a\": BODY, \"b\": BODY }, ... ] } "
+                           "(docs/scene-format.md, \"Narrow-phase query\")";
+    if (format == "stepwise-scene" || (format.empty() && document.contains("bodies")))
+        root.fail(std::string("this is a scene file (format \"stepwise-scene\"); ") + expected +
+                  "; to simulate a scene use `stepwise run FILE`");
+    if (format == "stepwise-report")
+        root.fail(std::string("this is a run report (format \"stepwise-report\"); ") + expected);
+    if (document.contains("results") && !document.contains("pairs"))
+        root.fail(std::string("this looks like collide's own output (it has \"results\"); ") + expected);
 }
 
 }  // namespace
@@ -36,16 +53,24 @@ std::vector<CollidePair> parseCollidePairs(const std::string& jsonText, const st
     const Json document = parseStrictJson(jsonText, source);
     const JsonCursor root(document, "");
     if (!document.is_object()) root.fail(source + " must be a JSON object { \"pairs\": [ ... ] }");
-    root.expectObject({"pairs", "description"});
-    const JsonCursor pairs = root.child("pairs");
-    std::vector<CollidePair> result(pairs.arraySizeAtMost(kMaxQueryPairs));
-    for (std::size_t i = 0; i < result.size(); ++i) {
-        const JsonCursor pair = pairs.element(i);
-        pair.expectObject({"a", "b"});
-        const JsonCursor bodyA = pair.child("a"), bodyB = pair.child("b");  // both present first
-        readQueryBody(bodyA, result[i].shapeA, result[i].poseA);
-        readQueryBody(bodyB, result[i].shapeB, result[i].poseB);
-    }
+    rejectOtherFormats(root);
+    ErrorList errors;  // every error of the file at once, up to a limit
+    root.expectObject({"pairs", "description"}, &errors);
+    std::vector<CollidePair> result;
+    errors.attempt([&] {
+        const JsonCursor pairs = root.child("pairs");
+        result.resize(pairs.arraySizeAtMost(kMaxQueryPairs));
+        for (std::size_t i = 0; i < result.size(); ++i) {
+            errors.attempt([&] {
+                const JsonCursor pair = pairs.element(i);
+                pair.expectObject({"a", "b"}, &errors);
+                const JsonCursor bodyA = pair.child("a"), bodyB = pair.child("b");  // both present first
+                errors.attempt([&] { readQueryBody(bodyA, 0, result[i].shapeA, result[i].poseA, errors); });
+                errors.attempt([&] { readQueryBody(bodyB, 1, result[i].shapeB, result[i].poseB, errors); });
+            });
+        }
+    });
+    errors.throwIfAny();
     return result;
 }
 // [ch03-collide-parse]
@@ -73,7 +98,7 @@ int runCollideCommand(const CollideArgs& args, std::ostream& out, std::ostream& 
     try {
         pairs = parseCollidePairs(readInputFile(args.inputPath, "a pairs file"), args.inputPath);
     } catch (const SceneError& error) {
-        err << "error: " << error.what() << "\n";
+        printSceneError(err, error);
         return 2;
     }
     std::vector<ContactQuery> results(pairs.size());

@@ -12,10 +12,7 @@ void registerChapter03(Registry& registry) {
     addChapter03Scenes(registry);
     registry.addPipeline(PipelineEntry{3, [](const World& world) { return makeChapter03Pipeline(world); }});
     registry.addPenetrationProbe(PenetrationProbe{3, measureDeepestPenetration});
-    registry.addBench(BenchEntry{"epa", 3,
-                                 "EPA depth error against run time as tolerance and iteration cap vary; extents "
-                                 "against vertex support (work-precision)",
-                                 runEpaBench});
+    registry.addBench(epaBench());
     registry.addCommand(CommandEntry{3, installCollideCommand});
 }
 

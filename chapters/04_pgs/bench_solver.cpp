@@ -18,8 +18,6 @@
 #include "app/bench_util.h"
 
 #include <algorithm>
-#include <fstream>
-#include <iostream>
 #include <stdexcept>
 
 namespace stepwise {
@@ -29,7 +27,7 @@ namespace {
 const char* solverLabel(SolverKind kind) { return kind == SolverKind::Jacobi ? "jacobi" : "gauss_seidel"; }
 
 struct FixedSetResult {
-    double solveMs = 0;
+    Spread solveMs;            // one solve: median and quartiles of the repeats
     double residual = 0;
 };
 
@@ -44,12 +42,12 @@ FixedSetResult solveFrozen(const FrozenRows& frozen, SolverKind kind, int iterat
         times.push_back(watch.seconds() * 1e3);
         result.residual = measureResidual(rows, bodies).rms;
     }
-    result.solveMs = median(times);
+    result.solveMs = spreadOf(times);
     return result;
 }
 
 struct SimulationResult {
-    double solveMs = 0;        // per frame
+    Spread solveMs;            // per frame: median and quartiles over the settled half
     double penetration = 0;    // mean over the settled half of the deepest contact, m
     double residual = 0;       // mean over the settled half of the residual rms, m/s
 };
@@ -66,8 +64,10 @@ SimulationResult simulatePit(int sphereCount, int frames, SolverKind kind, int i
     int measured = 0;
     for (int frame = 0; frame < frames; ++frame) {
         pipeline.step(world);
-        frameMs.push_back(solve->lastMs);
         if (frame < frames / 2) continue;
+        // The settled half only: while the balls land the number of contacts, and with it the
+        // work of a solve, still changes from frame to frame.
+        frameMs.push_back(solve->lastMs);
         // The run report's max_penetration: the deepest overlap at the end of the step.
         result.penetration += static_cast<double>(measureDeepestPenetration(world));
         result.residual += static_cast<double>(world.step.solver.residualRms);
@@ -75,71 +75,83 @@ SimulationResult simulatePit(int sphereCount, int frames, SolverKind kind, int i
     }
     result.penetration /= std::max(1, measured);
     result.residual /= std::max(1, measured);
-    result.solveMs = median(frameMs);  // the median: a shared machine's hiccups stay out
+    result.solveMs = spreadOf(frameMs);  // the median: a shared machine's hiccups stay out
     return result;
 }
 
-}  // namespace
-
-bool benchOutputsWritable(const BenchOptions& options, const std::string& suite) {
-    for (const std::string& path : {options.csvPath, options.plotPath}) {
-        if (path.empty()) continue;
-        if (!std::ofstream(path, std::ios::binary | std::ios::app)) {
-            std::cerr << "error: bench " << suite << ": cannot write '" << path << "'\n";
-            return false;
-        }
-    }
-    return true;
-}
-
-int runSolverBench(const BenchOptions& options) {
-    if (!benchOutputsWritable(options, "solver")) return 2;
-    std::ostream& out = options.out ? *options.out : std::cout;
-    const std::vector<int> iterationCounts = options.quick ? std::vector<int>{1, 2, 4, 8, 16, 32, 50}
-                                                           : std::vector<int>{1, 2, 3, 4, 6, 8, 10, 12, 16, 20, 25, 30, 40, 50};
+void measureSolver(BenchRun& run) {
+    const std::vector<int> iterationCounts = run.quick() ? std::vector<int>{1, 2, 4, 8, 16, 32, 50}
+                                                         : std::vector<int>{1, 2, 3, 4, 6, 8, 10, 12, 16, 20, 25, 30, 40, 50};
     const int sphereCount = 40;
     const int freezeFrames = 20;
-    const int simulationFrames = options.quick ? 180 : 360;
-    const int repeats = options.quick ? 300 : 2000;
+    const int simulationFrames = run.quick() ? 180 : 360;
+    const int repeats = run.quick() ? 300 : 2000;
 
-    CsvTable table({"part", "solver", "iterations", "solve_ms", "velocity_residual", "max_penetration"});
-    PlotSpec plot;
-    plot.title = "Sequential impulses: error against solve time, iterations 1 to 50";
-    plot.xLabel = "solve time (ms; fixed set: one solve, running: per frame)";
-    plot.yLabel = "residual (m/s) or deepest penetration (m)";
+    CsvTable table({"part", "solver", "iterations", "solve_ms", "velocity_residual", "max_penetration", "solve_ms_q1",
+                    "solve_ms_q3"});
+    PlotSpec plot("Sequential impulses: error against solve time, iterations 1 to 50",
+                  "solve time (ms; fixed set: one solve, running: per frame)", "residual (m/s) or deepest penetration (m)");
+    plot.caption = "Each point is one iteration count, 1 at the left to 50 at the right. Fixed set: one frame's rows "
+                   "of the pit of " + std::to_string(sphereCount) + " spheres, solved from zero impulses; the "
+                   "velocity residual left against the time of one solve (median of " + std::to_string(repeats) +
+                   " solves). Running: the pit run for " + std::to_string(simulationFrames) + " frames; the mean "
+                   "deepest penetration over the settled half against the solve time per frame (median over the "
+                   "same frames). Whiskers span the middle half of the timings.";
 
+    run.progress().stage("freezing the pit's rows", 1);
     const FrozenRows frozen = freezeSpherePitRows(sphereCount, freezeFrames);
-    out << "fixed set: " << frozen.rows.size() << " rows from the pit of " << sphereCount << " spheres after "
-        << freezeFrames << " frames\n";
+    run.out() << "fixed set: " << frozen.rows.size() << " rows from the pit of " << sphereCount << " spheres after "
+              << freezeFrames << " frames; solve_ms: median (q1, q3: quartiles)\n";
     for (SolverKind kind : {SolverKind::GaussSeidel, SolverKind::Jacobi}) {
         const std::string name = kind == SolverKind::Jacobi ? "Jacobi" : "G-S";
-        PlotSeries residualSeries{name + ": residual, fixed set", {}, {}, false};
-        PlotSeries penetrationSeries{name + ": depth, running", {}, {}, false};
+        run.progress().stage(std::string(solverLabel(kind)) + ": fixed set and running pit", long(iterationCounts.size()));
+        PlotSeries residualSeries(name + ": residual, fixed set");
+        PlotSeries penetrationSeries(name + ": depth, running");
         for (int iterations : iterationCounts) {
             const FixedSetResult fixed = solveFrozen(frozen, kind, iterations, repeats);
-            table.addRow({"fixed_set", solverLabel(kind), std::to_string(iterations), formatNumber(fixed.solveMs),
-                          formatNumber(fixed.residual), ""});
-            residualSeries.x.push_back(fixed.solveMs);
+            table.addRow({"fixed_set", solverLabel(kind), std::to_string(iterations), formatNumber(fixed.solveMs.median),
+                          formatNumber(fixed.residual), "", formatNumber(fixed.solveMs.lower),
+                          formatNumber(fixed.solveMs.upper)});
+            residualSeries.x.push_back(fixed.solveMs.median);
+            residualSeries.xLow.push_back(fixed.solveMs.lower);
+            residualSeries.xHigh.push_back(fixed.solveMs.upper);
             residualSeries.y.push_back(fixed.residual);
 
             const SimulationResult simulation = simulatePit(sphereCount, simulationFrames, kind, iterations);
-            table.addRow({"simulation", solverLabel(kind), std::to_string(iterations), formatNumber(simulation.solveMs),
-                          formatNumber(simulation.residual), formatNumber(simulation.penetration)});
-            penetrationSeries.x.push_back(simulation.solveMs);
+            table.addRow({"simulation", solverLabel(kind), std::to_string(iterations),
+                          formatNumber(simulation.solveMs.median), formatNumber(simulation.residual),
+                          formatNumber(simulation.penetration), formatNumber(simulation.solveMs.lower),
+                          formatNumber(simulation.solveMs.upper)});
+            penetrationSeries.x.push_back(simulation.solveMs.median);
+            penetrationSeries.xLow.push_back(simulation.solveMs.lower);
+            penetrationSeries.xHigh.push_back(simulation.solveMs.upper);
             penetrationSeries.y.push_back(simulation.penetration);
+            run.progress().advance();
         }
         plot.series.push_back(residualSeries);
         plot.series.push_back(penetrationSeries);
     }
-    out << table.toText();
-    try {
-        if (!options.csvPath.empty()) table.write(options.csvPath);
-        if (!options.plotPath.empty()) writeSvgPlot(options.plotPath, plot);
-    } catch (const std::runtime_error& error) {
-        std::cerr << "error: bench solver: " << error.what() << "\n";
-        return 2;
-    }
-    return 0;
+    run.progress().endStage();
+    run.out() << table.toText();
+    run.writeCsv(table);
+    run.writePlot(plot);
+}
+
+}  // namespace
+
+BenchEntry solverBench() {
+    return BenchEntry{"solver", 4,
+                      "chapter 4: velocity residual and penetration against solve time, iterations 1-50, "
+                      "Gauss-Seidel vs Jacobi",
+                      runSolverBench,
+                      {{BenchFile::Kind::Csv, "", "per solver and iteration count: solve time (median, quartiles), "
+                                                  "residual, penetration"},
+                       {BenchFile::Kind::Plot, "", "plot: residual and penetration against solve time"}}};
+}
+
+int runSolverBench(const BenchOptions& options) {
+    static const BenchEntry entry = solverBench();
+    return runBench(entry, options, measureSolver);
 }
 
 }  // namespace stepwise

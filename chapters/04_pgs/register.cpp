@@ -74,14 +74,8 @@ void registerChapter04(Registry& registry) {
 
     registry.addPipeline({4, [](const World& world) { return makeChapter04Pipeline(world); }});
 
-    registry.addBench({"solver", 4,
-                       "chapter 4: velocity residual and penetration against solve time, iterations 1-50, "
-                       "Gauss-Seidel vs Jacobi",
-                       runSolverBench});
-    registry.addBench({"resting", 4,
-                       "chapter 4: penetration of a resting ball and box over time, split vs integrate-first "
-                       "step order (one-point box jitter)",
-                       runRestingBench});
+    registry.addBench(solverBench());
+    registry.addBench(restingBench());
 }
 
 }  // namespace stepwise

@@ -1,11 +1,15 @@
 #include "app/bench_util.h"
 
+#include "app/runner.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
+
 
 namespace stepwise {
 
@@ -15,20 +19,16 @@ std::string formatNumber(double value, int significantDigits) {
     return buffer;
 }
 
-static std::ofstream openForWriting(const std::string& path) {
+void CsvTable::write(const std::string& path) const {
     std::ofstream file(path, std::ios::binary);
     if (!file) throw std::runtime_error("cannot write '" + path + "'");
-    return file;
-}
-
-void CsvTable::write(const std::string& path) const {
-    std::ofstream file = openForWriting(path);
     auto writeRow = [&](const std::vector<std::string>& cells) {
         for (size_t i = 0; i < cells.size(); ++i) file << (i ? "," : "") << cells[i];
         file << "\n";
     };
     writeRow(columns_);
     for (const auto& row : rows_) writeRow(row);
+    if (!file) throw std::runtime_error("cannot write '" + path + "'");
 }
 
 std::string CsvTable::toText() const {
@@ -47,120 +47,150 @@ std::string CsvTable::toText() const {
     return out.str();
 }
 
-namespace {
-
-// Maps data to the plot area, on a log or linear scale.
-struct Axis {
-    double low = 0, high = 1;
-    bool log = false;
-    double pixelLow = 0, pixelHigh = 1;
-
-    double transform(double value) const { return log ? std::log10(value) : value; }
-    double toPixel(double value) const {
-        const double t = (transform(value) - low) / (high - low);
-        return pixelLow + t * (pixelHigh - pixelLow);
-    }
-};
-
-bool usable(double value, bool logScale) { return std::isfinite(value) && (!logScale || value > 0); }
-
-Axis fitAxis(const PlotSpec& spec, bool isX, double pixelLow, double pixelHigh) {
-    Axis axis;
-    axis.log = isX ? spec.logX : spec.logY;
-    axis.pixelLow = pixelLow;
-    axis.pixelHigh = pixelHigh;
-    double low = INFINITY, high = -INFINITY;
-    for (const PlotSeries& series : spec.series)
-        for (size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
-            if (!usable(series.x[i], spec.logX) || !usable(series.y[i], spec.logY)) continue;
-            const double value = axis.transform(isX ? series.x[i] : series.y[i]);
-            low = std::min(low, value), high = std::max(high, value);
-        }
-    if (!(low <= high)) low = 0, high = 1;
-    if (axis.log) low = std::floor(low), high = std::ceil(high);
-    if (high - low < 1e-12) high = low + 1;
-    if (!axis.log) {
-        const double pad = 0.05 * (high - low);
-        low -= pad, high += pad;
-    }
-    axis.low = low, axis.high = high;
-    return axis;
+Spread spreadOf(const std::vector<double>& samples) {
+    return Spread{median(samples), percentile(samples, 0.25), percentile(samples, 0.75)};
 }
 
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
-    }
-    return out;
+std::string withSuffix(const std::string& path, const std::string& suffix, const std::string& extension) {
+    const bool hasExtension = path.size() >= extension.size() &&
+                              path.compare(path.size() - extension.size(), extension.size(), extension) == 0;
+    return (hasExtension ? path.substr(0, path.size() - extension.size()) : path) + suffix + extension;
 }
 
-const char* kSeriesColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+// --- progress ---------------------------------------------------------------------------------
 
-}  // namespace
+void BenchProgress::stage(const std::string& name, long total) {
+    endStage();
+    name_ = name;
+    done_ = 0;
+    total_ = std::max(1L, total);
+    open_ = true;
+    clock_.restart();
+    lastDraw_ = -1;
+    draw();
+}
 
-void writeSvgPlot(const std::string& path, const PlotSpec& spec) {
-    const double width = 720, height = 480, left = 80, right = 200, top = 40, bottom = 60;
-    const Axis xAxis = fitAxis(spec, true, left, width - right);
-    const Axis yAxis = fitAxis(spec, false, height - bottom, top);
-    std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-        << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-        << "<text x=\"" << (left + width - right) / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
-        << escapeXml(spec.title) << "</text>\n";
-    // Grid and tick labels: decades on log axes, five steps on linear ones.
-    auto ticks = [](const Axis& axis) {
-        std::vector<double> values;
-        if (axis.log) {
-            for (double e = axis.low; e <= axis.high + 1e-9; e += 1) values.push_back(std::pow(10.0, e));
-        } else {
-            for (int i = 0; i <= 5; ++i) values.push_back(axis.low + (axis.high - axis.low) * i / 5);
+void BenchProgress::advance(long steps) {
+    if (!open_) return;
+    done_ = std::min(total_, done_ + steps);
+    // Redraw at most ten times a second: a terminal is slow next to a fast loop.
+    if (clock_.seconds() - lastDraw_ >= 0.1 || done_ == total_) draw();
+}
+
+void BenchProgress::endStage() {
+    if (!open_) return;
+    done_ = total_;
+    draw();
+    if (enabled_) std::fputc('\n', stderr);
+    open_ = false;
+}
+
+void BenchProgress::draw() {
+    lastDraw_ = clock_.seconds();
+    if (!enabled_) return;
+    constexpr int kBarWidth = 20;
+    const int filled = int(kBarWidth * done_ / total_);
+    std::fprintf(stderr, "\r  bench %s  %-34s [%s%s] %ld/%ld  %.1f s", suite_.c_str(), name_.c_str(),
+                 std::string(size_t(filled), '#').c_str(), std::string(size_t(kBarWidth - filled), '.').c_str(), done_,
+                 total_, lastDraw_);
+    std::fflush(stderr);
+}
+
+// --- the frame --------------------------------------------------------------------------------
+
+BenchRun::BenchRun(const BenchEntry& entry, const BenchOptions& options)
+    : entry_(entry), options_(options),
+      progress_(entry.name, !options.quiet && stderrIsTerminal()) {}
+
+std::ostream& BenchRun::out() const { return options_.out ? *options_.out : std::cout; }
+
+std::string BenchRun::pathOf(const BenchFile& file) const {
+    const bool csv = file.kind == BenchFile::Kind::Csv;
+    const std::string& base = csv ? options_.csvPath : options_.plotPath;
+    if (base.empty()) return "";
+    return file.suffix.empty() ? base : withSuffix(base, file.suffix, csv ? ".csv" : ".svg");
+}
+
+const BenchFile& BenchRun::declared(BenchFile::Kind kind, const std::string& suffix) const {
+    for (const BenchFile& file : entry_.files)
+        if (file.kind == kind && file.suffix == suffix) return file;
+    throw std::logic_error("bench " + entry_.name + " writes a file it does not declare (suffix \"" + suffix + "\")");
+}
+
+void BenchRun::record(const BenchFile& file, const std::string& path) { written_.emplace_back(path, &file); }
+
+void BenchRun::writeCsv(const CsvTable& table, const std::string& suffix) {
+    const BenchFile& file = declared(BenchFile::Kind::Csv, suffix);
+    const std::string path = pathOf(file);
+    if (path.empty()) return;
+    table.write(path);
+    record(file, path);
+}
+
+void BenchRun::writePlot(const PlotSpec& plot, const std::string& suffix) {
+    const BenchFile& file = declared(BenchFile::Kind::Plot, suffix);
+    const std::string path = pathOf(file);
+    if (path.empty()) return;
+    writeSvgPlot(path, plot);
+    record(file, path);
+}
+
+void BenchRun::writeTables(const std::vector<FigureTable>& figures, const std::string& suffix) {
+    const BenchFile& file = declared(BenchFile::Kind::Plot, suffix);
+    const std::string path = pathOf(file);
+    if (path.empty()) return;
+    writeSvgTables(path, figures);
+    record(file, path);
+}
+
+int runBench(const BenchEntry& entry, const BenchOptions& options, const std::function<void(BenchRun&)>& body) {
+    BenchRun run(entry, options);
+    // Before minutes of measuring: every output can be written. Opening for appending creates
+    // a missing file and leaves an existing one as it is until the suite overwrites it.
+    for (const BenchFile& file : entry.files) {
+        const std::string path = run.pathOf(file);
+        if (!path.empty() && !std::ofstream(path, std::ios::binary | std::ios::app)) {
+            std::cerr << "error: bench " << entry.name << ": cannot write '" << path << "'\n";
+            return 2;
         }
-        return values;
-    };
-    for (double value : ticks(xAxis)) {
-        const double x = xAxis.toPixel(value);
-        svg << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << height - bottom
-            << "\" stroke=\"#ddd\"/>\n<text x=\"" << x << "\" y=\"" << height - bottom + 16
-            << "\" text-anchor=\"middle\">" << formatNumber(value, 3) << "</text>\n";
     }
-    for (double value : ticks(yAxis)) {
-        const double y = yAxis.toPixel(value);
-        svg << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << width - right << "\" y2=\"" << y
-            << "\" stroke=\"#ddd\"/>\n<text x=\"" << left - 6 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">"
-            << formatNumber(value, 3) << "</text>\n";
+    try {
+        body(run);
+    } catch (const std::runtime_error& error) {
+        run.progress().endStage();
+        std::cerr << "error: bench " << entry.name << ": " << error.what() << "\n";
+        return 2;
     }
-    svg << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << width - right - left << "\" height=\""
-        << height - bottom - top << "\" fill=\"none\" stroke=\"black\"/>\n"
-        << "<text x=\"" << (left + width - right) / 2 << "\" y=\"" << height - 18 << "\" text-anchor=\"middle\">"
-        << escapeXml(spec.xLabel) << "</text>\n"
-        << "<text transform=\"translate(18," << (top + height - bottom) / 2
-        << ") rotate(-90)\" text-anchor=\"middle\">" << escapeXml(spec.yLabel) << "</text>\n";
-    for (size_t s = 0; s < spec.series.size(); ++s) {
-        const PlotSeries& series = spec.series[s];
-        const char* color = kSeriesColors[s % (sizeof kSeriesColors / sizeof *kSeriesColors)];
-        std::ostringstream points;
-        for (size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
-            if (!usable(series.x[i], spec.logX) || !usable(series.y[i], spec.logY)) continue;
-            const double x = xAxis.toPixel(series.x[i]), y = yAxis.toPixel(series.y[i]);
-            points << x << "," << y << " ";
-            svg << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"3\" fill=\"" << color << "\"/>\n";
+    run.progress().endStage();
+    // A declared file the suite did not write would make --help lie.
+    for (const BenchFile& file : entry.files) {
+        const std::string path = run.pathOf(file);
+        const auto isPath = [&](const auto& item) { return item.first == path; };
+        if (!path.empty() && std::none_of(run.written().begin(), run.written().end(), isPath))
+            throw std::logic_error("bench " + entry.name + " declares '" + path + "' but did not write it");
+    }
+    if (!options.quiet && !run.written().empty()) {
+        size_t width = 0;
+        for (const auto& [path, file] : run.written()) width = std::max(width, path.size());
+        run.out() << "\nfiles written:\n";
+        for (const auto& [path, file] : run.written())
+            run.out() << "  " << path << std::string(width + 2 - path.size(), ' ') << file->what << "\n";
+    }
+    return 0;
+}
+
+std::string benchFilesHelp(const std::vector<BenchEntry>& benches) {
+    std::ostringstream text;
+    text << "Files each suite writes, given --csv out/NAME.csv --plot out/NAME.svg:\n";
+    for (const BenchEntry& entry : benches) {
+        text << "  " << entry.name << "\n";
+        for (const BenchFile& file : entry.files) {
+            const bool csv = file.kind == BenchFile::Kind::Csv;
+            const std::string path = "out/" + entry.name + file.suffix + (csv ? ".csv" : ".svg");
+            text << "    " << path << std::string(path.size() < 32 ? 32 - path.size() : 1, ' ') << file.what << "\n";
         }
-        if (!series.markersOnly)
-            svg << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\" points=\"" << points.str()
-                << "\"/>\n";
-        const double legendY = top + 10 + 18 * static_cast<double>(s);
-        svg << "<rect x=\"" << width - right + 12 << "\" y=\"" << legendY - 9 << "\" width=\"12\" height=\"12\" fill=\""
-            << color << "\"/>\n<text x=\"" << width - right + 30 << "\" y=\"" << legendY + 1 << "\">"
-            << escapeXml(series.title) << "</text>\n";
     }
-    svg << "</svg>\n";
-    std::ofstream file = openForWriting(path);
-    file << svg.str();
+    return text.str();
 }
 
 }  // namespace stepwise

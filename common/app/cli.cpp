@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/bench_util.h"
 #include "app/runner.h"
 #include "world/report.h"
 #include "world/scene.h"
@@ -33,7 +34,11 @@ int commandRun(const Registry& registry, const RunArgs& args) {
     options.maxChapter = args.chapter;
     options.progress = !args.quiet;
     const RunStats stats = runHeadless(world, pipeline, registry, options);
-    if (!args.quiet) printSummary(std::cout, world, stats);
+    if (!args.quiet) {
+        // A built-in scene says what it is for, so the numbers below can be read against it.
+        if (const SceneEntry* entry = registry.findScene(args.scene)) std::cout << "observe    " << entry->observe << "\n";
+        printSummary(std::cout, world, stats);
+    }
     if (!args.reportPath.empty()) {
         writeReport(args.reportPath, world, stats, engineVersion());
         if (!args.quiet) std::cout << "report     " << args.reportPath << "\n";
@@ -96,7 +101,9 @@ int runCli(int argc, char** argv, const Registry& registry) {
     bench->add_option("--csv", benchOptions.csvPath, "Write the measurements as CSV");
     bench->add_option("--plot", benchOptions.plotPath, "Write the plot as SVG");
     bench->add_flag("--quick", benchOptions.quick, "Smaller sizes (docs build, smoke tests)");
+    bench->add_flag("--quiet", benchOptions.quiet, "No progress bar and no list of the files written");
     bench->add_flag("--list", listBenches, "List the suites");
+    bench->footer(benchFilesHelp(registry.benches()));
 
     for (const CommandEntry& command : registry.commands()) command.install(app, exitCode);
 
@@ -121,7 +128,7 @@ int runCli(int argc, char** argv, const Registry& registry) {
         std::cerr << "error: " << error.what() << "\n\n" << app.help();
         return kExitBadInput;
     } catch (const SceneError& error) {
-        std::cerr << "error: " << error.what() << "\n";
+        printSceneError(std::cerr, error);
         return kExitBadInput;
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << "\n";

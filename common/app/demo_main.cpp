@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
         std::cout << "report     " << reportPath << "\n";
         return stats.frames == frames ? 0 : 1;
     } catch (const SceneError& error) {
-        std::cerr << "error: " << error.what() << "\n";
+        printSceneError(std::cerr, error);
         return 2;
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << "\n";

@@ -69,9 +69,19 @@ struct PipelineEntry {
 
 struct BenchOptions {
     std::string csvPath;       // empty: no CSV
-    std::string plotPath;      // empty: no plot (SVG via gnuplot when available)
+    std::string plotPath;      // empty: no plot
     bool quick = false;        // smaller sizes, for the docs build and smoke tests
-    std::ostream* out = nullptr;
+    bool quiet = false;        // no progress and no list of files written
+    std::ostream* out = nullptr;  // the results; standard output when null
+};
+
+/// One file a bench writes: the --csv or --plot path itself (suffix ""), or a file next to it
+/// with a suffix before the extension (`--plot out/x.svg` and suffix "-dt": out/x-dt.svg).
+struct BenchFile {
+    enum class Kind { Csv, Plot };
+    Kind kind = Kind::Csv;
+    std::string suffix;
+    std::string what;          // one line for `--help` and the list printed at the end
 };
 
 struct BenchEntry {
@@ -79,6 +89,7 @@ struct BenchEntry {
     int chapter = 0;
     std::string description;
     std::function<int(const BenchOptions&)> run;  // exit code
+    std::vector<BenchFile> files;                 // every file it can write, named in --help
 };
 
 /// A CLI subcommand a chapter adds (e.g. `collide` in chapter 3).
@@ -123,5 +134,8 @@ private:
 
 /// Generated from the chapter list: calls registerChapter01..NN for the program's chapters.
 void registerChapters(Registry& registry);
+
+/// Every chapter of the program, registered once on first use (tests, tools, fuzz targets).
+const Registry& chapterRegistry();
 
 }  // namespace stepwise

@@ -28,6 +28,8 @@ std::string engineVersion() {
 #endif
 }
 
+bool stderrIsTerminal() { return STEPWISE_ISATTY(STEPWISE_FILENO(stderr)) != 0; }
+
 static bool stateIsFinite(const World& world, std::string& badBody) {
     for (const Motion& motion : world.motions) {
         const Body& body = world.bodies[motion.bodyIndex];
@@ -40,6 +42,40 @@ static bool stateIsFinite(const World& world, std::string& badBody) {
     return true;
 }
 
+// Energy of the bodies on each integrator, and of the springs they hang on: what chapter 1's
+// side-by-side scene is for (which method keeps its swing). Empty unless the bodies use more
+// than one integrator.
+static std::vector<RunStats::GroupEnergy> energyByIntegrator(const World& world) {
+    const auto integratorOf = [&](int bodyIndex) -> const char* {
+        const Motion* motion = world.motionOf(bodyIndex);
+        if (!motion || world.bodies[std::size_t(bodyIndex)].type != BodyType::Dynamic) return nullptr;
+        return toString(motion->integrator.value_or(world.settings.integrator));
+    };
+    std::map<std::string, double> energy;
+    for (const Motion& motion : world.motions) {
+        const char* group = integratorOf(motion.bodyIndex);
+        if (!group) continue;
+        const Body& body = world.bodies[std::size_t(motion.bodyIndex)];
+        const Vec3 angularLocal = body.transform.rotation.toRotationMatrix().transpose() * motion.angularVelocity;
+        energy[group] += 0.5 * motion.mass * motion.linearVelocity.squaredNorm() +
+                         0.5 * angularLocal.dot(motion.inertiaLocal * angularLocal) -
+                         motion.mass * world.settings.gravity.dot(body.transform.apply(motion.localCenter));
+    }
+    if (energy.size() < 2) return {};
+    for (const Spring& spring : world.springs) {
+        const char* group = integratorOf(spring.bodyA);
+        if (!group) continue;
+        const Vec3 endA = world.bodies[std::size_t(spring.bodyA)].transform.apply(spring.localAnchorA);
+        const Vec3 endB =
+            spring.bodyB < 0 ? spring.anchorB : world.bodies[std::size_t(spring.bodyB)].transform.apply(spring.anchorB);
+        const double stretch = (endB - endA).norm() - spring.restLength;
+        energy[group] += 0.5 * spring.stiffness * stretch * stretch;
+    }
+    std::vector<RunStats::GroupEnergy> groups;
+    for (const auto& [name, joules] : energy) groups.push_back({name, joules, 0});
+    return groups;
+}
+
 RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry, const RunOptions& options) {
     RunStats stats;
     stats.pipeline = pipeline.enabledStageNames();
@@ -48,13 +84,17 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
     stats.penetrationMeasured = probe != nullptr;
     if (!world.joints.empty() && !pipeline.find("joints"))
         stats.warnings.push_back("the scene has " + std::to_string(world.joints.size()) +
-                                 " joint(s) but no stage of this engine solves joints yet (chapter 8, to come); they are ignored");
+                                 " joint(s) but no stage of this engine solves joints yet (chapter 8" +
+                                 (registry.lastChapter() < 8 ? ", to come" : "") + "); they are ignored");
     const int chapterInUse = std::min(options.maxChapter, registry.lastChapter());
     for (const SettingUse& use : settingUses())
         if (use.chapter > chapterInUse)
             stats.unusedSettings.push_back(std::string(use.key) + " (chapter " + std::to_string(use.chapter) +
                                            (use.chapter > registry.lastChapter() ? ", to come)" : ")"));
-    const bool showProgress = options.progress && STEPWISE_ISATTY(STEPWISE_FILENO(stderr));
+    stats.energyByIntegrator = energyByIntegrator(world);
+    for (const Stage& stage : pipeline.stages())
+        if (stage.enabled && stageGroup(stage.name) == stage_group::kNarrowphase) stats.overlapsMeasured = true;
+    const bool showProgress = options.progress && stderrIsTerminal();
     std::map<std::string, double> stageTotals;
     for (long frame = 0; frame < options.frames; ++frame) {
         pipeline.step(world);
@@ -63,6 +103,8 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
             if (stage.enabled) stageTotals[stageGroup(stage.name)] += stage.lastMs;
         ++stats.frames;
         if (probe) stats.maxPenetration = std::max(stats.maxPenetration, static_cast<double>(probe->measure(world)));
+        if (!world.pairs.empty()) ++stats.framesWithOverlap;
+        stats.maxOverlappingPairs = std::max(stats.maxOverlappingPairs, int(world.pairs.size()));
         int contactPoints = 0;
         for (const Contact& contact : world.contacts) contactPoints += contact.pointCount;
         stats.maxContacts = std::max(stats.maxContacts, contactPoints);
@@ -78,6 +120,9 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
     if (showProgress) std::fprintf(stderr, "\n");
     for (const auto& [group, total] : stageTotals) stats.stageMeanMs[group] = stats.frames ? total / stats.frames : 0;
     stats.finalEnergy = computeEnergy(world);
+    const std::vector<RunStats::GroupEnergy> finalGroups = energyByIntegrator(world);
+    for (std::size_t i = 0; i < stats.energyByIntegrator.size() && i < finalGroups.size(); ++i)
+        stats.energyByIntegrator[i].final = finalGroups[i].initial;
     return stats;
 }
 
@@ -89,12 +134,23 @@ void printSummary(std::ostream& out, const World& world, const RunStats& stats) 
     out << "stages     ";
     for (size_t i = 0; i < stats.pipeline.size(); ++i) out << (i ? ", " : "") << stats.pipeline[i];
     out << "\n";
+    // What the collision stages measured: overlaps from chapter 2's narrowphase on, depth from
+    // chapter 3's.
+    if (stats.overlapsMeasured)
+        out << "overlaps   " << stats.framesWithOverlap << " of " << stats.frames
+            << " frames had an overlapping pair (most at once: " << stats.maxOverlappingPairs << ")\n";
     if (stats.penetrationMeasured)
         out << "max depth  " << std::setprecision(6) << stats.maxPenetration << " m\n";
+    else if (stats.overlapsMeasured)
+        out << "max depth  not measured (this chapter's narrowphase finds whether shapes overlap, not how deep)\n";
     else
         out << "max depth  not measured (no collision stage in this chapter)\n";
     out << "energy     " << std::setprecision(6) << stats.initialEnergy.total() << " J -> " << stats.finalEnergy.total()
-        << " J\n";
+        << " J" << (stats.energyByIntegrator.empty() ? "" : "; by integrator (its bodies and their springs):") << "\n";
+    for (const RunStats::GroupEnergy& group : stats.energyByIntegrator)
+        out << "  " << group.name << std::string(group.name.size() < 20 ? 20 - group.name.size() : 1, ' ')
+            << std::setprecision(6) << group.initial << " J -> " << group.final << " J (" << std::showpos
+            << std::setprecision(3) << group.final - group.initial << std::noshowpos << " J)\n";
     out.unsetf(std::ios::floatfield);
     if (!stats.unusedSettings.empty()) {
         out << "not used   ";

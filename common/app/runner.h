@@ -25,6 +25,9 @@ void printSummary(std::ostream& out, const World& world, const RunStats& stats);
 /// Resolves "<file.json>" or a built-in scene name. Throws SceneError when neither.
 World loadSceneOrBuiltin(const Registry& registry, const std::string& nameOrPath);
 
+/// True when standard error is a terminal: progress lines are for people, not for logs.
+bool stderrIsTerminal();
+
 /// "stepwise 0.1.0 (float)".
 std::string engineVersion();
 

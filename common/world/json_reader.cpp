@@ -166,6 +166,81 @@ Json parseStrictJson(const std::string& text, const std::string& source) {
     return Json::parse(text);  // well-formed, no duplicate keys, bounded: the checker saw to it
 }
 
+const Names<IntegratorKind>& integratorNames() {
+    static const Names<IntegratorKind> names = {{"semi_implicit_euler", IntegratorKind::SemiImplicitEuler},
+                                                {"rk4", IntegratorKind::Rk4},
+                                                {"verlet", IntegratorKind::Verlet}};
+    return names;
+}
+
+BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors) {
+    static const Names<BodyType> kBodyTypes = {
+        {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}, {"dynamic", BodyType::Dynamic}};
+    cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
+                         "density", "friction", "restitution", "bullet", "integrator"},
+                        &errors);
+    BodyDef def;
+    def.name = "body" + std::to_string(index);
+    errors.attempt([&] {
+        if (auto v = cursor.optional("name")) def.name = v->nonEmptyString();
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypes);
+    });
+    // A placeholder keeps the body, so joints and forces that name it can still be checked.
+    if (!errors.attempt([&] { def.shape = readShape(cursor.child("shape")); })) def.shape = Shape::sphere(1);
+    errors.attempt([&] {
+        if (auto v = cursor.optional("position")) def.transform.position = v->vec3Within(kMaxCoordinate);
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("orientation")) def.transform.rotation = v->unitQuaternion();
+    });
+    // What a body's type rules out: motion on a static body, mass on one that is not dynamic.
+    if (def.type == BodyType::Static)
+        for (const char* key : {"velocity", "angular_velocity", "integrator"})
+            if (cursor.has(key))
+                errors.attempt([&] { cursor.child(key).fail("not allowed on a static body (it never moves)"); });
+    if (def.type != BodyType::Dynamic)
+        for (const char* key : {"mass", "density"})
+            if (cursor.has(key))
+                errors.attempt([&] {
+                    cursor.child(key).fail(std::string("only dynamic bodies have mass (this body is ") +
+                                           toString(def.type) + ")");
+                });
+    if (cursor.has("mass") && cursor.has("density"))
+        errors.attempt([&] { cursor.child("density").fail("give mass or density, not both"); });
+    if (def.type != BodyType::Static) {
+        errors.attempt([&] {
+            if (auto v = cursor.optional("velocity")) def.linearVelocity = v->vec3Within(kMaxSpeed);
+        });
+        errors.attempt([&] {
+            if (auto v = cursor.optional("angular_velocity")) def.angularVelocity = v->vec3Within(kMaxAngularSpeed);
+        });
+    }
+    if (def.type == BodyType::Dynamic) {
+        errors.attempt([&] {
+            if (auto v = cursor.optional("mass")) def.mass = v->positiveBetween(kMinMass, kMaxMass);
+        });
+        errors.attempt([&] {
+            if (auto v = cursor.optional("density")) def.density = v->positiveBetween(kMinDensity, kMaxDensity);
+        });
+    }
+    errors.attempt([&] {
+        if (auto v = cursor.optional("friction")) def.material.friction = v->nonNegative();
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("restitution")) def.material.restitution = v->inRange(0, 1);
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("bullet")) def.bullet = v->boolean();
+    });
+    if (def.type != BodyType::Static)
+        errors.attempt([&] {
+            if (auto v = cursor.optional("integrator")) def.integrator = v->choice(integratorNames());
+        });
+    return def;
+}
+
 Shape readShape(const JsonCursor& cursor) {
     const std::vector<const char*> kinds = {"box", "sphere", "capsule", "convex"};
     if (!cursor.json().is_object() || cursor.json().size() != 1)

@@ -1,9 +1,11 @@
 #pragma once
 // Strict JSON reading for the project's formats (scenes, collide queries): a JsonCursor knows
-// its own path from the document root, so every rejection is ONE
+// its own path from the document root, so every rejection names its value, e.g.
 // SceneError("bodies[3].shape.box.half_extents[1]", "must be > 0"). Unknown keys are errors
 // (with a "did you mean" for near misses), duplicate keys are errors, overflowing numbers are
-// errors. Shared by the scene loader and by chapters that read JSON (chapter 3's `collide`).
+// errors. Readers go on after a rejection where they can (ErrorList), so a file reports all
+// its errors at once. Shared by the scene loader and by chapters that read JSON (chapter 3's
+// `collide`).
 
 #include "world/scene.h"
 #include "world/scene_limits.h"
@@ -28,6 +30,42 @@ using Names = std::vector<std::pair<const char*, E>>;
 /// "%g" for numbers inside messages.
 std::string formatForMessage(double value);
 
+/// Collects the rejections of one file, so a user fixes them all in one go rather than one run
+/// at a time. Each independent value is read inside attempt(); past `limit` errors reading stops.
+class ErrorList {
+public:
+    static constexpr std::size_t kDefaultLimit = 20;
+    explicit ErrorList(std::size_t limit = kDefaultLimit) : limit_(limit) {}
+
+    /// Runs `read`; records the SceneError it throws and returns false. Once the limit is
+    /// reached, throws everything collected so far (the rest of the file is not read).
+    template <class Read>
+    bool attempt(Read&& read) {
+        try {
+            read();
+            return true;
+        } catch (const SceneError& error) {
+            if (error.truncated()) throw;  // the limit, reached further down: stop reading
+            add(error);
+            return false;
+        }
+    }
+    void add(const SceneError& error) {
+        for (const SceneIssue& issue : error.issues()) issues_.push_back(issue);
+        if (issues_.size() >= limit_) throw SceneError(issues_, true);
+    }
+    bool empty() const { return issues_.empty(); }
+    std::size_t size() const { return issues_.size(); }
+    /// Throws a SceneError holding every issue when there is any.
+    void throwIfAny() const {
+        if (!issues_.empty()) throw SceneError(issues_);
+    }
+
+private:
+    std::size_t limit_;
+    std::vector<SceneIssue> issues_;
+};
+
 /// A JSON value together with its path from the document root. Each getter checks the type
 /// and range of the value and throws SceneError(path(), message) when it is wrong.
 class JsonCursor {
@@ -38,12 +76,16 @@ public:
     const std::string& path() const { return path_; }
     [[noreturn]] void fail(const std::string& message) const { throw SceneError(path_, message); }
 
-    /// Checks that this is an object whose keys are all among `accepted`.
-    void expectObject(const std::vector<const char*>& accepted) const {
+    /// Checks that this is an object whose keys are all among `accepted`. With `errors`, every
+    /// unknown key is recorded there and reading goes on; without, the first one throws.
+    void expectObject(const std::vector<const char*>& accepted, ErrorList* errors = nullptr) const {
         if (!value_.is_object()) fail("must be an object");
         for (const auto& item : value_.items()) {
             const auto known = [&](const char* key) { return item.key() == key; };
-            if (std::none_of(accepted.begin(), accepted.end(), known)) fail(unknownKeyMessage(item.key(), accepted));
+            if (std::any_of(accepted.begin(), accepted.end(), known)) continue;
+            const SceneError error(path_, unknownKeyMessage(item.key(), accepted));
+            if (!errors) throw error;
+            errors->add(error);
         }
     }
     bool has(const char* key) const { return value_.contains(key); }
@@ -177,6 +219,14 @@ std::string readInputFile(const std::string& path, const char* what);
 /// tracks the current path and rejects duplicates; the same path names a number that overflows.
 /// Malformed text is rejected naming `source`, the line and the column.
 Json parseStrictJson(const std::string& text, const std::string& source);
+
+/// The names of the integrators, as scene files spell them.
+const Names<IntegratorKind>& integratorNames();
+
+/// Reads a body object of a scene (collide queries share it): every key, checked, with the
+/// rules of its type (no mass on a static body, ...). Errors go to `errors`; a shape that cannot
+/// be read becomes a placeholder, so the rest of the file can still be checked.
+BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors);
 
 /// Reads `{ "box": {...} }`, `{ "sphere": {...} }`, `{ "capsule": {...} }` or `{ "convex": {...} }`.
 Shape readShape(const JsonCursor& cursor);

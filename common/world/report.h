@@ -22,6 +22,16 @@ struct RunStats {
     Energy finalEnergy;
     std::vector<std::string> warnings;            // e.g. joints no stage handles yet
     std::vector<std::string> unusedSettings;      // "ccd (chapter 7, to come)": no stage reads them yet
+
+    // For the run's printed summary only (reports leave them out):
+    bool overlapsMeasured = false;                // a narrowphase stage ran
+    long framesWithOverlap = 0;                   // frames whose narrowphase found an overlapping pair
+    int maxOverlappingPairs = 0;
+    struct GroupEnergy {
+        std::string name;                         // the integrator the group's bodies use
+        double initial = 0, final = 0;            // J, including the springs the group's bodies hang on
+    };
+    std::vector<GroupEnergy> energyByIntegrator;  // when the bodies use more than one integrator
 };
 
 /// The middle of a sample (the mean of the two middle values for an even count); 0 when empty.

@@ -1,23 +1,20 @@
 // Scene files in (docs/scene-format.md); scene_save.cpp writes them. Loading is strict on purpose: a scene is
 // written by hand, and a typo that is silently ignored ("hlaf_extents") costs an afternoon of
 // wondering why the box is a point. So every value is read through a JsonCursor that knows its
-// own JSON path, every object rejects keys it does not know, and every rejection is ONE
-// SceneError("bodies[3].shape.box.half_extents[1]", "must be > 0").
+// own JSON path, every object rejects keys it does not know, and every rejection names its
+// value: "bodies[3].shape.box.half_extents[1]: must be > 0". Reading goes on after a rejection
+// (ErrorList), so a file reports all its errors at once, up to a limit.
 
 #include "world/json_reader.h"
 #include "world/scene.h"
 
 #include <filesystem>
 #include <map>
+#include <ostream>
 
 namespace stepwise {
 namespace {
 
-const Names<BodyType> kBodyTypes = {
-    {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}, {"dynamic", BodyType::Dynamic}};
-const Names<IntegratorKind> kIntegrators = {{"semi_implicit_euler", IntegratorKind::SemiImplicitEuler},
-                                            {"rk4", IntegratorKind::Rk4},
-                                            {"verlet", IntegratorKind::Verlet}};
 const Names<GyroscopicMode> kGyroscopic = {
     {"off", GyroscopicMode::Off}, {"explicit", GyroscopicMode::Explicit}, {"implicit", GyroscopicMode::Implicit}};
 const Names<BroadphaseMode> kBroadphase = {
@@ -30,54 +27,29 @@ const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
                                       {"cone_twist", JointType::ConeTwist},
                                       {"fixed", JointType::Fixed}};
 
-Settings readSettings(const JsonCursor& cursor) {
+Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
-                         "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold"});
+                         "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold"},
+                        &errors);
     Settings settings;
-    if (auto v = cursor.optional("gravity")) settings.gravity = v->vec3Within(kMaxGravity);
-    if (auto v = cursor.optional("dt")) settings.dt = v->positiveAtMost(1);
-    if (auto v = cursor.optional("substeps")) settings.substeps = v->integer(1, 64);
-    if (auto v = cursor.optional("solver_iterations")) settings.solverIterations = v->integer(0, 1000);
-    if (auto v = cursor.optional("baumgarte")) settings.baumgarte = v->inRange(0, 1);
-    if (auto v = cursor.optional("slop")) settings.slop = v->nonNegative();
-    if (auto v = cursor.optional("restitution_threshold")) settings.restitutionThreshold = v->nonNegative();
-    if (auto v = cursor.optional("warm_starting")) settings.warmStarting = v->boolean();
-    if (auto v = cursor.optional("broadphase")) settings.broadphase = v->choice(kBroadphase);
-    if (auto v = cursor.optional("ccd")) settings.ccd = v->choice(kCcd);
-    if (auto v = cursor.optional("integrator")) settings.integrator = v->choice(kIntegrators);
-    if (auto v = cursor.optional("gyroscopic")) settings.gyroscopic = v->choice(kGyroscopic);
-    if (auto v = cursor.optional("solver")) settings.solver = v->choice(kSolvers);
+    // Each key on its own: one bad value does not hide the next.
+    const auto read = [&](const char* key, auto assign) {
+        if (auto v = cursor.optional(key)) errors.attempt([&] { assign(*v); });
+    };
+    read("gravity", [&](const JsonCursor& v) { settings.gravity = v.vec3Within(kMaxGravity); });
+    read("dt", [&](const JsonCursor& v) { settings.dt = v.positiveAtMost(1); });
+    read("substeps", [&](const JsonCursor& v) { settings.substeps = v.integer(1, 64); });
+    read("solver_iterations", [&](const JsonCursor& v) { settings.solverIterations = v.integer(0, 1000); });
+    read("baumgarte", [&](const JsonCursor& v) { settings.baumgarte = v.inRange(0, 1); });
+    read("slop", [&](const JsonCursor& v) { settings.slop = v.nonNegative(); });
+    read("restitution_threshold", [&](const JsonCursor& v) { settings.restitutionThreshold = v.nonNegative(); });
+    read("warm_starting", [&](const JsonCursor& v) { settings.warmStarting = v.boolean(); });
+    read("broadphase", [&](const JsonCursor& v) { settings.broadphase = v.choice(kBroadphase); });
+    read("ccd", [&](const JsonCursor& v) { settings.ccd = v.choice(kCcd); });
+    read("integrator", [&](const JsonCursor& v) { settings.integrator = v.choice(integratorNames()); });
+    read("gyroscopic", [&](const JsonCursor& v) { settings.gyroscopic = v.choice(kGyroscopic); });
+    read("solver", [&](const JsonCursor& v) { settings.solver = v.choice(kSolvers); });
     return settings;
-}
-
-BodyDef readBody(const JsonCursor& cursor, std::size_t index) {
-    cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
-                         "density", "friction", "restitution", "bullet", "integrator"});
-    BodyDef def;
-    def.name = "body" + std::to_string(index);
-    if (auto v = cursor.optional("name")) def.name = v->nonEmptyString();
-    if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypes);
-    def.shape = readShape(cursor.child("shape"));
-    if (auto v = cursor.optional("position")) def.transform.position = v->vec3Within(kMaxCoordinate);
-    if (auto v = cursor.optional("orientation")) def.transform.rotation = v->unitQuaternion();
-    if (def.type == BodyType::Static)
-        for (const char* key : {"velocity", "angular_velocity", "integrator"})
-            if (cursor.has(key)) cursor.child(key).fail("not allowed on a static body (it never moves)");
-    if (def.type != BodyType::Dynamic)
-        for (const char* key : {"mass", "density"})
-            if (cursor.has(key))
-                cursor.child(key).fail(std::string("only dynamic bodies have mass (this body is ") +
-                                       toString(def.type) + ")");
-    if (cursor.has("mass") && cursor.has("density")) cursor.child("density").fail("give mass or density, not both");
-    if (auto v = cursor.optional("velocity")) def.linearVelocity = v->vec3Within(kMaxSpeed);
-    if (auto v = cursor.optional("angular_velocity")) def.angularVelocity = v->vec3Within(kMaxAngularSpeed);
-    if (auto v = cursor.optional("mass")) def.mass = v->positiveBetween(kMinMass, kMaxMass);
-    if (auto v = cursor.optional("density")) def.density = v->positiveBetween(kMinDensity, kMaxDensity);
-    if (auto v = cursor.optional("friction")) def.material.friction = v->nonNegative();
-    if (auto v = cursor.optional("restitution")) def.material.restitution = v->inRange(0, 1);
-    if (auto v = cursor.optional("bullet")) def.bullet = v->boolean();
-    if (auto v = cursor.optional("integrator")) def.integrator = v->choice(kIntegrators);
-    return def;
 }
 
 /// Resolves a body name that a joint or force refers to.
@@ -91,7 +63,7 @@ int bodyIndex(const JsonCursor& cursor, const World& world) {
     cursor.fail("unknown body \"" + name + "\" (bodies: " + (known.empty() ? "none" : known) + ")");
 }
 
-JointDesc readJoint(const JsonCursor& cursor, const World& world) {
+JointDesc readJoint(const JsonCursor& cursor, const World& world, ErrorList& errors) {
     if (!cursor.json().is_object()) cursor.fail("must be an object");
     JointDesc joint;
     joint.type = cursor.child("type").choice(kJointTypes);
@@ -99,21 +71,25 @@ JointDesc readJoint(const JsonCursor& cursor, const World& world) {
     if (joint.type == JointType::Distance) keys.push_back("length");
     if (joint.type == JointType::Hinge) keys.insert(keys.end(), {"axis", "limits"});
     if (joint.type == JointType::ConeTwist) keys.insert(keys.end(), {"axis", "cone_angle", "twist_limits"});
-    cursor.expectObject(keys);
-    joint.bodyA = bodyIndex(cursor.child("a"), world);
-    joint.bodyB = bodyIndex(cursor.child("b"), world);
-    if (joint.bodyA == joint.bodyB) cursor.child("b").fail("a joint needs two different bodies");
-    if (auto v = cursor.optional("anchor_a")) joint.localAnchorA = v->vec3Within(kMaxCoordinate);
-    if (auto v = cursor.optional("anchor_b")) joint.localAnchorB = v->vec3Within(kMaxCoordinate);
-    if (auto v = cursor.optional("length")) joint.length = v->inRange(0, kMaxCoordinate);
-    if (auto v = cursor.optional("axis")) {
-        const Vec3 axis = v->vec3();
-        if (axis.norm() < Real(1e-6)) v->fail("must not be zero");
+    cursor.expectObject(keys, &errors);
+    const bool foundA = errors.attempt([&] { joint.bodyA = bodyIndex(cursor.child("a"), world); });
+    const bool foundB = errors.attempt([&] { joint.bodyB = bodyIndex(cursor.child("b"), world); });
+    if (foundA && foundB && joint.bodyA == joint.bodyB)
+        errors.attempt([&] { cursor.child("b").fail("a joint needs two different bodies"); });
+    const auto read = [&](const char* key, auto assign) {
+        if (auto v = cursor.optional(key)) errors.attempt([&] { assign(*v); });
+    };
+    read("anchor_a", [&](const JsonCursor& v) { joint.localAnchorA = v.vec3Within(kMaxCoordinate); });
+    read("anchor_b", [&](const JsonCursor& v) { joint.localAnchorB = v.vec3Within(kMaxCoordinate); });
+    read("length", [&](const JsonCursor& v) { joint.length = v.inRange(0, kMaxCoordinate); });
+    read("axis", [&](const JsonCursor& v) {
+        const Vec3 axis = v.vec3();
+        if (axis.norm() < Real(1e-6)) v.fail("must not be zero");
         joint.axis = axis.normalized();
-    }
-    if (auto v = cursor.optional("limits")) joint.limits = v->interval();
-    if (auto v = cursor.optional("cone_angle")) joint.coneAngle = v->inRange(0, kPi);
-    if (auto v = cursor.optional("twist_limits")) joint.twistLimits = v->interval();
+    });
+    read("limits", [&](const JsonCursor& v) { joint.limits = v.interval(); });
+    read("cone_angle", [&](const JsonCursor& v) { joint.coneAngle = v.inRange(0, kPi); });
+    read("twist_limits", [&](const JsonCursor& v) { joint.twistLimits = v.interval(); });
     return joint;
 }
 
@@ -149,52 +125,93 @@ void readForce(const JsonCursor& cursor, World& world) {
     world.springs.push_back(spring);
 }
 
-World loadScene(const std::string& jsonText, const std::string& source, const std::string& defaultName) {
-    const Json document = parseStrictJson(jsonText, source);
-    const JsonCursor root(document, "");
-    if (!document.is_object()) root.fail("a scene must be a JSON object { ... }");
-    root.expectObject({"format", "version", "name", "description", "settings", "bodies", "joints", "forces"});
-    if (auto v = root.optional("format"); v && v->string() != "stepwise-scene") v->fail("must be \"stepwise-scene\"");
-    if (auto v = root.optional("version"); v && v->integer(0, 1 << 30) != 1)
-        v->fail("unsupported version " + v->json().dump() + " (this engine reads version 1)");
-    if (auto v = root.optional("description")) v->string();
-
-    World world;
-    world.name = defaultName;
-    if (auto v = root.optional("name")) world.name = v->string();
-    if (auto v = root.optional("settings")) world.settings = readSettings(*v);
-    if (auto bodies = root.optional("bodies")) {
-        std::map<std::string, std::size_t> firstUse;
-        for (std::size_t i = 0; i < bodies->arraySizeAtMost(kMaxBodies); ++i) {
-            const JsonCursor cursor = bodies->element(i);
-            const BodyDef def = readBody(cursor, i);
-            if (auto [it, fresh] = firstUse.emplace(def.name, i); !fresh) {
-                const std::string other = "bodies[" + std::to_string(it->second) + "]";
-                if (cursor.has("name"))
-                    cursor.child("name").fail("duplicate name \"" + def.name + "\" (also " + other + ")");
+// The bodies, each key checked on its own (readBodyDef); names must be unique.
+void readBodies(const JsonCursor& bodies, World& world, ErrorList& errors) {
+    std::map<std::string, std::size_t> firstUse;
+    for (std::size_t i = 0; i < bodies.arraySizeAtMost(kMaxBodies); ++i) {
+        const JsonCursor cursor = bodies.element(i);
+        if (!cursor.json().is_object()) {
+            errors.attempt([&] { cursor.fail("must be an object"); });
+            continue;
+        }
+        const std::size_t errorsBefore = errors.size();
+        const BodyDef def = readBodyDef(cursor, i, errors);
+        if (auto [it, fresh] = firstUse.emplace(def.name, i); !fresh) {
+            const std::string other = "bodies[" + std::to_string(it->second) + "]";
+            errors.attempt([&] {
+                if (cursor.has("name")) cursor.child("name").fail("duplicate name \"" + def.name + "\" (also " + other + ")");
                 cursor.fail("its default name \"" + def.name + "\" is taken by " + other + "; give it a name");
-            }
+            });
+        }
+        const bool added = errors.attempt([&] {
             try {
                 addBody(world, def);
             } catch (const std::invalid_argument& error) {
                 cursor.fail(error.what());
             }
-            // Sizes that are each fine can still overflow a volume or an inertia (r^5 m).
-            const Motion* motion = world.motionOf(int(i));
-            if (motion && !(std::isfinite(motion->mass) && std::isfinite(motion->inverseMass) &&
-                            motion->inertiaLocal.allFinite() && motion->inverseInertiaLocal.allFinite()))
+        });
+        // Sizes that are each fine can still overflow a volume or an inertia (r^5 m).
+        const Motion* motion = added ? world.motionOf(int(world.bodies.size()) - 1) : nullptr;
+        if (errors.size() == errorsBefore && motion &&
+            !(std::isfinite(motion->mass) && std::isfinite(motion->inverseMass) && motion->inertiaLocal.allFinite() &&
+              motion->inverseInertiaLocal.allFinite()))
+            errors.attempt([&] {
                 cursor.fail("its mass or inertia is not a finite number (sizes, mass or density too large or too small)");
-        }
+            });
     }
-    if (auto joints = root.optional("joints"))
-        for (std::size_t i = 0; i < joints->arraySizeAtMost(kMaxJoints); ++i)
-            world.joints.push_back(readJoint(joints->element(i), world));
-    if (auto forces = root.optional("forces"))
-        for (std::size_t i = 0; i < forces->arraySizeAtMost(kMaxForces); ++i) readForce(forces->element(i), world);
+}
+
+World loadScene(const std::string& jsonText, const std::string& source, const std::string& defaultName) {
+    const Json document = parseStrictJson(jsonText, source);
+    const JsonCursor root(document, "");
+    if (!document.is_object()) root.fail("a scene must be a JSON object { ... }");
+    ErrorList errors;
+    root.expectObject({"format", "version", "name", "description", "settings", "bodies", "joints", "forces"}, &errors);
+    errors.attempt([&] {
+        if (auto v = root.optional("format"); v && v->string() != "stepwise-scene") v->fail("must be \"stepwise-scene\"");
+    });
+    errors.attempt([&] {
+        if (auto v = root.optional("version"); v && v->integer(0, 1 << 30) != 1)
+            v->fail("unsupported version " + v->json().dump() + " (this engine reads version 1)");
+    });
+    errors.attempt([&] {
+        if (auto v = root.optional("description")) v->string();
+    });
+
+    World world;
+    world.name = defaultName;
+    errors.attempt([&] {
+        if (auto v = root.optional("name")) world.name = v->string();
+    });
+    errors.attempt([&] {
+        if (auto v = root.optional("settings")) world.settings = readSettings(*v, errors);
+    });
+    // Joints and forces name bodies: without the body list they could only add false alarms.
+    const bool bodiesRead = errors.attempt([&] {
+        if (auto bodies = root.optional("bodies")) readBodies(*bodies, world, errors);
+    });
+    if (bodiesRead) {
+        errors.attempt([&] {
+            if (auto joints = root.optional("joints"))
+                for (std::size_t i = 0; i < joints->arraySizeAtMost(kMaxJoints); ++i)
+                    errors.attempt([&] { world.joints.push_back(readJoint(joints->element(i), world, errors)); });
+        });
+        errors.attempt([&] {
+            if (auto forces = root.optional("forces"))
+                for (std::size_t i = 0; i < forces->arraySizeAtMost(kMaxForces); ++i)
+                    errors.attempt([&] { readForce(forces->element(i), world); });
+        });
+    }
+    errors.throwIfAny();
     return world;
 }
 
 }  // namespace
+
+void printSceneError(std::ostream& out, const SceneError& error) {
+    for (const SceneIssue& issue : error.issues()) out << "error: " << issue.text() << "\n";
+    if (error.truncated()) out << "error: stopped after " << error.issues().size() << " errors\n";
+}
 
 World loadSceneFromString(const std::string& jsonText, const std::string& source) {
     return loadScene(jsonText, source, "untitled");

@@ -2,10 +2,13 @@
 #include "figures.h"
 
 #include "04_pgs/chapter.h"
+#include "app/svg_plot.h"
 #include "world/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 
 namespace figures {
 
@@ -74,53 +77,50 @@ std::vector<Point2> energyGain(Real beta, Real depth, int frames) {
 
 }  // namespace
 
+// A plot with axes, ticks, a legend and a caption: the bench plots' writer (app/svg_plot.h).
 bool drawBaumgarteEnergy(const std::string& path) {
     const Real depth = Real(0.1);
     const int frames = 90;
-    const Real betas[3] = {Real(0.2), Real(0.5), Real(1)};
-    const char* colours[3] = {"#2e8b57", "#3b6fb6", "#c0392b"};
-    std::vector<Point2> curves[3];
-    double top = 0.1;
-    for (int i = 0; i < 3; ++i) {
-        curves[i] = energyGain(betas[i], depth, frames);
-        for (Point2 p : curves[i]) top = std::max(top, p.y);
-    }
-    // Plot area: time 0 to 1.5 s across; joules scaled so that `top` fills the height.
-    Svg svg(620, 400);
-    const double plotWidth = 520, plotHeight = 300, pixelsPerSecond = plotWidth / 1.5;
-    const Viewport plot{60, 30, plotWidth, plotHeight, {0.75, plotHeight / pixelsPerSecond / 2}, pixelsPerSecond};
-    const double yScale = plotHeight / pixelsPerSecond / top;
-    svg.line(plot, {0, 0}, {1.5, 0}, "stroke:#333");
-    svg.line(plot, {0, 0}, {0, top * yScale}, "stroke:#333");
-    for (int i = 0; i < 3; ++i) {
-        std::vector<Point2> points;
-        for (Point2 p : curves[i]) points.push_back({p.x, p.y * yScale});
-        svg.polyline(plot, points, std::string("stroke:") + colours[i] + ";stroke-width:2");
+    PlotSpec plot("Baumgarte's energy gain", "time (s)", "energy gained (J)", false, false);
+    for (const Real beta : {Real(0.2), Real(0.5), Real(1)}) {
+        PlotSeries series;
+        series.lineOnly = true;
         double peak = 0;
-        for (Point2 p : curves[i]) peak = std::max(peak, p.y);
-        char label[80];
-        std::snprintf(label, sizeof label, "beta = %.1f: peak +%.2f J", double(betas[i]), peak);
-        svg.textAt({400, 60.0 + 20 * i}, label, std::string("fill:") + colours[i]);
+        for (const Point2 point : energyGain(beta, depth, frames)) {
+            series.x.push_back(point.x);
+            series.y.push_back(point.y);
+            peak = std::max(peak, point.y);
+        }
+        char title[80];
+        std::snprintf(title, sizeof title, "beta = %.1f: peak +%.2f J", double(beta), peak);
+        series.title = title;
+        plot.series.push_back(series);
     }
     // Lifting the ball out of the ground, to the slop, takes m g (depth - slop); anything above
     // that line is energy the position correction made up.
     World reference;
     const double needed = double(-reference.settings.gravity.y()) * double(depth - reference.settings.slop);
-    svg.line(plot, {0, needed * yScale}, {1.5, needed * yScale}, "stroke:#555;stroke-dasharray:5,4");
-    char lift[120];
-    std::snprintf(lift, sizeof lift, "m g (depth - slop) = %.2f J: what lifting it out takes", needed);
-    svg.text(plot, {0.35, needed * yScale + 0.08}, lift, "fill:#555;font-size:12px");
-    char axis[120];
-    std::snprintf(axis, sizeof axis, "%.2f J", top);
-    svg.textAt({8, 36}, axis, "fill:#555;font-size:12px");
-    svg.textAt({50, 348}, "0", "fill:#555;font-size:12px");
-    svg.textAt({560, 348}, "1.5 s", "fill:#555;font-size:12px");
-    char caption[200];
+    char lift[80];
+    std::snprintf(lift, sizeof lift, "m g (depth - slop) = %.2f J", needed);
+    PlotSeries liftLine(lift);
+    liftLine.x = {0, frames * double(reference.settings.dt)};
+    liftLine.y = {needed, needed};
+    liftLine.lineOnly = true;
+    liftLine.dashed = true;
+    plot.series.push_back(liftLine);
+    char caption[300];
     std::snprintf(caption, sizeof caption,
-                  "energy gained by a 1 kg ball started %.0f cm inside the ground, at rest (chapter 4's engine, 60 Hz)",
+                  "Energy gained by a 1 kg ball started %.0f cm inside the ground, at rest, stepped by chapter 4's "
+                  "engine at 60 Hz. Lifting it out to the slop takes m g (depth - slop) (dashed); anything above "
+                  "that line is energy the position correction made up.",
                   double(depth) * 100);
-    svg.textAt({10, 385}, caption, "fill:#555;font-size:12px");
-    return svg.save(path);
+    plot.caption = caption;
+    try {
+        writeSvgPlot(path, plot);
+    } catch (const std::exception&) {
+        return false;
+    }
+    return true;
 }
 
 }  // namespace figures

@@ -122,7 +122,7 @@ TEST_CASE("Baumgarte's correction adds energy: a ball spawned deep in the ground
     CHECK(stiff > 0.05);   // beta = 0.8: thrown clear of the ground
 }
 
-TEST_CASE("split integration rests at the slop and the seed integrate-first order sinks by g dt^2 / beta more",
+TEST_CASE("split integration rests at the slop and the integrate-first order sinks by g dt^2 / beta more",
           "[ch04][resting]") {
     // Integrate-first: the solver's velocity only moves the body next step, after gravity took
     // g dt off it again, so at rest Baumgarte must keep asking for +g dt: beta/dt (d - slop) = g dt,

@@ -91,7 +91,7 @@ foreach(bad_file IN LISTS bad_files)
 endforeach()
 
 # --- 2. a good run writes a report that parses, the same twice ------------------------------
-get_filename_component(scene "${CASES}/../../scenes/two-box-stack.json" ABSOLUTE)
+get_filename_component(scene "${CASES}/../../scenes/ball-on-box.json" ABSOLUTE)
 foreach(attempt 1 2)
   set(report "${OUT}/report-${attempt}.json")
   file(REMOVE "${report}")
@@ -100,7 +100,7 @@ foreach(attempt 1 2)
   if(run_code EQUAL 0 AND EXISTS "${report}")
     set(ok TRUE)
   endif()
-  check(ok "run two-box-stack (${attempt})" "exit ${run_code}, no report at ${report}\n${run_err}")
+  check(ok "run ball-on-box (${attempt})" "exit ${run_code}, no report at ${report}\n${run_err}")
   if(NOT ok)
     continue()
   endif()
@@ -122,10 +122,10 @@ foreach(attempt 1 2)
     set(previous ${key_at})
   endforeach()
   if(NOT json_error AND report_format STREQUAL "stepwise-report" AND in_order AND
-     frames EQUAL 30 AND scene_name STREQUAL "two-box-stack" AND body_count EQUAL 3 AND last_body STREQUAL "ball")
+     frames EQUAL 30 AND scene_name STREQUAL "ball-on-box" AND body_count EQUAL 3 AND last_body STREQUAL "ball")
     set(ok TRUE)
   endif()
-  check(ok "report of two-box-stack (${attempt})"
+  check(ok "report of ball-on-box (${attempt})"
         "format=${report_format} keys-in-order=${in_order} frames=${frames} scene=${scene_name} bodies=${body_count} error=${json_error}")
   # Cut the timing_ms object out of the text: everything else must match byte for byte.
   string(FIND "${report_text}" "\n  \"timing_ms\": " timing_start)
@@ -139,7 +139,7 @@ if(DEFINED report_1 AND DEFINED report_2)
   if(report_1 STREQUAL report_2)
     set(ok TRUE)
   endif()
-  check(ok "deterministic report" "two runs of two-box-stack differ outside timing_ms")
+  check(ok "deterministic report" "two runs of ball-on-box differ outside timing_ms")
 endif()
 
 # --- 3. usage errors -----------------------------------------------------------------------
@@ -184,6 +184,43 @@ run_stepwise(collide --input collide/bad_pairs.json)
 expect_failure("collide bad input" 2 "error: pairs[0].b.shape.box.half_extents[1]: must be > 0")
 run_stepwise(collide)
 expect_failure("collide without input" 2 "--input")
+# Every error of a query file at once, as for scenes.
+run_stepwise(collide --input collide/many_bad_pairs.json)
+expect_failure("collide: all errors (1)" 2 "error: pairs[0].a.shape.box.half_extents[1]: must be > 0")
+expect_failure("collide: all errors (2)" 2 "error: pairs[0].b.position[1]: must be a number")
+expect_failure("collide: all errors (3)" 2 "error: pairs[1]: missing required key \"b\"")
+# A static body with a mass: rejected by collide with run's own message.
+run_stepwise(collide --input collide/static_mass.json)
+expect_failure("collide: static body with a mass" 2
+               "error: pairs[0].a.mass: only dynamic bodies have mass (this body is static)")
+run_stepwise(run bad/static_mass.json --frames 2 --quiet)
+expect_failure("run: static body with a mass" 2
+               "error: bodies[0].mass: only dynamic bodies have mass (this body is static)")
+# A scene file given to collide is named as one.
+run_stepwise(collide --input "${scene}")
+expect_failure("collide: a scene file" 2
+               "this is a scene file (format \"stepwise-scene\"); collide reads a query file: { \"pairs\": [")
+
+# --- 5. benches -----------------------------------------------------------------------------
+# --help names the files each suite writes.
+run_stepwise(bench --help)
+foreach(file out/integrators-dt.svg out/gjk-table.svg out/gjk-classification.csv out/epa.svg out/solver.csv
+             out/resting.svg)
+  string(FIND "${run_out}" "${file}" found_at)
+  expect("bench --help names ${file}" "not in:\n${run_out}" NOT found_at EQUAL -1)
+endforeach()
+# Not on a terminal: no progress on stderr; the files written are listed at the end.
+run_stepwise(bench resting --quick --csv "${OUT}/resting.csv" --plot "${OUT}/resting.svg")
+string(FIND "${run_out}" "files written:" listed_at)
+string(FIND "${run_out}" "${OUT}/resting.svg" plot_listed_at)
+string(LENGTH "${run_err}" stderr_length)
+expect("bench: exit 0, silent stderr" "exit ${run_code}, stderr:\n${run_err}" run_code EQUAL 0 AND stderr_length EQUAL 0)
+expect("bench: lists the files written" "stdout:\n${run_out}" NOT listed_at EQUAL -1 AND NOT plot_listed_at EQUAL -1)
+run_stepwise(bench resting --quick --quiet --csv "${OUT}/resting.csv")
+string(FIND "${run_out}" "files written:" listed_at)
+expect("bench --quiet: no list" "stdout:\n${run_out}" run_code EQUAL 0 AND listed_at EQUAL -1)
+run_stepwise(bench resting --quick --csv "${OUT}/no/such/dir/resting.csv")
+expect_failure("bench: unwritable output" 2 "error: bench resting: cannot write")
 
 message("cli: ${passed} passed, ${failed} failed")
 if(failed GREATER 0)

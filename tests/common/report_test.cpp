@@ -20,7 +20,8 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-World sampleWorld() { return loadSceneFile("scenes/two-box-stack.json"); }
+// The contract's example scene: a box, and a ball moving down towards it.
+World sampleWorld() { return loadSceneFile("tests/common/data/contract-scene.json"); }
 
 RunStats sampleStats(const World& world) {
     RunStats stats;
@@ -172,5 +173,5 @@ TEST_CASE("The report example in the docs has the keys a real report has, in ord
     CHECK(keysOf(example["timing_ms"]) == keysOf(report["timing_ms"]));
     CHECK(keysOf(example["energy"]) == keysOf(report["energy"]));
     CHECK(keysOf(example["bodies"][0]) == keysOf(report["bodies"][0]));
-    CHECK(example["bodies"][0] == report["bodies"][0]);  // the ground of two-box-stack, exactly
+    CHECK(example["bodies"][0] == report["bodies"][0]);  // the same ground, exactly
 }

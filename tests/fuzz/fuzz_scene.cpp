@@ -45,11 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::abort();
     }
     if (!smallEnoughToStep(world)) return 0;
-    static const Registry registry = [] {
-        Registry r;
-        registerChapters(r);
-        return r;
-    }();
+    const Registry& registry = chapterRegistry();
     Pipeline pipeline = registry.makePipeline(world);
     RunOptions options;
     options.frames = 10;

@@ -33,15 +33,6 @@ namespace {
 
 constexpr const char* kTarget = "fuzz_stepper";
 
-const Registry& registry() {
-    static const Registry instance = [] {
-        Registry r;
-        registerChapters(r);
-        return r;
-    }();
-    return instance;
-}
-
 Settings randomSettings(FuzzInput& input) {
     Settings settings;
     settings.substeps = input.integer(1, 4);
@@ -117,7 +108,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const int jointCount = input.integer(0, 3);
     for (int j = 0; j < jointCount; ++j) {
         JointDesc joint;
-        joint.type = JointType(input.integer(0, 4));  // distance, ball socket, hinge, cone twist, fixed
+        joint.type = static_cast<JointType>(input.integer(0, 4));  // every JointType
         joint.bodyA = input.integer(0, int(world.bodies.size()) - 1);
         joint.bodyB = input.integer(0, int(world.bodies.size()) - 1);
         if (joint.bodyA == joint.bodyB) continue;
@@ -131,7 +122,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // STEPWISE_FUZZ_SCENE=1 prints the scene (as a scene file) before stepping it: a failing input
     // becomes a file `stepwise run` can replay and a test can load.
     if (std::getenv("STEPWISE_FUZZ_SCENE")) std::fprintf(stderr, "%s\n", saveSceneToString(world).c_str());
-    Pipeline pipeline = registry().makePipeline(world);
+    Pipeline pipeline = chapterRegistry().makePipeline(world);
     const double startEnergy = computeEnergy(world).total();
     const bool claimsStability = world.settings.integrator == IntegratorKind::SemiImplicitEuler &&
                                  world.settings.gyroscopic != GyroscopicMode::Explicit;

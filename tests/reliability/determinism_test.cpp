@@ -15,17 +15,8 @@ using namespace stepwise::reliability;
 
 namespace {
 
-const Registry& chapters() {
-    static const Registry registry = [] {
-        Registry r;
-        registerChapters(r);
-        return r;
-    }();
-    return registry;
-}
-
 std::vector<std::uint64_t> hashEveryFrame(World world, long frames) {
-    Pipeline pipeline = chapters().makePipeline(world);
+    Pipeline pipeline = chapterRegistry().makePipeline(world);
     std::vector<std::uint64_t> hashes;
     for (long frame = 0; frame < frames; ++frame) {
         pipeline.step(world);
@@ -37,8 +28,8 @@ std::vector<std::uint64_t> hashEveryFrame(World world, long frames) {
 }  // namespace
 
 TEST_CASE("every built-in scene gives the same bits every frame when run twice", "[reliability][determinism]") {
-    REQUIRE_FALSE(chapters().scenes().empty());
-    for (const SceneEntry& entry : chapters().scenes()) {
+    REQUIRE_FALSE(chapterRegistry().scenes().empty());
+    for (const SceneEntry& entry : chapterRegistry().scenes()) {
         INFO("scene " << entry.name);
         const std::vector<std::uint64_t> first = hashEveryFrame(entry.build(), 120);
         const std::vector<std::uint64_t> second = hashEveryFrame(entry.build(), 120);
@@ -47,13 +38,13 @@ TEST_CASE("every built-in scene gives the same bits every frame when run twice",
 }
 
 TEST_CASE("a world copied mid-run continues bit for bit like the original", "[reliability][determinism]") {
-    for (const SceneEntry& entry : chapters().scenes()) {
+    for (const SceneEntry& entry : chapterRegistry().scenes()) {
         INFO("scene " << entry.name);
         World original = entry.build();
-        Pipeline pipeline = chapters().makePipeline(original);
+        Pipeline pipeline = chapterRegistry().makePipeline(original);
         for (int frame = 0; frame < 60; ++frame) pipeline.step(original);
         World copy = original;  // a snapshot: all state lives in the world (architecture.md)
-        Pipeline copyPipeline = chapters().makePipeline(copy);
+        Pipeline copyPipeline = chapterRegistry().makePipeline(copy);
         for (int frame = 0; frame < 60; ++frame) {
             pipeline.step(original);
             copyPipeline.step(copy);
@@ -63,7 +54,7 @@ TEST_CASE("a world copied mid-run continues bit for bit like the original", "[re
 }
 
 TEST_CASE("the state hash sees a one-ulp change in any body", "[reliability][determinism]") {
-    for (const SceneEntry& entry : chapters().scenes()) {
+    for (const SceneEntry& entry : chapterRegistry().scenes()) {
         World world = entry.build();
         const std::uint64_t before = stateHash(world);
         for (Body& body : world.bodies) {
@@ -82,14 +73,14 @@ TEST_CASE("the state hash sees a one-ulp change in any body", "[reliability][det
 // bit, as all pairs by brute force. tests/reliability/CMakeLists.txt registers this case with
 // ctest once the chapter list has a chapter 5; before, no pipeline reads Settings::broadphase.
 TEST_CASE("broadphase sap and brute give bit-identical runs", "[.][reliability][broadphase]") {
-    for (const SceneEntry& entry : chapters().scenes()) {
+    for (const SceneEntry& entry : chapterRegistry().scenes()) {
         INFO("scene " << entry.name);
         World brute = entry.build();
         brute.settings.broadphase = BroadphaseMode::Brute;
         World sap = entry.build();
         sap.settings.broadphase = BroadphaseMode::Sap;
-        const bool different = chapters().makePipeline(brute).enabledStageNames() !=
-                               chapters().makePipeline(sap).enabledStageNames();
+        const bool different = chapterRegistry().makePipeline(brute).enabledStageNames() !=
+                               chapterRegistry().makePipeline(sap).enabledStageNames();
         CHECK((different || brute.bodies.size() < 2));  // the setting must reach the pipeline
         REQUIRE(hashEveryFrame(brute, 120) == hashEveryFrame(sap, 120));
     }

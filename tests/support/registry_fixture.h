@@ -9,14 +9,7 @@
 
 namespace stepwise::test {
 
-inline const Registry& chapterRegistry() {
-    static const Registry registry = [] {
-        Registry all;
-        registerChapters(all);
-        return all;
-    }();
-    return registry;
-}
+using stepwise::chapterRegistry;  // every chapter of this build, registered once
 
 /// The registered scene `name`; throws (the test fails with the name) when there is none.
 inline const SceneEntry& sceneNamed(const std::string& name) {
