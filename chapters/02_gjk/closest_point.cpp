@@ -97,15 +97,20 @@ SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Rea
         best.degenerate = true;
         return best;
     }
-    const Real v = vb / denominator;
-    const Real w = vc / denominator;
+    // The weights from cross products, not from va, vb, vc: those are differences of products
+    // of dot products, which cancel on a long thin triangle (a 9 m plate against a 5 mm box)
+    // and leave weights that no longer rebuild the point, so the closest points GJK reports
+    // from them disagree with its distance. The cross products keep their relative precision.
+    const Vec3 normal = ab.cross(ac);
+    const Real normalSquared = normal.squaredNorm();
+    const Real v = normal.dot(ac.cross(a)) / normalSquared;   // n . ((o - a) x ac) / |n|^2
+    const Real w = normal.dot(a.cross(ab)) / normalSquared;   // n . (ab x (o - a)) / |n|^2
     SimplexClosest result;
     // The point itself as the projection onto the plane, not as a + v ab + w ac: that sum
     // carries an absolute rounding error of eps |a|, which near contact (|point| << |a|) turns
     // its direction by up to eps |a| / |point|. The normal comes from the edges alone, so this
     // form keeps the direction exact to rounding; the search direction GJK takes from it then
     // still finds the separating plane at distances of 1e-4 of the shapes' size in float.
-    const Vec3 normal = ab.cross(ac);
     result.point = facePoint == FacePoint::Projection ? Vec3(normal * (normal.dot(a) / normal.squaredNorm()))
                                                       : Vec3(a + v * ab + w * ac);
     result.weights[ia] = 1 - v - w;

@@ -37,9 +37,9 @@ struct ClipPlane {
     std::uint32_t sideFeature = 0;
 };
 
-/// The features of the point where a polygon edge crosses a plane: the reference side edge
-/// against the incident edge, or, for an edge that already runs along another side plane, the
-/// reference face's corner (`cornerFeature`) against the incident face (`incidentFaceFeature`).
+/// What a crossing needs beyond the edge and the plane: where an edge that already runs along an
+/// earlier side plane crosses a later one, the point is the reference face's corner between the two
+/// sides (named by its vertex) over the incident face, named by `incidentFaceFeature`.
 struct CrossingFeatures {
     std::uint32_t incidentFaceFeature = 0;
 };

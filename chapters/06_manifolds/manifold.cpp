@@ -152,4 +152,38 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
 }
 // [ch06-update-manifolds]
 
+ManifoldStats countManifolds(const World& world) {
+    ManifoldStats stats;
+    for (const Contact& contact : world.contacts) {
+        ++stats.contacts;
+        if (contact.missedSteps > 0) ++stats.keptRecords;
+        for (int i = 0; i < std::min(std::max(contact.pointCount, 0), 4); ++i) {
+            ++stats.points;
+            if (contact.points[i].persisted) ++stats.persistedPoints;
+            if (contact.points[i].depth < 0) ++stats.speculativePoints;
+        }
+    }
+    return stats;
+}
+
+namespace {
+
+std::string featureLabel(std::uint32_t feature) {
+    const std::uint32_t kind = (feature >> 13) & 7u, index = feature & kFeatureIndexMask;
+    switch (static_cast<FeatureKind>(kind)) {
+        case FeatureKind::Vertex: return "v" + std::to_string(index);
+        case FeatureKind::Edge: return "e" + std::to_string(index / 128) + "-" + std::to_string(index % 128);
+        case FeatureKind::Face: return "f" + std::to_string(index);
+        case FeatureKind::Core: return "c" + std::to_string(index);
+        case FeatureKind::None: break;
+    }
+    return "?";
+}
+
+}  // namespace
+
+std::string featureIdLabel(std::uint32_t featureId) {
+    return featureLabel(featureId >> 16) + "/" + featureLabel(featureId & 0xFFFFu);
+}
+
 }  // namespace stepwise

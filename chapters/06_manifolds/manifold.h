@@ -8,6 +8,9 @@
 #include "03_epa/narrowphase.h"
 #include "world/world.h"
 
+#include <cstdint>
+#include <string>
+
 namespace stepwise {
 
 struct ManifoldOptions {
@@ -52,5 +55,19 @@ Real manifoldMargin(const World& world, int bodyA, int bodyB, Real lookAhead);
 /// only act if they close faster than the gap allows (Box2D keeps 4 slops, its "speculative
 /// distance").
 Real pointSlack(const World& world);
+
+/// What World::contacts holds after a search, for benches, tests and the demo's panel.
+struct ManifoldStats {
+    int contacts = 0;           // records (pairs)
+    int points = 0;
+    int persistedPoints = 0;    // matched a point of the pair's previous record
+    int speculativePoints = 0;  // depth < 0
+    int keptRecords = 0;        // out of reach, kept by the life cycle (missedSteps > 0)
+};
+ManifoldStats countManifolds(const World& world);
+
+/// A feature id in a few characters, for labels: "f3/v5" is A's face 3 against B's vertex 5
+/// (v vertex, e edge, f face, c core, ? unknown); edges print as their two vertices, "e2-6".
+std::string featureIdLabel(std::uint32_t featureId);
 
 }  // namespace stepwise

@@ -20,6 +20,14 @@ void refreshFromAnchors(Contact& contact, const Transform& transformA, const Tra
 
 /// Whether the previous record of a pair still in the broadphase's candidates, but no longer close
 /// enough to make a contact, is kept one more search: while it has missed fewer than keepSteps.
+///
+/// This life cycle replaces chapter 4's drop rule (dropUnloadedContactPoints, the stage
+/// contacts:drop_unloaded), which removed every point that had carried no load after the frame's
+/// last solve. With one point per pair found afresh every substep nothing was lost by that. A
+/// manifold's unloaded corners are part of its next step (a corner that lifts for a step lands
+/// again with its id, and should find its impulse), so chapter 6 drops whole records instead: at
+/// once when the pair leaves the broadphase's candidates, after keepSteps searches out of reach
+/// otherwise. Points that carry nothing simply hold a zero impulse.
 bool keepsMissedRecord(const Contact& previous, int keepSteps);
 
 }  // namespace stepwise

@@ -114,41 +114,54 @@ std::vector<PolytopeEdge> supportingEdges(const Shape& shape, const Transform& t
 
 // [ch06-edge-contact]
 /// One point where an edge of A crosses an edge of B: of the edges that support each shape along
-/// the normal, the pair whose cross product is most parallel to it, and their closest points.
-bool edgeContact(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const Vec3& normal,
+/// the normal, the pairs whose cross product is (within round-off) most parallel to it, and of
+/// those the pair passing nearest chapter 3's witness points (a box has four parallel edges per
+/// direction, and more than one may lie within the tolerance of the supporting plane); the point
+/// is their closest points.
+bool edgeContact(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const ContactQuery& query,
                  Real keepDistance, ManifoldCandidates& out) {
+    const Vec3 normal = query.normal;
     const Real tolerance = Real(0.01) * std::max({boundingRadius(a), boundingRadius(b), Real(1e-3)});
     const std::vector<PolytopeEdge> edgesA = supportingEdges(a, ta, normal, tolerance);
     const std::vector<PolytopeEdge> edgesB = supportingEdges(b, tb, -normal, tolerance);
+    const auto alignmentOf = [&](const PolytopeEdge& edgeA, const PolytopeEdge& edgeB) {
+        const Vec3 axis = (edgeA.end - edgeA.start).cross(edgeB.end - edgeB.start);
+        const Real length = axis.norm();
+        return length > kEpsilon ? std::abs(axis.dot(normal)) / length : Real(-1);
+    };
+    Real bestAlignment = -1;
+    for (const PolytopeEdge& edgeA : edgesA)
+        for (const PolytopeEdge& edgeB : edgesB) bestAlignment = std::max(bestAlignment, alignmentOf(edgeA, edgeB));
+    if (!(bestAlignment > 0)) return false;
     const PolytopeEdge* bestA = nullptr;
     const PolytopeEdge* bestB = nullptr;
-    Real bestAlignment = -1;
-    Vec3 bestAxis = normal;
+    Vec3 onA = Vec3::Zero(), onB = Vec3::Zero();
+    Real bestDistance = kRealMax;
     for (const PolytopeEdge& edgeA : edgesA) {
         for (const PolytopeEdge& edgeB : edgesB) {
-            const Vec3 axis = (edgeA.end - edgeA.start).cross(edgeB.end - edgeB.start);
-            const Real length = axis.norm();
-            if (!(length > kEpsilon)) continue;
-            const Real alignment = std::abs(axis.dot(normal)) / length;
-            if (alignment > bestAlignment) {
-                bestAlignment = alignment;
+            if (alignmentOf(edgeA, edgeB) < bestAlignment - Real(1e-3)) continue;
+            Vec3 witnessOnA, witnessOnB, unused;
+            closestPointsOfSegments<Real>(query.pointA, query.pointA, edgeA.start, edgeA.end, unused, witnessOnA);
+            closestPointsOfSegments<Real>(query.pointB, query.pointB, edgeB.start, edgeB.end, unused, witnessOnB);
+            const Real distance = (witnessOnA - query.pointA).norm() + (witnessOnB - query.pointB).norm();
+            if (distance < bestDistance) {
+                bestDistance = distance;
                 bestA = &edgeA;
                 bestB = &edgeB;
-                bestAxis = axis / length;
             }
         }
     }
     if (!bestA) return false;
-    if (bestAxis.dot(normal) < 0) bestAxis = -bestAxis;
-    Vec3 onA, onB;
     closestPointsOfSegments<Real>(bestA->start, bestA->end, bestB->start, bestB->end, onA, onB);
+    Vec3 axis = (bestA->end - bestA->start).cross(bestB->end - bestB->start).normalized();
+    if (axis.dot(normal) < 0) axis = -axis;
     ManifoldPoint point;
     point.pointA = onA;
     point.pointB = onB;
-    point.depth = bestAxis.dot(onA - onB);
+    point.depth = axis.dot(onA - onB);
     if (!(-point.depth <= keepDistance)) return false;
     point.featureId = makeFeatureId(makeFeature(FeatureKind::Edge, bestA->id), makeFeature(FeatureKind::Edge, bestB->id));
-    out.normal = bestAxis;
+    out.normal = axis;
     out.kind = "edge_edge";
     out.points.assign(1, point);
     return true;
@@ -190,12 +203,11 @@ bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const
     const int faceA = bestSeparatingFace(a, ta, b, tb, separationA);
     const int faceB = bestSeparatingFace(b, tb, a, ta, separationB);
     if (faceA < 0 || faceB < 0) return false;
-    const Vec3 normal = query.normal;
     const Real axisSeparation = -query.depth;
     // A pair that touched face to face last step stays a face contact within the hysteresis.
     const Real edgeTolerance = preferred == ReferenceSide::None ? kFaceTolerance : kReferenceHysteresis;
     if (std::max(separationA, separationB) + edgeTolerance < axisSeparation) {
-        return edgeContact(a, ta, b, tb, normal, keepDistance, out);
+        return edgeContact(a, ta, b, tb, query, keepDistance, out);
     }
     // A's face is the reference unless B's is clearly better: the bias keeps the choice steady
     // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same). Last

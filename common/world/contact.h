@@ -1,6 +1,6 @@
 #pragma once
 // What the narrowphase remembers about touching pairs. A Contact joins two bodies along one
-// normal and holds up to four points (chapter 6, to come, fills more than one). The contacts live in
+// normal and holds up to four points (chapter 6 fills more than one). The contacts live in
 // World::contacts from step to step, one per touching pair, sorted by pair: a cache keyed by the
 // body pair, apart from the solver's rows (Jolt keeps its manifold cache apart from its contact
 // constraints; Box3D keeps anchors, a feature id and a "persisted" flag per manifold point).

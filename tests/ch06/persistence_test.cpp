@@ -238,6 +238,29 @@ TEST_CASE("the record's life cycle: kept a few searches while the bounds overlap
     }
 }
 
+TEST_CASE("counts and labels: what the demo and the bench show", "[ch06][persistence]") {
+    World world = boxOnGround(Real(0.01));
+    updateManifolds(world, 0);
+    ManifoldStats stats = countManifolds(world);
+    CHECK(stats.contacts == 1);
+    CHECK(stats.points == 4);
+    CHECK(stats.persistedPoints == 0);
+    updateManifolds(world, 0);
+    stats = countManifolds(world);
+    CHECK(stats.persistedPoints == 4);
+    CHECK(stats.speculativePoints == 0);
+    world.bodies[1].transform.position.y() += Real(0.05);
+    updateManifolds(world, 0);
+    stats = countManifolds(world);
+    CHECK(stats.keptRecords == 1);
+    CHECK(stats.speculativePoints == 4);
+    // The ground's top face (3) against the box's corner 5 (x > 0, z > 0, y < 0: bits 1 and 4).
+    CHECK(featureIdLabel(makeFeatureId(makeFeature(FeatureKind::Face, 3), makeFeature(FeatureKind::Vertex, 5))) == "f3/v5");
+    CHECK(featureIdLabel(makeFeatureId(makeFeature(FeatureKind::Edge, 2 * 128 + 6), 0)) == "e2-6/?");
+    const std::string label = featureIdLabel(world.contacts[0].points[0].featureId);
+    CHECK(label.substr(0, 3) == "f3/");
+}
+
 TEST_CASE("a falling box gets speculative points before it lands", "[ch06][persistence]") {
     World world = boxOnGround(Real(-0.02));  // 2 cm above the ground
     world.settings.substeps = 4;
