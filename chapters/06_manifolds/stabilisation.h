@@ -52,7 +52,7 @@ constexpr Real kMaxPushOutSpeed = 3;  // m/s
 // [ch06-softness]
 
 /// Sweeps over one manifold's rows before the solver moves to the next contact.
-constexpr int kManifoldSweeps = 4;
+constexpr int kManifoldSweeps = 8;
 
 /// The solve stage's name, "solve:<stabilisation>".
 std::string stabilisedSolveStageName(Stabilisation stabilisation);
