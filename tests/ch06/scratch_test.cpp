@@ -1,4 +1,5 @@
 #include "06_manifolds/scenes.h"
+#include "world/scene.h"
 #include "06_manifolds/stacking_study.h"
 #include <catch2/catch.hpp>
 #include <cstdio>
@@ -11,7 +12,8 @@ TEST_CASE("scratch", "[.scratch]") {
                     {"towerAbove", +[] { return buildMassTower(false); }}, {"ramp", +[] { return buildStickingRamp(); }},
                     {"stagger", +[] { World w = buildBoxStack(16); for (std::size_t i = 1; i < w.bodies.size(); ++i) w.bodies[i].transform.position.x() += Real(0.02) * Real(i % 2); return w; }},
                     {"shrink", +[] { World w = buildBoxStack(16); for (std::size_t i = 1; i < w.bodies.size(); ++i) if (i % 2) w.bodies[i].shape.halfExtents = Vec3(Real(0.45), Real(0.5), Real(0.45)); return w; }},
-                    {"stack8", +[] { return buildBoxStack(8); }}};
+                    {"stack8", +[] { return buildBoxStack(8); }},
+                    {"twobox", +[] { return loadSceneFile("scenes/two-box-stack.json"); }}};
     for (Stabilisation s : {Stabilisation::Baumgarte, Stabilisation::Relax, Stabilisation::SplitImpulse, Stabilisation::SoftStep})
         for (bool warm : {true, false})
             for (const Item& item : items) {
