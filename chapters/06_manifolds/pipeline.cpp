@@ -22,10 +22,13 @@ Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& option
     // substepped solve moves the bodies through the whole step after the search, so it looks one
     // step further ahead for speculative points.
     if (Stage* narrowphase = pipeline.find(stage_group::kNarrowphase)) {
-        narrowphase->name = stageName(stage_group::kNarrowphase, options.multiPoint ? "manifold" : "one_point");
+        const bool planned = options.multiPoint && world.settings.manifoldContacts;
+        narrowphase->name = stageName(stage_group::kNarrowphase, planned ? "manifold" : "one_point");
         narrowphase->run = [search, options, split](World& stepWorld, Real) {
             const int ahead = substepsAhead(stepWorld, search) + (split && isSubstepped(stepWorld.settings.stabilisation) ? 1 : 0);
-            updateManifolds(stepWorld, static_cast<Real>(ahead), options);
+            ManifoldOptions now = options;  // Settings::manifoldContacts is read every step (the demo's toggle)
+            now.multiPoint = options.multiPoint && stepWorld.settings.manifoldContacts;
+            updateManifolds(stepWorld, static_cast<Real>(ahead), now);
         };
     }
 

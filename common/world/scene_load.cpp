@@ -25,6 +25,7 @@ const Names<Stabilisation> kStabilisations = {{"baumgarte", Stabilisation::Baumg
                                               {"relax", Stabilisation::Relax},
                                               {"split_impulse", Stabilisation::SplitImpulse},
                                               {"soft_step", Stabilisation::SoftStep}};
+const Names<bool> kContactPoints = {{"manifold", true}, {"one_point", false}};
 const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
                                       {"ball_socket", JointType::BallSocket},
                                       {"hinge", JointType::Hinge},
@@ -33,7 +34,7 @@ const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
 
 Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
-                         "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation"},
+                         "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation", "contact_points"},
                         &errors);
     Settings settings;
     // Each key on its own: one bad value does not hide the next.
@@ -54,6 +55,7 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     read("gyroscopic", [&](const JsonCursor& v) { settings.gyroscopic = v.choice(kGyroscopic); });
     read("solver", [&](const JsonCursor& v) { settings.solver = v.choice(kSolvers); });
     read("stabilisation", [&](const JsonCursor& v) { settings.stabilisation = v.choice(kStabilisations); });
+    read("contact_points", [&](const JsonCursor& v) { settings.manifoldContacts = v.choice(kContactPoints); });
     return settings;
 }
 

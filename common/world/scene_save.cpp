@@ -45,7 +45,8 @@ std::string saveSceneToString(const World& world) {
                          {"gyroscopic", toString(s.gyroscopic)},
                          {"solver", toString(s.solver)},
                          {"restitution_threshold", tidyNumber(s.restitutionThreshold)},
-                         {"stabilisation", toString(s.stabilisation)}};
+                         {"stabilisation", toString(s.stabilisation)},
+                         {"contact_points", s.manifoldContacts ? "manifold" : "one_point"}};
     Json bodies = Json::array();
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const Body& body = world.bodies[i];

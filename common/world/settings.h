@@ -30,6 +30,7 @@ struct Settings {
     Real restitutionThreshold = Real(1.0);            // m/s closing speed below which contacts do not bounce
     bool warmStarting = true;
     Stabilisation stabilisation = Stabilisation::Relax;  // chapter 6 on
+    bool manifoldContacts = true;                     // chapter 6 on: up to 4 points per pair; false: one
     BroadphaseMode broadphase = BroadphaseMode::Auto;
     CcdMode ccd = CcdMode::Auto;
     IntegratorKind integrator = IntegratorKind::SemiImplicitEuler;
