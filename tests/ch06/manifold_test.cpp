@@ -207,8 +207,9 @@ struct RandomComparison {
     int kinds[4] = {0, 0, 0, 0};
 };
 
-/// Random poses of B around A, slid together until the reference finds them 0 to 2 cm deep, and
-/// compared wherever SAT's choice is clear (near-ties, where either answer is right, skipped).
+/// Random poses of B around A, slid together until the reference finds them touching, then 0 to
+/// 2 cm deeper, and compared wherever SAT's choice is clear (near-ties, where either answer is
+/// right, are skipped).
 RandomComparison compareRandomPoses(const Shape& shapeA, const Shape& shapeB, int trials, unsigned seed) {
     std::mt19937 random(seed);
     std::uniform_real_distribution<double> unit(-1, 1);
@@ -222,12 +223,19 @@ RandomComparison compareRandomPoses(const Shape& shapeA, const Shape& shapeB, in
         direction.normalize();
         const Transform ta = pose(Vec3::Zero(), axisAngle(axisA, angleA));
         Transform tb = pose(direction * Real(3), axisAngle(axisB, angleB));
-        for (Real distance = 3; distance > 0; distance -= Real(0.002)) {
-            tb.position = direction * distance;
+        // The separation along the ray is the largest of linear functions of the distance, so it
+        // is convex and crosses zero once: bisect for the touching distance.
+        const auto separationAt = [&](double distance) {
+            tb.position = direction * static_cast<Real>(distance);
             const auto probe = reference::satManifold(shapeA, ta, shapeB, tb, 0, kFaceTolerance);
-            if (!probe.points.empty() && probe.points.front().depth > 0) break;
+            return std::max(probe.bestFace, probe.bestEdge);
+        };
+        double inside = 0, outside = 3;
+        for (int step = 0; step < 30; ++step) {
+            const double middle = 0.5 * (inside + outside);
+            (separationAt(middle) < 0 ? inside : outside) = middle;
         }
-        tb.position -= direction * static_cast<Real>(extra);
+        tb.position = direction * static_cast<Real>(outside - extra);
         const auto expected = reference::satManifold(shapeA, ta, shapeB, tb, 0, kFaceTolerance);
         const bool clearEdge = expected.bestEdge > expected.bestFace + 5 * kFaceTolerance;
         const bool clearFace = expected.bestEdge < expected.bestFace + 0.2 * kFaceTolerance;
