@@ -12,8 +12,8 @@
 
 namespace stepwise {
 
-/// How contacts are searched in chapter 6 by default: once per frame (the manifold's points ride on
-/// their bodies through the substeps), or every substep when a stage needs it.
+/// How contacts are searched in chapter 6: once per frame. A manifold holds every touching corner,
+/// and its points ride on their bodies (anchors) through the substeps.
 ContactSearch chooseContactSearch(const World& world);
 
 /// The pipeline with the default manifold options (multi-point).
