@@ -100,10 +100,13 @@ void addStressBodies(World& world, const StressParams& params) {
         BodyDef def;
         def.name = "b" + std::to_string(index);
         def.shape = shapes.pick(params.shape, index);
-        def.transform.position =
-            Vec3(-halfWidth + spacing * (Real(0.5) + static_cast<Real>(column)) + Real(random.uniform(-slack, slack)),
-                 params.dropHeight + Real(0.5) + spacing * static_cast<Real>(layer),
-                 -halfWidth + spacing * (Real(0.5) + static_cast<Real>(row)) + Real(random.uniform(-slack, slack)));
+        // One draw per statement: the order of a call's arguments is unspecified, and two draws
+        // in one call gave Clang other scenes than GCC. z first, GCC's order, keeps the scenes.
+        const Real jitterZ = Real(random.uniform(-slack, slack));
+        const Real jitterX = Real(random.uniform(-slack, slack));
+        def.transform.position = Vec3(-halfWidth + spacing * (Real(0.5) + static_cast<Real>(column)) + jitterX,
+                                      params.dropHeight + Real(0.5) + spacing * static_cast<Real>(layer),
+                                      -halfWidth + spacing * (Real(0.5) + static_cast<Real>(row)) + jitterZ);
         def.transform.rotation = random.rotation();
         addBody(world, def);
     }

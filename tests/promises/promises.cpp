@@ -1,0 +1,297 @@
+// The scenario promises of chapters 1 to 4 (promises.h), each a function of the pipeline under
+// test: the claims of the chapters' own suites that must keep holding whatever stages a later
+// chapter puts in front of or after chapter 4's.
+#include "01_integrators/chapter.h"
+#include "01_integrators/integrate.h"
+#include "01_integrators/forces.h"
+#include "01_integrators/scenes.h"
+#include "02_gjk/box_oracle.h"
+#include "02_gjk/chapter.h"
+#include "02_gjk/scenes.h"
+#include "03_epa/scenes.h"
+#include "04_pgs/scenes.h"
+#include "app/registry.h"
+#include "support/fixture.h"
+
+#include "promises/promises.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace stepwise::test {
+
+namespace {
+
+double relativeError(double value, double expected) { return std::abs(value - expected) / std::abs(expected); }
+
+Real overlapDepth(const World& world, int a, int b) {
+    const ContactQuery query = collideShapes(world.bodies[a].shape, world.bodies[a].transform, world.bodies[b].shape,
+                                             world.bodies[b].transform);
+    return query.intersect ? query.depth : Real(0);
+}
+
+bool sameStates(const World& a, const World& b) {
+    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+        if (a.bodies[i].transform.position != b.bodies[i].transform.position) return false;
+        if (a.bodies[i].transform.rotation.coeffs() != b.bodies[i].transform.rotation.coeffs()) return false;
+    }
+    return true;
+}
+
+// --- Chapter 1: nothing touches, so the engine under test moves the bodies exactly as chapter 1's.
+
+void chapterOneScenesMoveAsInChapterOne(const PipelineMaker& makePipeline) {
+    for (World (*build)() : {+[] { return buildIntegratorsSideBySide(); }, +[] { return buildTHandle(); },
+                             +[] { return buildProjectile(); }}) {
+        World reference = build(), world = build();
+        INFO(world.name);
+        Pipeline referencePipeline = makeChapter01Pipeline(reference);
+        Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+        for (int frame = 0; frame < 600; ++frame) {
+            referencePipeline.step(reference);
+            pipeline.step(world);
+            REQUIRE(world.contacts.empty());
+        }
+        CHECK(sameStates(world, reference));
+    }
+}
+
+void projectileFollowsTheParabola(const PipelineMaker& makePipeline) {
+    World world = buildProjectile();
+    const World launch = world;
+    Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+    const double t = 1.5;
+    test::simulate(world, pipeline, t);
+    for (const Motion& motion : world.motions) {
+        const double start = launch.bodies[motion.bodyIndex].transform.position.y();
+        const double up = launch.motionOf(motion.bodyIndex)->linearVelocity.y();
+        const double below = start + up * t + 0.5 * world.settings.gravity.y() * t * t -
+                             world.bodies[motion.bodyIndex].transform.position.y();
+        if (integratorOf(world, motion) == IntegratorKind::SemiImplicitEuler)
+            CHECK(below == Approx(-0.5 * world.settings.gravity.y() * world.settings.dt * t).epsilon(1e-3));
+        else
+            CHECK(std::abs(below) < 1e-3);
+    }
+}
+
+void tHandleFlipsAndKeepsMomentum(const PipelineMaker& makePipeline) {
+    World world = buildTHandle(GyroscopicMode::Implicit);
+    Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+    const Vec3 initial = angularMomentum(world, 0);
+    double lowest = 1, worstMomentum = 0;
+    test::simulate(world, pipeline, 20.0, [&](const World& w) {
+        lowest = std::min(lowest, static_cast<double>(w.bodies[0].transform.rotate(Vec3::UnitZ()).dot(initial.normalized())));
+        worstMomentum = std::max(worstMomentum, std::abs(static_cast<double>(angularMomentum(w, 0).norm() / initial.norm()) - 1));
+    });
+    CHECK(lowest < -0.9);
+    CHECK(worstMomentum < 1e-3);
+}
+
+// --- Chapter 2: its scenes move kinematic bodies only. No pair of them needs a contact, so
+// a broadphase hands the narrowphase none; its GJK still judges the pair exactly like the oracle
+// when handed the pair directly.
+
+void twoBoxesMoveAsInChapterTwo(const PipelineMaker& makePipeline) {
+    World world = buildGjkTwoBoxes(), reference = buildGjkTwoBoxes();
+    Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+    Pipeline referencePipeline = makeChapter02Pipeline(reference);
+    int overlapping = 0, separated = 0;
+    for (int frame = 0; frame < 900; ++frame) {
+        pipeline.step(world);
+        referencePipeline.step(reference);
+        REQUIRE(world.candidatePairs.empty());  // two kinematic bodies: nothing to solve
+        World probe = world;
+        updateContacts(probe, {BodyPair{0, 1}});
+        const oracle::OracleBox a = oracle::makeOracleBox(world.bodies[0].shape.halfExtents, world.bodies[0].transform);
+        const oracle::OracleBox b = oracle::makeOracleBox(world.bodies[1].shape.halfExtents, world.bodies[1].transform);
+        const double exact = oracle::boxSignedDistance(a, b);
+        if (std::abs(exact) <= 1e-4) continue;
+        CHECK(probe.pairs.size() == (exact < 0 ? 1u : 0u));
+        (exact < 0 ? overlapping : separated)++;
+    }
+    CHECK(sameStates(world, reference));
+    CHECK(overlapping > 100);
+    CHECK(separated > 100);
+}
+
+// --- Chapter 3: contacts are finite and of non-negative depth, on the gallery of shape pairs.
+
+void galleryContactsAreFinite(const PipelineMaker& makePipeline) {
+    World world = buildContactGallery();
+    Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+    std::size_t most = 0;
+    test::simulate(world, pipeline, 3.0, [&](const World& w) {
+        most = std::max(most, w.contacts.size());
+        for (const Contact& contact : w.contacts) {
+            CHECK(isFinite(contact.normal));
+            CHECK(contact.points[0].depth >= 0);
+        }
+    });
+    CHECK(most >= 5);
+
+    World stepper = buildEpaStepper();
+    Pipeline stepperPipeline = makePipeline(stepper, ContactSearch::EverySubstep);
+    const World before = stepper;
+    stepperPipeline.step(stepper);
+    REQUIRE(stepper.contacts.size() == 1);
+    const ContactQuery query = collideShapes(before.bodies[0].shape, before.bodies[0].transform, before.bodies[1].shape,
+                                             before.bodies[1].transform);
+    CHECK(stepper.contacts[0].normal.isApprox(query.normal));
+}
+
+// --- Chapter 4: restitution, friction and resting, against the same closed forms.
+
+void ballsBounceToRestitutionSquared(const PipelineMaker& makePipeline) {
+    for (ContactSearch search : {ContactSearch::EverySubstep, ContactSearch::OncePerFrame}) {
+        const Real height = 2;
+        World world = buildBounceScene(height);
+        world.settings.substeps = 64;
+        Pipeline pipeline = makePipeline(world, search);
+        const char* names[] = {"ball-e0.3", "ball-e0.6", "ball-e0.9"};
+        const double restitutions[] = {0.3, 0.6, 0.9};
+        std::vector<double> apex(3, 0);
+        std::vector<bool> bounced(3, false), falling(3, false);
+        const int elastic = world.findBody("ball-e1.0");
+        double highest = 0;
+        test::simulate(world, pipeline, 2.5, [&](const World& w) {
+            for (int i = 0; i < 3; ++i) {
+                const int ball = w.findBody(names[i]);
+                const double bottom = w.bodies[ball].transform.position.y() - w.bodies[ball].shape.radius;
+                const double vy = w.motionOf(ball)->linearVelocity.y();
+                if (!bounced[i] && vy > 0) bounced[i] = true;
+                if (bounced[i] && !falling[i]) {
+                    apex[i] = std::max(apex[i], bottom);
+                    if (vy < 0) falling[i] = true;
+                }
+            }
+            if (w.time > 0.1)
+                highest = std::max(highest, static_cast<double>(w.bodies[elastic].transform.position.y() - w.bodies[elastic].shape.radius));
+        });
+        INFO((search == ContactSearch::OncePerFrame ? ", once per frame" : ", every substep"));
+        for (int i = 0; i < 3; ++i) {
+            CHECK(falling[i]);
+            CHECK(relativeError(apex[i], restitutions[i] * restitutions[i] * height) < 0.02);
+        }
+        CHECK(highest <= height);
+    }
+}
+
+void headOnCollisionsConserveMomentum(const PipelineMaker& makePipeline) {
+    for (double restitution : {0.0, 0.5, 1.0}) {
+        World world = test::makeWorld(test::zeroGravitySettings());
+        world.settings.substeps = 16;
+        const int light = test::addSphere(world, Vec3(-1, 0, 0), Real(0.5), BodyType::Dynamic, 1);
+        const int heavy = test::addSphere(world, Vec3(1, 0, 0), Real(0.5), BodyType::Dynamic, 3);
+        for (int body : {light, heavy}) world.bodies[body].material.restitution = static_cast<Real>(restitution);
+        test::setVelocity(world, light, Vec3(3, 0, 0));
+        test::setVelocity(world, heavy, Vec3(Real(-0.5), 0, 0));
+        Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+        test::simulate(world, pipeline, 1.0);
+        const double vLight = world.motionOf(light)->linearVelocity.x();
+        const double vHeavy = world.motionOf(heavy)->linearVelocity.x();
+        CHECK(std::abs(vLight + 3 * vHeavy - 1.5) / 1.5 < 1e-4);
+        CHECK(std::abs((vHeavy - vLight) - restitution * 3.5) < 3.5e-3);
+    }
+}
+
+void slidingBallRollsAndRampsHold(const PipelineMaker& makePipeline) {
+    const double mu = 0.3, speed = 4;
+    World world = test::makeWorld();
+    world.settings.dt = Real(1.0 / 480);
+    test::addGround(world);
+    const Real radius = Real(0.5);
+    const int ball = addBall(world, "ball", Vec3(0, radius - world.settings.slop, 0), radius, 2, Material{Real(mu), 0});
+    world.bodies[0].material.friction = static_cast<Real>(mu);
+    test::setVelocity(world, ball, Vec3(Real(speed), 0, 0));
+    Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+    double rollingTime = -1, rollingSpeed = 0;
+    test::simulate(world, pipeline, 1.5, [&](const World& w) {
+        const Motion& motion = *w.motionOf(ball);
+        const Vec3 slip = motion.linearVelocity + motion.angularVelocity.cross(Vec3(0, -radius, 0));
+        if (rollingTime < 0 && slip.norm() < 1e-2 * speed) rollingTime = w.time, rollingSpeed = motion.linearVelocity.norm();
+    });
+    CHECK(relativeError(rollingTime, 2 * speed / (7 * mu * 9.81)) < 0.03);
+    CHECK(relativeError(rollingSpeed, 5.0 / 7 * speed) < 0.03);
+
+    const Real rampMu = Real(0.5);
+    for (int steeper : {1, -1}) {
+        const Real angle = std::atan(rampMu) + static_cast<Real>(steeper) * Real(5.0 * kPi / 180);
+        int box = -1;
+        World ramp = buildRampScene(angle, rampMu, &box);
+        ramp.settings.substeps = 16;
+        const Vec3 start = ramp.bodies[box].transform.position;
+        Pipeline rampPipeline = makePipeline(ramp, ContactSearch::EverySubstep);
+        test::simulate(ramp, rampPipeline, 2.0);
+        const Vec3 downhill = -(Quat(Eigen::AngleAxis<Real>(angle, Vec3::UnitZ())) * Vec3::UnitX());
+        const double travelled = (ramp.bodies[box].transform.position - start).dot(downhill);
+        if (steeper > 0)
+            CHECK(relativeError(travelled, 0.5 * 9.81 * (std::sin(angle) - rampMu * std::cos(angle)) * 4) < 0.05);
+        else
+            CHECK((ramp.bodies[box].transform.position - start).norm() < 0.01);
+    }
+}
+
+void restingAtTheSlop(const PipelineMaker& makePipeline) {
+    World world = test::makeWorld();
+    test::addGround(world);
+    const int ball = test::addSphere(world, Vec3(0, Real(0.51), 0), Real(0.5), BodyType::Dynamic, 1);
+    Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+    double shallowest = 1, deepest = 0;
+    test::simulate(world, pipeline, 10, [&](const World& w) {
+        if (w.time < 1) return;
+        shallowest = std::min(shallowest, static_cast<double>(overlapDepth(w, 0, ball)));
+        deepest = std::max(deepest, static_cast<double>(overlapDepth(w, 0, ball)));
+    });
+    CHECK(relativeError(shallowest, world.settings.slop) < 0.1);
+    CHECK(relativeError(deepest, world.settings.slop) < 0.1);
+
+    World stack = buildRestingScene();
+    Pipeline stackPipeline = makePipeline(stack, ContactSearch::EverySubstep);
+    const int light = stack.findBody("light"), heavy = stack.findBody("heavy");
+    double heavyIntoLight = 0;
+    test::simulate(stack, stackPipeline, 5, [&](const World& w) {
+        heavyIntoLight = std::max(heavyIntoLight, static_cast<double>(overlapDepth(w, light, heavy)));
+    });
+    CHECK(heavyIntoLight < 2 * stack.settings.slop);
+    CHECK(stack.bodies[heavy].transform.position.y() > stack.bodies[light].transform.position.y() + 0.7);
+}
+
+void chapterFourScenesStayFinite(const PipelineMaker& makePipeline) {
+    for (const SceneEntry& entry : chapterRegistry().scenes()) {
+        if (entry.chapter != 4) continue;
+        INFO(entry.name);
+        World world = entry.build();
+        Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
+        test::simulate(world, pipeline, 2);
+        for (const Motion& motion : world.motions) {
+            CHECK(motion.linearVelocity.allFinite());
+            CHECK(world.bodies[motion.bodyIndex].transform.position.y() > -0.1);
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<Promise> promisesOfChapter(int chapter) {
+    static const Promise all[] = {
+        {1, "chapter 1's scenes move exactly as in chapter 1", chapterOneScenesMoveAsInChapterOne},
+        {1, "Euler's projectile is g h t / 2 off the parabola, the others on it", projectileFollowsTheParabola},
+        {1, "the T-handle flips and keeps |L|", tHandleFlipsAndKeepsMomentum},
+        {2, "the two boxes move as in chapter 2, and the narrowphase still agrees with the oracle", twoBoxesMoveAsInChapterTwo},
+        {3, "the contact gallery's contacts are finite, the EPA stepper's match EPA", galleryContactsAreFinite},
+        {4, "balls bounce to e^2 h, and e = 1 never rises above its start", ballsBounceToRestitutionSquared},
+        {4, "head-on collisions conserve momentum and obey the restitution law", headOnCollisionsConserveMomentum},
+        {4, "a sliding ball rolls after 2v/(7 mu g) at 5/7 of its speed; ramps hold below atan(mu)", slidingBallRollsAndRampsHold},
+        {4, "a dropped ball rests at the slop; a 10 kg ball on a 1 kg ball sinks less than twice it", restingAtTheSlop},
+        {4, "every chapter 4 scene stays finite and above the ground", chapterFourScenesStayFinite},
+    };
+    std::vector<Promise> promises;
+    for (const Promise& promise : all)
+        if (promise.chapter == chapter) promises.push_back(promise);
+    return promises;
+}
+
+}  // namespace stepwise::test

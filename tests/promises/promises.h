@@ -1,0 +1,30 @@
+#pragma once
+// The scenario promises of the earlier chapters, each written once as a function of the
+// pipeline under test, so that every later chapter re-runs them through its own pipeline
+// (tests/ch05/earlier_chapters_test.cpp, and on) instead of copying them. A promise checks
+// with Catch2's macros, so it runs inside a TEST_CASE of the suite that calls it.
+//
+//   for (const test::Promise& promise : test::promisesOfChapter(4))
+//       promise.check([](World& world, ContactSearch search) { return makeChapter05Pipeline(world, chooseStepOrder(world), search); });
+
+#include "04_pgs/chapter.h"
+
+#include <functional>
+#include <vector>
+
+namespace stepwise::test {
+
+/// Makes the pipeline under test for a world built by the promise. `search` is chapter 4's
+/// contact search (every substep or once per frame); a pipeline without the choice ignores it.
+using PipelineMaker = std::function<Pipeline(World& world, ContactSearch search)>;
+
+struct Promise {
+    int chapter;          // the chapter whose suite first made it
+    const char* claim;    // what holds, in words (the test's INFO line)
+    void (*check)(const PipelineMaker& makePipeline);
+};
+
+/// The promises chapter `chapter` made about its scenes, in the order of its page.
+std::vector<Promise> promisesOfChapter(int chapter);
+
+}  // namespace stepwise::test
