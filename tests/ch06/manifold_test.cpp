@@ -380,6 +380,15 @@ TEST_CASE("round shapes: one point for spheres, two for capsules lying along eac
                                 pose(Vec3(0, Real(0.39), 0), axisAngle(Vec3::UnitX(), 90)), 0, contact));
         CHECK(contact.pointCount == 1);
     }
+    SECTION("capsule lying on a hull's face: two points, the face's normal") {
+        const Shape prism = prismHull();
+        // The prism's bottom face is y = -0.4: a capsule under it, pressing 1 cm up into it.
+        REQUIRE(collideManifold(capsule, pose(Vec3(0, Real(-0.59), 0), axisAngle(Vec3::UnitZ(), 90)), prism, pose(Vec3::Zero()), 0,
+                                contact));
+        REQUIRE(contact.pointCount == 2);
+        CHECK((contact.normal - Vec3::UnitY()).norm() < 1e-4);
+        for (int i = 0; i < 2; ++i) CHECK(contact.points[i].depth == Approx(0.01).margin(1e-4));
+    }
     SECTION("one point per pair when multiPoint is off") {
         ManifoldOptions single;
         single.multiPoint = false;
