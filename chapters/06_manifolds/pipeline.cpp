@@ -18,14 +18,12 @@ Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& option
     Pipeline pipeline = makeChapter05Pipeline(world, order, search);
     const bool split = order == StepOrder::SplitIntegration;
 
-    // The narrowphase keeps its place and frequency; it now builds and keeps manifolds. A
-    // substepped solve moves the bodies through the whole step after the search, so it looks one
-    // step further ahead for speculative points.
+    // The narrowphase keeps its place and frequency; it now builds and keeps manifolds.
     if (Stage* narrowphase = pipeline.find(stage_group::kNarrowphase)) {
         const bool planned = options.multiPoint && world.settings.manifoldContacts;
         narrowphase->name = stageName(stage_group::kNarrowphase, planned ? "manifold" : "one_point");
-        narrowphase->run = [search, options, split](World& stepWorld, Real) {
-            const int ahead = substepsAhead(stepWorld, search) + (split && isSubstepped(stepWorld.settings.stabilisation) ? 1 : 0);
+        narrowphase->run = [search, options](World& stepWorld, Real) {
+            const int ahead = substepsAhead(stepWorld, search);
             ManifoldOptions now = options;  // Settings::manifoldContacts is read every step (the demo's toggle)
             now.multiPoint = options.multiPoint && stepWorld.settings.manifoldContacts;
             updateManifolds(stepWorld, static_cast<Real>(ahead), now);

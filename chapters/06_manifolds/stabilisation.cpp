@@ -207,6 +207,14 @@ void relaxContacts(World& world, Real dt, int iterations) {
 
 // [ch06-substepped]
 void substeppedSolve(World& world, Real dt) {
+    // Nothing touches: chapter 4's split step, so that free bodies move exactly as in chapter 1.
+    if (world.contacts.empty()) {
+        applyForces(world);
+        integrateVelocities(world, dt);
+        integratePositions(world, dt);
+        world.step.velocitiesBeforeForces.clear();
+        return;
+    }
     const int substeps = std::max(1, world.settings.solverIterations);
     const Real h = dt / static_cast<Real>(substeps);
     for (int substep = 0; substep < substeps; ++substep) {

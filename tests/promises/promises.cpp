@@ -118,6 +118,8 @@ void twoBoxesMoveAsInChapterTwo(const PipelineMaker& makePipeline) {
 }
 
 // --- Chapter 3: contacts are finite and of non-negative depth, on the gallery of shape pairs.
+// From chapter 6 on a pair's record may be speculative: kept for a few searches after its pair
+// stopped touching (Contact::missedSteps), or holding points up to a slop above the face.
 
 void galleryContactsAreFinite(const PipelineMaker& makePipeline) {
     World world = buildContactGallery();
@@ -127,7 +129,7 @@ void galleryContactsAreFinite(const PipelineMaker& makePipeline) {
         most = std::max(most, w.contacts.size());
         for (const Contact& contact : w.contacts) {
             CHECK(isFinite(contact.normal));
-            CHECK(contact.points[0].depth >= 0);
+            CHECK((contact.points[0].depth >= 0 || contact.missedSteps > 0 || contact.points[0].depth >= -w.settings.slop));
         }
     });
     CHECK(most >= 5);
