@@ -196,8 +196,10 @@ void relaxContacts(World& world, Real dt, int iterations) {
     std::vector<SolverBody> bodies = gatherSolverBodies(world);
     ContactRows contactRows = buildContactRows(world, bodies, dt, 0);
     // The biased solve's impulses are already in the velocities: they are where the accumulated
-    // impulses start, not pushed again.
-    loadCarriedImpulses(world, contactRows);
+    // impulses start, not pushed again. They are loaded exactly as applied: clamped into the
+    // cone they would be smaller than what the velocities hold (the rows clamp friction per
+    // direction, a box around the cone), and the relax iteration would apply the difference twice.
+    loadCarriedImpulses(world, contactRows, /*clampToCone=*/false);
     iterate(world, contactRows, {}, bodies, iterations);
     recordResidual(world, contactRows, bodies);
     scatterSolverBodies(world, bodies);

@@ -6,7 +6,7 @@
 namespace stepwise {
 
 // [ch06-warm-start]
-void loadCarriedImpulses(const World& world, ContactRows& contactRows) {
+void loadCarriedImpulses(const World& world, ContactRows& contactRows, bool clampToCone) {
     for (const ContactRowRef& ref : contactRows.points) {
         const Contact& contact = world.contacts[ref.contactIndex];
         const ContactPoint& point = contact.points[ref.pointIndex];
@@ -20,7 +20,7 @@ void loadCarriedImpulses(const World& world, ContactRows& contactRows) {
         // Inside the cone of this step's normal impulse, as the iterations would keep it.
         const Real limit = contactRows.rows[ref.tangentRow[0]].boundScale * normalRow.impulse;
         const Real size = friction.norm();
-        if (size > limit) friction *= size > 0 ? limit / size : Real(0);
+        if (clampToCone && size > limit) friction *= size > 0 ? limit / size : Real(0);
         for (int k = 0; k < 2; ++k) contactRows.rows[ref.tangentRow[k]].impulse = friction.dot(ref.tangent[k]);
     }
 }

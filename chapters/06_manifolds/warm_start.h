@@ -15,8 +15,11 @@ namespace stepwise {
 
 /// Sets every contact row's accumulated impulse from what its point carried last step: the
 /// normal impulse as is, the friction impulse (stored as a vector in tangentBasis(normal)) projected
-/// onto this step's friction directions and kept inside the friction cone. Nothing is applied.
-void loadCarriedImpulses(const World& world, ContactRows& contactRows);
+/// onto this step's friction directions and, when `clampToCone`, kept inside the friction cone.
+/// Nothing is applied. The relax pass loads the biased solve's impulses unclamped: they are
+/// already in the velocities, and an accumulated impulse smaller than the applied one would let
+/// the relax iteration apply the difference a second time.
+void loadCarriedImpulses(const World& world, ContactRows& contactRows, bool clampToCone = true);
 
 /// loadCarriedImpulses, then pushes the bodies by those impulses: the warm start.
 void warmStart(const World& world, ContactRows& contactRows, std::vector<SolverBody>& bodies);
