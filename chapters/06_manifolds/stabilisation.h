@@ -12,7 +12,9 @@
 // - relax: the iterations become substeps (Catto, "Solver2D", 2024: many substeps of one
 //   iteration beat many iterations): each substep integrates the velocities, warm starts, runs
 //   one biased iteration, moves the positions, then one "relax" iteration without the bias,
-//   which takes the push-out speed back out of the velocities.
+//   which takes the push-out speed back out of the velocities. The push-out is capped at
+//   kMaxPushOutSpeed, as soft step's: relax gives the contact points' normal speed back, but
+//   with friction and offset points part of a large push stays behind as spin.
 // - soft_step: the same with Box2D v3's soft contacts (a spring-damper of 30 Hz, damping ratio
 //   10, push-out capped at 3 m/s) in the biased iteration (Catto, "Solver2D", 2024; Box2D v3).
 //
