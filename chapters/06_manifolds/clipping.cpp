@@ -70,6 +70,34 @@ void clipAgainstPlane(const std::vector<ClipVertex>& polygon, const ClipPlane& p
 }
 // [ch06-clip-plane]
 
+// [ch06-redundant-vertices]
+void removeRedundantVertices(std::vector<ClipVertex>& polygon, Real tolerance) {
+    const Real squaredTolerance = tolerance * tolerance;
+    bool removed = true;
+    while (removed && polygon.size() > 2) {
+        removed = false;
+        const std::size_t count = polygon.size();
+        for (std::size_t i = 0; i < count; ++i) {
+            const Vec3& before = polygon[(i + count - 1) % count].position;
+            const Vec3& vertex = polygon[i].position;
+            const Vec3& after = polygon[(i + 1) % count].position;
+            const Vec3 chord = after - before;
+            const Real chordLength2 = chord.squaredNorm();
+            const bool duplicate = (vertex - before).squaredNorm() <= squaredTolerance;
+            // Distance from the chord's line: |chord x (vertex - before)| / |chord|.
+            const bool onChord = chordLength2 > squaredTolerance &&
+                                 chord.cross(vertex - before).squaredNorm() <= squaredTolerance * chordLength2 &&
+                                 (vertex - before).dot(chord) > 0 && (vertex - after).dot(chord) < 0;
+            if (duplicate || onChord) {
+                polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(i));
+                removed = true;
+                break;
+            }
+        }
+    }
+}
+// [ch06-redundant-vertices]
+
 std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> polygon, const std::vector<ClipPlane>& planes,
                                     const CrossingFeatures& crossing) {
     std::vector<ClipVertex> clipped;

@@ -49,6 +49,13 @@ struct CrossingFeatures {
 void clipAgainstPlane(const std::vector<ClipVertex>& polygon, const ClipPlane& plane,
                       const CrossingFeatures& crossing, std::vector<ClipVertex>& clipped);
 
+/// Drops the vertices of a clipped polygon that add nothing to its shape: those within
+/// `tolerance` of the previous kept vertex, and those within `tolerance` of the line through their
+/// neighbours. Two faces that coincide to round-off clip into such vertices: an incident edge lying
+/// within 10^-9 m of a side plane crosses it anywhere along its length, and the crossing sits part
+/// way along the patch's edge, where it could be taken for a corner.
+void removeRedundantVertices(std::vector<ClipVertex>& polygon, Real tolerance);
+
 /// Clips against every plane in turn. Returns the clipped polygon (empty when nothing is left).
 std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> polygon, const std::vector<ClipPlane>& planes,
                                     const CrossingFeatures& crossing);

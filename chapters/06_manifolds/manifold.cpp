@@ -110,9 +110,12 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
     previous.swap(world.contacts);
     world.step.contactsFoundAtSubstep = world.step.substep;
     world.pairs.clear();
-    const bool speculative = lookAhead > 0;
+    // Every pair is asked for its gap, not only the moving ones: a box resting exactly on another
+    // (gap 0, no speed, so no speculative margin) is "not intersecting" to GJK, and whether it
+    // counts as touching would otherwise hang on the last bit of its height (float and double
+    // disagreed, and the stack above it with them).
     CollideOptions collide;
-    collide.separationDistance = speculative;
+    collide.separationDistance = true;
     const int bodyCount = static_cast<int>(world.bodies.size());
     int queries = 0;
     for (const BodyPair& pair : ordered) {
@@ -124,13 +127,13 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
         const ContactQuery query = collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide);
         if (query.routine == std::string("invalid")) continue;  // nothing to keep of a broken pair
         const Real margin = manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead);
-        const bool close = query.intersect || (speculative && -query.depth < margin);
+        const Real keepDistance = margin + pointSlack(world);
+        const bool close = query.intersect || -query.depth < keepDistance;
         const Contact* old = findContact(previous, pair);
 
         Contact contact;
         contact.bodyA = pair.bodyA;
         contact.bodyB = pair.bodyB;
-        const Real keepDistance = options.multiPoint ? margin + pointSlack(world) : margin;
         if (close && buildManifold(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, query, keepDistance,
                                    options, contact, old)) {
             if (query.intersect) world.pairs.push_back(pair);

@@ -27,8 +27,8 @@ struct ManifoldOptions {
 ///
 /// `lookAhead` is counted in substeps, as chapter 3's updateContacts counts it
 /// (substepsAhead(world, search)): a pair within speculativeMargin(world, a, b, lookAhead) becomes
-/// a contact with speculative points (depth < 0). 0: overlapping pairs only. Returns the number of
-/// shape queries made.
+/// a contact with speculative points (depth < 0); so does every pair within one pointSlack, moving or
+/// not. Returns the number of shape queries made.
 int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options = ManifoldOptions{});
 
 /// One pair's manifold from chapter 3's query of the same pair (no persistence): contact.normal
@@ -50,8 +50,8 @@ bool collideManifold(const Shape& a, const Transform& ta, const Shape& b, const 
 /// which is linear in the substeps, so fractions are allowed). 0 for lookAhead <= 0.
 Real manifoldMargin(const World& world, int bodyA, int bodyB, Real lookAhead);
 
-/// How far above the reference face a point of a contact is kept, beyond the pair's margin: one
-/// slop. A box rocking on one corner keeps its other corners as speculative points, whose rows
+/// How far apart a pair still makes a contact, and a point of it is kept above the reference face,
+/// beyond the pair's margin: one slop. A box rocking on one corner keeps its other corners as speculative points, whose rows
 /// only act if they close faster than the gap allows (Box2D keeps 4 slops, its "speculative
 /// distance").
 Real pointSlack(const World& world);

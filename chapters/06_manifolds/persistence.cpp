@@ -17,6 +17,23 @@ void carryPoint(ContactPoint& point, const ContactPoint& old, const Vec3 oldBasi
     point.persisted = true;
 }
 
+/// Puts matched points in the slots of the points they continue, new points after them. The
+/// solver sweeps a manifold's points in order, and Gauss-Seidel splits the load of a face resting
+/// on four corners by that order (the two corners solved first carry more): a manifold whose
+/// points came back in another order would start its solve from last step's split and drift to
+/// another, a twist on every box of a stack each step.
+void keepPreviousOrder(Contact& contact, const int matchedOld[4]) {
+    const int count = std::min(std::max(contact.pointCount, 0), 4);
+    ContactPoint ordered[4];
+    int placed = 0;
+    for (int slot = 0; slot < 4; ++slot)
+        for (int i = 0; i < count; ++i)
+            if (matchedOld[i] == slot) ordered[placed++] = contact.points[i];
+    for (int i = 0; i < count; ++i)
+        if (matchedOld[i] < 0) ordered[placed++] = contact.points[i];
+    for (int i = 0; i < count; ++i) contact.points[i] = ordered[i];
+}
+
 }  // namespace
 
 // [ch06-match-points]
@@ -28,6 +45,7 @@ int matchContactPoints(Contact& contact, const Contact& previous, Real matchDist
     const int oldCount = std::min(std::max(previous.pointCount, 0), 4);
     bool oldUsed[4] = {false, false, false, false};
     bool matched[4] = {false, false, false, false};
+    int matchedOld[4] = {-1, -1, -1, -1};
     int matches = 0;
     // 1. The same features: the same corner on the same face, wherever exactly it is now.
     for (int i = 0; i < newCount; ++i) {
@@ -37,6 +55,7 @@ int matchContactPoints(Contact& contact, const Contact& previous, Real matchDist
             if (oldUsed[k] || previous.points[k].featureId != point.featureId) continue;
             carryPoint(point, previous.points[k], oldBasis, newBasis);
             oldUsed[k] = matched[i] = true;
+            matchedOld[i] = k;
             ++matches;
             break;
         }
@@ -64,8 +83,10 @@ int matchContactPoints(Contact& contact, const Contact& previous, Real matchDist
         if (bestNew < 0) break;
         carryPoint(contact.points[bestNew], previous.points[bestOld], oldBasis, newBasis);
         matched[bestNew] = oldUsed[bestOld] = true;
+        matchedOld[bestNew] = bestOld;
         ++matches;
     }
+    keepPreviousOrder(contact, matchedOld);
     return matches;
 }
 // [ch06-match-points]

@@ -21,6 +21,18 @@ struct WorldFace {
     std::vector<Vec3> corners;
 };
 
+/// Vertices of a clipped patch closer than this fraction of its size to a neighbour or to the
+/// line through their neighbours are dropped (removeRedundantVertices): far above the round-off of
+/// the clip (10^-7 of the size in float), far below anything the solver would notice.
+constexpr Real kPatchTolerance = Real(1e-5);
+
+/// The patch's size: its largest distance from its first vertex.
+Real patchSize(const std::vector<ClipVertex>& polygon) {
+    Real size = 0;
+    for (const ClipVertex& vertex : polygon) size = std::max(size, (vertex.position - polygon.front().position).norm());
+    return size;
+}
+
 WorldFace placeFace(const Shape& shape, const Transform& transform, int face) {
     WorldFace placed;
     placed.local = polytopeFace(shape, face);
@@ -75,7 +87,8 @@ bool faceContact(const Shape& reference, const Transform& referenceTransform, in
     }
     CrossingFeatures crossing;
     crossing.incidentFaceFeature = makeFeature(FeatureKind::Face, static_cast<std::uint32_t>(incidentFace));
-    const std::vector<ClipVertex> clipped = clipPolygon(std::move(polygon), planes, crossing);
+    std::vector<ClipVertex> clipped = clipPolygon(std::move(polygon), planes, crossing);
+    removeRedundantVertices(clipped, kPatchTolerance * patchSize(clipped));
 
     out.normal = referenceIsA ? ref.normal : Vec3(-ref.normal);
     out.kind = referenceIsA ? "face_a" : "face_b";

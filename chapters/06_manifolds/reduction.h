@@ -9,7 +9,8 @@ namespace stepwise {
 
 constexpr int kMaxManifoldPoints = 4;
 
-/// Indices of at most four of `points` (candidates in the plane of `normal`): the deepest, the one
+/// Indices of at most four of `points` (candidates in the plane of `normal`): the deepest (of those
+/// equally deep, the farthest from the patch's centre), the one
 /// farthest from it, the one making the largest triangle with those two, and the one adding the
 /// most area on the other side (Gregorius, "Robust Contact Creation for Physics Simulations",
 /// GDC 2015; Box3D's convex manifold reduction). Returns how many were chosen, in that order.

@@ -1,6 +1,9 @@
 // The promises of chapters 1 to 4 (tests/promises), kept through chapter 6's pipeline: each
-// scenario claim of the earlier suites, run with manifolds, warm starting and the default
-// stabilisation, once with up to four points per pair and once with chapter 3's one.
+// scenario claim of the earlier suites, run twice: with chapter 6's defaults (manifolds, warm
+// starting, relax), and with chapter 6's additions turned back (chapter 3's one point per pair,
+// chapter 4's Baumgarte solve; warm starting stays on). One point under relax's many small
+// substeps rocks a box down a gentle ramp faster than chapter 4 does (1.06 cm against 0.63 cm in
+// 2 s, the page's table), which is why chapter 6 does not offer that combination as a default.
 #include "06_manifolds/chapter.h"
 #include "promises/promises.h"
 
@@ -17,6 +20,7 @@ void checkThroughChapter6(int chapter) {
         for (bool multiPoint : {true, false}) {
             INFO("chapter " << chapter << ": " << promise.claim << " (" << (multiPoint ? "manifold" : "one point") << ")");
             promise.check([multiPoint](World& world, ContactSearch search) {
+                if (!multiPoint) world.settings.stabilisation = Stabilisation::Baumgarte;
                 ManifoldOptions options;
                 options.multiPoint = multiPoint;
                 return makeChapter06Pipeline(world, options, chooseStepOrder(world), search);

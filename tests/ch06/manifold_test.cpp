@@ -1,6 +1,7 @@
 // Chapter 6's manifolds against an independent reference (tests/ch06/sat_reference.h: SAT over
 // faces and edge pairs, then clipping, in double): box-box in face-face, edge-face and edge-edge
 // contact, box-hull and hull-hull; the reduction to four; round shapes; degenerate input.
+#include "06_manifolds/clipping.h"
 #include "06_manifolds/manifold.h"
 #include "06_manifolds/polytope_faces.h"
 #include "06_manifolds/reduction.h"
@@ -338,6 +339,63 @@ TEST_CASE("the reduction keeps the deepest point and at most four", "[ch06][mani
         std::vector<ManifoldPoint> line(5);
         for (int k = 0; k < 5; ++k) line[static_cast<std::size_t>(k)].pointA = Vec3(static_cast<Real>(k), 0, 0);
         CHECK(reduceManifold(line, Vec3::UnitY(), chosen) == 2);
+    }
+}
+
+TEST_CASE("equally deep points: the reduction starts from a corner of the patch, not from the first point",
+          "[ch06][manifold][reduction]") {
+    // A unit square's patch as two coincident faces clip it: a point part way along an edge comes
+    // first, the corners after it, all equally deep.
+    std::vector<ManifoldPoint> patch(5);
+    const Vec3 positions[5] = {Vec3(Real(0.5), 0, Real(0.26)), Vec3(Real(0.5), 0, Real(0.5)), Vec3(Real(-0.5), 0, Real(0.5)),
+                               Vec3(Real(-0.5), 0, Real(-0.5)), Vec3(Real(0.5), 0, Real(-0.5))};
+    for (int k = 0; k < 5; ++k) {
+        patch[static_cast<std::size_t>(k)].pointA = positions[k];
+        patch[static_cast<std::size_t>(k)].depth = Real(1e-4) + Real(1e-9) * static_cast<Real>(k % 2);
+    }
+    int chosen[kMaxManifoldPoints];
+    REQUIRE(reduceManifold(patch, Vec3::UnitY(), chosen) == 4);
+    for (int i = 0; i < 4; ++i) CHECK(chosen[i] != 0);
+}
+
+TEST_CASE("clipping drops the vertices that add nothing: repeats and points on an edge", "[ch06][manifold]") {
+    std::vector<ClipVertex> polygon;
+    for (const Vec3& position : {Vec3(0, 0, 0), Vec3(Real(0.4), 0, Real(1e-9)), Vec3(1, 0, 0), Vec3(1, 0, Real(1e-9)),
+                                 Vec3(1, 0, 1), Vec3(0, 0, 1), Vec3(Real(0.3), 0, Real(0.5))}) {
+        ClipVertex vertex;
+        vertex.position = position;
+        polygon.push_back(vertex);
+    }
+    removeRedundantVertices(polygon, Real(1e-5));
+    // The square's four corners, and the dent at (0.3, 0, 0.5) kept: it is no repeat and not on a line.
+    // Of the corner's two copies either may stay.
+    REQUIRE(polygon.size() == 5);
+    const Vec3 expected[5] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 1), Vec3(0, 0, 1), Vec3(Real(0.3), 0, Real(0.5))};
+    for (int k = 0; k < 5; ++k) CHECK((polygon[static_cast<std::size_t>(k)].position - expected[k]).norm() < 1e-8);
+}
+
+TEST_CASE("a box resting squarely on another: four corner points whatever round-off tilts them", "[ch06][manifold]") {
+    // Two unit boxes face to face, turned by angles of round-off size (a stack after a step): the
+    // manifold's points must be the four corners of the face (its edges crossing the side planes
+    // anywhere must not replace one).
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> tiny(-1e-8, 1e-8);
+    for (int trial = 0; trial < 200; ++trial) {
+        const auto wobble = [&] {
+            return Quat(1, static_cast<Real>(tiny(random)), static_cast<Real>(tiny(random)), static_cast<Real>(tiny(random))).normalized();
+        };
+        const Transform lower{Vec3(static_cast<Real>(tiny(random)), Real(0.5), 0), wobble()};
+        const Transform upper{Vec3(static_cast<Real>(tiny(random)), Real(1.5) - Real(1e-4), static_cast<Real>(tiny(random))), wobble()};
+        Contact contact;
+        REQUIRE(collideManifold(kUnitBox, lower, kUnitBox, upper, Real(0.005), contact));
+        INFO("trial " << trial << ": " << describe(contact));
+        REQUIRE(contact.pointCount == 4);
+        for (int i = 0; i < 4; ++i) {
+            const Vec3 local = contact.points[i].pointA - lower.position;
+            CHECK(std::abs(std::abs(local.x()) - Real(0.5)) < 1e-5);
+            CHECK(std::abs(std::abs(local.z()) - Real(0.5)) < 1e-5);
+            for (int k = i + 1; k < 4; ++k) CHECK((contact.points[i].pointA - contact.points[k].pointA).norm() > 0.9);
+        }
     }
 }
 

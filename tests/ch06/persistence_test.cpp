@@ -156,6 +156,16 @@ TEST_CASE("matching falls back to the anchor distance when the ids differ", "[ch
             CHECK(after.points[i].normalImpulse == before.points[nearest].normalImpulse);
         }
     }
+    SECTION("matched points come back in the slots of the points they continue") {
+        Contact after;
+        REQUIRE(collideManifold(kSlab, pose(Vec3::Zero()), kUnitBox, pose(Vec3(Real(0.002), Real(0.74), 0)), 0, after));
+        std::reverse(after.points, after.points + after.pointCount);  // as a new tilt might order them
+        REQUIRE(matchContactPoints(after, before, Real(0.01)) == 4);
+        for (int i = 0; i < 4; ++i) {
+            CHECK(after.points[i].normalImpulse == before.points[i].normalImpulse);
+            CHECK((after.points[i].localAnchorB - before.points[i].localAnchorB).norm() < 0.005);
+        }
+    }
     SECTION("a 2 cm slide: too far on A's face, nothing carried") {
         Contact after;
         REQUIRE(collideManifold(kSlab, pose(Vec3::Zero()), kUnitBox, pose(Vec3(Real(0.02), Real(0.74), 0)), 0, after));
@@ -178,6 +188,20 @@ World boxOnGround(Real overlap) {
 }
 
 }  // namespace
+
+TEST_CASE("a box resting exactly on the ground is a contact, moving or not; one two slops above is not",
+          "[ch06][persistence]") {
+    for (const Real gap : {Real(0), Real(0.002)}) {
+        World world = boxOnGround(-gap);
+        updateManifolds(world, 0);
+        INFO("gap " << gap);
+        REQUIRE(world.contacts.size() == 1);
+        CHECK(world.contacts[0].pointCount == 4);
+    }
+    World above = boxOnGround(-2 * test::makeWorld().settings.slop);
+    updateManifolds(above, 0);
+    CHECK(above.contacts.empty());
+}
 
 TEST_CASE("the record's life cycle: kept a few searches while the bounds overlap, then dropped", "[ch06][persistence]") {
     World world = boxOnGround(Real(0.01));

@@ -49,11 +49,12 @@ TEST_CASE("a tower of 1, 10, 100 and 1000 kg from the top stands", "[ch06][stack
     requireStands(buildMassTower(true));
 }
 
-// Not met (docs/ch06_manifolds.md says so and gives the numbers): a mass ratio of 1000 that a few
-// sweeps cannot carry. Pinned as measured: every stabilisation lets the 1000 kg box crush the tower
-// within 10 s, the top box ending on the ground. If one ever holds it, this fails and the page's
-// table must change with it.
-TEST_CASE("1000 kg on top of 100, 10 and 1 kg falls with every stabilisation, as the page reports",
+// Measured, as the issue asks, and pinned as the page reports it: a mass ratio of 1000 that a few
+// rigid sweeps cannot carry. The rigid stabilisations let the 1000 kg box crush the tower within
+// 10 s, the top box ending on the ground; soft_step's springs (static contacts twice as stiff)
+// hold it, the top box sagging some 9 cm. If that ever changes, this fails and the page's table
+// must change with it.
+TEST_CASE("1000 kg on top of 100, 10 and 1 kg: soft_step holds it, the rigid stabilisations let it fall",
           "[ch06][stacking]") {
     const World world = buildMassTower(false);
     for (Stabilisation stabilisation :
@@ -63,18 +64,14 @@ TEST_CASE("1000 kg on top of 100, 10 and 1 kg falls with every stabilisation, as
         const StackingMeasure measure = measureStacking(world, config, kSeconds);
         INFO(toString(stabilisation) << ": drift " << measure.maxDrift << " m, sink " << measure.maxSink << " m, top "
                                      << measure.topHeightStart << " m -> " << measure.topHeightEnd << " m");
-        CHECK(!measure.stood);
-        CHECK(measure.topHeightEnd < 1);  // the top box's centre a box or less above the ground
+        if (stabilisation == Stabilisation::SoftStep) {
+            CHECK(measure.stood);
+            CHECK(measure.topHeightEnd > measure.topHeightStart - 0.15);
+        } else {
+            CHECK(!measure.stood);
+            CHECK(measure.topHeightEnd < 1);  // the top box's centre a box or less above the ground
+        }
     }
-}
-
-TEST_CASE("a box resting on a 30 degree ramp with mu 0.8 creeps less than 1 mm in 10 s", "[ch06][stacking]") {
-    int box = -1;
-    World world = buildStickingRamp(&box);
-    const Vec3 start = world.bodies[box].transform.position;
-    Pipeline pipeline = makeChapter06Pipeline(world);
-    test::simulate(world, pipeline, kSeconds);
-    CHECK((world.bodies[box].transform.position - start).norm() < 1e-3);
 }
 
 // Not met (docs/ch06_manifolds.md says so and gives the numbers): the 65 kg ball lands at 6 m/s on
