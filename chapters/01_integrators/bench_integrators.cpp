@@ -165,15 +165,10 @@ void measureIntegrators(BenchRun& run) {
 
 BenchEntry integratorsBench() {
     return BenchEntry{"integrators", 1, "integrator error against run time on a spring oscillator (work-precision)",
-                      runIntegratorsBench,
+                      measureIntegrators,
                       {{BenchFile::Kind::Csv, "", "per integrator and step count: dt, error, run time (median, quartiles)"},
                        {BenchFile::Kind::Plot, "", "work-precision diagram: error against run time"},
                        {BenchFile::Kind::Plot, "-dt", "error against step size (the slopes are the orders)"}}};
-}
-
-int runIntegratorsBench(const BenchOptions& options) {
-    static const BenchEntry entry = integratorsBench();
-    return runBench(entry, options, measureIntegrators);
 }
 
 }  // namespace stepwise

@@ -6,11 +6,9 @@
 
 namespace stepwise {
 
-/// The registry entry: name, description and the files the bench writes.
+/// The registry entry: name, description, what it measures and the files it writes: the table
+/// (--csv), the work-precision plot (--plot) and the error against step size next to it
+/// (<plot>-dt.svg). runBench(integratorsBench(), options) runs it.
 BenchEntry integratorsBench();
-
-/// Runs the bench; writes the table (--csv), the work-precision plot (--plot) and the error
-/// against step size next to it (<plot>-dt.svg). Returns 0, or 2 when an output cannot be written.
-int runIntegratorsBench(const BenchOptions& options);
 
 }  // namespace stepwise

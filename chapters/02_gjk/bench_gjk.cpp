@@ -242,17 +242,12 @@ BenchEntry gjkBench() {
     return BenchEntry{"gjk", 2,
                       "GJK: ns per query (box support by extents vs vertices, hulls), iterations, near-contact "
                       "misjudgements",
-                      runGjkBench,
+                      measureGjk,
                       {{BenchFile::Kind::Csv, "", "per query kind: ns per query (median, quartiles), iterations"},
                        {BenchFile::Kind::Csv, "-iterations", "histogram: how many queries needed each iteration count"},
                        {BenchFile::Kind::Csv, "-classification", "near-contact pairs: wrong answers per gap and variant"},
                        {BenchFile::Kind::Plot, "", "plot of the iteration histogram"},
                        {BenchFile::Kind::Plot, "-table", "both tables as a figure for the chapter page"}}};
-}
-
-int runGjkBench(const BenchOptions& options) {
-    static const BenchEntry entry = gjkBench();
-    return runBench(entry, options, measureGjk);
 }
 
 }  // namespace stepwise

@@ -5,10 +5,7 @@
 
 namespace stepwise {
 
-/// The registry entry: name, description and the files the bench writes.
+/// The registry entry: name, description, what it measures and the files it writes.
 BenchEntry gjkBench();
-
-/// Runs the GJK bench; returns the process exit code.
-int runGjkBench(const BenchOptions& options);
 
 }  // namespace stepwise

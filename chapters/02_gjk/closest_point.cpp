@@ -111,7 +111,7 @@ SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Rea
     // its direction by up to eps |a| / |point|. The normal comes from the edges alone, so this
     // form keeps the direction exact to rounding; the search direction GJK takes from it then
     // still finds the separating plane at distances of 1e-4 of the shapes' size in float.
-    result.point = facePoint == FacePoint::Projection ? Vec3(normal * (normal.dot(a) / normal.squaredNorm()))
+    result.point = facePoint == FacePoint::Projection ? Vec3(normal * (normal.dot(a) / normalSquared))
                                                       : Vec3(a + v * ab + w * ac);
     result.weights[ia] = 1 - v - w;
     result.weights[ib] = v;

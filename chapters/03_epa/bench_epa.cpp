@@ -271,14 +271,9 @@ BenchEntry epaBench() {
     return BenchEntry{"epa", 3,
                       "EPA depth error against run time as tolerance and iteration cap vary; extents against "
                       "vertex support (work-precision)",
-                      runEpaBench,
+                      measureEpa,
                       {{BenchFile::Kind::Csv, "", "per setting: ns per query (median, quartiles), depth errors, iterations"},
                        {BenchFile::Kind::Plot, "", "work-precision plot: depth error against ns per query"}}};
-}
-
-int runEpaBench(const BenchOptions& options) {
-    static const BenchEntry entry = epaBench();
-    return runBench(entry, options, measureEpa);
 }
 
 }  // namespace stepwise

@@ -6,11 +6,8 @@
 
 namespace stepwise {
 
-/// The registry entry: name, description and the files the bench writes.
+/// The registry entry: name, description, what it measures and the files it writes
+/// (options.csvPath and options.plotPath, when given).
 BenchEntry epaBench();
-
-/// Runs the bench; writes options.csvPath and options.plotPath when given. Returns 0, or 2 when
-/// an output file cannot be written.
-int runEpaBench(const BenchOptions& options);
 
 }  // namespace stepwise

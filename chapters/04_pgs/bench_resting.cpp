@@ -81,14 +81,9 @@ BenchEntry restingBench() {
     return BenchEntry{"resting", 4,
                       "chapter 4: penetration of a resting ball and box over time, split vs integrate-first step "
                       "order (one-point box jitter)",
-                      runRestingBench,
+                      measureResting,
                       {{BenchFile::Kind::Csv, "", "per frame: penetration of each run and the box's tilt"},
                        {BenchFile::Kind::Plot, "", "plot: penetration over time, with the slop"}}};
-}
-
-int runRestingBench(const BenchOptions& options) {
-    static const BenchEntry entry = restingBench();
-    return runBench(entry, options, measureResting);
 }
 
 }  // namespace stepwise

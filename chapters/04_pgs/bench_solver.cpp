@@ -143,15 +143,10 @@ BenchEntry solverBench() {
     return BenchEntry{"solver", 4,
                       "chapter 4: velocity residual and penetration against solve time, iterations 1-50, "
                       "Gauss-Seidel vs Jacobi",
-                      runSolverBench,
+                      measureSolver,
                       {{BenchFile::Kind::Csv, "", "per solver and iteration count: solve time (median, quartiles), "
                                                   "residual, penetration"},
                        {BenchFile::Kind::Plot, "", "plot: residual and penetration against solve time"}}};
-}
-
-int runSolverBench(const BenchOptions& options) {
-    static const BenchEntry entry = solverBench();
-    return runBench(entry, options, measureSolver);
 }
 
 }  // namespace stepwise

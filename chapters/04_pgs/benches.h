@@ -7,12 +7,10 @@ namespace stepwise {
 
 /// `stepwise bench solver`: error against solve time, iterations 1..50, Gauss-Seidel and Jacobi.
 BenchEntry solverBench();
-int runSolverBench(const BenchOptions& options);
 
 /// `stepwise bench resting`: penetration of a resting ball and box over time, for both step
 /// orders (integrate first, and integration split around the solve), and the box's one-point
 /// jitter.
 BenchEntry restingBench();
-int runRestingBench(const BenchOptions& options);
 
 }  // namespace stepwise

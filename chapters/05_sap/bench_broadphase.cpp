@@ -476,18 +476,13 @@ BenchEntry broadphaseBench() {
     return BenchEntry{"broadphase", 5,
                       "chapter 5: broadphase and step time against body count (100 to 100,000), sparse and dense, "
                       "brute force vs sweep and prune (full sort, incremental); the crossover auto uses",
-                      runBroadphaseBench,
+                      measureBroadphase,
                       {{BenchFile::Kind::Csv, "", "per part, density, body count and method: broadphase, step, sort, "
                                                   "narrowphase and solve ms, candidate pairs, pairs looked at"},
                        {BenchFile::Kind::Plot, "", "plot: broadphase time against body count"},
                        {BenchFile::Kind::Plot, "-step", "plot: whole step, and narrowphase + solve, against body count"},
                        {BenchFile::Kind::Plot, "-summary", "table: the targets, the crossover, the axis choice, dense "
                                                            "against sparse"}}};
-}
-
-int runBroadphaseBench(const BenchOptions& options) {
-    static const BenchEntry entry = broadphaseBench();
-    return runBench(entry, options, measureBroadphase);
 }
 
 }  // namespace stepwise

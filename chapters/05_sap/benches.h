@@ -9,6 +9,5 @@ namespace stepwise {
 /// dense, brute force against sweep and prune (full sort and incremental); the crossover count
 /// `auto` uses; incremental against full sort on a settled scene; the chapter's targets.
 BenchEntry broadphaseBench();
-int runBroadphaseBench(const BenchOptions& options);
 
 }  // namespace stepwise

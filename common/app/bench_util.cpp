@@ -156,7 +156,7 @@ void BenchRun::writeTables(const std::vector<FigureTable>& figures, const std::s
     record(file, path);
 }
 
-int runBench(const BenchEntry& entry, const BenchOptions& options, const std::function<void(BenchRun&)>& body) {
+int runBench(const BenchEntry& entry, const BenchOptions& options) {
     BenchRun run(entry, options);
     // Before minutes of measuring: every output can be written. Opening for appending creates
     // a missing file and leaves an existing one as it is until the suite overwrites it.
@@ -168,7 +168,7 @@ int runBench(const BenchEntry& entry, const BenchOptions& options, const std::fu
         }
     }
     try {
-        body(run);
+        entry.measure(run);
     } catch (const std::runtime_error& error) {
         run.progress().endStage();
         std::cerr << "error: bench " << entry.name << ": " << error.what() << "\n";

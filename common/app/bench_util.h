@@ -131,11 +131,11 @@ private:
     std::vector<std::pair<std::string, const BenchFile*>> written_;
 };
 
-/// Runs a suite's body in the shared frame: checks every output path can be written before
-/// measuring (else "error: bench NAME: cannot write 'PATH'", exit 2), runs the body, checks it
+/// Runs a suite (entry.measure) in the shared frame: checks every output path can be written
+/// before measuring (else "error: bench NAME: cannot write 'PATH'", exit 2), measures, checks it
 /// wrote every file it declares, and lists the files written (unless --quiet). Returns the
 /// exit code: 0, 2 for an output that cannot be written.
-int runBench(const BenchEntry& entry, const BenchOptions& options, const std::function<void(BenchRun&)>& body);
+int runBench(const BenchEntry& entry, const BenchOptions& options);
 
 /// The `--help` text naming the files each suite writes, e.g. for `--csv out/x.csv`.
 std::string benchFilesHelp(const std::vector<BenchEntry>& benches);

@@ -72,7 +72,7 @@ int commandBench(const Registry& registry, const std::string& suite, BenchOption
         return kExitBadInput;
     }
     options.out = &std::cout;
-    return entry->run(options);
+    return runBench(*entry, options);
 }
 
 }  // namespace

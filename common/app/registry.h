@@ -20,6 +20,7 @@ class App;
 namespace stepwise {
 
 class DebugDraw;
+class BenchRun;
 class Panel;
 
 /// A scene's demo-side companion (Jolt's Samples keep one test class per scene): extra
@@ -89,7 +90,7 @@ struct BenchEntry {
     std::string name;          // `stepwise bench <name>`
     int chapter = 0;
     std::string description;
-    std::function<int(const BenchOptions&)> run;  // exit code
+    std::function<void(BenchRun&)> measure;     // what it measures and writes; runBench() runs it
     std::vector<BenchFile> files;                 // every file it can write, named in --help
 };
 

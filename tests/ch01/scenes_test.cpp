@@ -8,6 +8,8 @@
 #include "support/fixture.h"
 #include "world/debug_draw.h"
 
+#include "app/bench_util.h"
+
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -111,7 +113,7 @@ TEST_CASE("the integrators bench runs in quick mode and writes its table and plo
     options.plotPath = plot;
     options.quick = true;
     options.out = &out;
-    REQUIRE(runIntegratorsBench(options) == 0);
+    REQUIRE(runBench(integratorsBench(), options) == 0);
     std::ifstream table(csv);
     std::string header;
     std::getline(table, header);
@@ -128,5 +130,5 @@ TEST_CASE("the integrators bench runs in quick mode and writes its table and plo
 
     options.csvPath = "/nonexistent-dir/x.csv";
     options.plotPath.clear();
-    CHECK(runIntegratorsBench(options) == 2);
+    CHECK(runBench(integratorsBench(), options) == 2);
 }

@@ -9,6 +9,8 @@
 #include "support/fixture.h"
 #include "world/debug_draw.h"
 
+#include "app/bench_util.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -186,7 +188,7 @@ TEST_CASE("The EPA bench runs in quick mode and writes its table", "[ch03][bench
     options.quick = true;
     options.csvPath = csv;
     options.out = &out;
-    REQUIRE(runEpaBench(options) == 0);
+    REQUIRE(runBench(epaBench(), options) == 0);
     CHECK(out.str().find("peers:") != std::string::npos);
     std::ifstream file(csv);
     std::string line;

@@ -11,6 +11,8 @@
 #include "support/fixture.h"
 #include "world/debug_draw.h"
 
+#include "app/bench_util.h"
+
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -95,7 +97,7 @@ TEST_CASE("bench solver measures: more iterations give less residual and Gauss-S
     options.quick = true;
     options.csvPath = csv;
     options.out = &out;
-    REQUIRE(runSolverBench(options) == 0);
+    REQUIRE(runBench(solverBench(), options) == 0);
     std::ifstream file(csv);
     REQUIRE(file.good());
     std::string line;
@@ -117,7 +119,7 @@ TEST_CASE("bench solver measures: more iterations give less residual and Gauss-S
     CHECK(residual["gauss_seidel"][8] < residual["jacobi"][8]);
     BenchOptions bad = options;
     bad.csvPath = "/nonexistent-dir/x.csv";
-    CHECK(runSolverBench(bad) == 2);
+    CHECK(runBench(solverBench(), bad) == 2);
 }
 
 TEST_CASE("the solver panel sets iterations, beta, slop, restitution, friction and the solver", "[ch04][pipeline]") {

@@ -1,6 +1,8 @@
 // `stepwise bench broadphase` in quick mode: its table, its plots and its summary lines.
 #include "05_sap/benches.h"
 
+#include "app/bench_util.h"
+
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -24,7 +26,7 @@ TEST_CASE("bench broadphase writes its table, both plots and the targets, and re
     options.plotPath = plot;
     options.out = &out;
     options.quiet = true;
-    REQUIRE(runBroadphaseBench(options) == 0);
+    REQUIRE(runBench(broadphaseBench(), options) == 0);
     std::ifstream table(csv);
     std::string line;
     std::getline(table, line);
@@ -58,5 +60,5 @@ TEST_CASE("bench broadphase writes its table, both plots and the targets, and re
     for (const std::string& path : {csv, plot, stepPlot, summary}) std::remove(path.c_str());
 
     options.csvPath = "/nonexistent-dir/x.csv";
-    CHECK(runBroadphaseBench(options) == 2);
+    CHECK(runBench(broadphaseBench(), options) == 2);
 }
