@@ -68,7 +68,7 @@ void addPoint(PlotSeries& series, double ms, double value) {
     series.y.push_back(std::max(value, kFloor));
 }
 
-void runStackingSuite(BenchRun& bench) {
+void measureStackingBench(BenchRun& bench) {
     const bool quick = bench.quick();
     const int pyramidRows = quick ? 5 : 10;
     const double sweepSeconds = quick ? 2 : 5;
@@ -207,7 +207,7 @@ BenchEntry stackingBench() {
                       "chapter 6: drift, sag and deepest overlap of pyramids against step time, iterations 1 to 50 and "
                       "substeps 1 to 8, each stabilisation, warm starting on and off, manifolds and one point; "
                       "pyramids of 10, 20, 40 rows; the chapter's targets",
-                      runStackingBench,
+                      measureStackingBench,
                       {{BenchFile::Kind::Csv, "", "per part, scene, stabilisation, warm starting, contacts, iterations "
                                                   "and substeps: drift, sag, sink per contact, deepest overlap, step ms"},
                        {BenchFile::Kind::Plot, "", "plot: drift against step time as the iterations grow"},
@@ -215,11 +215,6 @@ BenchEntry stackingBench() {
                        {BenchFile::Kind::Plot, "-penetration", "plot: deepest overlap against step time"},
                        {BenchFile::Kind::Plot, "-substeps", "plot: drift against step time as the substeps grow"},
                        {BenchFile::Kind::Plot, "-summary", "table: pyramids of each size, and the targets"}}};
-}
-
-int runStackingBench(const BenchOptions& options) {
-    static const BenchEntry entry = stackingBench();
-    return runBench(entry, options, runStackingSuite);
 }
 
 }  // namespace stepwise

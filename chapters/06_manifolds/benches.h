@@ -10,6 +10,5 @@ namespace stepwise {
 /// stabilisation, warm starting on and off, manifolds against one point per pair; pyramids of
 /// 10, 20 and 40 rows; and the chapter's targets measured on their scenes.
 BenchEntry stackingBench();
-int runStackingBench(const BenchOptions& options);
 
 }  // namespace stepwise

@@ -1,6 +1,8 @@
 // `stepwise bench stacking` in quick mode: its table, its plots and its summary.
 #include "06_manifolds/benches.h"
 
+#include "app/bench_util.h"
+
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -22,7 +24,7 @@ TEST_CASE("bench stacking writes its table, its plots and the targets, and rejec
     options.plotPath = plot;
     options.out = &out;
     options.quiet = true;
-    REQUIRE(runStackingBench(options) == 0);
+    REQUIRE(runBench(stackingBench(), options) == 0);
     std::ifstream table(csv);
     std::string line;
     std::getline(table, line);
@@ -55,5 +57,5 @@ TEST_CASE("bench stacking writes its table, its plots and the targets, and rejec
     }
 
     options.csvPath = "/nonexistent-dir/x.csv";
-    CHECK(runStackingBench(options) == 2);
+    CHECK(runBench(stackingBench(), options) == 2);
 }
