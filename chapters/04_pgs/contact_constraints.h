@@ -1,7 +1,7 @@
 #pragma once
 // Contacts become constraint rows: for each contact point one normal row (push only) and two
 // friction rows (bounded by mu times the normal impulse), then the solved impulses are stored in
-// World::contacts, the contact cache, where the demo draws them and chapter 6 (to come) will
+// World::contacts, the contact cache, where the demo draws them and chapter 6 will
 // start the next step from them. What the cache keeps is decided apart, after the frame's solves.
 
 #include "04_pgs/constraint_row.h"
