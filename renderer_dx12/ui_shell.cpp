@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 // Dear ImGui 1.86 (Debian, the mingw build) names keys by their native (VK_) codes; 1.87+
@@ -314,6 +315,22 @@ bool shellRect(float rect[4]) {
     return true;
 }
 
+namespace {
+
+/// A label's width in pixels. The window path frames the scene once before its first ImGui frame,
+/// when ImGui has no current font yet (CalcTextSize would read through a null font): then the
+/// atlas's first font measures it, or, before the atlas has one, 7 px a character.
+float labelWidth(const char* text) {
+    if (ImGui::GetCurrentContext() && ImGui::GetFont()) return ImGui::CalcTextSize(text).x;
+    if (ImGui::GetCurrentContext() && !ImGui::GetIO().Fonts->Fonts.empty()) {
+        ImFont* font = ImGui::GetIO().Fonts->Fonts[0];
+        return font->CalcTextSizeA(font->FontSize, 1e30f, 0.0f, text).x;
+    }
+    return 7.0f * static_cast<float>(std::strlen(text));
+}
+
+}  // namespace
+
 void frameScene(Camera& camera, const Framing& framing, const ViewOptions& view, float width, float height) {
     // The panel's right edge (it sits at the left); 8 px of air between it and the scene.
     constexpr float kUsualPanelRight = 405;
@@ -334,7 +351,7 @@ void frameScene(Camera& camera, const Framing& framing, const ViewOptions& view,
         for (const TextLabel& label : framing.labels) {
             float x = 0, y = 0;
             if (!camera.project(label.at.cast<float>(), viewWidth, height, x, y)) continue;
-            overflow = std::max(overflow, x + ImGui::CalcTextSize(label.message.c_str()).x + 8 - viewWidth);
+            overflow = std::max(overflow, x + labelWidth(label.message.c_str()) + 8 - viewWidth);
         }
         const float narrower = std::max(rightFraction - 1.1f * overflow / viewWidth, leftFraction + 0.35f);
         if (overflow <= 0 || narrower >= rightFraction) break;

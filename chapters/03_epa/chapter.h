@@ -18,7 +18,7 @@ bool canCollide(const Body& a, const Body& b);
 /// When the narrowphase looks for contacts. A single point per pair cannot follow a body that
 /// rocks within a frame (the deepest corner changes from substep to substep), so chapter 3's
 /// one-point contacts are searched every substep. Contacts that hold every touching corner
-/// (chapter 6, to come) can be searched once per frame: their points ride on their bodies
+/// (chapter 6) can be searched once per frame: their points ride on their bodies
 /// (anchors) through the substeps, and pairs that could close during the frame are taken in
 /// early as speculative points.
 enum class ContactSearch { EverySubstep, OncePerFrame };

@@ -3,7 +3,7 @@
 // difference whose three vertices are differences of support points, a_i - b_i. The distinct
 // a_i name a feature of A (one corner, an edge between two, a face through three), the
 // distinct b_i one of B; together they name the contact, the same way from step to step while
-// the same corner touches the same face. Chapter 6 (to come) names its clipped points by the
+// the same corner touches the same face. Chapter 6 names its clipped points by the
 // faces and edges that made them.
 
 #include "02_gjk/support.h"

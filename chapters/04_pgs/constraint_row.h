@@ -9,7 +9,7 @@
 // where v = (vA, wA, vB, wB) stacks both bodies' velocities, J is the row's Jacobian, bias is the
 // velocity the row asks for (0 for a resting contact, more to push out penetration or to bounce)
 // and lambda is the impulse the row applies along J^T. The solver knows nothing else about where
-// a row came from, so chapter 6 (warm starting, to come) only sets `impulse` before solving and chapter 8
+// a row came from, so chapter 6 (warm starting) only sets `impulse` before solving and chapter 8
 // (joints) only appends rows. The formulation is Erin Catto's, "Iterative Dynamics with Temporal
 // Coherence" (GDC 2005) and "Fast and Simple Physics using Sequential Impulses" (GDC 2006).
 

@@ -65,6 +65,10 @@ static std::vector<SolverBody> approachBodiesOf(const World& world, const std::v
 }
 
 ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt) {
+    return buildContactRows(world, bodies, dt, world.settings.baumgarte);
+}
+
+ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt, Real baumgarte) {
     const std::vector<SolverBody> approachVelocities = approachBodiesOf(world, bodies);
     const std::vector<SolverBody>* approachBodies = approachVelocities.empty() ? nullptr : &approachVelocities;
     const Settings& settings = world.settings;
@@ -110,7 +114,7 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
             // narrowphase reports one) may approach by the gap and no faster.
             Real target = 0;
             if (point.depth > settings.slop)
-                target = settings.baumgarte * inverseDt * (point.depth - settings.slop);
+                target = baumgarte * inverseDt * (point.depth - settings.slop);
             else if (point.depth < 0)
                 target = point.depth * inverseDt;
             // Restitution reverses the approach speed from before this step's forces (Box2D's

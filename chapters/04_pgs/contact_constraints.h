@@ -1,7 +1,7 @@
 #pragma once
 // Contacts become constraint rows: for each contact point one normal row (push only) and two
 // friction rows (bounded by mu times the normal impulse), then the solved impulses are stored in
-// World::contacts, the contact cache, where the demo draws them and chapter 6 (to come) will
+// World::contacts, the contact cache, where the demo draws them and chapter 6 will
 // start the next step from them. What the cache keeps is decided apart, after the frame's solves.
 
 #include "04_pgs/constraint_row.h"
@@ -49,6 +49,10 @@ void frictionDirections(const Vec3& normal, const Vec3& relativeVelocity, Vec3& 
 /// before the velocity integration). Without it the approach speed includes this step's
 /// gravity, and a ball with e = 1 gains about v dt of height per bounce (tests/ch04/bounce_test.cpp).
 ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt);
+/// The same with the fraction of penetration fed back per step given rather than read from
+/// Settings::baumgarte: chapter 6's split impulses and soft step build their velocity rows with
+/// 0 here and correct positions their own way.
+ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt, Real baumgarte);
 
 /// Copies the solved impulses into World::contacts: normalImpulse, tangentImpulse (in
 /// tangentBasis(normal)) and the normal row's effective mass. Points without rows get zeros. It

@@ -60,7 +60,7 @@ void registerChapter04(Registry& registry) {
                        [] { return buildBounceScene(); }, solverControls});
     registry.addScene({"pgs-resting", 4, category,
                        "The ball rests still at the slop depth; the box, held by one contact point, rocks and "
-                       "wanders (chapter 6, to come, fixes it); the 1 kg ball under the 10 kg one is pressed deeper than the "
+                       "wanders (chapter 6 fixes it); the 1 kg ball under the 10 kg one is pressed deeper than the "
                        "slop (no warm starting yet: try 20 iterations)",
                        buildRestingScene, solverControls});
     registry.addScene({"pgs-friction", 4, category,

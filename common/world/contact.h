@@ -1,6 +1,6 @@
 #pragma once
 // What the narrowphase remembers about touching pairs. A Contact joins two bodies along one
-// normal and holds up to four points (chapter 6, to come, fills more than one). The contacts live in
+// normal and holds up to four points (chapter 6 fills more than one). The contacts live in
 // World::contacts from step to step, one per touching pair, sorted by pair: a cache keyed by the
 // body pair, apart from the solver's rows (Jolt keeps its manifold cache apart from its contact
 // constraints; Box3D keeps anchors, a feature id and a "persisted" flag per manifold point).
@@ -68,6 +68,10 @@ struct Contact {
     Vec3 normal = Vec3::UnitY();       // unit, from A towards B
     ContactPoint points[4];
     int pointCount = 0;
+    int missedSteps = 0;               // searches since the narrowphase last found the pair close
+                                       // enough; chapter 6 keeps a record a few searches more
+    int referenceSide = 0;             // chapter 6: whose face the points were clipped against,
+                                       // 1 A's, 2 B's, 0 neither (kept next step while nearly as good)
 
     BodyPair pair() const { return BodyPair{bodyA, bodyB}; }
 };

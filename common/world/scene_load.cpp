@@ -21,6 +21,11 @@ const Names<BroadphaseMode> kBroadphase = {
     {"auto", BroadphaseMode::Auto}, {"sap", BroadphaseMode::Sap}, {"brute", BroadphaseMode::Brute}};
 const Names<CcdMode> kCcd = {{"auto", CcdMode::Auto}, {"on", CcdMode::On}, {"off", CcdMode::Off}};
 const Names<SolverKind> kSolvers = {{"gauss_seidel", SolverKind::GaussSeidel}, {"jacobi", SolverKind::Jacobi}};
+const Names<Stabilisation> kStabilisations = {{"baumgarte", Stabilisation::Baumgarte},
+                                              {"relax", Stabilisation::Relax},
+                                              {"split_impulse", Stabilisation::SplitImpulse},
+                                              {"soft_step", Stabilisation::SoftStep}};
+const Names<bool> kContactPoints = {{"manifold", true}, {"one_point", false}};
 const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
                                       {"ball_socket", JointType::BallSocket},
                                       {"hinge", JointType::Hinge},
@@ -29,7 +34,7 @@ const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
 
 Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
-                         "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold"},
+                         "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation", "contact_points"},
                         &errors);
     Settings settings;
     // Each key on its own: one bad value does not hide the next.
@@ -49,6 +54,8 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     read("integrator", [&](const JsonCursor& v) { settings.integrator = v.choice(integratorNames()); });
     read("gyroscopic", [&](const JsonCursor& v) { settings.gyroscopic = v.choice(kGyroscopic); });
     read("solver", [&](const JsonCursor& v) { settings.solver = v.choice(kSolvers); });
+    read("stabilisation", [&](const JsonCursor& v) { settings.stabilisation = v.choice(kStabilisations); });
+    read("contact_points", [&](const JsonCursor& v) { settings.manifoldContacts = v.choice(kContactPoints); });
     return settings;
 }
 

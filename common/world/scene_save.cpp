@@ -44,7 +44,9 @@ std::string saveSceneToString(const World& world) {
                          {"integrator", toString(s.integrator)},
                          {"gyroscopic", toString(s.gyroscopic)},
                          {"solver", toString(s.solver)},
-                         {"restitution_threshold", tidyNumber(s.restitutionThreshold)}};
+                         {"restitution_threshold", tidyNumber(s.restitutionThreshold)},
+                         {"stabilisation", toString(s.stabilisation)},
+                         {"contact_points", s.manifoldContacts ? "manifold" : "one_point"}};
     Json bodies = Json::array();
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const Body& body = world.bodies[i];

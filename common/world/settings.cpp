@@ -7,7 +7,7 @@ const std::vector<SettingUse>& settingUses() {
         {"gravity", 1},        {"dt", 1},         {"substeps", 1},          {"integrator", 1},
         {"gyroscopic", 1},     {"solver", 4},     {"solver_iterations", 4}, {"baumgarte", 4},
         {"slop", 4},           {"restitution_threshold", 4},                {"broadphase", 5},
-        {"warm_starting", 6},  {"ccd", 7},
+        {"warm_starting", 6},  {"stabilisation", 6},     {"contact_points", 6},  {"ccd", 7},
     };
     return uses;
 }
@@ -59,6 +59,16 @@ const char* toString(SolverKind kind) {
     switch (kind) {
         case SolverKind::GaussSeidel: return "gauss_seidel";
         case SolverKind::Jacobi: return "jacobi";
+    }
+    return "?";
+}
+
+const char* toString(Stabilisation stabilisation) {
+    switch (stabilisation) {
+        case Stabilisation::Baumgarte: return "baumgarte";
+        case Stabilisation::Relax: return "relax";
+        case Stabilisation::SplitImpulse: return "split_impulse";
+        case Stabilisation::SoftStep: return "soft_step";
     }
     return "?";
 }

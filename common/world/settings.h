@@ -14,6 +14,11 @@ enum class GyroscopicMode { Off, Explicit, Implicit };
 enum class BroadphaseMode { Auto, Sap, Brute };
 enum class CcdMode { Auto, On, Off };
 enum class SolverKind { GaussSeidel, Jacobi };
+/// How the contact solve removes penetration (chapter 6): chapter 4's Baumgarte bias in the
+/// velocities; the same followed by a relax pass without bias after the positions moved;
+/// split impulses (the correction in pseudo-velocities that never reach the real ones); or
+/// Box2D v3's soft step (soft contacts, a relax pass, restitution at the end).
+enum class Stabilisation { Baumgarte, Relax, SplitImpulse, SoftStep };
 
 struct Settings {
     Vec3 gravity = Vec3(0, Real(-9.81), 0);          // m/s^2
@@ -24,6 +29,8 @@ struct Settings {
     Real slop = Real(0.005);                          // m of penetration left uncorrected
     Real restitutionThreshold = Real(1.0);            // m/s closing speed below which contacts do not bounce
     bool warmStarting = true;
+    Stabilisation stabilisation = Stabilisation::Relax;  // chapter 6 on
+    bool manifoldContacts = true;                     // chapter 6 on: up to 4 points per pair; false: one
     BroadphaseMode broadphase = BroadphaseMode::Auto;
     CcdMode ccd = CcdMode::Auto;
     IntegratorKind integrator = IntegratorKind::SemiImplicitEuler;
@@ -49,5 +56,6 @@ const char* toString(GyroscopicMode mode);
 const char* toString(BroadphaseMode mode);
 const char* toString(CcdMode mode);
 const char* toString(SolverKind kind);
+const char* toString(Stabilisation stabilisation);
 
 }  // namespace stepwise

@@ -15,5 +15,6 @@ bool drawContactArms(const std::string& path);      // chapter 4: the Jacobian's
 bool drawFrictionPyramid(const std::string& path);  // chapter 4: friction pyramid against cone
 bool drawBaumgarteEnergy(const std::string& path);  // chapter 4: Baumgarte's energy gain
 bool drawSweepIntervals(const std::string& path);   // chapter 5: boxes, intervals, pairs
+bool drawManifoldClipping(const std::string& path); // chapter 6: reference and incident face, clipping
 
 }  // namespace figures

@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
                           {"fig-contact-arms.svg", figures::drawContactArms},
                           {"fig-friction-pyramid.svg", figures::drawFrictionPyramid},
                           {"fig-baumgarte-energy.svg", figures::drawBaumgarteEnergy},
-                          {"fig-sweep-intervals.svg", figures::drawSweepIntervals}};
+                          {"fig-sweep-intervals.svg", figures::drawSweepIntervals},
+                          {"fig-manifold-clipping.svg", figures::drawManifoldClipping}};
     for (const Figure& figure : all) {
         const std::string path = dir + "/" + figure.file;
         if (!figure.draw(path)) {

@@ -8,6 +8,7 @@
 #include "02_gjk/box_oracle.h"
 #include "02_gjk/chapter.h"
 #include "02_gjk/scenes.h"
+#include "03_epa/chapter.h"
 #include "03_epa/scenes.h"
 #include "04_pgs/scenes.h"
 #include "app/registry.h"
@@ -117,18 +118,47 @@ void twoBoxesMoveAsInChapterTwo(const PipelineMaker& makePipeline) {
 }
 
 // --- Chapter 3: contacts are finite and of non-negative depth, on the gallery of shape pairs.
+// From chapter 6 on a pair's record may be speculative: kept for a few searches after its pair
+// stopped touching (Contact::missedSteps), or holding points up to a slop above the face.
 
 void galleryContactsAreFinite(const PipelineMaker& makePipeline) {
     World world = buildContactGallery();
     Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
-    std::size_t most = 0;
-    test::simulate(world, pipeline, 3.0, [&](const World& w) {
+    // Checked as the narrowphase leaves them, before any solve or integration moves a point.
+    Stage* narrowphase = pipeline.find(stage_group::kNarrowphase);
+    REQUIRE(narrowphase);
+    std::size_t most = 0, searches = 0;
+    narrowphase->run = [search = narrowphase->run, &most, &searches](World& w, Real dt) {
+        search(w, dt);
+        ++searches;
         most = std::max(most, w.contacts.size());
         for (const Contact& contact : w.contacts) {
             CHECK(isFinite(contact.normal));
-            CHECK(contact.points[0].depth >= 0);
+            // A record kept out of reach (missedSteps > 0) is speculative as a whole: its points
+            // ride on their bodies and only act if they close faster than the gap allows.
+            if (contact.missedSteps > 0) continue;
+            // A pipeline looks ahead at most a whole frame (chapter 6's substepped solves do).
+            const Real reach = speculativeMargin(w, contact.bodyA, contact.bodyB, std::max(1, w.settings.substeps));
+            Real deepest = -kRealMax;
+            for (int i = 0; i < std::clamp(contact.pointCount, 0, 4); ++i) {
+                const Real depth = contact.points[i].depth;
+                INFO("t " << w.time << " pair " << contact.bodyA << "-" << contact.bodyB << " point " << i << "/" << contact.pointCount);
+                CHECK(std::isfinite(depth));
+                deepest = std::max(deepest, depth);
+                // depth < 0 only as a speculative point, within the pipeline's reach: the
+                // look-ahead margin plus one slop, the point slack a manifold keeps its other
+                // corners within (chapter 6; chapter 3 keeps none).
+                if (depth < 0) CHECK(-depth <= reach + w.settings.slop);
+            }
+            // Chapter 3's claim, for a pair the narrowphase found overlapping: its contact
+            // touches (its deepest point has depth >= 0).
+            const bool overlapping =
+                std::find(w.pairs.begin(), w.pairs.end(), BodyPair{contact.bodyA, contact.bodyB}) != w.pairs.end();
+            if (overlapping && contact.pointCount > 0) CHECK(deepest >= 0);
         }
-    });
+    };
+    test::simulate(world, pipeline, 3.0);
+    CHECK(searches > 0);
     CHECK(most >= 5);
 
     World stepper = buildEpaStepper();
@@ -233,7 +263,7 @@ void slidingBallRollsAndRampsHold(const PipelineMaker& makePipeline) {
     }
 }
 
-void restingAtTheSlop(const PipelineMaker& makePipeline) {
+void restingWithinTheSlop(const PipelineMaker& makePipeline) {
     World world = test::makeWorld();
     test::addGround(world);
     const int ball = test::addSphere(world, Vec3(0, Real(0.51), 0), Real(0.5), BodyType::Dynamic, 1);
@@ -244,8 +274,12 @@ void restingAtTheSlop(const PipelineMaker& makePipeline) {
         shallowest = std::min(shallowest, static_cast<double>(overlapDepth(w, 0, ball)));
         deepest = std::max(deepest, static_cast<double>(overlapDepth(w, 0, ball)));
     });
-    CHECK(relativeError(shallowest, world.settings.slop) < 0.1);
-    CHECK(relativeError(deepest, world.settings.slop) < 0.1);
+    // At rest within the slop, and still: chapter 4 finds the overlap first and settles at the
+    // slop exactly (its own suite pins that); a pipeline that sees the gap coming (a speculative
+    // point, chapter 6) stops the ball at the surface. Either is at rest, neither sinks.
+    CHECK(shallowest >= -1e-4);
+    CHECK(deepest <= 1.1 * world.settings.slop);
+    CHECK(deepest - shallowest < 0.1 * world.settings.slop);
 
     World stack = buildRestingScene();
     Pipeline stackPipeline = makePipeline(stack, ContactSearch::EverySubstep);
@@ -284,7 +318,7 @@ std::vector<Promise> promisesOfChapter(int chapter) {
         {4, "balls bounce to e^2 h, and e = 1 never rises above its start", ballsBounceToRestitutionSquared},
         {4, "head-on collisions conserve momentum and obey the restitution law", headOnCollisionsConserveMomentum},
         {4, "a sliding ball rolls after 2v/(7 mu g) at 5/7 of its speed; ramps hold below atan(mu)", slidingBallRollsAndRampsHold},
-        {4, "a dropped ball rests at the slop; a 10 kg ball on a 1 kg ball sinks less than twice it", restingAtTheSlop},
+        {4, "a dropped ball comes to rest within the slop; a 10 kg ball on a 1 kg ball sinks less than twice it", restingWithinTheSlop},
         {4, "every chapter 4 scene stays finite and above the ground", chapterFourScenesStayFinite},
     };
     std::vector<Promise> promises;

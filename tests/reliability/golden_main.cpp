@@ -24,7 +24,7 @@ const char* precisionName() { return sizeof(Real) == sizeof(double) ? "double" :
 std::string goldenText(const std::vector<GoldenRun>& runs) {
     std::ostringstream text;
     text << "# Golden state hashes, " << precisionName() << " build: every built-in scene and scenes/*.json after "
-         << kGoldenFrames << " frames\n# with the latest chapter's engine (tests/reliability/state_hash.h). "
+         << kGoldenFrames << " frames\n# through their own chapter's engine, the files through the latest (tests/reliability/state_hash.h). "
          << "Regenerate with the target golden-hashes\n# (docs/reliability.md) after a change that is meant to "
          << "change results.\n";
     for (const GoldenRun& run : runs) text << run.scene << " " << hexHash(run.hash) << "\n";

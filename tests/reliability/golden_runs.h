@@ -1,6 +1,7 @@
 #pragma once
-// The runs that golden hashes pin: every built-in scene and every scene file of scenes/, each
-// through the latest chapter's pipeline for a fixed number of frames.
+// The runs that golden hashes pin: every built-in scene through the pipeline of its own chapter
+// (a later chapter's stages do not change what an earlier chapter's scenes pin), and every scene
+// file of scenes/ through the latest chapter's pipeline, for a fixed number of frames.
 
 #include "app/registry.h"
 
@@ -20,7 +21,8 @@ struct GoldenRun {
 /// The built-in scenes in registry order, then the scene files of `sceneFolder` by name.
 std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder);
 
-/// Runs one scene for `frames` frames and returns its final state hash.
-std::uint64_t finalHash(const Registry& registry, World world, long frames);
+/// Runs one scene for `frames` frames through the pipeline of the latest chapter up to
+/// `maxChapter` and returns its final state hash.
+std::uint64_t finalHash(const Registry& registry, World world, long frames, int maxChapter = 99);
 
 }  // namespace stepwise::reliability

@@ -1,0 +1,94 @@
+#pragma once
+// How the contact solve removes penetration without adding energy, and how it spends its
+// iterations. Chapter 4 asks the velocity rows for a separating speed proportional to the
+// penetration (Baumgarte), and that speed stays in the bodies after the overlap is gone: a
+// stack pushed apart keeps moving apart, falls back, and rocks. The remedies compared here
+// (Settings::stabilisation):
+//
+// - baumgarte: chapter 4's bias, now warm started: Settings::solverIterations iterations.
+// - split_impulse: the velocity rows get no bias; the correction is solved apart, on
+//   pseudo-velocities that move the positions once and are thrown away (Erleben's thesis,
+//   "Stable, Robust, and Versatile Multibody Dynamics Animation", 2004; Bullet's split impulse).
+// - relax: the iterations become substeps (Catto, "Solver2D", 2024: many substeps of one
+//   iteration beat many iterations): each substep integrates the velocities, warm starts, runs
+//   one biased iteration, moves the positions, then one "relax" iteration without the bias,
+//   which takes the push-out speed back out of the velocities. The push-out is capped at
+//   kMaxPushOutSpeed, as soft step's: relax gives the contact points' normal speed back, but
+//   with friction and offset points part of a large push stays behind as spin.
+// - soft_step: the same with Box2D v3's soft contacts (a spring-damper of 30 Hz, damping ratio
+//   10, push-out capped at 3 m/s) in the biased iteration (Catto, "Solver2D", 2024; Box2D v3).
+//
+// Every Gauss-Seidel sweep here visits the contacts one manifold at a time and sweeps a
+// manifold's rows kManifoldSweeps times before moving on: the four points of a face contact
+// share one load, and letting them agree before the next contact is what keeps a tall stack
+// from tilting (tests/ch06/stacking_test.cpp and the page measure it).
+
+#include "04_pgs/contact_constraints.h"
+#include "world/world.h"
+
+#include <string>
+#include <vector>
+
+namespace stepwise {
+
+// [ch06-softness]
+/// A soft constraint in Box2D v3's form: solving a row with it gives the impulse of a
+/// spring-damper integrated implicitly over the substep, instead of the rigid answer.
+///   increment = massScale * m (target - J v) - impulseScale * accumulated,  target = biasRate * error
+/// The rigid row is biasRate 0 (no position feedback), massScale 1, impulseScale 0.
+struct Softness {
+    Real biasRate = 0;      // 1/s: the fraction of the position error asked for per second
+    Real massScale = 1;
+    Real impulseScale = 0;
+};
+
+/// Box2D v3's b2MakeSoft: stiffness by frequency (Hz) and damping ratio, for a step of h.
+Softness makeSoftness(Real hertz, Real dampingRatio, Real h);
+
+/// Box2D v3's defaults: contact frequency (capped at a quarter of the substep rate), damping
+/// ratio, and the largest speed soft contacts push out at. Contacts with a static body are twice
+/// as stiff.
+constexpr Real kContactHertz = 30;
+constexpr Real kContactDampingRatio = 10;
+constexpr Real kMaxPushOutSpeed = 3;  // m/s
+// [ch06-softness]
+
+/// Sweeps over one manifold's rows before the solver moves to the next contact.
+constexpr int kManifoldSweeps = 8;
+
+/// The solve stage's name, "solve:<stabilisation>".
+std::string stabilisedSolveStageName(Stabilisation stabilisation);
+
+/// True for relax and soft_step, which spend the iterations as substeps of one biased and one
+/// relax iteration each; their solve stage integrates the bodies itself.
+bool isSubstepped(Stabilisation stabilisation);
+
+/// Projected Gauss-Seidel by manifold: the rows of ContactRows (grouped by contact, as
+/// buildContactRows makes them), each contact's rows swept `manifoldSweeps` times per
+/// iteration, with a Softness per row (empty: all rigid).
+void solveByManifold(ContactRows& contactRows, const std::vector<Softness>& softness, std::vector<SolverBody>& bodies,
+                     int iterations, int manifoldSweeps = kManifoldSweeps);
+
+/// Split impulses: the position error beyond the slop, solved as a separate push on
+/// pseudo-velocities (normal rows only, starting from rest), moves the bodies once. Nothing of
+/// it reaches the real velocities. Returns the largest pseudo-speed applied, m/s.
+Real splitImpulseCorrection(World& world, const ContactRows& contactRows, const std::vector<SolverBody>& bodies,
+                            Real dt, int iterations);
+
+/// One solve over World::contacts for a step of dt: rows, the warm start
+/// (Settings::warmStarting), `iterations` iterations with the bias the stabilisation asks for
+/// (Baumgarte for baumgarte and relax, none for split impulses, soft springs for soft_step), split impulses'
+/// position correction, velocities and impulses written back. Records World::step.solver.
+SolverStats solveStabilised(World& world, Real dt, int iterations);
+
+/// The relax iteration(s): the same rows with no position bias, starting from the impulses the
+/// biased solve accumulated (already in the velocities), take the push-out speed back out.
+/// Restitution and speculative gaps stay in the target.
+void relaxContacts(World& world, Real dt, int iterations);
+
+/// The substepped solve of relax and soft_step, for one (pipeline) step of dt: solverIterations
+/// substeps, each: forces and velocities, contact points moved with their bodies, warm start and one
+/// biased iteration, positions, one relax iteration.
+void substeppedSolve(World& world, Real dt);
+
+}  // namespace stepwise
