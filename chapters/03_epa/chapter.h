@@ -36,6 +36,15 @@ int substepsAhead(const World& world, ContactSearch search);
 /// speculative margin) overlap, in canonical order. Chapter 5 finds them faster (sweep and prune).
 std::vector<BodyPair> findAllPairCandidates(const World& world, int lookAhead = 0);
 
+/// How every narrowphase starts a search: the candidates in canonical order without repeats,
+/// and last search's records taken out of the world (sorted by pair, for findContact), with
+/// World::pairs cleared and the substep noted (World::step.contactsFoundAtSubstep).
+struct ContactSearchStart {
+    std::vector<BodyPair> pairs;
+    std::vector<Contact> previous;
+};
+ContactSearchStart beginContactSearch(World& world, const std::vector<BodyPair>& candidates);
+
 /// The narrowphase entry point. Tests the candidate pairs (any order; they are handled in
 /// canonical order), and rebuilds World::contacts: one record per touching pair, one point
 /// each, with anchors on both bodies and a feature id. A point whose features match a point of

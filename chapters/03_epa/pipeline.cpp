@@ -112,17 +112,21 @@ void carryImpulses(Contact& contact, const Contact& previous) {
 
 }  // namespace
 
+ContactSearchStart beginContactSearch(World& world, const std::vector<BodyPair>& candidates) {
+    ContactSearchStart start;
+    start.pairs = candidates;
+    if (!std::is_sorted(start.pairs.begin(), start.pairs.end())) std::sort(start.pairs.begin(), start.pairs.end());
+    start.pairs.erase(std::unique(start.pairs.begin(), start.pairs.end()), start.pairs.end());
+    start.previous.swap(world.contacts);
+    world.step.contactsFoundAtSubstep = world.step.substep;
+    world.pairs.clear();
+    return start;
+}
+
 // [ch03-update-contacts]
 int updateContacts(World& world, const std::vector<BodyPair>& candidates, int lookAhead,
                    const CollideOptions& options) {
-    std::vector<BodyPair> ordered = candidates;
-    if (!std::is_sorted(ordered.begin(), ordered.end())) std::sort(ordered.begin(), ordered.end());
-    ordered.erase(std::unique(ordered.begin(), ordered.end()), ordered.end());
-
-    std::vector<Contact> previous;
-    previous.swap(world.contacts);
-    world.step.contactsFoundAtSubstep = world.step.substep;
-    world.pairs.clear();
+    const auto [ordered, previous] = beginContactSearch(world, candidates);
     const bool speculative = lookAhead > 0;
     CollideOptions stageOptions = options;
     // Only speculative contacts need the distance of a pair that does not overlap.

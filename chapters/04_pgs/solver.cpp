@@ -55,7 +55,7 @@ Real rowVelocity(const ConstraintRow& row, const std::vector<SolverBody>& bodies
            row.linearB.dot(b.linearVelocity) + row.angularB.dot(b.angularVelocity);
 }
 
-static void applyImpulse(const ConstraintRow& row, Real impulse, std::vector<SolverBody>& bodies) {
+void applyRowImpulse(const ConstraintRow& row, Real impulse, std::vector<SolverBody>& bodies) {
     SolverBody& a = bodies[row.bodyA];
     SolverBody& b = bodies[row.bodyB];
     a.linearVelocity += a.inverseMass * impulse * row.linearA;
@@ -66,7 +66,7 @@ static void applyImpulse(const ConstraintRow& row, Real impulse, std::vector<Sol
 
 void applyRowImpulses(const std::vector<ConstraintRow>& rows, std::vector<SolverBody>& bodies) {
     for (const ConstraintRow& row : rows)
-        if (row.impulse != 0) applyImpulse(row, row.impulse, bodies);
+        if (row.impulse != 0) applyRowImpulse(row, row.impulse, bodies);
 }
 
 static void rowBounds(const ConstraintRow& row, const std::vector<ConstraintRow>& rows, Real& lower, Real& upper) {
@@ -94,7 +94,7 @@ void solveGaussSeidel(std::vector<ConstraintRow>& rows, std::vector<SolverBody>&
             const Real velocityError = row.bias - rowVelocity(row, bodies);
             const Real previous = row.impulse;
             row.impulse = std::clamp(previous + row.effectiveMass * velocityError, lower, upper);
-            applyImpulse(row, row.impulse - previous, bodies);
+            applyRowImpulse(row, row.impulse - previous, bodies);
         }
     }
 }
@@ -137,7 +137,7 @@ void solveJacobi(std::vector<ConstraintRow>& rows, std::vector<SolverBody>& bodi
         for (size_t i = 0; i < rows.size(); ++i) {
             const Real increment = nextImpulse[i] - rows[i].impulse;
             rows[i].impulse = nextImpulse[i];
-            if (increment != 0) applyImpulse(rows[i], increment, bodies);
+            if (increment != 0) applyRowImpulse(rows[i], increment, bodies);
         }
     }
 }

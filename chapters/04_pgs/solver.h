@@ -23,6 +23,9 @@ void computeEffectiveMasses(std::vector<ConstraintRow>& rows, const std::vector<
 /// Relative velocity along a row, J v.
 Real rowVelocity(const ConstraintRow& row, const std::vector<SolverBody>& bodies);
 
+/// Applies `impulse` along one row to its two bodies: v += M^-1 J^T impulse.
+void applyRowImpulse(const ConstraintRow& row, Real impulse, std::vector<SolverBody>& bodies);
+
 /// Applies every row's current accumulated impulse to the bodies (the warm start of chapter 6: rows
 /// that begin with last frame's impulse must first push the bodies by it).
 void applyRowImpulses(const std::vector<ConstraintRow>& rows, std::vector<SolverBody>& bodies);

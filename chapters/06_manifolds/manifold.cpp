@@ -102,14 +102,7 @@ bool collideManifold(const Shape& a, const Transform& ta, const Shape& b, const 
 
 // [ch06-update-manifolds]
 int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options) {
-    std::vector<BodyPair> ordered = world.candidatePairs;
-    if (!std::is_sorted(ordered.begin(), ordered.end())) std::sort(ordered.begin(), ordered.end());
-    ordered.erase(std::unique(ordered.begin(), ordered.end()), ordered.end());
-
-    std::vector<Contact> previous;
-    previous.swap(world.contacts);
-    world.step.contactsFoundAtSubstep = world.step.substep;
-    world.pairs.clear();
+    const auto [ordered, previous] = beginContactSearch(world, world.candidatePairs);
     // Every pair is asked for its gap, not only the moving ones: a box resting exactly on another
     // (gap 0, no speed, so no speculative margin) is "not intersecting" to GJK, and whether it
     // counts as touching would otherwise hang on the last bit of its height (float and double

@@ -31,15 +31,6 @@ bool isSubstepped(Stabilisation stabilisation) {
     return stabilisation == Stabilisation::Relax || stabilisation == Stabilisation::SoftStep;
 }
 
-static void applyImpulse(const ConstraintRow& row, Real impulse, std::vector<SolverBody>& bodies) {
-    SolverBody& a = bodies[row.bodyA];
-    SolverBody& b = bodies[row.bodyB];
-    a.linearVelocity += a.inverseMass * impulse * row.linearA;
-    a.angularVelocity += a.inverseInertia * (impulse * row.angularA);
-    b.linearVelocity += b.inverseMass * impulse * row.linearB;
-    b.angularVelocity += b.inverseInertia * (impulse * row.angularB);
-}
-
 // [ch06-manifold-pgs]
 void solveByManifold(ContactRows& contactRows, const std::vector<Softness>& softness, std::vector<SolverBody>& bodies,
                      int iterations, int manifoldSweeps) {
@@ -71,7 +62,7 @@ void solveByManifold(ContactRows& contactRows, const std::vector<Softness>& soft
                     const Real increment =
                         soft.massScale * row.effectiveMass * velocityError - soft.impulseScale * previous;
                     row.impulse = std::clamp(previous + increment, lower, upper);
-                    applyImpulse(row, row.impulse - previous, bodies);
+                    applyRowImpulse(row, row.impulse - previous, bodies);
                 }
             }
         }

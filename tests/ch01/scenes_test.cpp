@@ -6,15 +6,11 @@
 #include "app/registry.h"
 #include "support/registry_fixture.h"
 #include "support/fixture.h"
+#include "support/quick_bench.h"
 #include "world/debug_draw.h"
-
-#include "app/bench_util.h"
 
 #include <catch2/catch.hpp>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -103,32 +99,11 @@ TEST_CASE("side by side: the RK4 chain loses energy, Euler and Verlet keep their
 }
 
 TEST_CASE("the integrators bench runs in quick mode and writes its table and plots", "[ch01][bench]") {
-    const std::filesystem::path directory = std::filesystem::temp_directory_path();
-    const std::string csv = (directory / "ch01_bench_test.csv").string();
-    const std::string plot = (directory / "ch01_bench_test.svg").string();
-    const std::string dtPlot = (directory / "ch01_bench_test-dt.svg").string();
-    std::ostringstream out;
-    BenchOptions options;
-    options.csvPath = csv;
-    options.plotPath = plot;
-    options.quick = true;
-    options.out = &out;
-    REQUIRE(runBench(integratorsBench(), options) == 0);
-    std::ifstream table(csv);
-    std::string header;
-    std::getline(table, header);
-    CHECK(header == "method,steps,dt_s,h_omega,error_m,run_ms,ns_per_body_step,run_ms_q1,run_ms_q3");
-    int rows = 0;
-    for (std::string line; std::getline(table, line);) ++rows;
-    CHECK(rows == 3 * 7);
-    CHECK(std::ifstream(plot).good());
-    CHECK(std::ifstream(dtPlot).good());
-    CHECK(out.str().find("observed order") != std::string::npos);
-    std::remove(csv.c_str());
-    std::remove(plot.c_str());
-    std::remove(dtPlot.c_str());
-
-    options.csvPath = "/nonexistent-dir/x.csv";
-    options.plotPath.clear();
-    CHECK(runBench(integratorsBench(), options) == 2);
+    const test::QuickBench run = test::runQuickBench(integratorsBench(), "ch01_bench_test");
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.missingFiles.empty());
+    CHECK(run.header == "method,steps,dt_s,h_omega,error_m,run_ms,ns_per_body_step,run_ms_q1,run_ms_q3");
+    CHECK(run.rows.size() == 3 * 7);
+    CHECK(run.printed.find("observed order") != std::string::npos);
+    CHECK(test::rejectsUnwritablePath(integratorsBench()));
 }

@@ -7,17 +7,12 @@
 #include "support/scripted_panel.h"
 #include "app/registry.h"
 #include "support/fixture.h"
+#include "support/quick_bench.h"
 #include "world/debug_draw.h"
-
-#include "app/bench_util.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 using namespace stepwise;
@@ -182,29 +177,16 @@ TEST_CASE("The contact gallery runs through the chapter 3 pipeline with finite c
 }
 
 TEST_CASE("The EPA bench runs in quick mode and writes its table", "[ch03][bench]") {
-    const std::string csv = (std::filesystem::temp_directory_path() / "ch03_bench_epa_test.csv").string();
-    std::ostringstream out;
-    BenchOptions options;
-    options.quick = true;
-    options.csvPath = csv;
-    options.out = &out;
-    REQUIRE(runBench(epaBench(), options) == 0);
-    CHECK(out.str().find("peers:") != std::string::npos);
-    std::ifstream file(csv);
-    std::string line;
-    int rows = 0;
+    const test::QuickBench run = test::runQuickBench(epaBench(), "ch03_bench_epa_test");
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.missingFiles.empty());
+    CHECK(run.printed.find("peers:") != std::string::npos);
     bool defaultBoxesAccurate = false;
-    while (std::getline(file, line)) {
-        ++rows;
+    for (const std::string& line : run.lines) {
         // boxes, extents, tolerance sweep at the default tolerance: the suite's accuracy holds.
-        if (line.rfind("boxes,extents,tolerance,1e-05,", 0) == 0) {
-            std::stringstream cells(line);
-            std::string cell;
-            for (int column = 0; column < 8; ++column) std::getline(cells, cell, ',');
-            defaultBoxesAccurate = std::stod(cell) <= 1e-5;
-        }
+        if (line.rfind("boxes,extents,tolerance,1e-05,", 0) == 0)
+            defaultBoxesAccurate = std::stod(test::splitCells(line).at(7)) <= 1e-5;
     }
-    std::remove(csv.c_str());
-    CHECK(rows == 1 + 8 * 5 + 1);
+    CHECK(run.lines.size() == 8 * 5 + 1);
     CHECK(defaultBoxesAccurate);
 }

@@ -29,25 +29,16 @@ TEST_CASE("a ball dropped from h bounces to e^2 h", "[ch04][bounce]") {
     // All four balls fall together; each one's first apex is recorded.
     const char* names[] = {"ball-e0.3", "ball-e0.6", "ball-e0.9"};
     const double restitutions[] = {0.3, 0.6, 0.9};
-    std::vector<double> apex(3, 0), velocity(3, 0);
-    std::vector<bool> bounced(3, false), falling(3, false);
+    test::FirstApex first[3];
+    for (int i = 0; i < 3; ++i) first[i].body = world.findBody(names[i]);
     test::simulate(world, pipeline, 2.5, [&](const World& w) {
-        for (int i = 0; i < 3; ++i) {
-            const int ball = w.findBody(names[i]);
-            const double bottom = w.bodies[ball].transform.position.y() - w.bodies[ball].shape.radius;
-            const double vy = w.motionOf(ball)->linearVelocity.y();
-            if (!bounced[i] && vy > 0) bounced[i] = true;
-            if (bounced[i] && !falling[i]) {
-                apex[i] = std::max(apex[i], bottom);
-                if (vy < 0) falling[i] = true;
-            }
-        }
+        for (test::FirstApex& ball : first) ball.record(w);
     });
     for (int i = 0; i < 3; ++i) {
-        INFO("restitution " << restitutions[i] << ": apex " << apex[i] << " m, e^2 h = "
+        INFO("restitution " << restitutions[i] << ": apex " << first[i].apex << " m, e^2 h = "
                             << restitutions[i] * restitutions[i] * height << " m");
-        CHECK(falling[i]);
-        CHECK(test::relativeError(apex[i], restitutions[i] * restitutions[i] * height) < 0.02);
+        CHECK(first[i].falling);
+        CHECK(test::relativeError(first[i].apex, restitutions[i] * restitutions[i] * height) < 0.02);
     }
 }
 
@@ -85,15 +76,7 @@ TEST_CASE("with e = 1 a ball never rises above its start", "[ch04][bounce]") {
 
 TEST_CASE("head-on collisions conserve momentum and obey the restitution law", "[ch04][bounce]") {
     const double restitution = GENERATE(0.0, 0.5, 1.0);
-    World world = test::makeWorld(test::zeroGravitySettings());
-    // Small steps: the overlap at first detection (relative speed times dt) stays below the slop,
-    // so Baumgarte adds nothing and the outcome is the restitution law alone.
-    world.settings.substeps = 16;
-    const int light = test::addSphere(world, Vec3(-1, 0, 0), Real(0.5), BodyType::Dynamic, 1);
-    const int heavy = test::addSphere(world, Vec3(1, 0, 0), Real(0.5), BodyType::Dynamic, 3);
-    for (int body : {light, heavy}) world.bodies[body].material.restitution = static_cast<Real>(restitution);
-    test::setVelocity(world, light, Vec3(3, 0, 0));
-    test::setVelocity(world, heavy, Vec3(Real(-0.5), 0, 0));
+    auto [world, light, heavy] = test::headOnCollision(restitution);
     const double momentumBefore = 1 * 3.0 + 3 * -0.5;
     const double approach = -0.5 - 3.0;  // v_heavy - v_light
     Pipeline pipeline = makeChapter04Pipeline(world);

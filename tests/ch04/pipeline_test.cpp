@@ -9,17 +9,12 @@
 #include "world/contact_draw.h"
 #include "app/registry.h"
 #include "support/fixture.h"
+#include "support/quick_bench.h"
 #include "world/debug_draw.h"
-
-#include "app/bench_util.h"
 
 #include <catch2/catch.hpp>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 using namespace stepwise;
 
@@ -91,35 +86,18 @@ TEST_CASE("every chapter 4 scene runs finite, keeps its bodies above the ground,
 }
 
 TEST_CASE("bench solver measures: more iterations give less residual and Gauss-Seidel stays below Jacobi", "[ch04][bench]") {
-    const std::string csv = (std::filesystem::temp_directory_path() / "ch04_bench_solver_test.csv").string();
-    std::ostringstream out;
-    BenchOptions options;
-    options.quick = true;
-    options.csvPath = csv;
-    options.out = &out;
-    REQUIRE(runBench(solverBench(), options) == 0);
-    std::ifstream file(csv);
-    REQUIRE(file.good());
-    std::string line;
-    std::getline(file, line);
-    CHECK(line == "part,solver,iterations,solve_ms,velocity_residual,max_penetration,solve_ms_q1,solve_ms_q3");
+    const test::QuickBench run = test::runQuickBench(solverBench(), "ch04_bench_solver_test");
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.missingFiles.empty());
+    CHECK(run.header == "part,solver,iterations,solve_ms,velocity_residual,max_penetration,solve_ms_q1,solve_ms_q3");
     std::map<std::string, std::map<int, double>> residual;
-    while (std::getline(file, line)) {
-        std::stringstream cells(line);
-        std::string part, solver, iterations, ms, res;
-        std::getline(cells, part, ',');
-        std::getline(cells, solver, ',');
-        std::getline(cells, iterations, ',');
-        std::getline(cells, ms, ',');
-        std::getline(cells, res, ',');
-        if (part == "fixed_set") residual[solver][std::stoi(iterations)] = std::stod(res);
+    for (const std::vector<std::string>& cell : run.rows) {
+        REQUIRE(cell.size() >= 5);
+        if (cell[0] == "fixed_set") residual[cell[1]][std::stoi(cell[2])] = std::stod(cell[4]);
     }
-    std::remove(csv.c_str());
     CHECK(residual["gauss_seidel"][50] < residual["gauss_seidel"][1]);
     CHECK(residual["gauss_seidel"][8] < residual["jacobi"][8]);
-    BenchOptions bad = options;
-    bad.csvPath = "/nonexistent-dir/x.csv";
-    CHECK(runBench(solverBench(), bad) == 2);
+    CHECK(test::rejectsUnwritablePath(solverBench()));
 }
 
 TEST_CASE("the solver panel sets iterations, beta, slop, restitution, friction and the solver", "[ch04][pipeline]") {

@@ -181,28 +181,19 @@ void ballsBounceToRestitutionSquared(const PipelineMaker& makePipeline) {
         Pipeline pipeline = makePipeline(world, search);
         const char* names[] = {"ball-e0.3", "ball-e0.6", "ball-e0.9"};
         const double restitutions[] = {0.3, 0.6, 0.9};
-        std::vector<double> apex(3, 0);
-        std::vector<bool> bounced(3, false), falling(3, false);
+        test::FirstApex first[3];
+        for (int i = 0; i < 3; ++i) first[i].body = world.findBody(names[i]);
         const int elastic = world.findBody("ball-e1.0");
         double highest = 0;
         test::simulate(world, pipeline, 2.5, [&](const World& w) {
-            for (int i = 0; i < 3; ++i) {
-                const int ball = w.findBody(names[i]);
-                const double bottom = w.bodies[ball].transform.position.y() - w.bodies[ball].shape.radius;
-                const double vy = w.motionOf(ball)->linearVelocity.y();
-                if (!bounced[i] && vy > 0) bounced[i] = true;
-                if (bounced[i] && !falling[i]) {
-                    apex[i] = std::max(apex[i], bottom);
-                    if (vy < 0) falling[i] = true;
-                }
-            }
+            for (test::FirstApex& ball : first) ball.record(w);
             if (w.time > 0.1)
                 highest = std::max(highest, static_cast<double>(w.bodies[elastic].transform.position.y() - w.bodies[elastic].shape.radius));
         });
         INFO((search == ContactSearch::OncePerFrame ? ", once per frame" : ", every substep"));
         for (int i = 0; i < 3; ++i) {
-            CHECK(falling[i]);
-            CHECK(relativeError(apex[i], restitutions[i] * restitutions[i] * height) < 0.02);
+            CHECK(first[i].falling);
+            CHECK(relativeError(first[i].apex, restitutions[i] * restitutions[i] * height) < 0.02);
         }
         CHECK(highest <= height);
     }
@@ -210,13 +201,7 @@ void ballsBounceToRestitutionSquared(const PipelineMaker& makePipeline) {
 
 void headOnCollisionsConserveMomentum(const PipelineMaker& makePipeline) {
     for (double restitution : {0.0, 0.5, 1.0}) {
-        World world = test::makeWorld(test::zeroGravitySettings());
-        world.settings.substeps = 16;
-        const int light = test::addSphere(world, Vec3(-1, 0, 0), Real(0.5), BodyType::Dynamic, 1);
-        const int heavy = test::addSphere(world, Vec3(1, 0, 0), Real(0.5), BodyType::Dynamic, 3);
-        for (int body : {light, heavy}) world.bodies[body].material.restitution = static_cast<Real>(restitution);
-        test::setVelocity(world, light, Vec3(3, 0, 0));
-        test::setVelocity(world, heavy, Vec3(Real(-0.5), 0, 0));
+        auto [world, light, heavy] = test::headOnCollision(restitution);
         Pipeline pipeline = makePipeline(world, ContactSearch::EverySubstep);
         test::simulate(world, pipeline, 1.0);
         const double vLight = world.motionOf(light)->linearVelocity.x();

@@ -12,6 +12,7 @@
 #include "world/pipeline.h"
 #include "world/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -94,5 +95,44 @@ inline long simulate(World& world, Pipeline& pipeline, double seconds,
     }
     return frames;
 }
+
+/// Chapter 4's head-on collision: a 1 kg ball at 3 m/s meets a 3 kg ball at -0.5 m/s along x, no
+/// gravity. Small steps (16 substeps): the overlap at first detection (relative speed times dt)
+/// stays below the slop, so Baumgarte adds nothing and the outcome is the restitution law alone.
+struct HeadOn {
+    World world;
+    int light = -1;
+    int heavy = -1;
+};
+
+inline HeadOn headOnCollision(double restitution) {
+    HeadOn headOn{makeWorld(zeroGravitySettings())};
+    headOn.world.settings.substeps = 16;
+    headOn.light = addSphere(headOn.world, Vec3(-1, 0, 0), Real(0.5), BodyType::Dynamic, 1);
+    headOn.heavy = addSphere(headOn.world, Vec3(1, 0, 0), Real(0.5), BodyType::Dynamic, 3);
+    for (int body : {headOn.light, headOn.heavy}) headOn.world.bodies[body].material.restitution = static_cast<Real>(restitution);
+    setVelocity(headOn.world, headOn.light, Vec3(3, 0, 0));
+    setVelocity(headOn.world, headOn.heavy, Vec3(Real(-0.5), 0, 0));
+    return headOn;
+}
+
+/// A ball's first apex after it bounces: the highest its bottom gets between the first frame it
+/// moves up and the first frame it moves down again. Feed it every frame (simulate's afterFrame).
+struct FirstApex {
+    int body = -1;
+    double apex = 0;       // m, height of the body's lowest point (a sphere's bottom)
+    bool bounced = false;  // it has moved up
+    bool falling = false;  // it has come down again: apex is final
+
+    void record(const World& world) {
+        const double bottom = static_cast<double>(world.bodies[body].transform.position.y() - world.bodies[body].shape.radius);
+        const double upward = static_cast<double>(world.motionOf(body)->linearVelocity.y());
+        if (!bounced && upward > 0) bounced = true;
+        if (bounced && !falling) {
+            apex = std::max(apex, bottom);
+            if (upward < 0) falling = true;
+        }
+    }
+};
 
 }  // namespace stepwise::test
