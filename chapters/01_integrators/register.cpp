@@ -8,9 +8,7 @@
 namespace stepwise {
 
 void registerChapter01(Registry& registry) {
-    addChapter01Scenes(registry);
-    registry.addPipeline(PipelineEntry{1, makeChapter01Pipeline});
-    registry.addBench(integratorsBench());
+    registry.addChapter({1, addChapter01Scenes, makeChapter01Pipeline, {integratorsBench()}});
 }
 
 }  // namespace stepwise

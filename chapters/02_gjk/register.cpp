@@ -8,9 +8,7 @@
 namespace stepwise {
 
 void registerChapter02(Registry& registry) {
-    addChapter02Scenes(registry);
-    registry.addPipeline(PipelineEntry{2, makeChapter02Pipeline});
-    registry.addBench(gjkBench());
+    registry.addChapter({2, addChapter02Scenes, makeChapter02Pipeline, {gjkBench()}});
 }
 
 }  // namespace stepwise

@@ -9,10 +9,8 @@
 namespace stepwise {
 
 void registerChapter03(Registry& registry) {
-    addChapter03Scenes(registry);
-    registry.addPipeline(PipelineEntry{3, [](const World& world) { return makeChapter03Pipeline(world); }});
+    registry.addChapter({3, addChapter03Scenes, [](const World& world) { return makeChapter03Pipeline(world); }, {epaBench()}});
     registry.addPenetrationProbe(PenetrationProbe{3, measureDeepestPenetration});
-    registry.addBench(epaBench());
     registry.addCommand(CommandEntry{3, installCollideCommand});
 }
 

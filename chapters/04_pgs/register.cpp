@@ -45,9 +45,7 @@ void solverPanel(World& world, Panel& panel) {
     panel.text("arrows: yellow normal impulse, orange friction (as force, 0.05 m/N)");
 }
 
-}  // namespace
-
-void registerChapter04(Registry& registry) {
+void addChapter04Scenes(Registry& registry) {
     const char* const category = "Sequential impulses";
     const SceneViewFactory solverControls = statelessView({}, solverPanel);
     registry.addScene({"pgs-drop", 4, category,
@@ -71,11 +69,13 @@ void registerChapter04(Registry& registry) {
     registry.addScene({"pgs-sphere-pit", 4, category,
                        "Forty balls settle into a pile: many coupled contacts; compare Gauss-Seidel with Jacobi",
                        [] { return buildSpherePitScene(); }, solverControls});
+}
 
-    registry.addPipeline({4, [](const World& world) { return makeChapter04Pipeline(world); }});
+}  // namespace
 
-    registry.addBench(solverBench());
-    registry.addBench(restingBench());
+void registerChapter04(Registry& registry) {
+    registry.addChapter({4, addChapter04Scenes, [](const World& world) { return makeChapter04Pipeline(world); },
+                         {solverBench(), restingBench()}});
 }
 
 }  // namespace stepwise

@@ -10,9 +10,8 @@
 namespace stepwise {
 
 void registerChapter05(Registry& registry) {
-    addChapter05Scenes(registry);
-    registry.addPipeline({5, [](const World& world) { return makeChapter05Pipeline(world); }});
-    registry.addBench(broadphaseBench());
+    registry.addChapter({5, addChapter05Scenes, [](const World& world) { return makeChapter05Pipeline(world); },
+                         {broadphaseBench()}});
     registry.addCommand({5, installStressCommand});
     registry.addGenerator({"stress", [](World& world, const JsonCursor& parameters) {
                                addStressBodies(world, readStressParams(parameters));

@@ -8,9 +8,8 @@
 namespace stepwise {
 
 void registerChapter06(Registry& registry) {
-    addChapter06Scenes(registry);
-    registry.addPipeline({6, [](const World& world) { return makeChapter06Pipeline(world); }});
-    registry.addBench(stackingBench());
+    registry.addChapter({6, addChapter06Scenes, [](const World& world) { return makeChapter06Pipeline(world); },
+                         {stackingBench()}});
 }
 
 }  // namespace stepwise

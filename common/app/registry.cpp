@@ -34,6 +34,12 @@ SceneViewFactory statelessView(SceneDrawHook draw, ScenePanelHook panel) {
     };
 }
 
+void Registry::addChapter(ChapterEntry entry) {
+    if (entry.addScenes) entry.addScenes(*this);
+    addPipeline(PipelineEntry{entry.chapter, std::move(entry.makePipeline)});
+    for (BenchEntry& bench : entry.benches) addBench(std::move(bench));
+}
+
 void Registry::addScene(SceneEntry entry) {
     if (findScene(entry.name)) throw std::logic_error("scene registered twice: " + entry.name);
     scenes_.push_back(std::move(entry));

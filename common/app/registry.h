@@ -112,8 +112,21 @@ struct PenetrationProbe {
     std::function<Real(const World&)> measure;
 };
 
+class Registry;
+
+/// What every chapter adds, in one declaration: its demo scenes, its pipeline and its benches.
+/// Commands, scene generators and penetration probes, which few chapters have, are added one
+/// by one after it.
+struct ChapterEntry {
+    int chapter = 0;
+    std::function<void(Registry&)> addScenes;           // calls addScene for each demo scene
+    std::function<Pipeline(const World&)> makePipeline;
+    std::vector<BenchEntry> benches;
+};
+
 class Registry {
 public:
+    void addChapter(ChapterEntry entry);
     void addScene(SceneEntry entry);
     void addPipeline(PipelineEntry entry);
     void addBench(BenchEntry entry);

@@ -99,10 +99,9 @@ TEST_CASE("side by side: the RK4 chain loses energy, Euler and Verlet keep their
 }
 
 TEST_CASE("the integrators bench runs in quick mode and writes its table and plots", "[ch01][bench]") {
-    const test::QuickBench run = test::runQuickBench(integratorsBench(), "ch01_bench_test");
-    REQUIRE(run.exitCode == 0);
-    CHECK(run.missingFiles.empty());
-    CHECK(run.header == "method,steps,dt_s,h_omega,error_m,run_ms,ns_per_body_step,run_ms_q1,run_ms_q3");
+    const test::QuickBench run =
+        test::runQuickBench(integratorsBench(), "ch01_bench_test",
+                            "method,steps,dt_s,h_omega,error_m,run_ms,ns_per_body_step,run_ms_q1,run_ms_q3");
     CHECK(run.rows.size() == 3 * 7);
     CHECK(run.printed.find("observed order") != std::string::npos);
     CHECK(test::rejectsUnwritablePath(integratorsBench()));

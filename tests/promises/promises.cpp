@@ -312,4 +312,16 @@ std::vector<Promise> promisesOfChapter(int chapter) {
     return promises;
 }
 
+void checkPromisesOfChapter(int chapter, const std::vector<PipelineVariant>& variants) {
+    const std::vector<Promise> promises = promisesOfChapter(chapter);
+    REQUIRE(!promises.empty());
+    REQUIRE(!variants.empty());
+    for (const Promise& promise : promises) {
+        for (const PipelineVariant& variant : variants) {
+            INFO("chapter " << chapter << ": " << promise.claim << " (" << variant.name << ")");
+            promise.check(variant.make);
+        }
+    }
+}
+
 }  // namespace stepwise::test

@@ -4,12 +4,13 @@
 // (tests/ch05/earlier_chapters_test.cpp, and on) instead of copying them. A promise checks
 // with Catch2's macros, so it runs inside a TEST_CASE of the suite that calls it.
 //
-//   for (const test::Promise& promise : test::promisesOfChapter(4))
-//       promise.check([](World& world, ContactSearch search) { return makeChapter05Pipeline(world, chooseStepOrder(world), search); });
+//   test::checkPromisesOfChapter(4, {{"chapter 5", [](World& world, ContactSearch search) {
+//       return makeChapter05Pipeline(world, chooseStepOrder(world), search); }}});
 
 #include "04_pgs/chapter.h"
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace stepwise::test {
@@ -26,5 +27,16 @@ struct Promise {
 
 /// The promises chapter `chapter` made about its scenes, in the order of its page.
 std::vector<Promise> promisesOfChapter(int chapter);
+
+/// One configuration of the pipeline under test ("broadphase sap", "one point"), named in the
+/// INFO line of every failure so the report says which configuration broke a promise.
+struct PipelineVariant {
+    std::string name;
+    PipelineMaker make;
+};
+
+/// Checks every promise of `chapter` through each variant: what a later chapter's
+/// earlier_chapters_test runs, one TEST_CASE per earlier chapter.
+void checkPromisesOfChapter(int chapter, const std::vector<PipelineVariant>& variants);
 
 }  // namespace stepwise::test

@@ -10,6 +10,8 @@
 #include "app/bench_util.h"
 #include "app/registry.h"
 
+#include <catch2/catch.hpp>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -43,8 +45,10 @@ inline std::string readWholeFile(const std::string& path) {
 }
 
 /// Runs `entry` quick, with its CSV and (when it names one) its plot in the temporary directory
-/// under the name `stem`; reads them back and removes every file the entry names.
-inline QuickBench runQuickBench(const BenchEntry& entry, const std::string& stem) {
+/// under the name `stem`; reads them back and removes every file the entry names. Checks what
+/// every bench promises: exit code 0, every declared file written, and the table's first line
+/// (when `expectedHeader` is given).
+inline QuickBench runQuickBench(const BenchEntry& entry, const std::string& stem, const std::string& expectedHeader = "") {
     const std::filesystem::path directory = std::filesystem::temp_directory_path();
     const auto pathOf = [&](const BenchFile& file) {
         return (directory / (stem + file.suffix + (file.kind == BenchFile::Kind::Csv ? ".csv" : ".svg"))).string();
@@ -73,6 +77,10 @@ inline QuickBench runQuickBench(const BenchEntry& entry, const std::string& stem
         if (!std::ifstream(path).good()) run.missingFiles.push_back(path);
         std::remove(path.c_str());
     }
+    INFO("bench " << entry.name << " printed:\n" << run.printed);
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.missingFiles.empty());
+    if (!expectedHeader.empty()) CHECK(run.header == expectedHeader);
     return run;
 }
 
