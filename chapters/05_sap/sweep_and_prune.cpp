@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 namespace stepwise {
@@ -130,18 +129,12 @@ int chooseSweepAxis(const Vec3& variance, int previousAxis) {
 // [ch05-axis]
 
 void makeEndpoints(const std::vector<Aabb>& bounds, int axis, std::vector<SweepEndpoint>& endpoints) {
-    endpoints.resize(2 * bounds.size());
-    for (std::size_t i = 0; i < bounds.size(); ++i) {
-        endpoints[2 * i] = SweepEndpoint{bounds[i].min[axis], static_cast<int>(i), false};
-        endpoints[2 * i + 1] = SweepEndpoint{bounds[i].max[axis], static_cast<int>(i), true};
-    }
+    endpoints.resize(bounds.size());
+    for (std::size_t i = 0; i < bounds.size(); ++i) endpoints[i] = SweepEndpoint{bounds[i].min[axis], static_cast<int>(i)};
 }
 
 void refreshEndpointValues(const std::vector<Aabb>& bounds, int axis, std::vector<SweepEndpoint>& endpoints) {
-    for (SweepEndpoint& end : endpoints) {
-        const Aabb& box = bounds[static_cast<std::size_t>(end.body)];
-        end.value = end.isUpper ? box.max[axis] : box.min[axis];
-    }
+    for (SweepEndpoint& end : endpoints) end.value = bounds[static_cast<std::size_t>(end.body)].min[axis];
 }
 
 // [ch05-insertion-sort]
@@ -164,109 +157,118 @@ long insertionSortEndpoints(std::vector<SweepEndpoint>& endpoints, long moveBudg
 // [ch05-insertion-sort]
 
 void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints) {
-    std::sort(endpoints.begin(), endpoints.end(), endpointBefore);
+    // A lambda, not the function's address: std::sort then compares inline.
+    std::sort(endpoints.begin(), endpoints.end(),
+              [](const SweepEndpoint& a, const SweepEndpoint& b) { return endpointBefore(a, b); });
 }
 
 namespace {
 
-/// An active list of the sweep: intervals open at this point of the sweep, with their boxes on
-/// the two other axes. Each opening interval scans the whole list, so the list keeps what that
-/// scan reads in four plain arrays, one per bound, read straight through: the compiler tests
-/// several entries per instruction (SIMD), where looking each body's box up in the large bounds
-/// array would wait on memory for every entry.
-struct ActiveList {
-    std::vector<Real> lowA, highA, lowB, highB;  // the boxes on the first and second other axis
-    std::vector<int> body;
+/// The sweep reads the columns in blocks of this many entries (see scanForward).
+constexpr std::size_t kBlock = 16;
 
-    std::size_t size() const { return body.size(); }
-    void reserve(std::size_t capacity) {
-        for (std::vector<Real>* bound : {&lowA, &highA, &lowB, &highB}) bound->reserve(capacity);
-        body.reserve(capacity);
-    }
-    void add(Real boxLowA, Real boxHighA, Real boxLowB, Real boxHighB, int bodyIndex) {
-        lowA.push_back(boxLowA), highA.push_back(boxHighA), lowB.push_back(boxLowB), highB.push_back(boxHighB);
-        body.push_back(bodyIndex);
-    }
-    /// Removes entry `at`: the last entry takes its place. Returns the body that moved, or -1.
-    int removeAt(std::size_t at) {
-        const std::size_t last = size() - 1;
-        lowA[at] = lowA[last], highA[at] = highA[last], lowB[at] = lowB[last], highB[at] = highB[last];
-        body[at] = body[last];
-        lowA.pop_back(), highA.pop_back(), lowB.pop_back(), highB.pop_back(), body.pop_back();
-        return at < last ? body[at] : -1;
-    }
-};
+/// Resizes every column to `size` entries.
+void resizeColumns(SweepColumns& columns, std::size_t size) {
+    for (std::vector<Real>* bound : {&columns.low, &columns.high, &columns.lowA, &columns.highA, &columns.lowB, &columns.highB})
+        bound->resize(size);
+    columns.body.resize(size);
+    columns.dynamic.resize(size);
+}
 
-/// Calls hit(j) for every entry j of the list whose box overlaps [lowA, highA] x [lowB, highB].
-/// Few entries do, so blocks of 16 are tested first with one branch-free loop the compiler turns
-/// into SIMD instructions, and only a block with an overlap is looked at entry by entry.
+/// Copies the boxes into the columns in the order of the sorted lower ends, skipping empty
+/// boxes (a non-finite body), then kBlock sentinels: boxes that start at +infinity and overlap
+/// nothing.
+void layOutColumns(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
+                   const std::vector<char>& dynamic, int axis, SweepColumns& columns) {
+    const int axisA = (axis + 1) % 3, axisB = (axis + 2) % 3;
+    resizeColumns(columns, endpoints.size() + kBlock);
+    std::size_t count = 0;
+    for (const SweepEndpoint& end : endpoints) {
+        const std::size_t body = static_cast<std::size_t>(end.body);
+        const Aabb& box = bounds[body];
+        if (box.min[axis] > box.max[axis]) continue;  // an empty box overlaps nothing
+        columns.low[count] = box.min[axis], columns.high[count] = box.max[axis];
+        columns.lowA[count] = box.min[axisA], columns.highA[count] = box.max[axisA];
+        columns.lowB[count] = box.min[axisB], columns.highB[count] = box.max[axisB];
+        columns.body[count] = end.body;
+        columns.dynamic[count] = dynamic[body];
+        ++count;
+    }
+    constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
+    for (std::size_t i = count; i < count + kBlock; ++i) {
+        columns.low[i] = columns.lowA[i] = columns.lowB[i] = kInfinity;
+        columns.high[i] = columns.highA[i] = columns.highB[i] = -kInfinity;
+        columns.body[i] = -1;
+        columns.dynamic[i] = 0;
+    }
+    columns.count = count;
+}
+
+/// Calls hit(j) for every entry j after entry i whose box overlaps i's, and returns how many
+/// entries after i overlap it on the sweep axis. The lower ends are sorted, so those entries
+/// are the ones from i + 1 up to the first that starts past i's upper end. Few of them overlap
+/// on the other axes too, so the entries are tested in blocks of kBlock with one branch-free
+/// loop, which the compiler turns into SIMD instructions over the contiguous columns; only a
+/// block with an overlap is looked at entry by entry, and the scan stops at the first block
+/// that reaches past the interval.
 template <class Hit>
-void scanActiveList(const ActiveList& active, Real lowA, Real highA, Real lowB, Real highB, Hit hit) {
-    const Real* lowsA = active.lowA.data();
-    const Real* highsA = active.highA.data();
-    const Real* lowsB = active.lowB.data();
-    const Real* highsB = active.highB.data();
-    constexpr std::size_t kBlock = 16;
-    for (std::size_t first = 0; first < active.size(); first += kBlock) {
-        const std::size_t last = std::min(first + kBlock, active.size());
-        const auto overlaps = [&](std::size_t j) {
-            return (lowsA[j] <= highA) & (lowA <= highsA[j]) & (lowsB[j] <= highB) & (lowB <= highsB[j]);
-        };
+std::size_t scanForward(const SweepColumns& columns, std::size_t i, Hit hit) {
+    const Real* low = columns.low.data();
+    const Real* lowsA = columns.lowA.data();
+    const Real* highsA = columns.highA.data();
+    const Real* lowsB = columns.lowB.data();
+    const Real* highsB = columns.highB.data();
+    const Real high = columns.high[i];
+    const Real lowA = columns.lowA[i], highA = columns.highA[i], lowB = columns.lowB[i], highB = columns.highB[i];
+    const auto overlaps = [&](std::size_t j) {
+        return (low[j] <= high) & (lowsA[j] <= highA) & (lowA <= highsA[j]) & (lowsB[j] <= highB) & (lowB <= highsB[j]);
+    };
+    std::size_t first = i + 1;
+    for (;; first += kBlock) {
         int any = 0;
-        for (std::size_t j = first; j < last; ++j) any |= overlaps(j);
-        if (!any) continue;
-        for (std::size_t j = first; j < last; ++j)
-            if (overlaps(j)) hit(active.body[j]);
+        for (std::size_t j = first; j < first + kBlock; ++j) any |= overlaps(j);
+        if (any) {
+            for (std::size_t j = first; j < first + kBlock; ++j)
+                if (overlaps(j)) hit(j);
+        }
+        if (low[first + kBlock - 1] > high) break;  // the next blocks start past the interval
     }
+    std::size_t met = first - (i + 1);  // the whole blocks before the last one
+    for (std::size_t j = first; j < first + kBlock; ++j) met += low[j] <= high;
+    return met;
 }
 
 }  // namespace
 
 // [ch05-sweep]
 long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
-                    const std::vector<char>& dynamicBodies, int axis, std::vector<BodyPair>& pairs) {
-    const int axisA = (axis + 1) % 3, axisB = (axis + 2) % 3;
-    // Two active lists: a pair needs a dynamic body (needsContact), so an opening static or
-    // kinematic interval only scans the dynamic list, and a large static ground, open over the
-    // whole sweep, sits in a short list of its own.
-    ActiveList dynamicList, otherList;
-    dynamicList.reserve(256);
-    otherList.reserve(16);
-    std::vector<int> slot(bounds.size(), -1);  // where each body sits in its list, -1 when closed
-    long scanned = 0;
-    for (const SweepEndpoint& end : endpoints) {
-        const std::size_t body = static_cast<std::size_t>(end.body);
-        const bool dynamic = dynamicBodies[body] != 0;
-        ActiveList& ownList = dynamic ? dynamicList : otherList;
-        if (end.isUpper) {
-            // The interval closes: the last entry of its list takes its place, O(1).
-            const int at = slot[body];
-            if (at < 0) continue;
-            const int moved = ownList.removeAt(static_cast<std::size_t>(at));
-            if (moved >= 0) slot[static_cast<std::size_t>(moved)] = at;
-            slot[body] = -1;
-            continue;
-        }
-        const Aabb& box = bounds[body];
-        if (box.min[axis] > box.max[axis]) continue;  // an empty box (non-finite body) opens nothing
-        const Real lowA = box.min[axisA], highA = box.max[axisA], lowB = box.min[axisB], highB = box.max[axisB];
-        // The interval opens: on this axis it overlaps every interval still open. Those whose
-        // boxes overlap on the other two axes as well are candidate pairs.
-        const auto addPair = [&](int other) {
-            pairs.push_back(BodyPair{std::min(end.body, other), std::max(end.body, other)});
+                    const std::vector<char>& dynamicBodies, int axis, std::vector<BodyPair>& pairs, SweepColumns& columns) {
+    layOutColumns(endpoints, bounds, dynamicBodies, axis, columns);
+    long looked = 0;
+    for (std::size_t i = 0; i < columns.count; ++i) {
+        const int body = columns.body[i];
+        const bool dynamic = columns.dynamic[i] != 0;
+        const auto addPair = [&](std::size_t j) {
+            if (!needsContact(dynamic, columns.dynamic[j] != 0)) return;
+            const int other = columns.body[j];
+            pairs.push_back(BodyPair{std::min(body, other), std::max(body, other)});
         };
-        scanned += static_cast<long>(dynamicList.size());
-        scanActiveList(dynamicList, lowA, highA, lowB, highB, addPair);
+        const std::size_t met = scanForward(columns, i, addPair);
         if (dynamic) {
-            scanned += static_cast<long>(otherList.size());
-            scanActiveList(otherList, lowA, highA, lowB, highB, addPair);
+            looked += static_cast<long>(met);
+        } else {  // only the dynamic ones need a contact with this body
+            for (std::size_t j = i + 1; j <= i + met; ++j) looked += columns.dynamic[j];
         }
-        slot[body] = static_cast<int>(ownList.size());
-        ownList.add(lowA, highA, lowB, highB, end.body);
     }
-    return scanned;
+    return looked;
 }
 // [ch05-sweep]
+
+long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
+                    const std::vector<char>& dynamic, int axis, std::vector<BodyPair>& pairs) {
+    SweepColumns columns;
+    return sweepEndpoints(endpoints, bounds, dynamic, axis, pairs, columns);
+}
 
 void bruteForcePairs(const std::vector<Aabb>& bounds, const std::vector<char>& dynamic, std::vector<BodyPair>& pairs) {
     const int bodyCount = static_cast<int>(bounds.size());
@@ -280,30 +282,37 @@ void bruteForcePairs(const std::vector<Aabb>& bounds, const std::vector<char>& d
     }
 }
 
-void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount) {
+namespace {
+
+/// Stable counting sort of `from` into `to` by key(pair), a body index below bodyCount.
+template <class Key>
+void countingSortPairs(const std::vector<BodyPair>& from, std::vector<BodyPair>& to, int bodyCount,
+                       std::vector<int>& starts, Key key) {
+    starts.assign(static_cast<std::size_t>(bodyCount) + 1, 0);
+    for (const BodyPair& pair : from) ++starts[static_cast<std::size_t>(key(pair)) + 1];
+    for (std::size_t body = 1; body < starts.size(); ++body) starts[body] += starts[body - 1];
+    to.resize(from.size());
+    for (const BodyPair& pair : from) to[static_cast<std::size_t>(starts[static_cast<std::size_t>(key(pair))]++)] = pair;
+}
+
+}  // namespace
+
+void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount, BroadphaseBuffers& buffers) {
     if (std::is_sorted(pairs.begin(), pairs.end())) return;
-    if (pairs.size() < 1024) {
+    // The counting sorts cost two passes over the n bodies; few pairs are cheaper to compare.
+    if (pairs.size() < 1024 || pairs.size() < static_cast<std::size_t>(bodyCount) / 8) {
         std::sort(pairs.begin(), pairs.end());
         return;
     }
-    // Least significant digit radix sort of the key bodyA * n + bodyB, 11 bits a pass: a few
-    // passes over the list in order, where a comparison sort would jump around it k log k times.
-    const std::uint64_t n = static_cast<std::uint64_t>(std::max(bodyCount, 1));
-    std::vector<std::uint64_t> keys(pairs.size()), sorted(pairs.size());
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-        keys[i] = static_cast<std::uint64_t>(pairs[i].bodyA) * n + static_cast<std::uint64_t>(pairs[i].bodyB);
-    const std::uint64_t largest = n * n;
-    constexpr int kDigitBits = 11;
-    constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
-    for (int shift = 0; shift < 64 && (largest >> shift) > 0; shift += kDigitBits) {
-        std::size_t start[kBuckets + 1] = {};
-        for (const std::uint64_t key : keys) ++start[((key >> shift) & (kBuckets - 1)) + 1];
-        for (std::size_t bucket = 1; bucket <= kBuckets; ++bucket) start[bucket] += start[bucket - 1];
-        for (const std::uint64_t key : keys) sorted[start[(key >> shift) & (kBuckets - 1)]++] = key;
-        keys.swap(sorted);
-    }
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-        pairs[i] = BodyPair{static_cast<int>(keys[i] / n), static_cast<int>(keys[i] % n)};
+    // Least significant key first: by bodyB, then stably by bodyA, which keeps bodyB's order
+    // within each bodyA.
+    countingSortPairs(pairs, buffers.pairs, bodyCount, buffers.pairStarts, [](const BodyPair& pair) { return pair.bodyB; });
+    countingSortPairs(buffers.pairs, pairs, bodyCount, buffers.pairStarts, [](const BodyPair& pair) { return pair.bodyA; });
+}
+
+void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount) {
+    BroadphaseBuffers buffers;
+    sortPairsCanonical(pairs, bodyCount, buffers);
 }
 
 }  // namespace stepwise
