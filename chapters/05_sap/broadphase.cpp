@@ -47,7 +47,8 @@ void sweepAndPrune(World& world, SortMode sortMode) {
 
     world.candidatePairs.clear();
     state.axisOverlaps =
-        sweepEndpoints(state.endpoints, state.bounds, state.dynamic, axis, world.candidatePairs, state.buffers.columns);
+        sweepEndpoints(state.endpoints, state.bounds, state.dynamic, sweepAxes(state.centreVariance, axis),
+                       world.candidatePairs, state.buffers.columns);
     sortPairsCanonical(world.candidatePairs, static_cast<int>(world.bodies.size()), state.buffers);
     state.used = BroadphaseMode::Sap;
 }

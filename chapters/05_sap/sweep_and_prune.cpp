@@ -79,15 +79,19 @@ void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std:
         dynamic[i] = body.type == BodyType::Dynamic ? 1 : 0;
         const PlacedShape placed = placeShape(body.shape, body.transform);
         Real speed = 0;  // bound on the speed of the body's points, m/s
-        if (const Motion* motion = world.motionOf(static_cast<int>(i)))
-            speed = motion->linearVelocity.norm() +
-                    motion->angularVelocity.norm() * std::max(placed.radius, std::numeric_limits<Real>::min());
+        if (body.motionIndex >= 0) {
+            const Motion& motion = world.motions[static_cast<std::size_t>(body.motionIndex)];
+            speed = motion.linearVelocity.norm() +
+                    motion.angularVelocity.norm() * std::max(placed.radius, std::numeric_limits<Real>::min());
+        }
         const Real grow = dt * (speed + gravityGain) + kBoundsMargin;
         Aabb box = placed.box;
         box.min.array() -= grow;
         box.max.array() += grow;
-        // A NaN would break the sort's order; an empty box overlaps nothing and sorts last.
-        if (!box.min.allFinite() || !box.max.allFinite()) box = Aabb{};
+        // A NaN would break the sort's order; an empty box overlaps nothing and sorts last. x - x
+        // is 0 for a finite x and NaN for an infinite or NaN one: one test checks all six.
+        const Real notFinite = (box.min - box.min).sum() + (box.max - box.max).sum();
+        if (notFinite != 0) box = Aabb{};
         bounds[i] = box;
     }
 }
@@ -125,6 +129,11 @@ int chooseSweepAxis(const Vec3& variance, int previousAxis) {
         if (variance[axis] > variance[widest]) widest = axis;
     if (previousAxis < 0 || previousAxis > 2) return widest;
     return variance[widest] > kAxisSwitchRatio * variance[previousAxis] ? widest : previousAxis;
+}
+
+SweepAxes sweepAxes(const Vec3& variance, int sweepAxis) {
+    const int next = (sweepAxis + 1) % 3, last = (sweepAxis + 2) % 3;
+    return variance[last] > variance[next] ? SweepAxes{sweepAxis, last, next} : SweepAxes{sweepAxis, next, last};
 }
 // [ch05-axis]
 
@@ -165,7 +174,7 @@ void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints) {
 namespace {
 
 /// The sweep reads the columns in blocks of this many entries (see scanForward).
-constexpr std::size_t kBlock = 16;
+constexpr std::size_t kBlock = 32;
 
 /// Resizes every column to `size` entries.
 void resizeColumns(SweepColumns& columns, std::size_t size) {
@@ -179,17 +188,16 @@ void resizeColumns(SweepColumns& columns, std::size_t size) {
 /// boxes (a non-finite body), then kBlock sentinels: boxes that start at +infinity and overlap
 /// nothing.
 void layOutColumns(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
-                   const std::vector<char>& dynamic, int axis, SweepColumns& columns) {
-    const int axisA = (axis + 1) % 3, axisB = (axis + 2) % 3;
+                   const std::vector<char>& dynamic, const SweepAxes& axes, SweepColumns& columns) {
     resizeColumns(columns, endpoints.size() + kBlock);
     std::size_t count = 0;
     for (const SweepEndpoint& end : endpoints) {
         const std::size_t body = static_cast<std::size_t>(end.body);
         const Aabb& box = bounds[body];
-        if (box.min[axis] > box.max[axis]) continue;  // an empty box overlaps nothing
-        columns.low[count] = box.min[axis], columns.high[count] = box.max[axis];
-        columns.lowA[count] = box.min[axisA], columns.highA[count] = box.max[axisA];
-        columns.lowB[count] = box.min[axisB], columns.highB[count] = box.max[axisB];
+        if (box.min[axes.sweep] > box.max[axes.sweep]) continue;  // an empty box overlaps nothing
+        columns.low[count] = box.min[axes.sweep], columns.high[count] = box.max[axes.sweep];
+        columns.lowA[count] = box.min[axes.first], columns.highA[count] = box.max[axes.first];
+        columns.lowB[count] = box.min[axes.second], columns.highB[count] = box.max[axes.second];
         columns.body[count] = end.body;
         columns.dynamic[count] = dynamic[body];
         ++count;
@@ -204,46 +212,58 @@ void layOutColumns(const std::vector<SweepEndpoint>& endpoints, const std::vecto
     columns.count = count;
 }
 
+/// A block of kBlock entries tested against one interval: how many meet it on the sweep axis,
+/// and whether one of those overlaps it on the first other axis too.
+struct BlockTest {
+    int onAxis = 0;
+    int passed = 0;
+};
+
+/// One branch-free loop over contiguous columns, which the compiler turns into SIMD
+/// instructions (a few for the whole block). The pointers point at the block's first entry.
+BlockTest testBlock(const Real* low, const Real* lowsA, const Real* highsA, Real high, Real lowA, Real highA) {
+    BlockTest test;
+    for (std::size_t j = 0; j < kBlock; ++j) {
+        const int meets = low[j] <= high;
+        test.onAxis += meets;
+        test.passed += meets & (lowsA[j] <= highA) & (lowA <= highsA[j]);
+    }
+    return test;
+}
+
 /// Calls hit(j) for every entry j after entry i whose box overlaps i's, and returns how many
 /// entries after i overlap it on the sweep axis. The lower ends are sorted, so those entries
-/// are the ones from i + 1 up to the first that starts past i's upper end. Few of them overlap
-/// on the other axes too, so the entries are tested in blocks of kBlock with one branch-free
-/// loop, which the compiler turns into SIMD instructions over the contiguous columns; only a
-/// block with an overlap is looked at entry by entry, and the scan stops at the first block
-/// that reaches past the interval.
+/// are the ones from i + 1 up to the first that starts past i's upper end: the scan stops at
+/// the first block that holds one. Blocks are tested on the sweep axis and the first other
+/// axis only (testBlock): that rejects nearly every entry, and only a block where one passes
+/// is looked at entry by entry, with the second axis too.
 template <class Hit>
 std::size_t scanForward(const SweepColumns& columns, std::size_t i, Hit hit) {
-    const Real* low = columns.low.data();
-    const Real* lowsA = columns.lowA.data();
-    const Real* highsA = columns.highA.data();
-    const Real* lowsB = columns.lowB.data();
-    const Real* highsB = columns.highB.data();
-    const Real high = columns.high[i];
-    const Real lowA = columns.lowA[i], highA = columns.highA[i], lowB = columns.lowB[i], highB = columns.highB[i];
+    const Real high = columns.high[i], lowA = columns.lowA[i], highA = columns.highA[i];
+    const Real lowB = columns.lowB[i], highB = columns.highB[i];
     const auto overlaps = [&](std::size_t j) {
-        return (low[j] <= high) & (lowsA[j] <= highA) & (lowA <= highsA[j]) & (lowsB[j] <= highB) & (lowB <= highsB[j]);
+        return columns.low[j] <= high && columns.lowA[j] <= highA && lowA <= columns.highA[j] &&
+               columns.lowB[j] <= highB && lowB <= columns.highB[j];
     };
-    std::size_t first = i + 1;
-    for (;; first += kBlock) {
-        int any = 0;
-        for (std::size_t j = first; j < first + kBlock; ++j) any |= overlaps(j);
-        if (any) {
+    std::size_t met = 0;
+    for (std::size_t first = i + 1;; first += kBlock) {
+        const BlockTest block = testBlock(&columns.low[first], &columns.lowA[first], &columns.highA[first], high, lowA, highA);
+        if (block.passed) {
             for (std::size_t j = first; j < first + kBlock; ++j)
                 if (overlaps(j)) hit(j);
         }
-        if (low[first + kBlock - 1] > high) break;  // the next blocks start past the interval
+        met += static_cast<std::size_t>(block.onAxis);
+        if (block.onAxis < static_cast<int>(kBlock)) return met;  // the rest start past the interval
     }
-    std::size_t met = first - (i + 1);  // the whole blocks before the last one
-    for (std::size_t j = first; j < first + kBlock; ++j) met += low[j] <= high;
-    return met;
 }
 
 }  // namespace
 
 // [ch05-sweep]
 long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
-                    const std::vector<char>& dynamicBodies, int axis, std::vector<BodyPair>& pairs, SweepColumns& columns) {
-    layOutColumns(endpoints, bounds, dynamicBodies, axis, columns);
+                    const std::vector<char>& dynamicBodies, const SweepAxes& axes, std::vector<BodyPair>& pairs,
+                    SweepColumns& columns) {
+    layOutColumns(endpoints, bounds, dynamicBodies, axes, columns);
     long looked = 0;
     for (std::size_t i = 0; i < columns.count; ++i) {
         const int body = columns.body[i];
@@ -267,7 +287,7 @@ long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vect
 long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
                     const std::vector<char>& dynamic, int axis, std::vector<BodyPair>& pairs) {
     SweepColumns columns;
-    return sweepEndpoints(endpoints, bounds, dynamic, axis, pairs, columns);
+    return sweepEndpoints(endpoints, bounds, dynamic, SweepAxes{axis, (axis + 1) % 3, (axis + 2) % 3}, pairs, columns);
 }
 
 void bruteForcePairs(const std::vector<Aabb>& bounds, const std::vector<char>& dynamic, std::vector<BodyPair>& pairs) {

@@ -49,6 +49,16 @@ constexpr Real kAxisSwitchRatio = Real(1.2);
 /// another exceeds it by kAxisSwitchRatio. `previousAxis` -1: no previous axis.
 int chooseSweepAxis(const Vec3& variance, int previousAxis);
 
+/// The axes of a sweep: along `sweep`; then `first`, the other axis along which the centres
+/// spread more, is tested on every interval the sweep meets, and `second` only on the few that
+/// pass (on a ground, `second` is the vertical, along which nearly every pair overlaps).
+struct SweepAxes {
+    int sweep = 0, first = 1, second = 2;
+};
+
+/// The sweep along `sweepAxis` with the other two ordered by `variance`.
+SweepAxes sweepAxes(const Vec3& variance, int sweepAxis);
+
 /// The sort order of the lower ends: by value, then by body. A total order.
 inline bool endpointBefore(const SweepEndpoint& a, const SweepEndpoint& b) {
     return a.value < b.value || (a.value == b.value && a.body < b.body);
@@ -74,9 +84,10 @@ void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints);
 /// (bodyA < bodyB, in sweep order) and returns how many pairs the sweep looked at: the pairs
 /// that overlap on the axis and need a contact. `columns` is working memory.
 long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
-                    const std::vector<char>& dynamic, int axis, std::vector<BodyPair>& pairs, SweepColumns& columns);
+                    const std::vector<char>& dynamic, const SweepAxes& axes, std::vector<BodyPair>& pairs,
+                    SweepColumns& columns);
 
-/// The same, with working memory of its own.
+/// The same along `axis`, the other two in index order, with working memory of its own.
 long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
                     const std::vector<char>& dynamic, int axis, std::vector<BodyPair>& pairs);
 
