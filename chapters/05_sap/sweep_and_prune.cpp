@@ -174,7 +174,7 @@ void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints) {
 namespace {
 
 /// The sweep reads the columns in blocks of this many entries (see scanForward).
-constexpr std::size_t kBlock = 32;
+constexpr std::size_t kBlock = 16;
 
 /// Resizes every column to `size` entries.
 void resizeColumns(SweepColumns& columns, std::size_t size) {
@@ -212,45 +212,71 @@ void layOutColumns(const std::vector<SweepEndpoint>& endpoints, const std::vecto
     columns.count = count;
 }
 
+/// What the scan reads of the columns, as plain pointers taken once per sweep: the compiler
+/// then keeps them in registers, where it would reload them from the vectors after every pair
+/// written.
+struct ColumnView {
+    const Real *low, *high, *lowA, *highA, *lowB, *highB;
+};
+
+/// Entry i's box, as the scan compares the others with it.
+struct Interval {
+    Real high, lowA, highA, lowB, highB;
+};
+
+Interval intervalAt(const ColumnView& columns, std::size_t i) {
+    return Interval{columns.high[i], columns.lowA[i], columns.highA[i], columns.lowB[i], columns.highB[i]};
+}
+
+/// Whether entry j, which starts after the interval on the sweep axis, overlaps its box: five
+/// comparisons joined with & rather than &&, so they compile without branches.
+inline int overlaps(const ColumnView& columns, std::size_t j, const Interval& box) {
+    return (columns.low[j] <= box.high) & (columns.lowA[j] <= box.highA) & (box.lowA <= columns.highA[j]) &
+           (columns.lowB[j] <= box.highB) & (box.lowB <= columns.highB[j]);
+}
+
 /// A block of kBlock entries tested against one interval: how many meet it on the sweep axis,
-/// and whether one of those overlaps it on the first other axis too.
+/// and how many of those overlap it on the first other axis too.
 struct BlockTest {
     int onAxis = 0;
     int passed = 0;
 };
 
 /// One branch-free loop over contiguous columns, which the compiler turns into SIMD
-/// instructions (a few for the whole block). The pointers point at the block's first entry.
-BlockTest testBlock(const Real* low, const Real* lowsA, const Real* highsA, Real high, Real lowA, Real highA) {
+/// instructions (a few for the whole block).
+inline BlockTest testBlock(const ColumnView& columns, std::size_t first, const Interval& box) {
     BlockTest test;
-    for (std::size_t j = 0; j < kBlock; ++j) {
-        const int meets = low[j] <= high;
+    for (std::size_t j = first; j < first + kBlock; ++j) {
+        const int meets = columns.low[j] <= box.high;
         test.onAxis += meets;
-        test.passed += meets & (lowsA[j] <= highA) & (lowA <= highsA[j]);
+        test.passed += meets & (columns.lowA[j] <= box.highA) & (box.lowA <= columns.highA[j]);
     }
     return test;
 }
 
-/// Calls hit(j) for every entry j after entry i whose box overlaps i's, and returns how many
-/// entries after i overlap it on the sweep axis. The lower ends are sorted, so those entries
-/// are the ones from i + 1 up to the first that starts past i's upper end: the scan stops at
-/// the first block that holds one. Blocks are tested on the sweep axis and the first other
-/// axis only (testBlock): that rejects nearly every entry, and only a block where one passes
-/// is looked at entry by entry, with the second axis too.
+/// How many entries of a block overlap the interval's box: the same kind of loop, all five
+/// comparisons.
+inline int countOverlaps(const ColumnView& columns, std::size_t first, const Interval& box) {
+    int hits = 0;
+    for (std::size_t j = first; j < first + kBlock; ++j) hits += overlaps(columns, j, box);
+    return hits;
+}
+
+/// Calls hit(j) for every entry j after the interval's entry i whose box overlaps its box, and
+/// returns how many entries after i meet it on the sweep axis. The lower ends are sorted, so
+/// those are the entries from i + 1 up to the first that starts past the interval's upper end:
+/// the scan stops at the first block that holds one. A block is tested first on the sweep axis
+/// and the first other axis only, which on a spread layer rejects nearly every block; a block
+/// that passes is tested on all three (in a pile, many do), and only a block with a hit is
+/// looked at entry by entry.
 template <class Hit>
-std::size_t scanForward(const SweepColumns& columns, std::size_t i, Hit hit) {
-    const Real high = columns.high[i], lowA = columns.lowA[i], highA = columns.highA[i];
-    const Real lowB = columns.lowB[i], highB = columns.highB[i];
-    const auto overlaps = [&](std::size_t j) {
-        return columns.low[j] <= high && columns.lowA[j] <= highA && lowA <= columns.highA[j] &&
-               columns.lowB[j] <= highB && lowB <= columns.highB[j];
-    };
+std::size_t scanForward(const ColumnView& columns, std::size_t i, const Interval& box, Hit hit) {
     std::size_t met = 0;
     for (std::size_t first = i + 1;; first += kBlock) {
-        const BlockTest block = testBlock(&columns.low[first], &columns.lowA[first], &columns.highA[first], high, lowA, highA);
-        if (block.passed) {
+        const BlockTest block = testBlock(columns, first, box);
+        if (block.passed > 0 && countOverlaps(columns, first, box) > 0) {
             for (std::size_t j = first; j < first + kBlock; ++j)
-                if (overlaps(j)) hit(j);
+                if (overlaps(columns, j, box)) hit(j);
         }
         met += static_cast<std::size_t>(block.onAxis);
         if (block.onAxis < static_cast<int>(kBlock)) return met;  // the rest start past the interval
@@ -264,6 +290,8 @@ long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vect
                     const std::vector<char>& dynamicBodies, const SweepAxes& axes, std::vector<BodyPair>& pairs,
                     SweepColumns& columns) {
     layOutColumns(endpoints, bounds, dynamicBodies, axes, columns);
+    const ColumnView view{columns.low.data(),  columns.high.data(), columns.lowA.data(),
+                          columns.highA.data(), columns.lowB.data(), columns.highB.data()};
     long looked = 0;
     for (std::size_t i = 0; i < columns.count; ++i) {
         const int body = columns.body[i];
@@ -273,7 +301,7 @@ long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vect
             const int other = columns.body[j];
             pairs.push_back(BodyPair{std::min(body, other), std::max(body, other)});
         };
-        const std::size_t met = scanForward(columns, i, addPair);
+        const std::size_t met = scanForward(view, i, intervalAt(view, i), addPair);
         if (dynamic) {
             looked += static_cast<long>(met);
         } else {  // only the dynamic ones need a contact with this body
