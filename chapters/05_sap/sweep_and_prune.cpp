@@ -173,7 +173,9 @@ void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints) {
 
 namespace {
 
-/// The sweep reads the columns in blocks of this many entries (see scanForward).
+/// The sweep reads the columns in blocks of this many entries (see scanForward). On a layer a
+/// body meets a few dozen intervals: smaller blocks pay more for the loop around them, larger
+/// ones test more entries past the interval's end.
 constexpr std::size_t kBlock = 16;
 
 /// Resizes every column to `size` entries.
