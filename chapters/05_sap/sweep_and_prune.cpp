@@ -51,11 +51,16 @@ PlacedShape placeShape(const Shape& shape, const Transform& pose) {
             break;
         case ShapeType::Convex: {
             if (!shape.hull) break;
+            // The box of the turned vertices, then moved: rounding keeps the order of sums, so
+            // position + the least turned vertex is the least of the moved ones, to the bit.
+            Aabb turned;
             Real radiusSquared = 0;
             for (const Vec3& vertex : shape.hull->vertices) {
-                placed.box.grow(pose.position + rotation * vertex);
+                turned.grow(rotation * vertex);
                 radiusSquared = std::max(radiusSquared, vertex.squaredNorm());
             }
+            placed.box.min = pose.position + turned.min;
+            placed.box.max = pose.position + turned.max;
             placed.radius = std::sqrt(radiusSquared);
             return placed;
         }
