@@ -242,18 +242,21 @@ PhaseCosts measurePhases(int count, int repetitions) {
         computeBroadphaseBounds(world, state.bounds, state.dynamic);
         bounds.push_back(watch.seconds());
         watch.restart();
-        const int axis = chooseSweepAxis(centreVariance(state.bounds), state.axis);
+        const Vec3 spread = centreVariance(state.bounds);
+        const int axis = chooseSweepAxis(spread, state.axis);
         variance.push_back(watch.seconds());
         watch.restart();
         refreshEndpointValues(state.bounds, axis, state.endpoints);
         insertionSortEndpoints(state.endpoints, static_cast<long>(state.endpoints.size()) * 64);
         sort.push_back(watch.seconds());
-        std::vector<BodyPair> pairs;
+        // As the stage does: into a list that kept its capacity, with the state's working memory.
+        std::vector<BodyPair>& pairs = world.candidatePairs;
+        pairs.clear();
         watch.restart();
-        sweepEndpoints(state.endpoints, state.bounds, state.dynamic, axis, pairs);
+        sweepEndpoints(state.endpoints, state.bounds, state.dynamic, sweepAxes(spread, axis), pairs, state.buffers.columns);
         sweep.push_back(watch.seconds());
         watch.restart();
-        sortPairsCanonical(pairs, static_cast<int>(world.bodies.size()));
+        sortPairsCanonical(pairs, static_cast<int>(world.bodies.size()), state.buffers);
         pairSort.push_back(watch.seconds());
     }
     const double perBody = 1e9 / static_cast<double>(world.bodies.size());

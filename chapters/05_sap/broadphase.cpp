@@ -29,7 +29,7 @@ void sweepAndPrune(World& world, SortMode sortMode) {
     const int axis = chooseSweepAxis(state.centreVariance, state.axis);
 
     // Temporal coherence: on the same axis, last step's order is nearly right.
-    const bool sameList = axis == state.axis && state.endpoints.size() == 2 * state.bounds.size();
+    const bool sameList = axis == state.axis && state.endpoints.size() == state.bounds.size();
     state.fullSort = !(sameList && sortMode == SortMode::Incremental);
     state.sortMoves = 0;
     if (!state.fullSort) {
@@ -46,8 +46,10 @@ void sweepAndPrune(World& world, SortMode sortMode) {
     state.axis = axis;
 
     world.candidatePairs.clear();
-    state.axisOverlaps = sweepEndpoints(state.endpoints, state.bounds, state.dynamic, axis, world.candidatePairs);
-    sortPairsCanonical(world.candidatePairs, static_cast<int>(world.bodies.size()));
+    state.axisOverlaps =
+        sweepEndpoints(state.endpoints, state.bounds, state.dynamic, sweepAxes(state.centreVariance, axis),
+                       world.candidatePairs, state.buffers.columns);
+    sortPairsCanonical(world.candidatePairs, static_cast<int>(world.bodies.size()), state.buffers);
     state.used = BroadphaseMode::Sap;
 }
 // [ch05-sweep-and-prune]

@@ -75,7 +75,6 @@ void drawIntervals(const World& world, DebugDraw& draw) {
     draw.text(tip, std::string("sweep axis ") + kAxisNames[axis], colors::kWhite);
     int drawn = 0;
     for (const SweepEndpoint& end : world.broadphase.endpoints) {
-        if (end.isUpper) continue;
         const std::size_t body = static_cast<std::size_t>(end.body);
         if (body >= world.bodies.size() || world.bodies[body].type == BodyType::Static) continue;
         const Aabb& box = world.broadphase.bounds[body];

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 namespace stepwise {
@@ -52,11 +51,16 @@ PlacedShape placeShape(const Shape& shape, const Transform& pose) {
             break;
         case ShapeType::Convex: {
             if (!shape.hull) break;
+            // The box of the turned vertices, then moved: rounding keeps the order of sums, so
+            // position + the least turned vertex is the least of the moved ones, to the bit.
+            Aabb turned;
             Real radiusSquared = 0;
             for (const Vec3& vertex : shape.hull->vertices) {
-                placed.box.grow(pose.position + rotation * vertex);
+                turned.grow(rotation * vertex);
                 radiusSquared = std::max(radiusSquared, vertex.squaredNorm());
             }
+            placed.box.min = pose.position + turned.min;
+            placed.box.max = pose.position + turned.max;
             placed.radius = std::sqrt(radiusSquared);
             return placed;
         }
@@ -80,15 +84,19 @@ void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std:
         dynamic[i] = body.type == BodyType::Dynamic ? 1 : 0;
         const PlacedShape placed = placeShape(body.shape, body.transform);
         Real speed = 0;  // bound on the speed of the body's points, m/s
-        if (const Motion* motion = world.motionOf(static_cast<int>(i)))
-            speed = motion->linearVelocity.norm() +
-                    motion->angularVelocity.norm() * std::max(placed.radius, std::numeric_limits<Real>::min());
+        if (body.motionIndex >= 0) {
+            const Motion& motion = world.motions[static_cast<std::size_t>(body.motionIndex)];
+            speed = motion.linearVelocity.norm() +
+                    motion.angularVelocity.norm() * std::max(placed.radius, std::numeric_limits<Real>::min());
+        }
         const Real grow = dt * (speed + gravityGain) + kBoundsMargin;
         Aabb box = placed.box;
         box.min.array() -= grow;
         box.max.array() += grow;
-        // A NaN would break the sort's order; an empty box overlaps nothing and sorts last.
-        if (!box.min.allFinite() || !box.max.allFinite()) box = Aabb{};
+        // A NaN would break the sort's order; an empty box overlaps nothing and sorts last. x - x
+        // is 0 for a finite x and NaN for an infinite or NaN one: one test checks all six.
+        const Real notFinite = (box.min - box.min).sum() + (box.max - box.max).sum();
+        if (notFinite != 0) box = Aabb{};
         bounds[i] = box;
     }
 }
@@ -127,21 +135,20 @@ int chooseSweepAxis(const Vec3& variance, int previousAxis) {
     if (previousAxis < 0 || previousAxis > 2) return widest;
     return variance[widest] > kAxisSwitchRatio * variance[previousAxis] ? widest : previousAxis;
 }
+
+SweepAxes sweepAxes(const Vec3& variance, int sweepAxis) {
+    const int next = (sweepAxis + 1) % 3, last = (sweepAxis + 2) % 3;
+    return variance[last] > variance[next] ? SweepAxes{sweepAxis, last, next} : SweepAxes{sweepAxis, next, last};
+}
 // [ch05-axis]
 
 void makeEndpoints(const std::vector<Aabb>& bounds, int axis, std::vector<SweepEndpoint>& endpoints) {
-    endpoints.resize(2 * bounds.size());
-    for (std::size_t i = 0; i < bounds.size(); ++i) {
-        endpoints[2 * i] = SweepEndpoint{bounds[i].min[axis], static_cast<int>(i), false};
-        endpoints[2 * i + 1] = SweepEndpoint{bounds[i].max[axis], static_cast<int>(i), true};
-    }
+    endpoints.resize(bounds.size());
+    for (std::size_t i = 0; i < bounds.size(); ++i) endpoints[i] = SweepEndpoint{bounds[i].min[axis], static_cast<int>(i)};
 }
 
 void refreshEndpointValues(const std::vector<Aabb>& bounds, int axis, std::vector<SweepEndpoint>& endpoints) {
-    for (SweepEndpoint& end : endpoints) {
-        const Aabb& box = bounds[static_cast<std::size_t>(end.body)];
-        end.value = end.isUpper ? box.max[axis] : box.min[axis];
-    }
+    for (SweepEndpoint& end : endpoints) end.value = bounds[static_cast<std::size_t>(end.body)].min[axis];
 }
 
 // [ch05-insertion-sort]
@@ -164,59 +171,122 @@ long insertionSortEndpoints(std::vector<SweepEndpoint>& endpoints, long moveBudg
 // [ch05-insertion-sort]
 
 void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints) {
-    std::sort(endpoints.begin(), endpoints.end(), endpointBefore);
+    // A lambda, not the function's address: std::sort then compares inline.
+    std::sort(endpoints.begin(), endpoints.end(),
+              [](const SweepEndpoint& a, const SweepEndpoint& b) { return endpointBefore(a, b); });
 }
 
 namespace {
 
-/// An active list of the sweep: intervals open at this point of the sweep, with their boxes on
-/// the two other axes. Each opening interval scans the whole list, so the list keeps what that
-/// scan reads in four plain arrays, one per bound, read straight through: the compiler tests
-/// several entries per instruction (SIMD), where looking each body's box up in the large bounds
-/// array would wait on memory for every entry.
-struct ActiveList {
-    std::vector<Real> lowA, highA, lowB, highB;  // the boxes on the first and second other axis
-    std::vector<int> body;
+/// The sweep reads the columns in blocks of this many entries (see scanForward). On a layer a
+/// body meets a few dozen intervals: smaller blocks pay more for the loop around them, larger
+/// ones test more entries past the interval's end.
+constexpr std::size_t kBlock = 16;
 
-    std::size_t size() const { return body.size(); }
-    void reserve(std::size_t capacity) {
-        for (std::vector<Real>* bound : {&lowA, &highA, &lowB, &highB}) bound->reserve(capacity);
-        body.reserve(capacity);
+/// Resizes every column to `size` entries.
+void resizeColumns(SweepColumns& columns, std::size_t size) {
+    for (std::vector<Real>* bound : {&columns.low, &columns.high, &columns.lowA, &columns.highA, &columns.lowB, &columns.highB})
+        bound->resize(size);
+    columns.body.resize(size);
+    columns.dynamic.resize(size);
+}
+
+/// Copies the boxes into the columns in the order of the sorted lower ends, skipping empty
+/// boxes (a non-finite body), then kBlock sentinels: boxes that start at +infinity and overlap
+/// nothing.
+void layOutColumns(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
+                   const std::vector<char>& dynamic, const SweepAxes& axes, SweepColumns& columns) {
+    resizeColumns(columns, endpoints.size() + kBlock);
+    std::size_t count = 0;
+    for (const SweepEndpoint& end : endpoints) {
+        const std::size_t body = static_cast<std::size_t>(end.body);
+        const Aabb& box = bounds[body];
+        if (box.min[axes.sweep] > box.max[axes.sweep]) continue;  // an empty box overlaps nothing
+        columns.low[count] = box.min[axes.sweep], columns.high[count] = box.max[axes.sweep];
+        columns.lowA[count] = box.min[axes.first], columns.highA[count] = box.max[axes.first];
+        columns.lowB[count] = box.min[axes.second], columns.highB[count] = box.max[axes.second];
+        columns.body[count] = end.body;
+        columns.dynamic[count] = dynamic[body];
+        ++count;
     }
-    void add(Real boxLowA, Real boxHighA, Real boxLowB, Real boxHighB, int bodyIndex) {
-        lowA.push_back(boxLowA), highA.push_back(boxHighA), lowB.push_back(boxLowB), highB.push_back(boxHighB);
-        body.push_back(bodyIndex);
+    constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
+    for (std::size_t i = count; i < count + kBlock; ++i) {
+        columns.low[i] = columns.lowA[i] = columns.lowB[i] = kInfinity;
+        columns.high[i] = columns.highA[i] = columns.highB[i] = -kInfinity;
+        columns.body[i] = -1;
+        columns.dynamic[i] = 0;
     }
-    /// Removes entry `at`: the last entry takes its place. Returns the body that moved, or -1.
-    int removeAt(std::size_t at) {
-        const std::size_t last = size() - 1;
-        lowA[at] = lowA[last], highA[at] = highA[last], lowB[at] = lowB[last], highB[at] = highB[last];
-        body[at] = body[last];
-        lowA.pop_back(), highA.pop_back(), lowB.pop_back(), highB.pop_back(), body.pop_back();
-        return at < last ? body[at] : -1;
-    }
+    columns.count = count;
+}
+
+/// What the scan reads of the columns, as plain pointers taken once per sweep: the compiler
+/// then keeps them in registers, where it would reload them from the vectors after every pair
+/// written.
+struct ColumnView {
+    const Real *low, *high, *lowA, *highA, *lowB, *highB;
 };
 
-/// Calls hit(j) for every entry j of the list whose box overlaps [lowA, highA] x [lowB, highB].
-/// Few entries do, so blocks of 16 are tested first with one branch-free loop the compiler turns
-/// into SIMD instructions, and only a block with an overlap is looked at entry by entry.
+/// Entry i's box, as the scan compares the others with it.
+struct Interval {
+    Real high, lowA, highA, lowB, highB;
+};
+
+Interval intervalAt(const ColumnView& columns, std::size_t i) {
+    return Interval{columns.high[i], columns.lowA[i], columns.highA[i], columns.lowB[i], columns.highB[i]};
+}
+
+/// Whether entry j, which starts after the interval on the sweep axis, overlaps its box: five
+/// comparisons joined with & rather than &&, so they compile without branches.
+inline int overlaps(const ColumnView& columns, std::size_t j, const Interval& box) {
+    return (columns.low[j] <= box.high) & (columns.lowA[j] <= box.highA) & (box.lowA <= columns.highA[j]) &
+           (columns.lowB[j] <= box.highB) & (box.lowB <= columns.highB[j]);
+}
+
+/// A block of kBlock entries tested against one interval: how many meet it on the sweep axis,
+/// and how many of those overlap it on the first other axis too.
+struct BlockTest {
+    int onAxis = 0;
+    int passed = 0;
+};
+
+/// One branch-free loop over contiguous columns, which the compiler turns into SIMD
+/// instructions (a few for the whole block).
+inline BlockTest testBlock(const ColumnView& columns, std::size_t first, const Interval& box) {
+    BlockTest test;
+    for (std::size_t j = first; j < first + kBlock; ++j) {
+        const int meets = columns.low[j] <= box.high;
+        test.onAxis += meets;
+        test.passed += meets & (columns.lowA[j] <= box.highA) & (box.lowA <= columns.highA[j]);
+    }
+    return test;
+}
+
+/// How many entries of a block overlap the interval's box: the same kind of loop, all five
+/// comparisons.
+inline int countOverlaps(const ColumnView& columns, std::size_t first, const Interval& box) {
+    int hits = 0;
+    for (std::size_t j = first; j < first + kBlock; ++j) hits += overlaps(columns, j, box);
+    return hits;
+}
+
+/// Calls hit(j) for every entry j after the interval's entry i whose box overlaps its box, and
+/// returns how many entries after i meet it on the sweep axis. The lower ends are sorted, so
+/// those are the entries from i + 1 up to the first that starts past the interval's upper end:
+/// the scan stops at the first block that holds one. A block is tested first on the sweep axis
+/// and the first other axis only, which on a spread layer rejects nearly every block; a block
+/// that passes is tested on all three (in a pile, many do), and only a block with a hit is
+/// looked at entry by entry.
 template <class Hit>
-void scanActiveList(const ActiveList& active, Real lowA, Real highA, Real lowB, Real highB, Hit hit) {
-    const Real* lowsA = active.lowA.data();
-    const Real* highsA = active.highA.data();
-    const Real* lowsB = active.lowB.data();
-    const Real* highsB = active.highB.data();
-    constexpr std::size_t kBlock = 16;
-    for (std::size_t first = 0; first < active.size(); first += kBlock) {
-        const std::size_t last = std::min(first + kBlock, active.size());
-        const auto overlaps = [&](std::size_t j) {
-            return (lowsA[j] <= highA) & (lowA <= highsA[j]) & (lowsB[j] <= highB) & (lowB <= highsB[j]);
-        };
-        int any = 0;
-        for (std::size_t j = first; j < last; ++j) any |= overlaps(j);
-        if (!any) continue;
-        for (std::size_t j = first; j < last; ++j)
-            if (overlaps(j)) hit(active.body[j]);
+std::size_t scanForward(const ColumnView& columns, std::size_t i, const Interval& box, Hit hit) {
+    std::size_t met = 0;
+    for (std::size_t first = i + 1;; first += kBlock) {
+        const BlockTest block = testBlock(columns, first, box);
+        if (block.passed > 0 && countOverlaps(columns, first, box) > 0) {
+            for (std::size_t j = first; j < first + kBlock; ++j)
+                if (overlaps(columns, j, box)) hit(j);
+        }
+        met += static_cast<std::size_t>(block.onAxis);
+        if (block.onAxis < static_cast<int>(kBlock)) return met;  // the rest start past the interval
     }
 }
 
@@ -224,49 +294,36 @@ void scanActiveList(const ActiveList& active, Real lowA, Real highA, Real lowB, 
 
 // [ch05-sweep]
 long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
-                    const std::vector<char>& dynamicBodies, int axis, std::vector<BodyPair>& pairs) {
-    const int axisA = (axis + 1) % 3, axisB = (axis + 2) % 3;
-    // Two active lists: a pair needs a dynamic body (needsContact), so an opening static or
-    // kinematic interval only scans the dynamic list, and a large static ground, open over the
-    // whole sweep, sits in a short list of its own.
-    ActiveList dynamicList, otherList;
-    dynamicList.reserve(256);
-    otherList.reserve(16);
-    std::vector<int> slot(bounds.size(), -1);  // where each body sits in its list, -1 when closed
-    long scanned = 0;
-    for (const SweepEndpoint& end : endpoints) {
-        const std::size_t body = static_cast<std::size_t>(end.body);
-        const bool dynamic = dynamicBodies[body] != 0;
-        ActiveList& ownList = dynamic ? dynamicList : otherList;
-        if (end.isUpper) {
-            // The interval closes: the last entry of its list takes its place, O(1).
-            const int at = slot[body];
-            if (at < 0) continue;
-            const int moved = ownList.removeAt(static_cast<std::size_t>(at));
-            if (moved >= 0) slot[static_cast<std::size_t>(moved)] = at;
-            slot[body] = -1;
-            continue;
-        }
-        const Aabb& box = bounds[body];
-        if (box.min[axis] > box.max[axis]) continue;  // an empty box (non-finite body) opens nothing
-        const Real lowA = box.min[axisA], highA = box.max[axisA], lowB = box.min[axisB], highB = box.max[axisB];
-        // The interval opens: on this axis it overlaps every interval still open. Those whose
-        // boxes overlap on the other two axes as well are candidate pairs.
-        const auto addPair = [&](int other) {
-            pairs.push_back(BodyPair{std::min(end.body, other), std::max(end.body, other)});
+                    const std::vector<char>& dynamicBodies, const SweepAxes& axes, std::vector<BodyPair>& pairs,
+                    SweepColumns& columns) {
+    layOutColumns(endpoints, bounds, dynamicBodies, axes, columns);
+    const ColumnView view{columns.low.data(),  columns.high.data(), columns.lowA.data(),
+                          columns.highA.data(), columns.lowB.data(), columns.highB.data()};
+    long looked = 0;
+    for (std::size_t i = 0; i < columns.count; ++i) {
+        const int body = columns.body[i];
+        const bool dynamic = columns.dynamic[i] != 0;
+        const auto addPair = [&](std::size_t j) {
+            if (!needsContact(dynamic, columns.dynamic[j] != 0)) return;
+            const int other = columns.body[j];
+            pairs.push_back(BodyPair{std::min(body, other), std::max(body, other)});
         };
-        scanned += static_cast<long>(dynamicList.size());
-        scanActiveList(dynamicList, lowA, highA, lowB, highB, addPair);
+        const std::size_t met = scanForward(view, i, intervalAt(view, i), addPair);
         if (dynamic) {
-            scanned += static_cast<long>(otherList.size());
-            scanActiveList(otherList, lowA, highA, lowB, highB, addPair);
+            looked += static_cast<long>(met);
+        } else {  // only the dynamic ones need a contact with this body
+            for (std::size_t j = i + 1; j <= i + met; ++j) looked += columns.dynamic[j];
         }
-        slot[body] = static_cast<int>(ownList.size());
-        ownList.add(lowA, highA, lowB, highB, end.body);
     }
-    return scanned;
+    return looked;
 }
 // [ch05-sweep]
+
+long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
+                    const std::vector<char>& dynamic, int axis, std::vector<BodyPair>& pairs) {
+    SweepColumns columns;
+    return sweepEndpoints(endpoints, bounds, dynamic, SweepAxes{axis, (axis + 1) % 3, (axis + 2) % 3}, pairs, columns);
+}
 
 void bruteForcePairs(const std::vector<Aabb>& bounds, const std::vector<char>& dynamic, std::vector<BodyPair>& pairs) {
     const int bodyCount = static_cast<int>(bounds.size());
@@ -280,30 +337,37 @@ void bruteForcePairs(const std::vector<Aabb>& bounds, const std::vector<char>& d
     }
 }
 
-void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount) {
+namespace {
+
+/// Stable counting sort of `from` into `to` by key(pair), a body index below bodyCount.
+template <class Key>
+void countingSortPairs(const std::vector<BodyPair>& from, std::vector<BodyPair>& to, int bodyCount,
+                       std::vector<int>& starts, Key key) {
+    starts.assign(static_cast<std::size_t>(bodyCount) + 1, 0);
+    for (const BodyPair& pair : from) ++starts[static_cast<std::size_t>(key(pair)) + 1];
+    for (std::size_t body = 1; body < starts.size(); ++body) starts[body] += starts[body - 1];
+    to.resize(from.size());
+    for (const BodyPair& pair : from) to[static_cast<std::size_t>(starts[static_cast<std::size_t>(key(pair))]++)] = pair;
+}
+
+}  // namespace
+
+void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount, BroadphaseBuffers& buffers) {
     if (std::is_sorted(pairs.begin(), pairs.end())) return;
-    if (pairs.size() < 1024) {
+    // The counting sorts cost two passes over the n bodies; few pairs are cheaper to compare.
+    if (pairs.size() < 1024 || pairs.size() < static_cast<std::size_t>(bodyCount) / 8) {
         std::sort(pairs.begin(), pairs.end());
         return;
     }
-    // Least significant digit radix sort of the key bodyA * n + bodyB, 11 bits a pass: a few
-    // passes over the list in order, where a comparison sort would jump around it k log k times.
-    const std::uint64_t n = static_cast<std::uint64_t>(std::max(bodyCount, 1));
-    std::vector<std::uint64_t> keys(pairs.size()), sorted(pairs.size());
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-        keys[i] = static_cast<std::uint64_t>(pairs[i].bodyA) * n + static_cast<std::uint64_t>(pairs[i].bodyB);
-    const std::uint64_t largest = n * n;
-    constexpr int kDigitBits = 11;
-    constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
-    for (int shift = 0; shift < 64 && (largest >> shift) > 0; shift += kDigitBits) {
-        std::size_t start[kBuckets + 1] = {};
-        for (const std::uint64_t key : keys) ++start[((key >> shift) & (kBuckets - 1)) + 1];
-        for (std::size_t bucket = 1; bucket <= kBuckets; ++bucket) start[bucket] += start[bucket - 1];
-        for (const std::uint64_t key : keys) sorted[start[(key >> shift) & (kBuckets - 1)]++] = key;
-        keys.swap(sorted);
-    }
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-        pairs[i] = BodyPair{static_cast<int>(keys[i] / n), static_cast<int>(keys[i] % n)};
+    // Least significant key first: by bodyB, then stably by bodyA, which keeps bodyB's order
+    // within each bodyA.
+    countingSortPairs(pairs, buffers.pairs, bodyCount, buffers.pairStarts, [](const BodyPair& pair) { return pair.bodyB; });
+    countingSortPairs(buffers.pairs, pairs, bodyCount, buffers.pairStarts, [](const BodyPair& pair) { return pair.bodyA; });
+}
+
+void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount) {
+    BroadphaseBuffers buffers;
+    sortPairsCanonical(pairs, bodyCount, buffers);
 }
 
 }  // namespace stepwise

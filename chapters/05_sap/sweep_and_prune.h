@@ -1,10 +1,11 @@
 #pragma once
 // Sweep and prune, the pieces one at a time: bounds that cover a frame's motion, the axis with
-// the largest spread, the interval ends sorted along it (from scratch, or from last step's order
-// by insertion sort), and the sweep with an active list. After Baraff's sort and sweep
-// (Dynamic Simulation of Non-Penetrating Rigid Bodies, PhD thesis, Cornell, 1992), Cohen, Lin,
-// Manocha and Ponamgi (I-COLLIDE, I3D 1995), who keep the sorted lists from step to step, and
-// Ericson (Real-Time Collision Detection, 2005, section 7.5). The stage that strings the pieces
+// the largest spread, the intervals' lower ends sorted along it (from scratch, or from last
+// step's order by insertion sort), and the sweep. After Baraff's sort and sweep (Dynamic
+// Simulation of Non-Penetrating Rigid Bodies, PhD thesis, Cornell, 1992), Cohen, Lin, Manocha
+// and Ponamgi (I-COLLIDE, I3D 1995), who keep the sorted lists from step to step, Ericson
+// (Real-Time Collision Detection, 2005, section 7.5), and Terdiman's box pruning (2002), which
+// sorts the lower ends only and scans forward from each. The stage that strings the pieces
 // together is in broadphase.cpp.
 
 #include "world/world.h"
@@ -48,15 +49,22 @@ constexpr Real kAxisSwitchRatio = Real(1.2);
 /// another exceeds it by kAxisSwitchRatio. `previousAxis` -1: no previous axis.
 int chooseSweepAxis(const Vec3& variance, int previousAxis);
 
-/// The sort order of interval ends: by value, lower ends before upper ends at equal values (so
-/// touching intervals overlap, as Aabb::overlaps says), then by body. A total order.
+/// The axes of a sweep: along `sweep`; then `first`, the other axis along which the centres
+/// spread more, is tested on every interval the sweep meets, and `second` only on the few that
+/// pass (on a ground, `second` is the vertical, along which nearly every pair overlaps).
+struct SweepAxes {
+    int sweep = 0, first = 1, second = 2;
+};
+
+/// The sweep along `sweepAxis` with the other two ordered by `variance`.
+SweepAxes sweepAxes(const Vec3& variance, int sweepAxis);
+
+/// The sort order of the lower ends: by value, then by body. A total order.
 inline bool endpointBefore(const SweepEndpoint& a, const SweepEndpoint& b) {
-    if (a.value != b.value) return a.value < b.value;
-    if (a.isUpper != b.isUpper) return !a.isUpper;
-    return a.body < b.body;
+    return a.value < b.value || (a.value == b.value && a.body < b.body);
 }
 
-/// Two ends per body, in body order, with their values on `axis` (unsorted).
+/// One lower end per body, in body order, with its value on `axis` (unsorted).
 void makeEndpoints(const std::vector<Aabb>& bounds, int axis, std::vector<SweepEndpoint>& endpoints);
 
 /// Sets each end's value from the bounds, keeping the order of the list.
@@ -70,10 +78,16 @@ long insertionSortEndpoints(std::vector<SweepEndpoint>& endpoints, long moveBudg
 /// A full sort, O(n log n) whatever the starting order.
 void fullSortEndpoints(std::vector<SweepEndpoint>& endpoints);
 
-/// Walks the sorted ends with active lists: a lower end meets every interval still open on the
-/// axis; those whose boxes also overlap on the other two axes, and that need a contact, are
-/// pairs. Appends them (bodyA < bodyB, in sweep order) and returns how many pairs the sweep
-/// looked at: the pairs that overlap on the axis and need a contact.
+/// Walks the bodies in the order of their sorted lower ends: each interval meets, on the axis,
+/// the intervals that start after its lower end and no later than its upper end. Those whose
+/// boxes also overlap on the other two axes, and that need a contact, are pairs. Appends them
+/// (bodyA < bodyB, in sweep order) and returns how many pairs the sweep looked at: the pairs
+/// that overlap on the axis and need a contact. `columns` is working memory.
+long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
+                    const std::vector<char>& dynamic, const SweepAxes& axes, std::vector<BodyPair>& pairs,
+                    SweepColumns& columns);
+
+/// The same along `axis`, the other two in index order, with working memory of its own.
 long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vector<Aabb>& bounds,
                     const std::vector<char>& dynamic, int axis, std::vector<BodyPair>& pairs);
 
@@ -81,8 +95,11 @@ long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vect
 /// canonical order. The reference sweep and prune must agree with.
 void bruteForcePairs(const std::vector<Aabb>& bounds, const std::vector<char>& dynamic, std::vector<BodyPair>& pairs);
 
-/// Sorts pairs into canonical order (by bodyA, then bodyB) in O(n + k): counting by bodyA, then
-/// each body's few partners sorted.
+/// Sorts pairs into canonical order (by bodyA, then bodyB) in O(n + k): a counting sort by
+/// bodyB, then a stable one by bodyA. `buffers` is working memory.
+void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount, BroadphaseBuffers& buffers);
+
+/// The same, with working memory of its own.
 void sortPairsCanonical(std::vector<BodyPair>& pairs, int bodyCount);
 
 }  // namespace stepwise

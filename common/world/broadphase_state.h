@@ -4,6 +4,7 @@
 // like the original. Chapter 5 (sweep and prune) fills it; earlier chapters leave it empty.
 
 #include "math/math.h"
+#include "world/contact.h"
 #include "world/settings.h"
 
 #include <string>
@@ -11,21 +12,41 @@
 
 namespace stepwise {
 
-/// One end of a body's interval on the sweep axis. Sorted by (value, lower end first, body):
-/// a total order, so a full sort and an incremental one give the same sequence, and an interval
-/// that ends exactly where another starts still counts as overlapping.
+/// A body's place on the sweep axis: the lower end of its interval. Sorted by (value, body): a
+/// total order, so a full sort and an incremental one give the same sequence.
 struct SweepEndpoint {
-    Real value = 0;        // coordinate on the sweep axis, m
+    Real value = 0;  // the lower end of the body's interval on the sweep axis, m
     int body = -1;
-    bool isUpper = false;  // the interval's upper end (max), else its lower end (min)
+};
+
+/// The boxes of one sweep laid out in sweep order, one array per bound: entry i is the body
+/// whose lower end is i-th along the axis. The sweep reads them straight through. `count`
+/// entries, then a few sentinels that overlap nothing, so a block read past the last box stays
+/// inside the arrays.
+struct SweepColumns {
+    std::vector<Real> low, high;    // the boxes on the sweep axis
+    std::vector<Real> lowA, highA;  // on the first other axis
+    std::vector<Real> lowB, highB;  // on the second other axis
+    std::vector<int> body;
+    std::vector<char> dynamic;      // 1 for a dynamic body
+    std::size_t count = 0;
+};
+
+/// Working memory of one broadphase run, rebuilt every step: kept in the state only so that a
+/// step allocates nothing once the vectors have grown.
+struct BroadphaseBuffers {
+    SweepColumns columns;
+    std::vector<BodyPair> pairs;   // the pairs half sorted
+    std::vector<int> pairStarts;   // the counting sort's first slot per body
 };
 
 struct BroadphaseState {
     // Kept from step to step (temporal coherence).
     int axis = -1;                          // sweep axis of the last step: 0 x, 1 y, 2 z; -1 none yet
-    std::vector<SweepEndpoint> endpoints;   // two per body, sorted along `axis` as of the last step
+    std::vector<SweepEndpoint> endpoints;   // one per body, sorted along `axis` as of the last step
     std::vector<Aabb> bounds;               // this step's bounds, one per body, grown by the motion
     std::vector<char> dynamic;              // this step's body types, one per body: 1 for dynamic
+    BroadphaseBuffers buffers;              // working memory, no state (see BroadphaseBuffers)
 
     // What the last run did: for tests, the demo panel and the run report.
     BroadphaseMode used = BroadphaseMode::Auto;  // Sap or Brute once a broadphase ran; Auto: none ran

@@ -39,7 +39,6 @@ bool drawSweepIntervals(const std::string& path) {
     svg.text(view, {2.6, axisZ - 0.3}, "x (sweep axis)");
     int lane = 0;
     for (const SweepEndpoint& end : state.endpoints) {
-        if (end.isUpper) continue;
         const std::size_t i = static_cast<std::size_t>(end.body);
         const Aabb& box = state.bounds[i];
         const std::string colour = colours[i % 7];

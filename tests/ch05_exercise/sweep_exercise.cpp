@@ -1,6 +1,7 @@
 // Exercise check for chapter 5 (`ctest -L ch05-exercise`): rewrite sweepEndpoints in
 // chapters/05_sap/sweep_and_prune.cpp from the page (the textbook form will do: one active list
-// of body indices, each opening interval tested against all of them), and run this. On random
+// of body indices, the intervals that ended before the next lower end dropped from it, each
+// opening interval tested against the rest), and run this. On random
 // boxes, with intervals that touch exactly, coincide, or hold static and kinematic bodies, the
 // sweep must find exactly the pairs brute force finds, and count the pairs it looked at.
 #include "05_sap/sweep_and_prune.h"
