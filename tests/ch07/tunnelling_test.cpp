@@ -1,0 +1,106 @@
+// What chapter 7 is for: fast small bodies do not cross a 5 cm wall, a spinning rod does not,
+// and two bullets that meet head on keep their momentum.
+#include "07_ccd/chapter.h"
+#include "07_ccd/scenes.h"
+#include "07_ccd/shots.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace stepwise;
+
+namespace {
+
+/// Shots at 50 to 500 m/s through chapter 7's pipeline with the given CCD setting: how many
+/// ended a step with their centre past the wall.
+int countTunnels(CcdMode ccd, int shots) {
+    Random random(1407);
+    int tunnels = 0;
+    for (int i = 0; i < shots; ++i) {
+        const Real speed = random.uniformReal(50, 500);
+        World world = buildShot(randomShot(random, speed), ccd);
+        Pipeline pipeline = makeChapter07Pipeline(world);
+        bool crossed = false;
+        for (int step = 0; step < kShotSteps; ++step) {
+            pipeline.step(world);
+            crossed = crossed || tunnelled(world);
+        }
+        tunnels += crossed ? 1 : 0;
+    }
+    return tunnels;
+}
+
+/// The largest x any corner of a box body reaches.
+Real farthestX(const World& world, int body) {
+    const Body& rod = world.bodies[std::size_t(body)];
+    Real farthest = -kRealMax;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 local((corner & 1 ? 1 : -1) * rod.shape.halfExtents.x(), (corner & 2 ? 1 : -1) * rod.shape.halfExtents.y(),
+                         (corner & 4 ? 1 : -1) * rod.shape.halfExtents.z());
+        farthest = std::max(farthest, rod.transform.apply(local).x());
+    }
+    return farthest;
+}
+
+}  // namespace
+
+TEST_CASE("1,000 shots of spheres, boxes and hulls at 50 to 500 m/s: none crosses a 5 cm wall with CCD", "[ch07][tunnel]") {
+    CHECK(countTunnels(CcdMode::Auto, 1000) == 0);
+}
+
+TEST_CASE("the same shots with CCD off go through the wall: the problem the chapter solves", "[ch07][tunnel]") {
+    const int tunnels = countTunnels(CcdMode::Off, 1000);
+    INFO(tunnels << " of 1000 shots tunnelled with CCD off");
+    CHECK(tunnels > 500);
+}
+
+TEST_CASE("a thin rod spinning at 100 rad/s and flying at 50 m/s never ends a step through the wall", "[ch07][tunnel]") {
+    for (CcdMode ccd : {CcdMode::Auto, CcdMode::Off}) {
+        World world = buildSpinningRod(ccd);
+        const int rod = world.findBody("rod");
+        Pipeline pipeline = makeChapter07Pipeline(world);
+        Real deepest = -kRealMax;   // farthest any corner got past the wall's near face
+        bool crossed = false;
+        for (int step = 0; step < 30; ++step) {
+            pipeline.step(world);
+            deepest = std::max(deepest, farthestX(world, rod) + kWallHalfThickness);
+            crossed = crossed || world.bodies[std::size_t(rod)].transform.position.x() > 0;
+        }
+        INFO(toString(ccd) << ": deepest corner " << deepest << " m past the near face");
+        if (ccd == CcdMode::Auto) {
+            CHECK_FALSE(crossed);
+            CHECK(deepest < 2 * world.settings.slop);  // no corner deeper than the contact's allowance
+            CHECK(world.step.ccd.totalToiEvents > 0);
+        } else {
+            CHECK(crossed);
+        }
+    }
+}
+
+TEST_CASE("two bullets head on at 300 m/s each collide and keep their momentum within 1e-4", "[ch07][tunnel]") {
+    World world = buildHeadOnBullets();
+    Pipeline pipeline = makeChapter07Pipeline(world);
+    const int left = world.findBody("left"), right = world.findBody("right");
+    const auto momentum = [&] {
+        return world.motionOf(left)->mass * world.motionOf(left)->linearVelocity +
+               world.motionOf(right)->mass * world.motionOf(right)->linearVelocity;
+    };
+    const Vec3 before = momentum();
+    const Real scale = world.motionOf(right)->mass * 300;  // the larger body's momentum, N s
+    bool passed = false;
+    for (int step = 0; step < 10; ++step) {
+        pipeline.step(world);
+        passed = passed || world.bodies[std::size_t(left)].transform.position.x() > world.bodies[std::size_t(right)].transform.position.x();
+        CHECK((momentum() - before).norm() <= Real(1e-4) * scale);
+    }
+    CHECK_FALSE(passed);
+    CHECK(world.step.ccd.totalToiEvents >= 1);
+    CHECK(world.motionOf(left)->linearVelocity.x() < 0);   // the light one is thrown back
+    // Without CCD they pass through each other.
+    World through = buildHeadOnBullets();
+    through.settings.ccd = CcdMode::Off;
+    Pipeline plain = makeChapter07Pipeline(through);
+    for (int step = 0; step < 10; ++step) plain.step(through);
+    CHECK(through.bodies[std::size_t(left)].transform.position.x() > through.bodies[std::size_t(right)].transform.position.x());
+}
