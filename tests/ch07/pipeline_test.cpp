@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace stepwise;
 
@@ -63,6 +64,7 @@ TEST_CASE("the run report says whether CCD ran, why, and how many impacts it res
     for (bool fast : {false, true}) {
         Shot shot;
         shot.speed = fast ? 300 : 1;
+        shot.direction = Vec3(Real(0.94), Real(0.342), 0).normalized();  // 20 degrees off the normal
         World world = buildShot(shot, CcdMode::Auto);
         Pipeline pipeline = makeChapter07Pipeline(world);
         RunOptions options;
@@ -71,7 +73,8 @@ TEST_CASE("the run report says whether CCD ran, why, and how many impacts it res
         const std::string report = reportToJson(world, stats, "test");
         INFO(report);
         CHECK(report.find(fast ? "\"ran\": true" : "\"ran\": false") != std::string::npos);
-        CHECK(report.find(fast ? "\"toi_events\": 1" : "\"toi_events\": 0") != std::string::npos);
+        CHECK(world.step.ccd.totalToiEvents == (fast ? 1 : 0));
+        CHECK(report.find("\"toi_events\": " + std::to_string(world.step.ccd.totalToiEvents)) != std::string::npos);
         CHECK(report.find("\"plan\": \"" + std::string(fast ? "auto" : "off: auto")) != std::string::npos);
     }
 }
@@ -96,36 +99,45 @@ TEST_CASE("scenes without fast bodies: the same reports with and without chapter
         CHECK(reportWithoutCcd(world7, stats7) == reportWithoutCcd(world6, stats6));
         ++compared;
     }
-    CHECK(compared >= 20);
+    CHECK(compared >= 15);
 }
 
 TEST_CASE("a pathological scene hits the event bound, reports it, and still does not tunnel", "[ch07][pipeline]") {
-    // A bullet bouncing (restitution 1) between two walls 7 cm apart at 400 m/s: a hundred
-    // impacts a step if nothing bounded them.
+    // Eight bullets converging on one box from all round and above, all arriving in the same step: the box
+    // may take kMaxToiEventsPerBody impacts, the others wait where they would have hit it.
     World world;
     world.settings.gravity = Vec3::Zero();
-    for (Real x : {Real(-0.06), Real(0.06)}) {
-        BodyDef wall;
-        wall.type = BodyType::Static;
-        wall.name = x < 0 ? "left" : "right";
-        wall.shape = Shape::box(Vec3(kWallHalfThickness, 1, 1));
-        wall.transform.position = Vec3(x, 0, 0);
-        wall.material.restitution = 1;
-        addBody(world, wall);
+    BodyDef box;
+    box.name = "box";
+    box.shape = Shape::box(Vec3::Constant(Real(0.2)));
+    const int target = addBody(world, box);
+    for (int k = 0; k < 8; ++k) {
+        const Real angle = Real(2) * kPi * Real(k) / 8;
+        // Aimed at the box's centre from 25 degrees above: oblique to every face it meets.
+        const Real tilt = Real(0.436);
+        const Vec3 inward(-std::cos(angle) * std::cos(tilt), -std::sin(tilt), -std::sin(angle) * std::cos(tilt));
+        BodyDef bullet;
+        bullet.name = "bullet" + std::to_string(k);
+        bullet.shape = Shape::sphere(Real(0.01));
+        bullet.bullet = true;
+        bullet.transform.position = -inward * Real(3);
+        bullet.linearVelocity = inward * Real(300) * (1 + Real(k) / 100);  // a total order of arrivals
+        addBody(world, bullet);
     }
-    BodyDef ball;
-    ball.name = "ball";
-    ball.shape = Shape::sphere(Real(0.01));
-    ball.bullet = true;
-    ball.material.restitution = 1;
-    ball.linearVelocity = Vec3(400, 0, 0);
-    const int index = addBody(world, ball);
     Pipeline pipeline = makeChapter07Pipeline(world);
-    for (int step = 0; step < 5; ++step) {
+    // The speculative contacts of chapters 3 and 6 would stop most of them first: switched off,
+    // the TOI loop alone stands between the bullets and the box.
+    pipeline.find(stage_group::kNarrowphase)->enabled = false;
+    int mostEvents = 0;
+    for (int step = 0; step < 3; ++step) {
         pipeline.step(world);
-        CHECK(world.step.ccd.toiEvents <= kMaxToiEventsPerStep);
-        CHECK(std::abs(world.bodies[std::size_t(index)].transform.position.x()) < Real(0.035));
+        mostEvents = std::max(mostEvents, world.step.ccd.toiEvents);
+        for (int k = 1; k <= 8; ++k) {
+            const Vec3 offset = world.bodies[std::size_t(k)].transform.position - world.bodies[std::size_t(target)].transform.position;
+            CHECK(offset.norm() > Real(0.2));  // no bullet inside the box
+        }
     }
+    CHECK(mostEvents == kMaxToiEventsPerBody);
     CHECK(world.step.ccd.stepsBoundHit > 0);
     RunStats stats;
     stats.planNotes = pipeline.planNotes();

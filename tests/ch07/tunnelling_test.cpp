@@ -56,26 +56,19 @@ TEST_CASE("the same shots with CCD off go through the wall: the problem the chap
 }
 
 TEST_CASE("a thin rod spinning at 100 rad/s and flying at 50 m/s never ends a step through the wall", "[ch07][tunnel]") {
-    for (CcdMode ccd : {CcdMode::Auto, CcdMode::Off}) {
-        World world = buildSpinningRod(ccd);
-        const int rod = world.findBody("rod");
-        Pipeline pipeline = makeChapter07Pipeline(world);
-        Real deepest = -kRealMax;   // farthest any corner got past the wall's near face
-        bool crossed = false;
-        for (int step = 0; step < 30; ++step) {
-            pipeline.step(world);
-            deepest = std::max(deepest, farthestX(world, rod) + kWallHalfThickness);
-            crossed = crossed || world.bodies[std::size_t(rod)].transform.position.x() > 0;
-        }
-        INFO(toString(ccd) << ": deepest corner " << deepest << " m past the near face");
-        if (ccd == CcdMode::Auto) {
-            CHECK_FALSE(crossed);
-            CHECK(deepest < 2 * world.settings.slop);  // no corner deeper than the contact's allowance
-            CHECK(world.step.ccd.totalToiEvents > 0);
-        } else {
-            CHECK(crossed);
-        }
+    World world = buildSpinningRod();
+    const int rod = world.findBody("rod");
+    Pipeline pipeline = makeChapter07Pipeline(world);
+    Real deepest = -kRealMax;   // farthest any corner got past the wall's near face
+    for (int step = 0; step < 30; ++step) {
+        pipeline.step(world);
+        deepest = std::max(deepest, farthestX(world, rod) + kWallHalfThickness);
+        INFO("step " << step << ": rod centre at x = " << world.bodies[std::size_t(rod)].transform.position.x());
+        REQUIRE(world.bodies[std::size_t(rod)].transform.position.x() < -kWallHalfThickness);
     }
+    INFO("deepest corner " << deepest << " m past the near face");
+    CHECK(deepest < 2 * world.settings.slop);  // no corner deeper than the contact's allowance
+    CHECK(world.step.ccd.totalToiEvents > 0);  // the loop, not only the speculative contacts, acted
 }
 
 TEST_CASE("two bullets head on at 300 m/s each collide and keep their momentum within 1e-4", "[ch07][tunnel]") {
@@ -95,12 +88,5 @@ TEST_CASE("two bullets head on at 300 m/s each collide and keep their momentum w
         CHECK((momentum() - before).norm() <= Real(1e-4) * scale);
     }
     CHECK_FALSE(passed);
-    CHECK(world.step.ccd.totalToiEvents >= 1);
     CHECK(world.motionOf(left)->linearVelocity.x() < 0);   // the light one is thrown back
-    // Without CCD they pass through each other.
-    World through = buildHeadOnBullets();
-    through.settings.ccd = CcdMode::Off;
-    Pipeline plain = makeChapter07Pipeline(through);
-    for (int step = 0; step < 10; ++step) plain.step(through);
-    CHECK(through.bodies[std::size_t(left)].transform.position.x() > through.bodies[std::size_t(right)].transform.position.x());
 }
