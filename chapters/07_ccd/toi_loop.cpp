@@ -166,6 +166,7 @@ void resolveTimesOfImpact(World& world, Real /*dt*/) {
     CcdState& state = world.step.ccd;
     state.fastBodies = state.toiEvents = state.rootIterations = 0;
     state.boundHit = false;
+    state.timeLost = 0;
     state.ghostBodies.clear();
     state.ghostPoses.clear();
     state.sweptBounds.clear();
@@ -209,6 +210,7 @@ void resolveTimesOfImpact(World& world, Real /*dt*/) {
         } else {
             state.boundHit = true;
         }
+        state.timeLost += Real(1) - t;
         state.ghostBodies.push_back(event.mover);
         state.ghostPoses.push_back(poseAt(loop.sweeps[std::size_t(event.mover)], t));
         // Both bodies wait at their impact poses; whatever involved them is looked at again.

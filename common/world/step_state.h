@@ -34,6 +34,7 @@ struct CcdState {
     int toiEvents = 0;           // impacts resolved (TOI > 0)
     int rootIterations = 0;      // distance queries of conservative advancement
     bool boundHit = false;       // an event bound stopped the loop early
+    Real timeLost = 0;           // over the impacts: the fraction of the step the bodies waited (1 - TOI)
     std::vector<int> ghostBodies;          // one per resolved event: the moving body
     std::vector<Transform> ghostPoses;     // and its pose at the time of impact
     std::vector<Aabb> sweptBounds;         // one per fast body: start and end pose bounded
