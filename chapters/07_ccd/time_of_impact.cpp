@@ -42,6 +42,26 @@ Real closingSpeedBound(const Sweep& a, const Shape& shapeA, const Sweep& b, cons
 // [ch07-motion-bound]
 
 // [ch07-conservative-advancement]
+/// The gap between the shapes along a unit direction n (A towards B): how far apart two planes
+/// with normal n can be with A behind one and B in front of the other. A lower bound of the
+/// distance for every n, and equal to it along the closest direction.
+static Real separationAlong(const ConvexProxy& a, const ConvexProxy& b, const Vec3& direction) {
+    return direction.dot(b.support(-direction)) - direction.dot(a.support(direction));
+}
+
+/// The larger gap along `normal` or along the centres' direction; `normal` becomes the one used
+/// (the bound on the closing speed must be taken along the direction whose gap is trusted).
+static Real guaranteedGap(const ConvexProxy& a, const ConvexProxy& b, Vec3& normal) {
+    Real best = separationAlong(a, b, normal);
+    const Vec3 centres = b.center() - a.center();
+    if (centres.norm() > 0) {
+        const Vec3 across = centres.normalized();
+        const Real acrossGap = separationAlong(a, b, across);
+        if (acrossGap > best) best = acrossGap, normal = across;
+    }
+    return best;
+}
+
 ToiResult timeOfImpact(const Shape& shapeA, const Sweep& a, const Shape& shapeB, const Sweep& b,
                        const ToiOptions& options) {
     ToiResult result;
@@ -52,20 +72,29 @@ ToiResult timeOfImpact(const Shape& shapeA, const Sweep& a, const Shape& shapeB,
         const GjkDistanceResult gap = gjkDistance(proxyA, proxyB);
         result.iterations = iteration + 1;
         result.time = t;
-        result.distance = gap.separated ? gap.distance : 0;
         result.pointA = gap.pointA;
         result.pointB = gap.pointB;
-        if (gap.separated && gap.distance > 0) result.normal = (gap.pointB - gap.pointA) / gap.distance;
+        // A GJK that stopped early (a degenerate simplex, the iteration cap) reports more than the
+        // true distance, and advancing by it once carried a hull through the wall. Then the
+        // advance trusts a separating plane's gap instead, a lower bound of the distance for any
+        // direction: GJK's, or the centres' when that one is poor.
+        Real distance = gap.separated ? gap.distance : 0;
+        if (gap.separated && gap.distance > 0) {
+            result.normal = (gap.pointB - gap.pointA).normalized();
+            if (gap.exit == GjkExit::Degenerate || gap.exit == GjkExit::IterationCap)
+                distance = std::min(distance, guaranteedGap(proxyA, proxyB, result.normal));
+        }
+        result.distance = std::max(Real(0), distance);
 
         // Within reach of the target: an impact now, or a contact the step began with.
-        if (!gap.separated || gap.distance <= options.target + options.tolerance) {
+        if (!gap.separated || distance <= options.target + options.tolerance) {
             result.state = iteration == 0 ? ToiState::Touching : ToiState::Hit;
             return result;
         }
         // No point closes the gap faster than the bound, so nothing touches before this advance.
         const Real bound = closingSpeedBound(a, shapeA, b, shapeB, result.normal);
         if (bound <= 0) return separatedResult(result);
-        t += (gap.distance - options.target) / bound;
+        t += (distance - options.target) / bound;
         if (t >= 1) return separatedResult(result);
     }
     result.state = ToiState::Stalled;

@@ -26,6 +26,17 @@ static ToiResult sweptQuery(const Shape& a, const Sweep& sweepA, const Shape& b,
     return timeOfImpact(a, sweepA, b, sweepB, options);
 }
 
+/// The mover's centre of mass alone (a ball of the target's radius) against the other shape:
+/// a body that begins the step overlapping something must at least not carry its centre through
+/// it (Box2D v3 keeps the centroid on the near side the same way). Touching again when the centre
+/// is already at or inside the surface: then it is the solver's.
+static ToiResult centreTimeOfImpact(const Shape& shapeB, const Sweep& a, const Sweep& b, const ToiOptions& options) {
+    const Shape core = Shape::sphere(std::max(options.target, kEpsilon));
+    Sweep centre = a;
+    centre.localCenter = Vec3::Zero();  // poses of the centre of mass itself
+    return timeOfImpact(core, centre, shapeB, b, options);
+}
+
 // [ch07-find-impact]
 bool findImpact(const World& world, int mover, int other, const std::vector<Sweep>& sweeps, const ToiOptions& options,
                 ToiEvent& event) {
@@ -37,12 +48,15 @@ bool findImpact(const World& world, int mover, int other, const std::vector<Swee
     ToiResult toi = sweptQuery(shapeA, a, shapeB, b, options);
     // Touching where the sweeps start, but apart: the contact the step began with may hold one
     // point while the body turns another into the wall. Advance to half the gap, so that a
-    // spinning rod stops before its far end crosses; an overlap (distance 0) is the solver's.
+    // spinning rod stops before its far end crosses. An overlap (distance 0) is the solver's,
+    // but the centre may not cross the other body on the way.
     if (toi.state == ToiState::Touching && toi.distance > options.target / 8) {
         ToiOptions closer = options;
         closer.target = toi.distance / 2;
         closer.tolerance = toi.distance / 8;
         toi = timeOfImpact(shapeA, a, shapeB, b, closer);
+    } else if (toi.state == ToiState::Touching) {
+        toi = centreTimeOfImpact(shapeB, a, b, options);
     }
     if (toi.state != ToiState::Hit && toi.state != ToiState::Stalled) return false;
     event = ToiEvent{mover, other, toi};
