@@ -55,16 +55,15 @@ World buildGunRange(Real speed, CcdMode ccd) {
         box.transform.position = Vec3(kTargetX + Real(0.3), Real(0.2) + Real(0.4) * Real(level), kTargetZ[1]);
         addBody(world, box);
     }
-    // The volley: bullet k left the muzzle k * 10 steps ago... in the other direction, so that
-    // bullet k arrives k * 10 steps after the first: it starts that far behind the muzzle.
+    // The volley: bullet k arrives k * 10 steps after the first, so it starts that much further
+    // back on its arc, as if fired from behind the muzzle: p(-L) = p - v L + g L^2 / 2, v(-L) = v - g L.
     for (int k = 0; k < 6; ++k) {
-        const int bullet = fireBullet(world, k % 2, Real(0.3) + Real(0.35) * Real(k), speed);
+        const int bullet = fireBullet(world, k % 2, Real(0.3) + Real(0.3) * Real(k), speed);
         Motion& motion = *world.motionOf(bullet);
         const Real lead = Real(10 * k) * world.settings.dt;
-        world.bodies[std::size_t(bullet)].transform.position -= motion.linearVelocity * lead;
-        // Where it would have been `lead` earlier on the same arc: higher speed upwards then.
+        Vec3& position = world.bodies[std::size_t(bullet)].transform.position;
+        position += -motion.linearVelocity * lead + Real(0.5) * world.settings.gravity * lead * lead;
         motion.linearVelocity -= world.settings.gravity * lead;
-        world.bodies[std::size_t(bullet)].transform.position -= Real(0.5) * world.settings.gravity * lead * lead;
     }
     return world;
 }
