@@ -5,6 +5,7 @@
 #include "app/registry.h"
 
 #include <cmath>
+#include <tuple>
 
 namespace stepwise {
 
@@ -20,6 +21,25 @@ void addStatic(World& world, const char* name, const Vec3& halfExtents, const Ve
     def.shape = Shape::box(halfExtents);
     def.transform.position = position;
     addBody(world, def);
+}
+
+/// A world of the chapter's scenes: its name, its CCD setting, and gravity or none.
+World emptyWorld(const char* name, CcdMode ccd, bool gravity) {
+    World world;
+    world.name = name;
+    world.settings.ccd = ccd;
+    if (!gravity) world.settings.gravity = Vec3::Zero();
+    return world;
+}
+
+/// A dynamic body flying at `velocity` from `position`.
+BodyDef flyingBody(const char* name, const Shape& shape, const Vec3& position, const Vec3& velocity) {
+    BodyDef body;
+    body.name = name;
+    body.shape = shape;
+    body.transform.position = position;
+    body.linearVelocity = velocity;
+    return body;
 }
 
 }  // namespace
@@ -43,9 +63,7 @@ int fireBullet(World& world, int target, Real height, Real speed) {
 }
 
 World buildGunRange(Real speed, CcdMode ccd) {
-    World world;
-    world.name = "ccd-gun";
-    world.settings.ccd = ccd;
+    World world = emptyWorld("ccd-gun", ccd, true);
     addStatic(world, "ground", Vec3(30, Real(0.5), 10), Vec3(0, Real(-0.5), 0));
     addStatic(world, "wall", Vec3(kWallHalfThickness, Real(1.5), Real(1.5)), Vec3(kTargetX, Real(1.5), kTargetZ[0]));
     for (int level = 0; level < 5; ++level) {
@@ -69,35 +87,21 @@ World buildGunRange(Real speed, CcdMode ccd) {
 }
 
 World buildSpinningRod(CcdMode ccd) {
-    World world;
-    world.name = "ccd-spinning-rod";
-    world.settings.gravity = Vec3::Zero();
-    world.settings.ccd = ccd;
+    World world = emptyWorld("ccd-spinning-rod", ccd, false);
     addStatic(world, "wall", Vec3(kWallHalfThickness, 3, 3), Vec3::Zero());
-    BodyDef rod;
-    rod.name = "rod";
-    rod.shape = Shape::box(Vec3(Real(0.01), Real(0.5), Real(0.01)));
-    rod.transform.position = Vec3(-2, 0, 0);
-    rod.linearVelocity = Vec3(50, 0, 0);
+    BodyDef rod = flyingBody("rod", Shape::box(Vec3(Real(0.01), Real(0.5), Real(0.01))), Vec3(-2, 0, 0), Vec3(50, 0, 0));
     rod.angularVelocity = Vec3(0, 0, 100);  // about z: the rod's ends sweep through the x-y plane
     addBody(world, rod);
     return world;
 }
 
 World buildHeadOnBullets() {
-    World world;
-    world.name = "ccd-head-on";
-    world.settings.gravity = Vec3::Zero();
-    const Real speeds[2] = {300, -300};
-    const Real masses[2] = {Real(0.01), Real(0.03)};
-    for (int i = 0; i < 2; ++i) {
-        BodyDef bullet;
-        bullet.name = i == 0 ? "left" : "right";
-        bullet.shape = Shape::sphere(Real(0.01));
-        bullet.mass = masses[i];
+    World world = emptyWorld("ccd-head-on", CcdMode::Auto, false);
+    // 10 g from the left, 30 g from the right, 12.6 m apart: they meet in the second step.
+    for (const auto& [name, side, mass] : {std::tuple{"left", Real(-1), Real(0.01)}, std::tuple{"right", Real(1), Real(0.03)}}) {
+        BodyDef bullet = flyingBody(name, Shape::sphere(Real(0.01)), Vec3(side * Real(6.3), 0, 0), Vec3(-side * 300, 0, 0));
+        bullet.mass = mass;
         bullet.bullet = true;
-        bullet.transform.position = Vec3(i == 0 ? Real(-6.3) : Real(6.3), 0, 0);
-        bullet.linearVelocity = Vec3(speeds[i], 0, 0);
         addBody(world, bullet);
     }
     return world;
