@@ -73,16 +73,8 @@ World buildGunRange(Real speed, CcdMode ccd) {
         box.transform.position = Vec3(kTargetX + Real(0.3), Real(0.2) + Real(0.4) * Real(level), kTargetZ[1]);
         addBody(world, box);
     }
-    // The volley: bullet k arrives k * 10 steps after the first, so it starts that much further
-    // back on its arc, as if fired from behind the muzzle: p(-L) = p - v L + g L^2 / 2, v(-L) = v - g L.
-    for (int k = 0; k < 6; ++k) {
-        const int bullet = fireBullet(world, k % 2, Real(0.3) + Real(0.3) * Real(k), speed);
-        Motion& motion = *world.motionOf(bullet);
-        const Real lead = Real(10 * k) * world.settings.dt;
-        Vec3& position = world.bodies[std::size_t(bullet)].transform.position;
-        position += -motion.linearVelocity * lead + Real(0.5) * world.settings.gravity * lead * lead;
-        motion.linearVelocity -= world.settings.gravity * lead;
-    }
+    // The volley: six bullets leave the muzzle together, three for each target, at three heights.
+    for (int k = 0; k < 6; ++k) fireBullet(world, k % 2, Real(0.4) + Real(0.5) * Real(k / 2), speed);
     return world;
 }
 

@@ -13,8 +13,8 @@ constexpr Real kGunX = -12;
 constexpr Real kDefaultBulletSpeed = 150;  // m/s
 
 /// Ground, a static wall 5 cm thick (z < 0) and a stack of five 40 cm boxes (z > 0), and a volley
-/// of six 3 cm steel bullets (flagged `bullet`) already fired from the gun at `speed`, arriving
-/// at the targets one after the other: "ccd-gun".
+/// of six 3 cm steel bullets (flagged `bullet`) just fired from the gun at `speed`, three at
+/// each target: "ccd-gun".
 World buildGunRange(Real speed = kDefaultBulletSpeed, CcdMode ccd = CcdMode::Auto);
 
 /// Fires one bullet from the gun's muzzle at the wall (target 0) or the stack (target 1) with

@@ -230,13 +230,16 @@ void resolveTimesOfImpact(World& world, Real /*dt*/) {
         // Both bodies wait at their impact poses; whatever involved them is looked at again.
         stopAt(world, loop, event.mover, t);
         stopAt(world, loop, event.other, t);
+        // Only the bodies that moved differ now: a static body's other impacts still stand.
+        const bool otherMoves = world.bodies[std::size_t(event.other)].type == BodyType::Dynamic;
         loop.pending.erase(std::remove_if(loop.pending.begin(), loop.pending.end(),
-                                          [&](const ToiEvent& e) { return involves(e, event.mover) || involves(e, event.other); }),
+                                          [&](const ToiEvent& e) {
+                                              return involves(e, event.mover) || (otherMoves && involves(e, event.other));
+                                          }),
                            loop.pending.end());
         if (withinBounds) {
             collectImpacts(world, loop, event.mover, event.other, options);
-            if (world.bodies[std::size_t(event.other)].type == BodyType::Dynamic)
-                collectImpacts(world, loop, event.other, -1, options);
+            if (otherMoves) collectImpacts(world, loop, event.other, -1, options);
         }
     }
 

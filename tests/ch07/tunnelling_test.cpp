@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <vector>
 
 using namespace stepwise;
 
@@ -69,6 +70,29 @@ TEST_CASE("a thin rod spinning at 100 rad/s and flying at 50 m/s never ends a st
     INFO("deepest corner " << deepest << " m past the near face");
     CHECK(deepest < 2 * world.settings.slop);  // no corner deeper than the contact's allowance
     CHECK(world.step.ccd.totalToiEvents > 0);  // the loop, not only the speculative contacts, acted
+}
+
+TEST_CASE("a volley at the gun range: three bullets meet the wall in the same step and all three stop", "[ch07][tunnel]") {
+    World world = buildGunRange();
+    Pipeline pipeline = makeChapter07Pipeline(world);
+    const int wall = world.findBody("wall");
+    std::vector<int> atWall;  // the bullets fired at the wall (the wall lies at z < 0)
+    for (std::size_t i = 0; i < world.bodies.size(); ++i)
+        if (world.bodies[i].bullet && world.motionOf(int(i))->linearVelocity.z() < 0) atWall.push_back(int(i));
+    REQUIRE(atWall.size() == 3);
+    for (int step = 0; step < 30; ++step) {
+        pipeline.step(world);
+        for (int bullet : atWall) {
+            // Through the wall: the centre past its far face, within its span (a bullet that slid
+            // along the wall and off its end may go round it).
+            const Vec3 local = world.bodies[std::size_t(wall)].transform.applyInverse(world.bodies[std::size_t(bullet)].transform.position);
+            const Vec3 span = world.bodies[std::size_t(wall)].shape.halfExtents;
+            const bool within = std::abs(local.y()) < span.y() && std::abs(local.z()) < span.z();
+            INFO("step " << step << ", " << world.bodies[std::size_t(bullet)].name << " at " << local.transpose());
+            CHECK_FALSE((within && local.x() > span.x()));
+        }
+    }
+    CHECK(world.step.ccd.totalToiEvents >= 3);
 }
 
 TEST_CASE("two bullets head on at 300 m/s each collide and keep their momentum within 1e-4", "[ch07][tunnel]") {
