@@ -1,13 +1,17 @@
 // `stepwise bench ccd`: tunnel rate and step cost against speed, CCD against substeps.
 #include "07_ccd/benches.h"
 
+#include "01_integrators/rotation.h"
 #include "07_ccd/chapter.h"
+#include "07_ccd/separation_root.h"
 #include "07_ccd/shots.h"
 #include "app/bench_util.h"
 
 #include <algorithm>
 #include <map>
 #include <ostream>
+#include <utility>
+#include <vector>
 
 namespace stepwise {
 
@@ -63,6 +67,64 @@ Outcome shoot(const Method& method, Real speed, int shots) {
     return outcome;
 }
 // [ch07-bench-shot]
+
+/// What one time-of-impact method did on a set of sweeps.
+struct ToiTally {
+    int hits = 0;
+    long queries = 0;         // GJK queries (conservative advancement), GJK queries and root steps (roots)
+    double seconds = 0;       // CPU time of all the queries
+    std::vector<double> times;  // TOI of each sweep, 2 for none
+};
+
+// [ch07-bench-toi-methods]
+/// Conservative advancement against root finding on the same sweeps: each shot's first step,
+/// against the wall, with the engine's target and tolerance.
+CsvTable compareToiMethods(int shotsPerSpeed, const std::vector<Real>& speeds) {
+    std::vector<std::pair<World, Sweep>> cases;
+    for (Real speed : speeds) {
+        Random random(9000 + static_cast<std::uint32_t>(speed));
+        for (int i = 0; i < shotsPerSpeed; ++i) {
+            const Shot shot = randomShot(random, speed);
+            World world = buildShot(shot, CcdMode::Off);
+            const Body& body = world.bodies[1];
+            const Motion& motion = *world.motionOf(1);
+            Transform end = body.transform;
+            const Real dt = world.settings.dt;
+            end.rotation = rotateExactly(body.transform.rotation, motion.angularVelocity, dt);
+            end.position = body.transform.apply(motion.localCenter) + motion.linearVelocity * dt - end.rotation * motion.localCenter;
+            const Sweep sweep = sweepBetween(body.transform, end, motion.localCenter);
+            cases.emplace_back(std::move(world), sweep);
+        }
+    }
+    const auto run = [&](bool roots) {
+        ToiTally tally;
+        ThreadStopwatch clock;
+        for (const auto& [world, sweep] : cases) {
+            const Sweep wall = stillSweep(world.bodies[0].transform, Vec3::Zero());
+            const ToiOptions options = toiOptionsFor(world.settings);
+            const ToiResult toi = roots ? timeOfImpactByRoots(world.bodies[1].shape, sweep, world.bodies[0].shape, wall, options)
+                                        : timeOfImpact(world.bodies[1].shape, sweep, world.bodies[0].shape, wall, options);
+            const bool hit = toi.state == ToiState::Hit || toi.state == ToiState::Stalled;
+            tally.hits += hit ? 1 : 0;
+            tally.queries += toi.iterations;
+            tally.times.push_back(hit ? double(toi.time) : 2.0);
+        }
+        tally.seconds = clock.seconds();
+        return tally;
+    };
+    const ToiTally advancement = run(false), roots = run(true);
+    double largestGap = 0;  // s: the two methods' times of impact apart, where both hit
+    for (std::size_t i = 0; i < cases.size(); ++i)
+        if (advancement.times[i] <= 1 && roots.times[i] <= 1)
+            largestGap = std::max(largestGap, std::abs(advancement.times[i] - roots.times[i]) * double(cases[i].first.settings.dt));
+    CsvTable table({"toi method", "sweeps", "impacts", "queries per sweep", "us per sweep", "largest TOI difference (s)"});
+    for (const auto& [name, tally] : {std::pair{"conservative advancement", &advancement}, std::pair{"separation roots", &roots}})
+        table.addRow({name, std::to_string(cases.size()), std::to_string(tally->hits),
+                      formatNumber(double(tally->queries) / double(cases.size())),
+                      formatNumber(1e6 * tally->seconds / double(cases.size())), formatNumber(largestGap)});
+    return table;
+}
+// [ch07-bench-toi-methods]
 
 void measureCcd(BenchRun& bench) {
     const bool quick = bench.quick();
@@ -131,7 +193,12 @@ void measureCcd(BenchRun& bench) {
     }
     // [ch07-bench-summary]
     bench.out() << "\nall speeds together (" << runs << "):\n" << summary.toText();
-    bench.writeTables({FigureTable{{"all speeds together (" + runs + ", one thread, CPU time)"}, &summary}}, "-summary");
+    const CsvTable methods = compareToiMethods(shots, speeds);
+    bench.out() << "\ntime of impact, two ways, on the first step of the same kind of shots:\n" << methods.toText();
+    bench.writeCsv(methods, "-toi");
+    bench.writeTables({FigureTable{{"all speeds together (" + runs + ", one thread, CPU time)"}, &summary},
+                       FigureTable{{"time of impact, two ways, on each shot's first step (CPU time)"}, &methods}},
+                      "-summary");
 }
 
 }  // namespace
@@ -143,9 +210,10 @@ BenchEntry ccdBench() {
     entry.description = "tunnel rate and step cost against speed: CCD off, CCD on, 2 to 16 substeps";
     entry.measure = measureCcd;
     entry.files = {{BenchFile::Kind::Csv, "", "tunnel rate and step cost per method and speed"},
+                   {BenchFile::Kind::Csv, "-toi", "conservative advancement against separation roots on the same sweeps"},
                    {BenchFile::Kind::Plot, "", "fraction of shots through the wall against speed"},
                    {BenchFile::Kind::Plot, "-cost", "step time against speed"},
-                   {BenchFile::Kind::Plot, "-summary", "every speed together: tunnels, cost against CCD off, queries per impact"}};
+                   {BenchFile::Kind::Plot, "-summary", "every speed together: tunnels, cost against CCD off, queries per impact; the two TOI methods"}};
     return entry;
 }
 

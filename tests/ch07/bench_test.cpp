@@ -26,5 +26,10 @@ TEST_CASE("bench ccd writes its table and plots; CCD stops the tunnels that CCD 
     CHECK(tunnels["ccd on"] == 0);
     CHECK(tunnels["ccd off"] > 0);
     CHECK(tunnels["16 substeps"] < tunnels["ccd off"]);
+    // Both time-of-impact methods find the same impacts on the same sweeps.
+    const std::size_t methods = run.printed.find("time of impact, two ways");
+    REQUIRE(methods != std::string::npos);
+    CHECK(run.printed.find("conservative advancement", methods) != std::string::npos);
+    CHECK(run.printed.find("separation roots", methods) != std::string::npos);
     CHECK(test::rejectsUnwritablePath(ccdBench()));
 }

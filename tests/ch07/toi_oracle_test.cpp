@@ -2,6 +2,7 @@
 // and against a sphere (Ericson 5.5.3, 5.5.5), and for boxes a bisection on the exact separation
 // of the separating axis test (tests/ch06/sat_reference.h, written apart from the engine).
 #include "07_ccd/closed_form_toi.h"
+#include "07_ccd/separation_root.h"
 #include "07_ccd/time_of_impact.h"
 #include "ch06/sat_reference.h"
 
@@ -161,4 +162,37 @@ TEST_CASE("a spinning rod's bound covers its swing: the TOI comes before the far
     const Sweep sliding = sweepBetween(start, start, Vec3::Zero());
     CHECK(closingSpeedBound(sliding, rod, stillSweep(Transform{}, Vec3::Zero()), wall, Vec3::UnitX()) == 0);
     CHECK(closingSpeedBound(sweep, rod, stillSweep(Transform{}, Vec3::Zero()), wall, Vec3::UnitX()) > Real(0.5));
+}
+
+TEST_CASE("Box2D's way, root finding on the separation, meets the same oracles", "[ch07][toi]") {
+    Random random(74);
+    const Shape ground = Shape::box(Vec3(100, Real(0.5), 100));
+    const Sweep groundSweep = stillSweep(Transform{Vec3(0, Real(-0.5), 0), Quat::Identity()}, Vec3::Zero());
+    const ToiOptions options = tightOptions();
+    int hits = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Real radius = random.uniformReal(Real(0.01), Real(0.5));
+        const Vec3 start(random.uniformReal(-1, 1), radius + random.uniformReal(Real(0.05), 3), random.uniformReal(-1, 1));
+        const Vec3 travel(random.uniformReal(-1, 1), -random.uniformReal(Real(0.5), 6), random.uniformReal(-1, 1));
+        const ToiResult toi = timeOfImpactByRoots(Shape::sphere(radius), linearSweep(start, travel), ground, groundSweep, options);
+        const std::optional<Real> exact = spherePlaneTimeOfImpact(start, travel, radius, Vec3::UnitY(), 0, options.target);
+        INFO("case " << i << ": " << toString(toi.state) << " at " << toi.time);
+        REQUIRE((toi.state == ToiState::Hit) == exact.has_value());
+        if (!exact) continue;
+        ++hits;
+        CHECK(std::abs(double(toi.time) - double(*exact)) * kStep < 1e-5);
+    }
+    CHECK(hits > 50);
+    // Boxes against the wall: before the SAT bisection's touching time, and close to it.
+    const Shape wall = Shape::box(Vec3(Real(0.025), 5, 5));
+    for (int i = 0; i < 50; ++i) {
+        const Shape box = Shape::box(Vec3::Constant(random.uniformReal(Real(0.02), Real(0.2))));
+        const Sweep sweep = linearSweep(Vec3(-1, random.uniformReal(-1, 1), 0), Vec3(random.uniformReal(1, 3), 0, 0), random.rotation());
+        const ToiResult toi = timeOfImpactByRoots(box, sweep, wall, stillSweep(Transform{}, Vec3::Zero()), options);
+        const auto separation = [&](double t) { return satSeparation(box, poseAt(sweep, Real(t)), wall, Transform{}); };
+        const double exact = bisectFirstCrossing(separation, double(options.target));
+        INFO("box " << i << ": " << toString(toi.state) << " at " << toi.time << ", bisection " << exact);
+        REQUIRE((toi.state == ToiState::Hit) == (exact <= 1));
+        if (exact <= 1) CHECK(std::abs(double(toi.time) - exact) * kStep < 1e-5);
+    }
 }
