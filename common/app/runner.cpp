@@ -79,6 +79,7 @@ static std::vector<RunStats::GroupEnergy> energyByIntegrator(const World& world)
 RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry, const RunOptions& options) {
     RunStats stats;
     stats.pipeline = pipeline.enabledStageNames();
+    stats.planNotes = pipeline.planNotes();
     stats.initialEnergy = computeEnergy(world);
     const PenetrationProbe* probe = registry.penetrationProbe(options.maxChapter);
     stats.penetrationMeasured = probe != nullptr;
@@ -148,6 +149,8 @@ void printSummary(std::ostream& out, const World& world, const RunStats& stats) 
     if (world.broadphase.used != BroadphaseMode::Auto)
         out << "broadphase " << toString(world.broadphase.used) << " (" << world.broadphase.reason << "), "
             << world.candidatePairs.size() << " candidate pairs in the last step\n";
+    if (const auto ccd = stats.planNotes.find("ccd"); ccd != stats.planNotes.end())
+        out << "ccd        " << ccd->second << "; " << world.step.ccd.totalToiEvents << " times of impact resolved\n";
     out << "energy     " << std::setprecision(6) << stats.initialEnergy.total() << " J -> " << stats.finalEnergy.total()
         << " J" << (stats.energyByIntegrator.empty() ? "" : "; by integrator (its bodies and their springs):") << "\n";
     for (const RunStats::GroupEnergy& group : stats.energyByIntegrator)

@@ -5,6 +5,7 @@
 #include "world/world.h"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ constexpr const char* kBroadphase = "broadphase";
 constexpr const char* kNarrowphase = "narrowphase";
 constexpr const char* kSolve = "solve";
 constexpr const char* kContacts = "contacts";   // contact-cache upkeep after the solves
+constexpr const char* kCcd = "ccd";             // continuous collision: times of impact (chapter 7)
 }  // namespace stage_group
 
 /// "group:variant".
@@ -73,10 +75,15 @@ public:
     std::vector<Stage>& stages() { return stages_; }
     const std::vector<Stage>& stages() const { return stages_; }
     std::vector<std::string> enabledStageNames() const;
+    /// Why the planner put a stage in or left it out, by stage group ("ccd" -> "off: no body ..."),
+    /// for the run report (plan from the scene, and say so).
+    void setPlanNote(const std::string& group, std::string note) { planNotes_[group] = std::move(note); }
+    const std::map<std::string, std::string>& planNotes() const { return planNotes_; }
     double lastStepMs() const { return lastStepMs_; }
 
 private:
     std::vector<Stage> stages_;
+    std::map<std::string, std::string> planNotes_;
     double lastStepMs_ = 0;
 };
 

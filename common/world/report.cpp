@@ -144,9 +144,21 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
                                 {"reason", world.broadphase.reason},
                                 {"candidate_pairs", world.candidatePairs.size()}};
     }
+    // Extension: whether continuous collision ran and why (chapter 7 on), and what it did.
+    const CcdState& ccd = world.step.ccd;
+    const auto ccdNote = stats.planNotes.find("ccd");
+    if (ccdNote != stats.planNotes.end()) {
+        report["ccd"] = {{"ran", ccd.stepsRun > 0},
+                         {"plan", ccdNote->second},
+                         {"toi_events", ccd.totalToiEvents},
+                         {"steps_event_bound_hit", ccd.stepsBoundHit}};
+    }
     report["energy"] = energyJson(stats.initialEnergy, stats.finalEnergy);
 
     std::vector<std::string> warnings = stats.warnings;
+    if (ccd.stepsBoundHit > 0)
+        warnings.push_back("ccd: the bound on time-of-impact events was hit in " + std::to_string(ccd.stepsBoundHit) +
+                           " step(s); the bodies it stopped wait at their last time of impact");
     Json bodies = Json::array();
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         bodies.push_back(bodyJson(world, i));

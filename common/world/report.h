@@ -22,6 +22,7 @@ struct RunStats {
     Energy finalEnergy;
     std::vector<std::string> warnings;            // e.g. joints no stage handles yet
     std::vector<std::string> unusedSettings;      // "ccd (chapter 7, to come)": no stage reads them yet
+    std::map<std::string, std::string> planNotes; // by stage group: why the planner put a stage in or left it out
 
     // For the run's printed summary only (reports leave them out):
     bool overlapsMeasured = false;                // a narrowphase stage ran

@@ -23,6 +23,27 @@ struct SolverStats {
     Real residualMax = 0;        // m/s
 };
 
+/// What continuous collision (chapter 7) keeps within a step and measured in the last ones. Plain
+/// data in the World, so a copy of the world carries it (no state in the stage's closure).
+struct CcdState {
+    /// Pose of every body when the frame's substep began: the start of each body's sweep. The
+    /// stage's recorder fills it at the first stage of a substep; empty when no CCD stage ran.
+    std::vector<Transform> sweepStart;
+    // What the last substep's TOI loop did (the demo draws the ghosts and the swept bounds).
+    int fastBodies = 0;          // bodies whose sweep was checked
+    int toiEvents = 0;           // impacts resolved (TOI > 0)
+    int rootIterations = 0;      // distance queries of conservative advancement
+    bool boundHit = false;       // an event bound stopped the loop early
+    Real timeLost = 0;           // over the impacts: the fraction of the step the bodies waited (1 - TOI)
+    std::vector<int> ghostBodies;          // one per resolved event: the moving body
+    std::vector<Transform> ghostPoses;     // and its pose at the time of impact
+    std::vector<Aabb> sweptBounds;         // one per fast body: start and end pose bounded
+    // Since the world was made (the run report):
+    long stepsRun = 0;           // substeps in which the TOI loop ran
+    long totalToiEvents = 0;
+    long stepsBoundHit = 0;      // substeps in which an event bound was hit
+};
+
 struct StepState {
     int substep = 0;             // of the frame being stepped, 0 .. substepCount - 1
     int substepCount = 1;
@@ -33,6 +54,7 @@ struct StepState {
                                      // move their points with the bodies before solving
     SolverStats solver;          // of the last solve (the last substep of the last frame)
     int contactPointsDropped = 0;  // by the last cache upkeep: points that carried no load
+    CcdState ccd;                // continuous collision (chapter 7)
 };
 
 }  // namespace stepwise
