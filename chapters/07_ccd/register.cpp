@@ -8,9 +8,8 @@
 namespace stepwise {
 
 void registerChapter07(Registry& registry) {
-    addChapter07Scenes(registry);
-    registry.addPipeline({7, [](const World& world) { return makeChapter07Pipeline(world); }});
-    registry.addBench(ccdBench());
+    registry.addChapter({7, addChapter07Scenes, [](const World& world) { return makeChapter07Pipeline(world); },
+                         {ccdBench()}});
 }
 
 }  // namespace stepwise

@@ -11,23 +11,20 @@ using namespace stepwise;
 
 namespace {
 
-void checkThroughChapter7(int chapter) {
-    const std::vector<test::Promise> promises = test::promisesOfChapter(chapter);
-    REQUIRE(!promises.empty());
-    for (const test::Promise& promise : promises) {
-        for (bool forced : {false, true}) {
-            INFO("chapter " << chapter << ": " << promise.claim << (forced ? " (ccd on)" : " (ccd auto)"));
-            promise.check([forced](World& world, ContactSearch search) {
-                if (forced) world.settings.ccd = CcdMode::On;
-                return makeChapter07Pipeline(world, makeChapter06Pipeline(world, ManifoldOptions{}, chooseStepOrder(world), search));
-            });
-        }
-    }
+std::vector<test::PipelineVariant> throughChapter7() {
+    std::vector<test::PipelineVariant> variants;
+    for (bool forced : {false, true})
+        variants.push_back({forced ? "ccd on" : "ccd auto", [forced](World& world, ContactSearch search) {
+                                if (forced) world.settings.ccd = CcdMode::On;
+                                return makeChapter07Pipeline(
+                                    world, makeChapter06Pipeline(world, ManifoldOptions{}, chooseStepOrder(world), search));
+                            }});
+    return variants;
 }
 
 }  // namespace
 
-TEST_CASE("through chapter 7: chapter 1's promises hold", "[ch07][earlier]") { checkThroughChapter7(1); }
-TEST_CASE("through chapter 7: chapter 2's promises hold", "[ch07][earlier]") { checkThroughChapter7(2); }
-TEST_CASE("through chapter 7: chapter 3's promises hold", "[ch07][earlier]") { checkThroughChapter7(3); }
-TEST_CASE("through chapter 7: chapter 4's promises hold", "[ch07][earlier]") { checkThroughChapter7(4); }
+TEST_CASE("through chapter 7: the promises of chapters 1 to 4 hold", "[ch07][earlier]") {
+    const int chapter = GENERATE(1, 2, 3, 4);
+    test::checkPromisesOfChapter(chapter, throughChapter7());
+}
