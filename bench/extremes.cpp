@@ -1,7 +1,7 @@
 // stepwise_extremes: where the engine's accuracy ends, measured (docs/reliability.md). The docs
 // build runs it with --quick and shows its tables; without --quick it runs the long forms.
 //
-//   stepwise_extremes [--quick] [--check] [--only narrowphase|far|soak|ratios|sizes|speed]
+//   stepwise_extremes [--quick] [--check] [--soak-frames N] [--only narrowphase|far|soak|ratios|sizes|speed]
 //
 // --check: exit 1 when the soak broke a promise (ctest reliability.soak runs the quick soak so).
 // Each table says what was run and what held, in numbers, for this build's Real.
@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <random>
 #include <string>
@@ -257,8 +258,8 @@ World mixedScene() {
 
 /// Returns false when the soak broke a promise: a non-finite body, the energy above its start by
 /// more than 1%, or resident memory grown by more than 10% after the first 1,000 frames.
-bool soakTable(bool quick) {
-    const long frames = quick ? 5000 : 100000;
+bool soakTable(bool quick, long framesAsked) {
+    const long frames = framesAsked > 0 ? framesAsked : quick ? 5000 : 100000;
     World world = mixedScene();
     Pipeline pipeline = chapterRegistry().makePipeline(world);
     const double startEnergy = computeEnergy(world).total();
@@ -421,14 +422,17 @@ void speedTable(bool quick) {
 
 int main(int argc, char** argv) {
     bool quick = false, check = false;
+    long soakFrames = 0;  // 0: the form's own count
     std::string only;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument == "--quick") quick = true;
         else if (argument == "--only" && i + 1 < argc) only = argv[++i];
         else if (argument == "--check") check = true;
+        else if (argument == "--soak-frames" && i + 1 < argc) soakFrames = std::max(1L, std::atol(argv[++i]));
         else {
-            std::fprintf(stderr, "usage: stepwise_extremes [--quick] [--check] [--only narrowphase|far|soak|ratios|sizes|speed]\n");
+            std::fprintf(stderr, "usage: stepwise_extremes [--quick] [--check] [--soak-frames N] "
+                                 "[--only narrowphase|far|soak|ratios|sizes|speed]\n");
             return 2;
         }
     }
@@ -436,7 +440,7 @@ int main(int argc, char** argv) {
     if (only.empty() || only == "narrowphase") narrowphaseTable(quick);
     if (only.empty() || only == "far") farTable(quick);
     bool soakHeld = true;
-    if (only.empty() || only == "soak") soakHeld = soakTable(quick);
+    if (only.empty() || only == "soak") soakHeld = soakTable(quick, soakFrames);
     if (only.empty() || only == "ratios") ratiosTable(quick);
     if (only.empty() || only == "sizes") sizesTable(quick);
     if (only.empty() || only == "speed") speedTable(quick);
