@@ -149,7 +149,7 @@ void printSummary(std::ostream& out, const World& world, const RunStats& stats) 
     if (world.broadphase.used != BroadphaseMode::Auto)
         out << "broadphase " << toString(world.broadphase.used) << " (" << world.broadphase.reason << "), "
             << world.candidatePairs.size() << " candidate pairs in the last step\n";
-    if (const auto ccd = stats.planNotes.find("ccd"); ccd != stats.planNotes.end())
+    if (const auto ccd = stats.planNotes.find(stage_group::kCcd); ccd != stats.planNotes.end())
         out << "ccd        " << ccd->second << "; " << world.step.ccd.totalToiEvents << " times of impact resolved\n";
     out << "energy     " << std::setprecision(6) << stats.initialEnergy.total() << " J -> " << stats.finalEnergy.total()
         << " J" << (stats.energyByIntegrator.empty() ? "" : "; by integrator (its bodies and their springs):") << "\n";

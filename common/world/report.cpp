@@ -6,6 +6,7 @@
 #include "world/report.h"
 
 #include "world/json_reader.h"
+#include "world/pipeline.h"
 
 #include <nlohmann/json.hpp>
 
@@ -146,7 +147,7 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
     }
     // Extension: whether continuous collision ran and why (chapter 7 on), and what it did.
     const CcdState& ccd = world.step.ccd;
-    const auto ccdNote = stats.planNotes.find("ccd");
+    const auto ccdNote = stats.planNotes.find(stage_group::kCcd);
     if (ccdNote != stats.planNotes.end()) {
         report["ccd"] = {{"ran", ccd.stepsRun > 0},
                          {"plan", ccdNote->second},
