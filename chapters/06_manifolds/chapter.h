@@ -16,6 +16,12 @@ namespace stepwise {
 /// and its points ride on their bodies (anchors) through the substeps.
 ContactSearch chooseContactSearch(const World& world);
 
+/// What the solve stage runs each step: the substepped solve of Settings::stabilisation when it
+/// is one and the step order is split, else one solve of Settings::solverIterations iterations
+/// (after moving the contact points with their bodies when the contacts were found in an
+/// earlier substep). `extra`: a later chapter's constraints solved with the contacts, or null.
+void runStabilisedSolve(World& world, Real dt, bool splitOrder, ExtraConstraints* extra);
+
 /// The pipeline with the default manifold options (multi-point).
 Pipeline makeChapter06Pipeline(const World& world);
 Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& options);

@@ -12,6 +12,16 @@ Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& option
     return makeChapter06Pipeline(world, options, chooseStepOrder(world), chooseContactSearch(world));
 }
 
+void runStabilisedSolve(World& world, Real dt, bool splitOrder, ExtraConstraints* extra) {
+    if (splitOrder && isSubstepped(world.settings.stabilisation)) {
+        substeppedSolve(world, dt, extra);
+        return;
+    }
+    if (world.step.substep > 0 && world.step.contactsFoundAtSubstep < world.step.substep) followContactAnchors(world);
+    solveStabilised(world, dt, std::max(0, world.settings.solverIterations), extra);
+    world.step.velocitiesBeforeForces.clear();
+}
+
 // [ch06-pipeline]
 Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& options, StepOrder order,
                                ContactSearch search) {
@@ -41,16 +51,7 @@ Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& option
     // a single warm-started solve instead).
     if (Stage* solve = pipeline.find(stage_group::kSolve)) {
         solve->name = stabilisedSolveStageName(world.settings.stabilisation);
-        solve->run = [split](World& stepWorld, Real dt) {
-            if (split && isSubstepped(stepWorld.settings.stabilisation)) {
-                substeppedSolve(stepWorld, dt);
-                return;
-            }
-            if (stepWorld.step.substep > 0 && stepWorld.step.contactsFoundAtSubstep < stepWorld.step.substep)
-                followContactAnchors(stepWorld);
-            solveStabilised(stepWorld, dt, std::max(0, stepWorld.settings.solverIterations));
-            stepWorld.step.velocitiesBeforeForces.clear();
-        };
+        solve->run = [split](World& stepWorld, Real dt) { runStabilisedSolve(stepWorld, dt, split, nullptr); };
     }
     if (split) {
         for (const char* variant : {"velocities", "positions"}) {

@@ -32,9 +32,10 @@ bool isSubstepped(Stabilisation stabilisation) {
 }
 
 // [ch06-manifold-pgs]
-void solveByManifold(ContactRows& contactRows, const std::vector<Softness>& softness, std::vector<SolverBody>& bodies,
-                     int iterations, int manifoldSweeps) {
-    // [first row, end row) of each contact: buildContactRows appends a contact's rows together.
+namespace {
+
+// [first row, end row) of each contact: buildContactRows appends a contact's rows together.
+std::vector<std::pair<int, int>> manifoldRanges(const ContactRows& contactRows) {
     std::vector<std::pair<int, int>> ranges;
     const std::vector<ContactRowRef>& points = contactRows.points;
     for (std::size_t first = 0; first < points.size();) {
@@ -43,30 +44,41 @@ void solveByManifold(ContactRows& contactRows, const std::vector<Softness>& soft
         ranges.push_back({points[first].normalRow, points[end - 1].tangentRow[1] + 1});
         first = end;
     }
-    std::vector<ConstraintRow>& rows = contactRows.rows;
+    return ranges;
+}
+
+// One Gauss-Seidel iteration over every manifold, each swept manifoldSweeps times.
+void sweepManifolds(std::vector<ConstraintRow>& rows, const std::vector<std::pair<int, int>>& ranges,
+                    const std::vector<Softness>& softness, std::vector<SolverBody>& bodies, int manifoldSweeps) {
     const Softness rigid;
-    for (int iteration = 0; iteration < iterations; ++iteration) {
-        for (const auto& [begin, end] : ranges) {
-            for (int sweep = 0; sweep < manifoldSweeps; ++sweep) {
-                for (int i = begin; i < end; ++i) {
-                    ConstraintRow& row = rows[static_cast<std::size_t>(i)];
-                    if (row.effectiveMass == 0) continue;
-                    Real lower = row.lower, upper = row.upper;
-                    if (row.boundRow >= 0) {
-                        upper = row.boundScale * rows[static_cast<std::size_t>(row.boundRow)].impulse;
-                        lower = -upper;
-                    }
-                    const Softness& soft = softness.empty() ? rigid : softness[static_cast<std::size_t>(i)];
-                    const Real velocityError = row.bias - rowVelocity(row, bodies);
-                    const Real previous = row.impulse;
-                    const Real increment =
-                        soft.massScale * row.effectiveMass * velocityError - soft.impulseScale * previous;
-                    row.impulse = std::clamp(previous + increment, lower, upper);
-                    applyRowImpulse(row, row.impulse - previous, bodies);
+    for (const auto& [begin, end] : ranges) {
+        for (int sweep = 0; sweep < manifoldSweeps; ++sweep) {
+            for (int i = begin; i < end; ++i) {
+                ConstraintRow& row = rows[static_cast<std::size_t>(i)];
+                if (row.effectiveMass == 0) continue;
+                Real lower = row.lower, upper = row.upper;
+                if (row.boundRow >= 0) {
+                    upper = row.boundScale * rows[static_cast<std::size_t>(row.boundRow)].impulse;
+                    lower = -upper;
                 }
+                const Softness& soft = softness.empty() ? rigid : softness[static_cast<std::size_t>(i)];
+                const Real velocityError = row.bias - rowVelocity(row, bodies);
+                const Real previous = row.impulse;
+                const Real increment = soft.massScale * row.effectiveMass * velocityError - soft.impulseScale * previous;
+                row.impulse = std::clamp(previous + increment, lower, upper);
+                applyRowImpulse(row, row.impulse - previous, bodies);
             }
         }
     }
+}
+
+}  // namespace
+
+void solveByManifold(ContactRows& contactRows, const std::vector<Softness>& softness, std::vector<SolverBody>& bodies,
+                     int iterations, int manifoldSweeps) {
+    const std::vector<std::pair<int, int>> ranges = manifoldRanges(contactRows);
+    for (int iteration = 0; iteration < iterations; ++iteration)
+        sweepManifolds(contactRows.rows, ranges, softness, bodies, manifoldSweeps);
 }
 // [ch06-manifold-pgs]
 
@@ -157,12 +169,26 @@ Real splitImpulseCorrection(World& world, const ContactRows& contactRows, const 
 namespace {
 
 // Chapter 4's Jacobi when asked for (it knows no softness); Gauss-Seidel by manifold otherwise.
+// A later chapter's constraints take their sweep first in every iteration: the contacts, which
+// can only push, then see the bodies as the joints hold them.
 void iterate(const World& world, ContactRows& contactRows, const std::vector<Softness>& softness,
-             std::vector<SolverBody>& bodies, int iterations) {
-    if (world.settings.solver == SolverKind::Jacobi)
-        solveRows(contactRows.rows, bodies, SolverKind::Jacobi, iterations);
-    else
-        solveByManifold(contactRows, softness, bodies, iterations);
+             std::vector<SolverBody>& bodies, int iterations, ExtraConstraints* extra) {
+    const bool jacobi = world.settings.solver == SolverKind::Jacobi;
+    if (!extra) {
+        if (jacobi)
+            solveRows(contactRows.rows, bodies, SolverKind::Jacobi, iterations);
+        else
+            solveByManifold(contactRows, softness, bodies, iterations);
+        return;
+    }
+    const std::vector<std::pair<int, int>> ranges = manifoldRanges(contactRows);
+    for (int iteration = 0; iteration < iterations; ++iteration) {
+        extra->iterate(bodies);
+        if (jacobi)
+            solveRows(contactRows.rows, bodies, SolverKind::Jacobi, 1);
+        else
+            sweepManifolds(contactRows.rows, ranges, softness, bodies, kManifoldSweeps);
+    }
 }
 
 void recordResidual(World& world, const ContactRows& contactRows, const std::vector<SolverBody>& bodies) {
@@ -173,7 +199,7 @@ void recordResidual(World& world, const ContactRows& contactRows, const std::vec
 
 }  // namespace
 
-SolverStats solveStabilised(World& world, Real dt, int iterations) {
+SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstraints* extra) {
     const Settings& settings = world.settings;
     SolverStats stats;
     for (const Contact& contact : world.contacts) stats.contactPoints += contact.pointCount;
@@ -183,10 +209,14 @@ SolverStats solveStabilised(World& world, Real dt, int iterations) {
         settings.stabilisation == Stabilisation::Baumgarte || settings.stabilisation == Stabilisation::Relax;
     ContactRows contactRows = buildContactRows(world, bodies, dt, velocityBias ? settings.baumgarte : Real(0));
     if (settings.stabilisation == Stabilisation::Relax) capPushOutSpeed(world, contactRows, dt);
-    if (settings.warmStarting) warmStart(world, contactRows, bodies);
+    if (extra) extra->prepare(world, bodies, dt, /*positionFeedback=*/true);
+    if (settings.warmStarting) {
+        if (extra) extra->warmStart(bodies);
+        warmStart(world, contactRows, bodies);
+    }
     std::vector<Softness> softness;
     if (settings.stabilisation == Stabilisation::SoftStep) softness = softenContactRows(world, contactRows, bodies, dt);
-    iterate(world, contactRows, softness, bodies, iterations);
+    iterate(world, contactRows, softness, bodies, iterations, extra);
     if (settings.stabilisation == Stabilisation::SplitImpulse) splitImpulseCorrection(world, contactRows, bodies, dt, iterations);
     stats.rows = static_cast<int>(contactRows.rows.size());
     stats.invalidSkipped = contactRows.invalidSkipped;
@@ -194,12 +224,13 @@ SolverStats solveStabilised(World& world, Real dt, int iterations) {
     recordResidual(world, contactRows, bodies);
     scatterSolverBodies(world, bodies);
     storeContactImpulses(world, contactRows);
+    if (extra) extra->store(world);
     return world.step.solver;
 }
 // [ch06-solve]
 
 // [ch06-relax]
-void relaxContacts(World& world, Real dt, int iterations) {
+void relaxContacts(World& world, Real dt, int iterations, ExtraConstraints* extra) {
     followContactAnchors(world);  // the depths after the positions moved
     std::vector<SolverBody> bodies = gatherSolverBodies(world);
     ContactRows contactRows = buildContactRows(world, bodies, dt, 0);
@@ -208,17 +239,19 @@ void relaxContacts(World& world, Real dt, int iterations) {
     // cone they would be smaller than what the velocities hold (the rows clamp friction per
     // direction, a box around the cone), and the relax iteration would apply the difference twice.
     loadCarriedImpulses(world, contactRows, /*clampToCone=*/false);
-    iterate(world, contactRows, {}, bodies, iterations);
+    if (extra) extra->prepare(world, bodies, dt, /*positionFeedback=*/false);
+    iterate(world, contactRows, {}, bodies, iterations, extra);
     recordResidual(world, contactRows, bodies);
     scatterSolverBodies(world, bodies);
     storeContactImpulses(world, contactRows);
+    if (extra) extra->store(world);
 }
 // [ch06-relax]
 
 // [ch06-substepped]
-void substeppedSolve(World& world, Real dt) {
+void substeppedSolve(World& world, Real dt, ExtraConstraints* extra) {
     // Nothing touches: chapter 4's split step, so that free bodies move exactly as in chapter 1.
-    if (world.contacts.empty()) {
+    if (world.contacts.empty() && !(extra && extra->active(world))) {
         applyForces(world);
         integrateVelocities(world, dt);
         integratePositions(world, dt);
@@ -236,9 +269,9 @@ void substeppedSolve(World& world, Real dt) {
         applyForces(world);
         integrateVelocities(world, h);
         followContactAnchors(world);  // where the points are now (a no-op right after the search)
-        solveStabilised(world, h, world.settings.solverIterations > 0 ? 1 : 0);
+        solveStabilised(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra);
         integratePositions(world, h);
-        relaxContacts(world, h, world.settings.solverIterations > 0 ? 1 : 0);
+        relaxContacts(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra);
     }
     world.step.velocitiesBeforeForces.clear();
 }

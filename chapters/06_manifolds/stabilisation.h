@@ -56,6 +56,27 @@ constexpr Real kMaxPushOutSpeed = 3;  // m/s
 /// Sweeps over one manifold's rows before the solver moves to the next contact.
 constexpr int kManifoldSweeps = 8;
 
+// [ch06-extra-constraints]
+/// Constraints a later chapter solves together with the contacts (chapter 8's joints), in the same
+/// passes and against the same bodies: built from the poses at the start of each solve, warm
+/// started, swept once before the contacts in every iteration (with their position feedback in
+/// the biased solve, without it in the relax pass) and their impulses stored at the end. A
+/// fresh object per solve: whatever must outlive it goes into the World in store().
+class ExtraConstraints {
+public:
+    virtual ~ExtraConstraints() = default;
+    /// Whether there is anything to solve: without contacts or extras, the substepped solve
+    /// integrates the free bodies exactly as chapter 1 does.
+    virtual bool active(const World& world) const = 0;
+    /// Builds the rows for a (sub)step of h. `positionFeedback` false: the relax pass, whose
+    /// rows start from the impulses already applied (no warm start follows).
+    virtual void prepare(const World& world, const std::vector<SolverBody>& bodies, Real h, bool positionFeedback) = 0;
+    virtual void warmStart(std::vector<SolverBody>& bodies) = 0;
+    virtual void iterate(std::vector<SolverBody>& bodies) = 0;
+    virtual void store(World& world) const = 0;
+};
+// [ch06-extra-constraints]
+
 /// The solve stage's name, "solve:<stabilisation>".
 std::string stabilisedSolveStageName(Stabilisation stabilisation);
 
@@ -79,16 +100,16 @@ Real splitImpulseCorrection(World& world, const ContactRows& contactRows, const 
 /// (Settings::warmStarting), `iterations` iterations with the bias the stabilisation asks for
 /// (Baumgarte for baumgarte and relax, none for split impulses, soft springs for soft_step), split impulses'
 /// position correction, velocities and impulses written back. Records World::step.solver.
-SolverStats solveStabilised(World& world, Real dt, int iterations);
+SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstraints* extra = nullptr);
 
 /// The relax iteration(s): the same rows with no position bias, starting from the impulses the
 /// biased solve accumulated (already in the velocities), take the push-out speed back out.
 /// Restitution and speculative gaps stay in the target.
-void relaxContacts(World& world, Real dt, int iterations);
+void relaxContacts(World& world, Real dt, int iterations, ExtraConstraints* extra = nullptr);
 
 /// The substepped solve of relax and soft_step, for one (pipeline) step of dt: solverIterations
 /// substeps, each: forces and velocities, contact points moved with their bodies, warm start and one
 /// biased iteration, positions, one relax iteration.
-void substeppedSolve(World& world, Real dt);
+void substeppedSolve(World& world, Real dt, ExtraConstraints* extra = nullptr);
 
 }  // namespace stepwise

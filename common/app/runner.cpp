@@ -83,7 +83,7 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
     stats.initialEnergy = computeEnergy(world);
     const PenetrationProbe* probe = registry.penetrationProbe(options.maxChapter);
     stats.penetrationMeasured = probe != nullptr;
-    if (!world.joints.empty() && !pipeline.find("joints"))
+    if (!world.joints.empty() && !pipeline.find(stage_group::kJoints))
         stats.warnings.push_back("the scene has " + std::to_string(world.joints.size()) +
                                  " joint(s) but no stage of this engine solves joints yet (chapter 8" +
                                  (registry.lastChapter() < 8 ? ", to come" : "") + "); they are ignored");

@@ -177,7 +177,7 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
     static const Names<BodyType> kBodyTypes = {
         {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}, {"dynamic", BodyType::Dynamic}};
     cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
-                         "density", "friction", "restitution", "bullet", "integrator"},
+                         "density", "friction", "restitution", "bullet", "integrator", "path"},
                         &errors);
     BodyDef def;
     def.name = "body" + std::to_string(index);
@@ -238,6 +238,17 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
         errors.attempt([&] {
             if (auto v = cursor.optional("integrator")) def.integrator = v->choice(integratorNames());
         });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("path")) {
+            if (def.type != BodyType::Kinematic) v->fail("only kinematic bodies follow a path");
+            v->expectObject({"amplitude", "period", "phase"});
+            KinematicPath path;
+            path.amplitude = v->child("amplitude").vec3Within(kMaxCoordinate);
+            path.period = v->child("period").positiveBetween(Real(1e-3), Real(1e6));
+            if (auto phase = v->optional("phase")) path.phase = phase->within(Real(1e6));
+            def.path = path;
+        }
+    });
     return def;
 }
 

@@ -24,6 +24,8 @@ constexpr const char* kNarrowphase = "narrowphase";
 constexpr const char* kSolve = "solve";
 constexpr const char* kContacts = "contacts";   // contact-cache upkeep after the solves
 constexpr const char* kCcd = "ccd";             // continuous collision: times of impact (chapter 7)
+constexpr const char* kJoints = "joints";       // joint upkeep: which jointed pairs collide (chapter 8)
+constexpr const char* kKinematic = "kinematic"; // kinematic bodies driven along paths (chapter 8)
 }  // namespace stage_group
 
 /// "group:variant".

@@ -27,6 +27,11 @@ constexpr Real kMinMass = Real(1e-6);
 constexpr Real kMaxMass = Real(1e9);
 constexpr Real kMinDensity = Real(1e-3);
 constexpr Real kMaxDensity = Real(1e6);
+/// Joints: motor forces and torques (N, N m) and joint friction, spring frequencies (Hz) and
+/// damping ratios. A spring above ten kilohertz is stiffer than any step can resolve.
+constexpr Real kMaxForce = Real(1e9);
+constexpr Real kMaxJointHertz = Real(1e4);
+constexpr Real kMaxDampingRatio = Real(1e3);
 /// Counts: bodies, joints and forces per scene; pairs per query; bytes per file; values (numbers,
 /// strings, arrays, objects...) per JSON document, which bounds the memory a parse can take
 /// (about 100 bytes a value) whatever the file holds.

@@ -30,6 +30,7 @@ const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
                                       {"ball_socket", JointType::BallSocket},
                                       {"hinge", JointType::Hinge},
                                       {"cone_twist", JointType::ConeTwist},
+                                      {"slider", JointType::Slider},
                                       {"fixed", JointType::Fixed}};
 
 Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
@@ -70,14 +71,53 @@ int bodyIndex(const JsonCursor& cursor, const World& world) {
     cursor.fail("unknown body \"" + name + "\" (bodies: " + (known.empty() ? "none" : known) + ")");
 }
 
+// [ch08-joint-keys]
+/// The keys each joint type accepts beyond type, a, b, anchors and collide_connected.
+std::vector<const char*> jointKeys(JointType type) {
+    switch (type) {
+        case JointType::Distance: return {"length", "spring_hertz", "spring_damping_ratio"};
+        case JointType::BallSocket: return {};
+        case JointType::Hinge: return {"axis", "limits", "motor", "reference_rotation"};
+        case JointType::ConeTwist: return {"axis", "cone_angle", "twist_limits", "friction_torque", "reference_rotation"};
+        case JointType::Slider: return {"axis", "limits", "motor", "reference_rotation"};
+        case JointType::Fixed: return {"reference_rotation"};
+    }
+    return {};
+}
+// [ch08-joint-keys]
+
+/// An angle interval [lo, hi] within [-pi, pi] (hinge limits, twist limits).
+std::pair<Real, Real> angleInterval(const JsonCursor& cursor) {
+    const std::pair<Real, Real> interval = cursor.interval();
+    if (interval.first < -kPi || interval.second > kPi) cursor.fail("must lie within [-pi, pi] radians");
+    return interval;
+}
+
+JointMotor readMotor(const JsonCursor& cursor, JointType type) {
+    const char* forceKey = type == JointType::Hinge ? "max_torque" : "max_force";
+    cursor.expectObject({"speed", forceKey});
+    JointMotor motor;
+    motor.speed = cursor.child("speed").within(kMaxSpeed);
+    motor.maxForce = cursor.child(forceKey).inRange(0, kMaxForce);
+    return motor;
+}
+
+// Whatever the file leaves out that the bodies' poses at load decide: the rest orientation and a
+// distance joint's length.
+void completeJointFromPoses(JointDesc& joint, const World& world, bool hasReference) {
+    const Transform& poseA = world.bodies[static_cast<std::size_t>(joint.bodyA)].transform;
+    const Transform& poseB = world.bodies[static_cast<std::size_t>(joint.bodyB)].transform;
+    if (!hasReference) joint.referenceRotation = (poseA.rotation.conjugate() * poseB.rotation).normalized();
+    if (joint.type == JointType::Distance && !joint.length)
+        joint.length = (poseB.apply(joint.localAnchorB) - poseA.apply(joint.localAnchorA)).norm();
+}
+
 JointDesc readJoint(const JsonCursor& cursor, const World& world, ErrorList& errors) {
     if (!cursor.json().is_object()) cursor.fail("must be an object");
     JointDesc joint;
     joint.type = cursor.child("type").choice(kJointTypes);
-    std::vector<const char*> keys = {"type", "a", "b", "anchor_a", "anchor_b"};
-    if (joint.type == JointType::Distance) keys.push_back("length");
-    if (joint.type == JointType::Hinge) keys.insert(keys.end(), {"axis", "limits"});
-    if (joint.type == JointType::ConeTwist) keys.insert(keys.end(), {"axis", "cone_angle", "twist_limits"});
+    std::vector<const char*> keys = {"type", "a", "b", "anchor_a", "anchor_b", "collide_connected"};
+    for (const char* key : jointKeys(joint.type)) keys.push_back(key);
     cursor.expectObject(keys, &errors);
     const bool foundA = errors.attempt([&] { joint.bodyA = bodyIndex(cursor.child("a"), world); });
     const bool foundB = errors.attempt([&] { joint.bodyB = bodyIndex(cursor.child("b"), world); });
@@ -88,15 +128,31 @@ JointDesc readJoint(const JsonCursor& cursor, const World& world, ErrorList& err
     };
     read("anchor_a", [&](const JsonCursor& v) { joint.localAnchorA = v.vec3Within(kMaxCoordinate); });
     read("anchor_b", [&](const JsonCursor& v) { joint.localAnchorB = v.vec3Within(kMaxCoordinate); });
+    read("collide_connected", [&](const JsonCursor& v) { joint.collideConnected = v.boolean(); });
     read("length", [&](const JsonCursor& v) { joint.length = v.inRange(0, kMaxCoordinate); });
+    read("spring_hertz", [&](const JsonCursor& v) { joint.springHertz = v.inRange(0, kMaxJointHertz); });
+    read("spring_damping_ratio", [&](const JsonCursor& v) { joint.springDampingRatio = v.inRange(0, kMaxDampingRatio); });
     read("axis", [&](const JsonCursor& v) {
-        const Vec3 axis = v.vec3();
+        const Vec3 axis = v.vec3Within(kMaxCoordinate);
         if (axis.norm() < Real(1e-6)) v.fail("must not be zero");
         joint.axis = axis.normalized();
     });
-    read("limits", [&](const JsonCursor& v) { joint.limits = v.interval(); });
+    read("limits", [&](const JsonCursor& v) {
+        joint.limits = joint.type == JointType::Hinge ? angleInterval(v) : v.interval();
+        if (joint.type == JointType::Slider && (std::abs(joint.limits->first) > kMaxCoordinate ||
+                                                std::abs(joint.limits->second) > kMaxCoordinate))
+            v.fail("must lie within [-" + std::to_string(int(kMaxCoordinate)) + ", " + std::to_string(int(kMaxCoordinate)) + "] m");
+    });
+    read("motor", [&](const JsonCursor& v) { joint.motor = readMotor(v, joint.type); });
     read("cone_angle", [&](const JsonCursor& v) { joint.coneAngle = v.inRange(0, kPi); });
-    read("twist_limits", [&](const JsonCursor& v) { joint.twistLimits = v.interval(); });
+    read("twist_limits", [&](const JsonCursor& v) { joint.twistLimits = angleInterval(v); });
+    read("friction_torque", [&](const JsonCursor& v) { joint.frictionTorque = v.inRange(0, kMaxForce); });
+    bool hasReference = false;
+    read("reference_rotation", [&](const JsonCursor& v) {
+        joint.referenceRotation = v.unitQuaternion();
+        hasReference = true;
+    });
+    if (foundA && foundB && joint.bodyA != joint.bodyB) completeJointFromPoses(joint, world, hasReference);
     return joint;
 }
 

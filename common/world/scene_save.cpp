@@ -2,6 +2,7 @@
 #include "world/json_reader.h"
 #include "world/scene.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace stepwise {
@@ -61,20 +62,37 @@ std::string saveSceneToString(const World& world) {
         out["friction"] = tidyNumber(body.material.friction);
         out["restitution"] = tidyNumber(body.material.restitution);
         if (body.bullet) out["bullet"] = true;
+        for (const KinematicPath& path : world.kinematicPaths)
+            if (path.body == int(i))
+                out["path"] = {{"amplitude", toJson(path.amplitude)}, {"period", tidyNumber(path.period)},
+                               {"phase", tidyNumber(std::fmod(path.phase + 2 * kPi * Real(world.time) / path.period, 2 * kPi))}};
         bodies.push_back(out);
     }
     scene["bodies"] = bodies;
     Json joints = Json::array();
     for (const JointDesc& joint : world.joints) {
+        const auto pair = [](const std::pair<Real, Real>& v) { return Json{tidyNumber(v.first), tidyNumber(v.second)}; };
         Json out = {{"type", toString(joint.type)}, {"a", bodyName(world, joint.bodyA)}, {"b", bodyName(world, joint.bodyB)},
                     {"anchor_a", toJson(joint.localAnchorA)}, {"anchor_b", toJson(joint.localAnchorB)}};
-        if (joint.type == JointType::Distance && joint.length) out["length"] = tidyNumber(*joint.length);
-        if (joint.type == JointType::Hinge || joint.type == JointType::ConeTwist) out["axis"] = toJson(joint.axis);
-        if (joint.type == JointType::Hinge && joint.limits)
-            out["limits"] = {tidyNumber(joint.limits->first), tidyNumber(joint.limits->second)};
-        if (joint.type == JointType::ConeTwist) out["cone_angle"] = tidyNumber(joint.coneAngle);
-        if (joint.type == JointType::ConeTwist && joint.twistLimits)
-            out["twist_limits"] = {tidyNumber(joint.twistLimits->first), tidyNumber(joint.twistLimits->second)};
+        if (joint.collideConnected) out["collide_connected"] = true;
+        const JointType type = joint.type;
+        if (type == JointType::Distance && joint.length) out["length"] = tidyNumber(*joint.length);
+        if (type == JointType::Distance && joint.springHertz > 0) {
+            out["spring_hertz"] = tidyNumber(joint.springHertz);
+            out["spring_damping_ratio"] = tidyNumber(joint.springDampingRatio);
+        }
+        const bool hasAxis = type == JointType::Hinge || type == JointType::ConeTwist || type == JointType::Slider;
+        if (hasAxis) out["axis"] = toJson(joint.axis);
+        if (hasAxis || type == JointType::Fixed) out["reference_rotation"] = toJson(joint.referenceRotation);
+        if ((type == JointType::Hinge || type == JointType::Slider) && joint.limits) out["limits"] = pair(*joint.limits);
+        if ((type == JointType::Hinge || type == JointType::Slider) && joint.motor)
+            out["motor"] = {{"speed", tidyNumber(joint.motor->speed)},
+                            {type == JointType::Hinge ? "max_torque" : "max_force", tidyNumber(joint.motor->maxForce)}};
+        if (type == JointType::ConeTwist) {
+            out["cone_angle"] = tidyNumber(joint.coneAngle);
+            if (joint.twistLimits) out["twist_limits"] = pair(*joint.twistLimits);
+            if (joint.frictionTorque > 0) out["friction_torque"] = tidyNumber(joint.frictionTorque);
+        }
         joints.push_back(out);
     }
     if (!joints.empty()) scene["joints"] = joints;

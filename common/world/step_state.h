@@ -21,6 +21,8 @@ struct SolverStats {
     int invalidSkipped = 0;      // points with non-finite data, skipped (a defined result, not a crash)
     Real residualRms = 0;        // velocity residual after the last iteration, m/s
     Real residualMax = 0;        // m/s
+    int jointRows = 0;           // rows of the joints solved with the contacts (chapter 8)
+    int jointsSkipped = 0;       // joints with bad bodies or non-finite data, left out
 };
 
 /// What continuous collision (chapter 7) keeps within a step and measured in the last ones. Plain

@@ -1,6 +1,7 @@
 #include "world/world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace stepwise {
@@ -76,6 +77,12 @@ int addBody(World& world, const BodyDef& def) {
         body.motionIndex = static_cast<int>(world.motions.size());
         world.motions.push_back(motion);
     }
+    if (def.path && def.type == BodyType::Kinematic) {
+        KinematicPath path = *def.path;
+        path.body = bodyIndex;
+        path.center = def.transform.position - path.amplitude * std::sin(path.phase);
+        world.kinematicPaths.push_back(path);
+    }
     world.bodies.push_back(std::move(body));
     return bodyIndex;
 }
@@ -98,6 +105,7 @@ const char* toString(JointType type) {
         case JointType::BallSocket: return "ball_socket";
         case JointType::Hinge: return "hinge";
         case JointType::ConeTwist: return "cone_twist";
+        case JointType::Slider: return "slider";
         case JointType::Fixed: return "fixed";
     }
     return "?";

@@ -33,23 +33,57 @@ struct Damping {
     Real angular = 0;                    // 1/s
 };
 
-enum class JointType { Distance, BallSocket, Hinge, ConeTwist, Fixed };
+enum class JointType { Distance, BallSocket, Hinge, ConeTwist, Slider, Fixed };
 
-/// The scene-format spelling: "distance", "ball_socket", "hinge", "cone_twist", "fixed".
+/// The scene-format spelling: "distance", "ball_socket", "hinge", "cone_twist", "slider", "fixed".
 const char* toString(JointType type);
 
-/// A joint as the scene describes it; chapter 8 (to come) turns these into constraint rows.
+/// A hinge's or slider's motor: drives the joint's speed along its axis towards `speed` (rad/s or
+/// m/s) with at most `maxForce` (N m for a hinge, N for a slider).
+struct JointMotor {
+    Real speed = 0;
+    Real maxForce = 0;
+};
+
+/// A joint as the scene describes it; chapter 8 turns these into constraint rows.
 struct JointDesc {
     JointType type = JointType::BallSocket;
     int bodyA = -1;
     int bodyB = -1;
     Vec3 localAnchorA = Vec3::Zero();
     Vec3 localAnchorB = Vec3::Zero();
-    Vec3 axis = Vec3::UnitY();
-    std::optional<Real> length;
-    std::optional<std::pair<Real, Real>> limits;
-    Real coneAngle = 0;
-    std::optional<std::pair<Real, Real>> twistLimits;
+    Vec3 axis = Vec3::UnitY();           // unit, body A's frame: hinge and slider axis, cone-twist twist axis
+    /// B's orientation in A's frame when the joint is at rest (angle zero): what hinge, cone-twist,
+    /// slider and fixed joints measure their angles from. Taken from the bodies' poses at load
+    /// unless the scene gives it.
+    Quat referenceRotation = Quat::Identity();
+    std::optional<Real> length;          // distance joint, m; the anchors' distance at load when absent
+    Real springHertz = 0;                // distance joint: > 0 makes it a spring of this frequency
+    Real springDampingRatio = 0;
+    std::optional<std::pair<Real, Real>> limits;      // hinge (rad) and slider (m)
+    Real coneAngle = 0;                  // cone-twist: largest swing of the twist axis, rad
+    std::optional<std::pair<Real, Real>> twistLimits; // cone-twist, rad
+    std::optional<JointMotor> motor;     // hinge and slider
+    Real frictionTorque = 0;             // cone-twist: N m resisting any relative turn (joint friction)
+    bool collideConnected = false;       // whether the two bodies still collide with each other
+};
+
+/// What a joint carries from one solve to the next: the accumulated impulses of its rows, for the
+/// warm start (chapter 8). One per World::joints entry; the slots' meaning is the joint type's.
+struct JointImpulses {
+    static constexpr int kSlots = 10;
+    Real slot[kSlots] = {};
+};
+
+/// A kinematic body moved back and forth along a line (a moving platform, chapter 8): its origin
+/// at time t is center + amplitude sin(2 pi t / period + phase). The stage that drives it sets the
+/// body's velocity each step to land exactly there.
+struct KinematicPath {
+    int body = -1;
+    Vec3 center = Vec3::Zero();
+    Vec3 amplitude = Vec3::Zero();   // m
+    Real period = 1;                 // s
+    Real phase = 0;                  // rad at t = 0
 };
 
 /// Everything needed to create one body: what a scene file's bodies[] entry says.
@@ -65,6 +99,7 @@ struct BodyDef {
     Material material;
     bool bullet = false;
     std::optional<IntegratorKind> integrator;
+    std::optional<KinematicPath> path;   // kinematic bodies: amplitude, period, phase (body and centre are filled in)
 };
 
 struct World {
@@ -75,6 +110,8 @@ struct World {
     std::vector<Spring> springs;
     std::vector<Damping> dampings;
     std::vector<JointDesc> joints;
+    std::vector<JointImpulses> jointImpulses;  // parallel to joints once a joint solve ran
+    std::vector<KinematicPath> kinematicPaths;
 
     // Collision state. candidatePairs is rebuilt every frame by whatever finds candidates (all
     // pairs in chapter 3, a broadphase from chapter 5); pairs lists the pairs the last narrowphase

@@ -1,0 +1,86 @@
+#include "08_joints/joint_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+JointFrame jointFrame(const World& world, const JointDesc& joint) {
+    const Transform& poseA = world.bodies[static_cast<std::size_t>(joint.bodyA)].transform;
+    const Transform& poseB = world.bodies[static_cast<std::size_t>(joint.bodyB)].transform;
+    JointFrame frame;
+    frame.anchorA = poseA.apply(joint.localAnchorA);
+    frame.anchorB = poseB.apply(joint.localAnchorB);
+    frame.armA = frame.anchorA - worldCenterOfMass(world, joint.bodyA);
+    frame.armB = frame.anchorB - worldCenterOfMass(world, joint.bodyB);
+    frame.rotationA = poseA.rotation;
+    Quat deviation = (poseA.rotation.conjugate() * poseB.rotation) * joint.referenceRotation.conjugate();
+    if (deviation.w() < 0) deviation.coeffs() = -deviation.coeffs();  // the shorter way round
+    frame.deviation = deviation.normalized();
+    frame.axisA = poseA.rotation * joint.axis;
+    frame.axisB = poseA.rotation * (frame.deviation * joint.axis);
+    return frame;
+}
+
+// [ch08-twist]
+Real twistAngle(const Quat& deviation, const Vec3& localAxis) {
+    // The deviation is swing * twist with the twist about localAxis; the twist quaternion is the
+    // deviation's part along the axis (w, (v . a) a), normalised, so its angle is this.
+    return 2 * std::atan2(deviation.vec().dot(localAxis), deviation.w());
+}
+// [ch08-twist]
+
+Real swingAngle(const JointFrame& frame) {
+    return std::acos(std::clamp(frame.axisA.dot(frame.axisB), Real(-1), Real(1)));
+}
+
+Vec3 rotationError(const JointFrame& frame) { return frame.rotationA * (2 * frame.deviation.vec()); }
+
+namespace {
+
+// How far an angle is outside [lo, hi] (0 inside).
+Real beyond(Real value, const std::pair<Real, Real>& limits) {
+    return std::max({limits.first - value, value - limits.second, Real(0)});
+}
+
+// The whole angle B has turned away from rest.
+Real turnAngle(const JointFrame& frame) { return 2 * std::atan2(frame.deviation.vec().norm(), frame.deviation.w()); }
+
+}  // namespace
+
+JointError measureJointError(const World& world, const JointDesc& joint) {
+    const JointFrame frame = jointFrame(world, joint);
+    const Vec3 gap = frame.anchorB - frame.anchorA;
+    JointError error;
+    switch (joint.type) {
+        case JointType::Distance:
+            error.position = std::abs(gap.norm() - joint.length.value_or(0));
+            break;
+        case JointType::BallSocket: error.position = gap.norm(); break;
+        case JointType::Hinge:
+            error.position = gap.norm();
+            error.angle = swingAngle(frame);
+            if (joint.limits) error.angle = std::max(error.angle, beyond(twistAngle(frame.deviation, joint.axis), *joint.limits));
+            break;
+        case JointType::ConeTwist:
+            error.position = gap.norm();
+            error.angle = std::max(swingAngle(frame) - joint.coneAngle, Real(0));
+            if (joint.twistLimits)
+                error.angle = std::max(error.angle, beyond(twistAngle(frame.deviation, joint.axis), *joint.twistLimits));
+            break;
+        case JointType::Slider: {
+            const Vec3 along = frame.axisA * frame.axisA.dot(gap);
+            error.position = (gap - along).norm();
+            if (joint.limits) error.position = std::max(error.position, beyond(frame.axisA.dot(gap), *joint.limits));
+            error.angle = turnAngle(frame);
+            break;
+        }
+        case JointType::Fixed:
+            error.position = gap.norm();
+            error.angle = turnAngle(frame);
+            break;
+    }
+    return error;
+}
+
+}  // namespace stepwise

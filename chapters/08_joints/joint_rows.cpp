@@ -1,0 +1,351 @@
+#include "08_joints/joint_rows.h"
+
+#include "08_joints/joint_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace stepwise {
+
+namespace {
+
+// [ch08-row-shapes]
+// A row that measures how fast two points close along n: point B (arm armB from B's centre of
+// mass) minus point A (arm armA from A's). d/dt (pB - pA) . n with n fixed: J = [-n, -rA x n, n, rB x n].
+ConstraintRow linearRow(int bodyA, int bodyB, const Vec3& armA, const Vec3& armB, const Vec3& direction) {
+    ConstraintRow row;
+    row.bodyA = bodyA;
+    row.bodyB = bodyB;
+    row.linearA = -direction;
+    row.angularA = -armA.cross(direction);
+    row.linearB = direction;
+    row.angularB = armB.cross(direction);
+    return row;
+}
+
+// A row that measures how fast B turns relative to A about a world axis: (wB - wA) . axis.
+ConstraintRow angularRow(int bodyA, int bodyB, const Vec3& axis) {
+    ConstraintRow row;
+    row.bodyA = bodyA;
+    row.bodyB = bodyB;
+    row.angularA = -axis;
+    row.angularB = axis;
+    return row;
+}
+// [ch08-row-shapes]
+
+ConstraintRow negated(ConstraintRow row) {
+    row.linearA = -row.linearA;
+    row.angularA = -row.angularA;
+    row.linearB = -row.linearB;
+    row.angularB = -row.angularB;
+    return row;
+}
+
+Real effectiveMassOf(const ConstraintRow& row, const std::vector<SolverBody>& bodies) {
+    const SolverBody& a = bodies[static_cast<std::size_t>(row.bodyA)];
+    const SolverBody& b = bodies[static_cast<std::size_t>(row.bodyB)];
+    const Real inverse = a.inverseMass * row.linearA.squaredNorm() + row.angularA.dot(a.inverseInertia * row.angularA) +
+                         b.inverseMass * row.linearB.squaredNorm() + row.angularB.dot(b.inverseInertia * row.angularB);
+    return inverse > 0 ? 1 / inverse : 0;
+}
+
+bool finiteRow(const ConstraintRow& row) {
+    return row.linearA.allFinite() && row.angularA.allFinite() && row.linearB.allFinite() &&
+           row.angularB.allFinite() && std::isfinite(row.bias);
+}
+
+// Collects one joint's rows, slot by slot.
+class RowBuilder {
+public:
+    RowBuilder(const JointFeedback& feedback, Real h) : feedback_(feedback), h_(h) {}
+
+    // [ch08-bias]
+    // C = 0 wanted: the error goes back in by the feedback's rule.
+    void equality(ConstraintRow row, Real error) {
+        Softness soft;
+        if (feedback_.kind == JointFeedback::Kind::Baumgarte) row.bias = -feedback_.baumgarte * error / h_;
+        if (feedback_.kind == JointFeedback::Kind::Soft) {
+            soft = feedback_.soft;
+            row.bias = -soft.biasRate * error;
+        }
+        add(row, soft);
+    }
+
+    // C >= 0 wanted (a limit), row J = dC/dt, impulse >= 0. Not reached: speculative, the row
+    // only stops the bodies from closing the gap by more than it is in this step. Passed: fed
+    // back like an equality.
+    void limit(ConstraintRow row, Real gap) {
+        row.lower = 0;
+        if (gap > 0) {
+            row.bias = -gap / h_;
+            add(row, Softness{});
+            return;
+        }
+        equality(row, gap);
+    }
+    // [ch08-bias]
+
+    // A row that drives J v towards `speed` with an impulse of at most maxForce h either way (a
+    // motor; joint friction is a motor of speed zero).
+    void motor(ConstraintRow row, Real speed, Real maxForce) {
+        row.bias = speed;
+        row.lower = -maxForce * h_;
+        row.upper = maxForce * h_;
+        add(row, Softness{});
+    }
+
+    // A slot the joint does not use now (no limit, no motor): a row without Jacobian, which the
+    // solver skips, so every slot keeps its place.
+    void unused(int bodyA, int bodyB) {
+        ConstraintRow row;
+        row.bodyA = bodyA;
+        row.bodyB = bodyB;
+        add(row, Softness{});
+    }
+
+    void spring(ConstraintRow row, Real error, const Softness& soft) {
+        row.bias = -soft.biasRate * error;
+        add(row, soft);
+    }
+
+    void add(const ConstraintRow& row, const Softness& soft) {
+        rows_.push_back(row);
+        softness_.push_back(soft);
+    }
+
+    std::vector<ConstraintRow>& rows() { return rows_; }
+    std::vector<Softness>& softness() { return softness_; }
+
+private:
+    JointFeedback feedback_;
+    Real h_;
+    std::vector<ConstraintRow> rows_;
+    std::vector<Softness> softness_;
+};
+
+// Two unit vectors perpendicular to `axis` and to each other.
+void perpendiculars(const Vec3& axis, Vec3& first, Vec3& second) { tangentBasis(axis, first, second); }
+
+// [ch08-point-rows]
+// Slots 0-2 of the point joints: the anchors coincide, one row per world axis (solved as a block).
+void addPointRows(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame) {
+    const Vec3 gap = frame.anchorB - frame.anchorA;
+    for (int axis = 0; axis < 3; ++axis)
+        builder.equality(linearRow(joint.bodyA, joint.bodyB, frame.armA, frame.armB, Vec3::Unit(axis)), gap[axis]);
+}
+// [ch08-point-rows]
+
+// B turns with A: one row per world axis, the error the deviation's small-angle vector.
+void addWeldRows(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame) {
+    const Vec3 error = rotationError(frame);
+    for (int axis = 0; axis < 3; ++axis)
+        builder.equality(angularRow(joint.bodyA, joint.bodyB, Vec3::Unit(axis)), error[axis]);
+}
+
+// [ch08-limit-rows]
+// The two limit slots of a coordinate x (an angle or a travel) that `along` measures the rate of:
+// lower wants x - lo >= 0, upper wants hi - x >= 0.
+void addLimitRows(RowBuilder& builder, const JointDesc& joint, const ConstraintRow& along, Real coordinate,
+                  const std::optional<std::pair<Real, Real>>& limits) {
+    if (!limits) {
+        builder.unused(joint.bodyA, joint.bodyB);
+        builder.unused(joint.bodyA, joint.bodyB);
+        return;
+    }
+    builder.limit(along, coordinate - limits->first);
+    builder.limit(negated(along), limits->second - coordinate);
+}
+
+void addLimitAndMotorRows(RowBuilder& builder, const JointDesc& joint, const ConstraintRow& along, Real coordinate,
+                          const std::optional<std::pair<Real, Real>>& limits) {
+    addLimitRows(builder, joint, along, coordinate, limits);
+    if (joint.motor)
+        builder.motor(along, joint.motor->speed, joint.motor->maxForce);
+    else
+        builder.unused(joint.bodyA, joint.bodyB);
+}
+// [ch08-limit-rows]
+
+// [ch08-hinge-rows]
+void addHingeRows(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame) {
+    addPointRows(builder, joint, frame);
+    // B's axis stays on A's: its components along two directions b, c across A's axis are zero.
+    // d/dt (axisB . b) = (wB x axisB) . b + axisB . (wA x b) = (axisB x b) . (wB - wA).
+    Vec3 across[2];
+    perpendiculars(frame.axisA, across[0], across[1]);
+    for (const Vec3& direction : across)
+        builder.equality(angularRow(joint.bodyA, joint.bodyB, frame.axisB.cross(direction)), frame.axisB.dot(direction));
+    // The angle turns at (wB - wA) . axis; the lower limit wants angle - lo >= 0, the upper hi - angle >= 0.
+    const Real angle = twistAngle(frame.deviation, joint.axis);
+    const ConstraintRow turn = angularRow(joint.bodyA, joint.bodyB, frame.axisA);
+    addLimitAndMotorRows(builder, joint, turn, angle, joint.limits);
+}
+// [ch08-hinge-rows]
+
+// [ch08-cone-twist-rows]
+void addConeTwistRows(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame) {
+    addPointRows(builder, joint, frame);
+    // Swing: the angle between the axes grows at (wB - wA) . s with s = axisA x axisB normalised;
+    // the cone wants coneAngle - swing >= 0. Aligned axes: no direction, and far from any cone.
+    const Vec3 swingDirection = frame.axisA.cross(frame.axisB);
+    const Real swing = swingAngle(frame);
+    const Real swingLength = swingDirection.norm();
+    if (swingLength > Real(1e-6))
+        builder.limit(negated(angularRow(joint.bodyA, joint.bodyB, swingDirection / swingLength)), joint.coneAngle - swing);
+    else
+        builder.unused(joint.bodyA, joint.bodyB);
+    // Twist about the mean of the two axes (the twist axis of A and B differ by the swing).
+    const Vec3 mean = frame.axisA + frame.axisB;
+    const Vec3 twistAxis = mean.norm() > Real(1e-6) ? Vec3(mean.normalized()) : frame.axisA;
+    const Real twist = twistAngle(frame.deviation, joint.axis);
+    addLimitRows(builder, joint, angularRow(joint.bodyA, joint.bodyB, twistAxis), twist, joint.twistLimits);
+    // Joint friction (Box2D's ragdoll): zero-speed motors about the world axes.
+    for (int axis = 0; axis < 3; ++axis) {
+        if (joint.frictionTorque > 0)
+            builder.motor(angularRow(joint.bodyA, joint.bodyB, Vec3::Unit(axis)), 0, joint.frictionTorque);
+        else
+            builder.unused(joint.bodyA, joint.bodyB);
+    }
+}
+// [ch08-cone-twist-rows]
+
+// [ch08-slider-rows]
+void addSliderRows(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame) {
+    // B's anchor stays on the line through A's anchor along A's axis. The offset d = pB - pA is
+    // measured along directions n that turn with A, so d/dt (d . n) also has d . (wA x n): A's arm
+    // reaches B's anchor, rA + d.
+    const Vec3 gap = frame.anchorB - frame.anchorA;
+    const Vec3 armToB = frame.armA + gap;
+    Vec3 across[2];
+    perpendiculars(frame.axisA, across[0], across[1]);
+    for (const Vec3& direction : across)
+        builder.equality(linearRow(joint.bodyA, joint.bodyB, armToB, frame.armB, direction), gap.dot(direction));
+    addWeldRows(builder, joint, frame);
+    const Real travel = gap.dot(frame.axisA);
+    addLimitAndMotorRows(builder, joint, linearRow(joint.bodyA, joint.bodyB, armToB, frame.armB, frame.axisA), travel,
+                         joint.limits);
+}
+// [ch08-slider-rows]
+
+// [ch08-distance-row]
+void addDistanceRow(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame, Real h) {
+    const Vec3 gap = frame.anchorB - frame.anchorA;
+    const Real length = gap.norm();
+    // Coincident anchors leave no direction to hold the length along: the row is empty (and skipped).
+    const Vec3 direction = length > Real(1e-9) ? Vec3(gap / length) : Vec3::Zero();
+    const ConstraintRow row = linearRow(joint.bodyA, joint.bodyB, frame.armA, frame.armB, direction);
+    const Real error = length - joint.length.value_or(length);
+    if (joint.springHertz > 0)
+        builder.spring(row, error, makeSoftness(joint.springHertz, joint.springDampingRatio, h));
+    else
+        builder.equality(row, error);
+}
+// [ch08-distance-row]
+
+bool validBodies(const World& world, const JointDesc& joint) {
+    const int count = static_cast<int>(world.bodies.size());
+    return joint.bodyA >= 0 && joint.bodyB >= 0 && joint.bodyA < count && joint.bodyB < count && joint.bodyA != joint.bodyB;
+}
+
+}  // namespace
+
+void appendJointRows(JointRows& out, const World& world, int jointIndex, const std::vector<SolverBody>& bodies, Real h,
+                     const JointFeedback& feedback, bool carryImpulses) {
+    const JointDesc& joint = world.joints[static_cast<std::size_t>(jointIndex)];
+    if (!validBodies(world, joint) || !(h > 0)) {
+        ++out.invalidSkipped;
+        return;
+    }
+    const JointFrame frame = jointFrame(world, joint);
+    RowBuilder builder(feedback, h);
+    switch (joint.type) {
+        case JointType::Distance: addDistanceRow(builder, joint, frame, h); break;
+        case JointType::BallSocket: addPointRows(builder, joint, frame); break;
+        case JointType::Hinge: addHingeRows(builder, joint, frame); break;
+        case JointType::ConeTwist: addConeTwistRows(builder, joint, frame); break;
+        case JointType::Slider: addSliderRows(builder, joint, frame); break;
+        case JointType::Fixed:
+            addPointRows(builder, joint, frame);
+            addWeldRows(builder, joint, frame);
+            break;
+    }
+    std::vector<ConstraintRow>& rows = builder.rows();
+    for (ConstraintRow& row : rows) {
+        if (!finiteRow(row)) {
+            ++out.invalidSkipped;
+            return;
+        }
+        row.effectiveMass = effectiveMassOf(row, bodies);
+    }
+    const bool carried = carryImpulses && static_cast<std::size_t>(jointIndex) < world.jointImpulses.size();
+    for (std::size_t slot = 0; slot < rows.size() && slot < JointImpulses::kSlots; ++slot) {
+        const Real impulse = carried ? world.jointImpulses[static_cast<std::size_t>(jointIndex)].slot[slot] : Real(0);
+        rows[slot].impulse = std::isfinite(impulse) ? std::clamp(impulse, rows[slot].lower, rows[slot].upper) : Real(0);
+    }
+
+    JointRowSet set;
+    set.joint = jointIndex;
+    set.firstRow = static_cast<int>(out.rows.size());
+    set.rowCount = static_cast<int>(rows.size());
+    const bool pointJoint = joint.type != JointType::Distance && joint.type != JointType::Slider;
+    if (pointJoint) {
+        // [ch08-point-mass]
+        // K = (1/mA + 1/mB) 1 - [rA]x IA^-1 [rA]x - [rB]x IB^-1 [rB]x: how the anchors' relative
+        // velocity answers an impulse at them. A singular K (both bodies fixed) keeps the rows scalar.
+        const SolverBody& a = bodies[static_cast<std::size_t>(joint.bodyA)];
+        const SolverBody& b = bodies[static_cast<std::size_t>(joint.bodyB)];
+        const Mat3 armA = skew(frame.armA), armB = skew(frame.armB);
+        const Mat3 k = (a.inverseMass + b.inverseMass) * Mat3::Identity() - armA * a.inverseInertia * armA -
+                       armB * b.inverseInertia * armB;
+        // [ch08-point-mass]
+        const Real scale = k.norm();
+        const bool invertible = scale > 0 && std::abs(k.determinant()) > Real(1e-9) * scale * scale * scale;
+        const Mat3 inverse = invertible ? Mat3(k.inverse()) : Mat3::Zero();
+        set.pointBlock = invertible && inverse.allFinite();
+        set.pointMass = set.pointBlock ? inverse : Mat3::Zero();
+        set.pointArmA = frame.armA;
+        set.pointArmB = frame.armB;
+    }
+    out.rows.insert(out.rows.end(), rows.begin(), rows.end());
+    out.softness.insert(out.softness.end(), builder.softness().begin(), builder.softness().end());
+    out.joints.push_back(set);
+}
+
+// [ch08-solve-rows]
+void solveJointRows(JointRows& jointRows, const JointRowSet& set, std::vector<SolverBody>& bodies) {
+    int begin = set.firstRow;
+    const int end = set.firstRow + set.rowCount;
+    if (set.pointBlock) {
+        // The three point rows at once: lambda = K^-1 (bias - relative velocity), softened.
+        ConstraintRow* point = &jointRows.rows[static_cast<std::size_t>(begin)];
+        const Softness& soft = jointRows.softness[static_cast<std::size_t>(begin)];
+        SolverBody& a = bodies[static_cast<std::size_t>(point->bodyA)];
+        SolverBody& b = bodies[static_cast<std::size_t>(point->bodyB)];
+        const Vec3 relative = b.linearVelocity + b.angularVelocity.cross(set.pointArmB) - a.linearVelocity -
+                              a.angularVelocity.cross(set.pointArmA);
+        const Vec3 bias(point[0].bias, point[1].bias, point[2].bias);
+        const Vec3 accumulated(point[0].impulse, point[1].impulse, point[2].impulse);
+        const Vec3 impulse = soft.massScale * (set.pointMass * (bias - relative)) - soft.impulseScale * accumulated;
+        for (int axis = 0; axis < 3; ++axis) point[axis].impulse += impulse[axis];
+        a.linearVelocity -= a.inverseMass * impulse;
+        a.angularVelocity -= a.inverseInertia * set.pointArmA.cross(impulse);
+        b.linearVelocity += b.inverseMass * impulse;
+        b.angularVelocity += b.inverseInertia * set.pointArmB.cross(impulse);
+        begin += 3;
+    }
+    for (int i = begin; i < end; ++i) {
+        ConstraintRow& row = jointRows.rows[static_cast<std::size_t>(i)];
+        if (row.effectiveMass == 0) continue;
+        const Softness& soft = jointRows.softness[static_cast<std::size_t>(i)];
+        const Real previous = row.impulse;
+        const Real increment = soft.massScale * row.effectiveMass * (row.bias - rowVelocity(row, bodies)) -
+                               soft.impulseScale * previous;
+        row.impulse = std::clamp(previous + increment, row.lower, row.upper);
+        applyRowImpulse(row, row.impulse - previous, bodies);
+    }
+}
+// [ch08-solve-rows]
+
+}  // namespace stepwise

@@ -1,0 +1,64 @@
+#pragma once
+// Each joint type as constraint rows (chapter 4's ConstraintRow): a position constraint C(x) = 0
+// (or C >= 0 for a limit) becomes the velocity row J v = bias, J = dC/dx, with the bias feeding
+// the position error back. The point of a ball socket (three rows: the anchors coincide) is
+// solved as one 3x3 block; every other row is scalar. Rows are rebuilt from the poses at every
+// solve, and start from the impulses the joint carried (World::jointImpulses), like contacts.
+//
+// Slots (JointImpulses::slot), per type:
+//   distance    0 along the anchors' line (rigid, or a spring)
+//   ball_socket 0-2 point
+//   hinge       0-2 point, 3-4 the two turns off the axis, 5 lower limit, 6 upper limit, 7 motor
+//   cone_twist  0-2 point, 3 swing cone, 4 twist lower, 5 twist upper, 6-8 joint friction
+//   slider      0-1 the two moves off the axis, 2-4 the three turns, 5 lower, 6 upper, 7 motor
+//   fixed       0-2 point, 3-5 the three turns
+
+#include "04_pgs/constraint_row.h"
+#include "06_manifolds/stabilisation.h"
+#include "world/world.h"
+
+#include <vector>
+
+namespace stepwise {
+
+// [ch08-feedback]
+/// How a solve feeds position errors back into the equality rows and the violated limits:
+/// Baumgarte's fraction of the error per step (rigid rows), Box2D v3's soft constraint (a stiff
+/// spring-damper), or nothing (the relax pass: velocities only). A limit that is not reached is
+/// speculative in every case: the row lets the bodies close the gap in this step, no more.
+struct JointFeedback {
+    enum class Kind { Baumgarte, Soft, None };
+    Kind kind = Kind::Baumgarte;
+    Real baumgarte = Real(0.2);
+    Softness soft;
+};
+// [ch08-feedback]
+
+/// A joint's rows in JointRows::rows: [firstRow, firstRow + rowCount), slot i at firstRow + i.
+struct JointRowSet {
+    int joint = -1;
+    int firstRow = 0;
+    int rowCount = 0;
+    bool pointBlock = false;      // slots 0-2 are solved together with pointMass
+    Mat3 pointMass = Mat3::Zero();  // K^-1 of the point block
+    Vec3 pointArmA = Vec3::Zero();  // the block's arms from the centres of mass to the anchors
+    Vec3 pointArmB = Vec3::Zero();
+};
+
+struct JointRows {
+    std::vector<ConstraintRow> rows;
+    std::vector<Softness> softness;   // one per row
+    std::vector<JointRowSet> joints;
+    int invalidSkipped = 0;           // joints with bad bodies or non-finite data: left out
+};
+
+/// Appends the rows of World::joints[jointIndex] for a step of h, effective masses filled in,
+/// accumulated impulses loaded from World::jointImpulses when `carryImpulses` (and clamped to
+/// this step's bounds), zero otherwise.
+void appendJointRows(JointRows& out, const World& world, int jointIndex, const std::vector<SolverBody>& bodies, Real h,
+                     const JointFeedback& feedback, bool carryImpulses);
+
+/// One Gauss-Seidel pass over one joint's rows: the point block first, then the scalar rows.
+void solveJointRows(JointRows& rows, const JointRowSet& set, std::vector<SolverBody>& bodies);
+
+}  // namespace stepwise

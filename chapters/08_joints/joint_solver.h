@@ -1,0 +1,74 @@
+#pragma once
+// Joints in the solve: chapter 6's solve takes them as ExtraConstraints, so they are built,
+// warm started, iterated and stored in the same passes as the contacts, substep by substep.
+//
+// The order matters for Gauss-Seidel on a chain: each row only sees what the rows before it did
+// in this sweep. Solved from the leaves towards the ground, one sweep carries a hanging chain's
+// whole weight up to its anchor; from the anchor out, every joint first sees a link that the next
+// joint will pull down again. The bench (`stepwise bench joints`) measures the orders.
+
+#include "06_manifolds/stabilisation.h"
+#include "08_joints/joint_rows.h"
+#include "world/world.h"
+
+#include <vector>
+
+namespace stepwise {
+
+// [ch08-order]
+/// The order the joints are swept in. The depth of a joint is how many joints separate its
+/// farther body from the ground (a static or kinematic body), or from the first body of a tree
+/// that touches no ground (a ragdoll in the air).
+enum class JointOrder {
+    AsListed,      // World::joints order
+    LeavesFirst,   // deepest joints first: loads travel to the ground within one sweep
+    GroundFirst,   // shallowest first
+};
+const char* toString(JointOrder order);
+// [ch08-order]
+
+/// The joint order the chapter uses (the bench's measurement chose it).
+constexpr JointOrder kDefaultJointOrder = JointOrder::LeavesFirst;
+
+/// The joints' sweep order (indices into World::joints).
+std::vector<int> jointSolveOrder(const World& world, JointOrder order);
+
+// [ch08-joint-softness]
+/// Joints are soft in the biased pass, whatever the contacts use: a spring-damper of a quarter of
+/// the (sub)step rate (150 Hz at 60 Hz with 10 substeps), damping ratio 2 (Box2D v3's). Rigid
+/// Baumgarte rows with one iteration per substep make a 10-link chain diverge within a second
+/// (tests/ch08/chain_test.cpp keeps that measured); the spring's damping is what keeps an
+/// unconverged Gauss-Seidel solve from feeding its error back. A quarter of the rate is as stiff
+/// as the step resolves: at half the rate the same chain diverges again.
+constexpr Real kJointHertzPerStepRate = Real(0.25);
+constexpr Real kJointDampingRatio = 2;
+// [ch08-joint-softness]
+
+/// The feedback of a solve's biased pass: `kind` with the chapter's softness or Settings::baumgarte.
+JointFeedback jointFeedback(const Settings& settings, Real h, JointFeedback::Kind kind = JointFeedback::Kind::Soft);
+
+class JointConstraints final : public ExtraConstraints {
+public:
+    explicit JointConstraints(JointOrder order = kDefaultJointOrder,
+                              JointFeedback::Kind feedback = JointFeedback::Kind::Soft)
+        : order_(order), feedback_(feedback) {}
+
+    bool active(const World& world) const override { return !world.joints.empty(); }
+    void prepare(const World& world, const std::vector<SolverBody>& bodies, Real h, bool positionFeedback) override;
+    void warmStart(std::vector<SolverBody>& bodies) override;
+    void iterate(std::vector<SolverBody>& bodies) override;
+    void store(World& world) const override;
+
+    const JointRows& rows() const { return rows_; }
+
+private:
+    JointOrder order_;
+    JointFeedback::Kind feedback_;
+    JointRows rows_;
+};
+
+/// Chapter 6's solve step (runStabilisedSolve) with the world's joints in it.
+void solveWithJoints(World& world, Real dt, bool splitOrder, JointOrder order = kDefaultJointOrder,
+                     JointFeedback::Kind feedback = JointFeedback::Kind::Soft);
+
+}  // namespace stepwise
