@@ -1,0 +1,61 @@
+// Every earlier promise through chapter 8's pipeline: the promises of chapters 1 to 4
+// (tests/promises) directly, and every registered scene of chapters 1 to 7 (none has a joint or a
+// kinematic path) giving the same run report as chapter 7's pipeline, bit for bit.
+#include "08_joints/chapter.h"
+#include "app/registry.h"
+#include "app/runner.h"
+#include "promises/promises.h"
+#include "world/report.h"
+
+#include <catch2/catch.hpp>
+
+using namespace stepwise;
+
+namespace {
+
+std::vector<test::PipelineVariant> throughChapter8() {
+    return {{"chapter 8", [](World& world, ContactSearch search) {
+                 return makeChapter08Pipeline(
+                     world, JointOptions{},
+                     makeChapter07Pipeline(world, makeChapter06Pipeline(world, ManifoldOptions{}, chooseStepOrder(world), search)));
+             }}};
+}
+
+/// The report without its timings and plan notes (chapter 8 adds two).
+std::string reportWithoutNotes(const World& world, RunStats stats) {
+    stats.planNotes.clear();
+    stats.stepMs.assign(stats.stepMs.size(), 0);
+    stats.stageMeanMs.clear();
+    return reportToJson(world, stats, "test");
+}
+
+}  // namespace
+
+TEST_CASE("through chapter 8: the promises of chapters 1 to 4 hold", "[ch08][earlier]") {
+    const int chapter = GENERATE(1, 2, 3, 4);
+    test::checkPromisesOfChapter(chapter, throughChapter8());
+}
+
+TEST_CASE("scenes of chapters 1 to 7: the same reports with and without chapter 8", "[ch08][earlier]") {
+    const Registry& registry = chapterRegistry();
+    int compared = 0;
+    for (const SceneEntry& scene : registry.scenes()) {
+        if (scene.chapter > 7) continue;
+        World world7 = scene.build();
+        if (world7.bodies.size() > 60) continue;  // the big stress and pyramid scenes: the goldens cover them
+        INFO(scene.name);
+        REQUIRE(world7.joints.empty());
+        World world8 = world7;
+        Pipeline pipeline7 = registry.makePipeline(world7, 7);
+        Pipeline pipeline8 = makeChapter08Pipeline(world8, JointOptions{}, registry.makePipeline(world8, 7));
+        REQUIRE(pipeline8.enabledStageNames() == pipeline7.enabledStageNames());
+        CHECK(pipeline8.planNotes().at(stage_group::kJoints) == "off: the scene has no joints");
+        RunOptions options;
+        options.frames = 120;
+        const RunStats stats7 = runHeadless(world7, pipeline7, registry, options);
+        const RunStats stats8 = runHeadless(world8, pipeline8, registry, options);
+        CHECK(reportWithoutNotes(world8, stats8) == reportWithoutNotes(world7, stats7));
+        ++compared;
+    }
+    CHECK(compared >= 15);
+}

@@ -1,0 +1,65 @@
+// Ten ragdolls dropped in a pile: nothing blows up, no energy is made, and every joint holds.
+#include "08_joints/builders.h"
+#include "08_joints/chapter.h"
+#include "08_joints/scenes.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+using namespace stepwise;
+
+TEST_CASE("the ragdoll has human proportions: 11 bodies, 10 joints, 70 kg", "[ch08][ragdoll]") {
+    World world;
+    const Ragdoll ragdoll = addRagdoll(world, RagdollSpec{});
+    CHECK(ragdoll.bodies.size() == 11);
+    CHECK(ragdoll.joints.size() == 10);
+    Real mass = 0;
+    for (int body : ragdoll.bodies) mass += world.motionOf(body)->mass;
+    CHECK(mass == Approx(70).epsilon(0.01));
+    int coneTwists = 0, hinges = 0;
+    for (int joint : ragdoll.joints) {
+        coneTwists += world.joints[static_cast<std::size_t>(joint)].type == JointType::ConeTwist;
+        hinges += world.joints[static_cast<std::size_t>(joint)].type == JointType::Hinge;
+    }
+    CHECK(coneTwists == 6);  // spine, neck, shoulders, hips
+    CHECK(hinges == 4);      // elbows, knees
+    // Standing: the joints start exactly where both bodies put them.
+    const JointErrorSummary error = largestJointError(world, ragdoll.joints);
+    CHECK(error.position < Real(1e-5));
+    CHECK(error.angle < Real(1e-5));
+}
+
+TEST_CASE("ten ragdolls dropped in a pile come to rest with every joint holding", "[ch08][ragdoll]") {
+    World world = buildRagdollPile(10);
+    std::vector<int> joints(world.joints.size());
+    std::iota(joints.begin(), joints.end(), 0);
+    Pipeline pipeline = makeChapter08Pipeline(world);
+    const double initial = computeEnergy(world).total();
+    double highest = initial;
+    bool finite = true;
+    const int frames = 480;
+    JointErrorSummary settled;
+    for (int frame = 0; frame < frames; ++frame) {
+        pipeline.step(world);
+        highest = std::max(highest, computeEnergy(world).total());
+        if (frame >= frames - 60) {
+            const JointErrorSummary error = largestJointError(world, joints);
+            settled.position = std::max(settled.position, error.position);
+            settled.angle = std::max(settled.angle, error.angle);
+        }
+    }
+    for (const Body& body : world.bodies) finite = finite && body.transform.position.allFinite();
+    Real fastest = 0;
+    for (const Motion& motion : world.motions) fastest = std::max(fastest, motion.linearVelocity.norm());
+    const Energy final = computeEnergy(world);
+    INFO("energy: start " << initial << " J, highest " << highest << " J, end " << final.total() << " J (kinetic "
+                          << final.kinetic << "); fastest body " << fastest << " m/s; joint error over the last second "
+                          << settled.position * 1000 << " mm, " << settled.angle * 180 / kPi << " deg");
+    REQUIRE(finite);
+    CHECK(highest <= initial + 1e-3 * std::abs(initial));
+    CHECK(final.kinetic < 1.0);  // at rest: under a joule among 700 kg of bodies
+    CHECK(settled.position < Real(0.01));
+}
