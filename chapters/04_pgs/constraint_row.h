@@ -2,7 +2,7 @@
 // The solver's unit of work: one scalar velocity constraint between two bodies.
 //
 // Every constraint this engine solves (a contact's normal, its two friction directions, and in
-// chapter 8 (to come) every joint axis) is written as a row
+// chapter 8 every joint axis) is written as a row
 //
 //     J v = bias,   lower <= lambda <= upper
 //

@@ -75,7 +75,7 @@ TEST_CASE("1000 kg on top of 100, 10 and 1 kg: soft_step holds it, the rigid sta
 }
 
 // Not met (docs/ch06_manifolds.md says so and gives the numbers): the 65 kg ball lands at 6 m/s on
-// the 1 kg box and, without chapter 8's joint (to come), nothing keeps it there. Pinned as measured:
+// the 1 kg box and, without its joint (chapter 8 solves it: tests/ch08/contract_scene_test.cpp), nothing keeps it there. Pinned as measured:
 // the deepest overlap exceeds the contract's twice the slop but stays within the band the page
 // reports, and the ball ends resting on the ground, off the box.
 TEST_CASE("the contract's two-box-stack: the ball rolls off the box, its deepest overlap as the page reports",

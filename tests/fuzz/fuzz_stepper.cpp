@@ -104,7 +104,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
     }
     if (world.bodies.size() < 2) return 0;
-    // Joints between random pairs (solved from chapter 8, to come; ignored with a warning before).
+    // Joints between random pairs (solved from chapter 8; ignored with a warning before).
     const int jointCount = input.integer(0, 3);
     for (int j = 0; j < jointCount; ++j) {
         JointDesc joint;
