@@ -51,7 +51,9 @@ function(stepwise_add_chapter number name)
     # Headless demo: runs the chapter's scenes without a window (the DX12 shell is the mingw /
     # Windows build of renderer_dx12, which defines its own ${lib}_demo target there).
     add_executable(${lib}_demo ${CMAKE_SOURCE_DIR}/common/app/demo_main.cpp)
-    target_compile_definitions(${lib}_demo PRIVATE STEPWISE_DEMO_CHAPTER=${number})
+    # The chapter as a decimal number: "08" would be an invalid octal literal in C++.
+    string(REGEX REPLACE "^0+([0-9])" "\\1" chapter_value "${number}")
+    target_compile_definitions(${lib}_demo PRIVATE STEPWISE_DEMO_CHAPTER=${chapter_value})
     target_link_libraries(${lib}_demo PRIVATE ${lib}_registry)
     set_target_properties(${lib}_demo PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
     stepwise_set_warnings(${lib}_demo)

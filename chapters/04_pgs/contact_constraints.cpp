@@ -34,7 +34,7 @@ static bool pointIsFinite(const Contact& contact, const ContactPoint& point) {
 // [ch04-contact-row]
 // A row along a unit direction at a contact point: J v = direction . (velocity of B's material
 // point - velocity of A's material point), the relative velocity along the direction.
-static ConstraintRow contactRow(int bodyA, int bodyB, const Vec3& direction, const Vec3& armA, const Vec3& armB) {
+ConstraintRow pointVelocityRow(int bodyA, int bodyB, const Vec3& direction, const Vec3& armA, const Vec3& armB) {
     ConstraintRow row;
     row.bodyA = bodyA;
     row.bodyB = bodyB;
@@ -135,14 +135,14 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
 
             // The normal row first, then the friction rows bounded by it, so friction already has
             // this sweep's normal impulse to work with, even in the first sweep.
-            ConstraintRow normalRow = contactRow(contact.bodyA, contact.bodyB, normal, armA, armB);
+            ConstraintRow normalRow = pointVelocityRow(contact.bodyA, contact.bodyB, normal, armA, armB);
             normalRow.bias = target;
             normalRow.lower = 0;
             normalRow.upper = kRealMax;
             ref.normalRow = static_cast<int>(result.rows.size());
             result.rows.push_back(normalRow);
             for (int k = 0; k < 2; ++k) {
-                ConstraintRow row = contactRow(contact.bodyA, contact.bodyB, ref.tangent[k], armA, armB);
+                ConstraintRow row = pointVelocityRow(contact.bodyA, contact.bodyB, ref.tangent[k], armA, armB);
                 row.boundRow = ref.normalRow;
                 row.boundScale = friction;
                 ref.tangentRow[k] = static_cast<int>(result.rows.size());

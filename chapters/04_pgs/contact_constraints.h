@@ -32,6 +32,12 @@ struct ContactRows {
 /// upkeep at the end of the frame removes it from World::contacts.
 constexpr Real kDropVelocityChange = Real(1e-4);  // m/s
 
+/// The row of two material points' relative velocity along a unit direction: J v =
+/// direction . (velocity of B's point - velocity of A's point), the points at arms armA and armB
+/// from the centres of mass. A contact's normal and friction rows are such rows; so are many of
+/// chapter 8's joint rows.
+ConstraintRow pointVelocityRow(int bodyA, int bodyB, const Vec3& direction, const Vec3& armA, const Vec3& armB);
+
 /// Friction and restitution of a pair, per the scene contract: sqrt(f_a f_b) and max(r_a, r_b).
 Real combinedFriction(const Material& a, const Material& b);
 Real combinedRestitution(const Material& a, const Material& b);

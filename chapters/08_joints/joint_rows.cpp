@@ -1,5 +1,7 @@
 #include "08_joints/joint_rows.h"
 
+#include "04_pgs/contact_constraints.h"
+#include "04_pgs/solver.h"
 #include "08_joints/joint_frame.h"
 
 #include <algorithm>
@@ -12,16 +14,10 @@ namespace {
 
 // [ch08-row-shapes]
 // A row that measures how fast two points close along n: point B (arm armB from B's centre of
-// mass) minus point A (arm armA from A's). d/dt (pB - pA) . n with n fixed: J = [-n, -rA x n, n, rB x n].
+// mass) minus point A (arm armA from A's). d/dt (pB - pA) . n with n fixed: J = [-n, -rA x n, n, rB x n],
+// chapter 4's contact row.
 ConstraintRow linearRow(int bodyA, int bodyB, const Vec3& armA, const Vec3& armB, const Vec3& direction) {
-    ConstraintRow row;
-    row.bodyA = bodyA;
-    row.bodyB = bodyB;
-    row.linearA = -direction;
-    row.angularA = -armA.cross(direction);
-    row.linearB = direction;
-    row.angularB = armB.cross(direction);
-    return row;
+    return pointVelocityRow(bodyA, bodyB, direction, armA, armB);
 }
 
 // A row that measures how fast B turns relative to A about a world axis: (wB - wA) . axis.
@@ -43,14 +39,6 @@ ConstraintRow negated(ConstraintRow row) {
     return row;
 }
 
-Real effectiveMassOf(const ConstraintRow& row, const std::vector<SolverBody>& bodies) {
-    const SolverBody& a = bodies[static_cast<std::size_t>(row.bodyA)];
-    const SolverBody& b = bodies[static_cast<std::size_t>(row.bodyB)];
-    const Real inverse = a.inverseMass * row.linearA.squaredNorm() + row.angularA.dot(a.inverseInertia * row.angularA) +
-                         b.inverseMass * row.linearB.squaredNorm() + row.angularB.dot(b.inverseInertia * row.angularB);
-    return inverse > 0 ? 1 / inverse : 0;
-}
-
 bool finiteRow(const ConstraintRow& row) {
     return row.linearA.allFinite() && row.angularA.allFinite() && row.linearB.allFinite() &&
            row.angularB.allFinite() && std::isfinite(row.bias);
@@ -63,6 +51,10 @@ public:
 
     // [ch08-bias]
     // C = 0 wanted: the error goes back in by the feedback's rule.
+    // The push back is capped (kMaxJointPushOutSpeed, kMaxJointPushOutTurn): a joint that starts
+    // 25 cm apart would otherwise ask for 40 m/s, and what a static body pushes back with stays in
+    // the bodies as momentum that no relax pass takes out (the contract's two-box-stack launched
+    // its 65 kg ball 12 m up).
     void equality(ConstraintRow row, Real error) {
         Softness soft;
         if (feedback_.kind == JointFeedback::Kind::Baumgarte) row.bias = -feedback_.baumgarte * error / h_;
@@ -70,6 +62,9 @@ public:
             soft = feedback_.soft;
             row.bias = -soft.biasRate * error;
         }
+        const bool linear = !row.linearA.isZero(0) || !row.linearB.isZero(0);
+        const Real cap = linear ? kMaxJointPushOutSpeed : kMaxJointPushOutTurn;
+        row.bias = std::clamp(row.bias, -cap, cap);
         add(row, soft);
     }
 
@@ -272,13 +267,11 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
             break;
     }
     std::vector<ConstraintRow>& rows = builder.rows();
-    for (ConstraintRow& row : rows) {
-        if (!finiteRow(row)) {
-            ++out.invalidSkipped;
-            return;
-        }
-        row.effectiveMass = effectiveMassOf(row, bodies);
+    if (!std::all_of(rows.begin(), rows.end(), finiteRow)) {
+        ++out.invalidSkipped;
+        return;
     }
+    computeEffectiveMasses(rows, bodies);
     const bool carried = carryImpulses && static_cast<std::size_t>(jointIndex) < world.jointImpulses.size();
     for (std::size_t slot = 0; slot < rows.size() && slot < JointImpulses::kSlots; ++slot) {
         const Real impulse = carried ? world.jointImpulses[static_cast<std::size_t>(jointIndex)].slot[slot] : Real(0);

@@ -34,6 +34,11 @@ struct JointFeedback {
 };
 // [ch08-feedback]
 
+/// The fastest a joint's position feedback moves its bodies back together: Box2D v3's contact
+/// push-out speed, and a turn rate that moves a 1 m limb's end as fast.
+constexpr Real kMaxJointPushOutSpeed = 3;   // m/s
+constexpr Real kMaxJointPushOutTurn = 3;    // rad/s
+
 /// A joint's rows in JointRows::rows: [firstRow, firstRow + rowCount), slot i at firstRow + i.
 struct JointRowSet {
     int joint = -1;

@@ -7,13 +7,12 @@
 
 #include <iostream>
 
-#define STEPWISE_STR2(x) #x
-#define STEPWISE_STR(x) STEPWISE_STR2(x)
+#include <string>
 
 int main(int argc, char** argv) {
     using namespace stepwise;
     const int chapter = STEPWISE_DEMO_CHAPTER;
-    const std::string program = std::string("ch") + STEPWISE_STR(STEPWISE_DEMO_CHAPTER) + "_demo";
+    const std::string program = std::string(chapter < 10 ? "ch0" : "ch") + std::to_string(chapter) + "_demo";
     Registry registry;
     registerChapters(registry);
 

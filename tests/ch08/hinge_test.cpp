@@ -2,6 +2,7 @@
 // and its motor's speed.
 #include "08_joints/chapter.h"
 #include "08_joints/joint_frame.h"
+#include "joint_fixture.h"
 
 #include <catch2/catch.hpp>
 
@@ -13,15 +14,10 @@ using namespace stepwise;
 
 namespace {
 
-constexpr Real kDegree = kPi / 180;
-
-int addPost(World& world) {
-    BodyDef post;
-    post.name = "post";
-    post.type = BodyType::Static;
-    post.shape = Shape::box(Vec3::Constant(Real(0.05)));
-    return addBody(world, post);
-}
+using test::addPost;
+using test::boxBody;
+using test::jointBetween;
+using test::kDegree;
 
 /// A 1 m rod (10 cm square) hanging from a hinge about z at the origin, turned by `angle`.
 struct Pendulum {
@@ -34,21 +30,12 @@ Pendulum makePendulum(Real angle, Real mass = 2) {
     Pendulum pendulum;
     World& world = pendulum.world;
     const int post = addPost(world);
-    BodyDef rod;
-    rod.name = "rod";
-    rod.shape = Shape::box(Vec3(Real(0.05), Real(0.5), Real(0.05)));
-    rod.mass = mass;
+    BodyDef rod = boxBody("rod", Vec3(Real(0.05), Real(0.5), Real(0.05)), mass);
     const Quat turn(Eigen::AngleAxis<Real>(angle, Vec3::UnitZ()));
     rod.transform.rotation = turn;
     rod.transform.position = turn * Vec3(0, Real(-0.5), 0);
     pendulum.rod = addBody(world, rod);
-    JointDesc hinge;
-    hinge.type = JointType::Hinge;
-    hinge.bodyA = post;
-    hinge.bodyB = pendulum.rod;
-    hinge.localAnchorB = Vec3(0, Real(0.5), 0);
-    hinge.axis = Vec3::UnitZ();
-    world.joints.push_back(hinge);
+    world.joints.push_back(jointBetween(JointType::Hinge, post, pendulum.rod, Vec3(0, Real(0.5), 0), Vec3::UnitZ()));
     return pendulum;
 }
 
@@ -116,20 +103,12 @@ TEST_CASE("a hinge limit holds a loaded arm within 1 degree", "[ch08][hinge]") {
     // dropped onto the limit from 60 degrees.
     World world;
     const int post = addPost(world);
-    BodyDef arm;
-    arm.name = "arm";
-    arm.shape = Shape::box(Vec3(Real(0.5), Real(0.05), Real(0.05)));
-    arm.mass = 10;
+    BodyDef arm = boxBody("arm", Vec3(Real(0.5), Real(0.05), Real(0.05)), 10);
     const Quat start(Eigen::AngleAxis<Real>(60 * kDegree, Vec3::UnitZ()));
     arm.transform.rotation = start;
     arm.transform.position = start * Vec3(Real(0.5), 0, 0);
     const int body = addBody(world, arm);
-    JointDesc hinge;
-    hinge.type = JointType::Hinge;
-    hinge.bodyA = post;
-    hinge.bodyB = body;
-    hinge.localAnchorB = Vec3(Real(-0.5), 0, 0);
-    hinge.axis = Vec3::UnitZ();
+    JointDesc hinge = jointBetween(JointType::Hinge, post, body, Vec3(Real(-0.5), 0, 0), Vec3::UnitZ());
     hinge.limits = std::pair<Real, Real>{0, 90 * kDegree};
     world.joints.push_back(hinge);
     Pipeline pipeline = makeChapter08Pipeline(world);
@@ -147,18 +126,9 @@ TEST_CASE("a hinge motor reaches its target speed within 1%", "[ch08][hinge]") {
     // A wheel on a vertical axle: gravity along the axle, no torque about it.
     World world;
     const int post = addPost(world);
-    BodyDef wheel;
-    wheel.name = "wheel";
-    wheel.shape = Shape::box(Vec3(Real(0.4), Real(0.05), Real(0.4)));
-    wheel.mass = 5;
-    wheel.transform.position = Vec3(0, Real(-0.2), 0);
-    const int body = addBody(world, wheel);
-    JointDesc hinge;
-    hinge.type = JointType::Hinge;
-    hinge.bodyA = post;
-    hinge.bodyB = body;
+    const int body = addBody(world, boxBody("wheel", Vec3(Real(0.4), Real(0.05), Real(0.4)), 5, Vec3(0, Real(-0.2), 0)));
+    JointDesc hinge = jointBetween(JointType::Hinge, post, body, Vec3::Zero(), Vec3::UnitY());
     hinge.localAnchorA = Vec3(0, Real(-0.2), 0);
-    hinge.axis = Vec3::UnitY();
     hinge.motor = JointMotor{Real(2), Real(20)};
     world.joints.push_back(hinge);
     Pipeline pipeline = makeChapter08Pipeline(world);

@@ -2,24 +2,36 @@
 // cone's swing and the twist within 1 degree.
 #include "08_joints/chapter.h"
 #include "08_joints/joint_frame.h"
+#include "joint_fixture.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 using namespace stepwise;
 
 namespace {
 
-constexpr Real kDegree = kPi / 180;
+using test::addPost;
+using test::boxBody;
+using test::jointBetween;
+using test::kDegree;
 
-int addPost(World& world) {
-    BodyDef post;
-    post.name = "post";
-    post.type = BodyType::Static;
-    post.shape = Shape::box(Vec3::Constant(Real(0.05)));
-    return addBody(world, post);
+/// A 20 kg block on a vertical slider from the post, limits and motor as given.
+World sliderWorld(int& body, std::optional<std::pair<Real, Real>> limits, std::optional<JointMotor> motor,
+                  const Vec3& push = Vec3::Zero()) {
+    World world;
+    const int post = addPost(world);
+    BodyDef block = boxBody("block", Vec3::Constant(Real(0.1)), 20);
+    block.linearVelocity = push;
+    body = addBody(world, block);
+    JointDesc slider = jointBetween(JointType::Slider, post, body, Vec3::Zero(), Vec3::UnitY());
+    slider.limits = limits;
+    slider.motor = motor;
+    world.joints.push_back(slider);
+    return world;
 }
 
 }  // namespace
@@ -27,21 +39,8 @@ int addPost(World& world) {
 TEST_CASE("a slider keeps a falling load on its axis and stops it at its limit within 1 mm", "[ch08][limits]") {
     // A 20 kg block on a vertical slider, limits [-0.5, 0.5] m, released from 0 with a sideways
     // push: it falls half a metre onto the lower limit and rests there.
-    World world;
-    const int post = addPost(world);
-    BodyDef block;
-    block.name = "block";
-    block.shape = Shape::box(Vec3::Constant(Real(0.1)));
-    block.mass = 20;
-    block.linearVelocity = Vec3(Real(0.5), 0, 0);
-    const int body = addBody(world, block);
-    JointDesc slider;
-    slider.type = JointType::Slider;
-    slider.bodyA = post;
-    slider.bodyB = body;
-    slider.axis = Vec3::UnitY();
-    slider.limits = std::pair<Real, Real>{Real(-0.5), Real(0.5)};
-    world.joints.push_back(slider);
+    int body = -1;
+    World world = sliderWorld(body, std::pair<Real, Real>{Real(-0.5), Real(0.5)}, std::nullopt, Vec3(Real(0.5), 0, 0));
     Pipeline pipeline = makeChapter08Pipeline(world);
     Real lowest = 0, offAxis = 0, turned = 0;
     for (int frame = 0; frame < 180; ++frame) {
@@ -60,20 +59,8 @@ TEST_CASE("a slider keeps a falling load on its axis and stops it at its limit w
 }
 
 TEST_CASE("a slider motor drives its load up at the set speed", "[ch08][limits]") {
-    World world;
-    const int post = addPost(world);
-    BodyDef block;
-    block.name = "block";
-    block.shape = Shape::box(Vec3::Constant(Real(0.1)));
-    block.mass = 20;
-    const int body = addBody(world, block);
-    JointDesc slider;
-    slider.type = JointType::Slider;
-    slider.bodyA = post;
-    slider.bodyB = body;
-    slider.axis = Vec3::UnitY();
-    slider.motor = JointMotor{Real(0.5), Real(1000)};
-    world.joints.push_back(slider);
+    int body = -1;
+    World world = sliderWorld(body, std::nullopt, JointMotor{Real(0.5), Real(1000)});
     Pipeline pipeline = makeChapter08Pipeline(world);
     for (int frame = 0; frame < 60; ++frame) pipeline.step(world);
     const Real speed = world.motionOf(body)->linearVelocity.y();
@@ -90,19 +77,10 @@ TEST_CASE("cone-twist limits hold within 1 degree when driven against them", "[c
         World world;
         world.settings.gravity = down * Real(9.81);
         const int post = addPost(world);
-        BodyDef rod;
-        rod.name = "rod";
-        rod.shape = Shape::box(Vec3(Real(0.05), Real(0.5), Real(0.05)));
-        rod.mass = 5;
-        rod.transform.position = Vec3(0, Real(-0.5), 0);
+        BodyDef rod = boxBody("rod", Vec3(Real(0.05), Real(0.5), Real(0.05)), 5, Vec3(0, Real(-0.5), 0));
         rod.angularVelocity = kick;
         const int body = addBody(world, rod);
-        JointDesc joint;
-        joint.type = JointType::ConeTwist;
-        joint.bodyA = post;
-        joint.bodyB = body;
-        joint.localAnchorB = Vec3(0, Real(0.5), 0);
-        joint.axis = -Vec3::UnitY();
+        JointDesc joint = jointBetween(JointType::ConeTwist, post, body, Vec3(0, Real(0.5), 0), -Vec3::UnitY());
         joint.coneAngle = cone;
         joint.twistLimits = std::pair<Real, Real>{-twistLimit, twistLimit};
         world.joints.push_back(joint);

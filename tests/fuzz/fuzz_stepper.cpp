@@ -104,16 +104,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
     }
     if (world.bodies.size() < 2) return 0;
-    // Joints between random pairs (solved from chapter 8; ignored with a warning before).
+    // Joints between random pairs (solved from chapter 8; ignored with a warning before), each
+    // satisfied where the bodies start: the anchors at one world point near A (a distance joint's
+    // two points apart, its length theirs), the rest orientation the one they have. A joint that
+    // starts violated pulls its bodies together, which may rightly lift one and add energy.
     const int jointCount = input.integer(0, 3);
     for (int j = 0; j < jointCount; ++j) {
         JointDesc joint;
-        joint.type = static_cast<JointType>(input.integer(0, 4));  // every JointType
+        joint.type = static_cast<JointType>(input.integer(0, 5));  // every JointType
         joint.bodyA = input.integer(0, int(world.bodies.size()) - 1);
         joint.bodyB = input.integer(0, int(world.bodies.size()) - 1);
         if (joint.bodyA == joint.bodyB) continue;
-        joint.localAnchorA = input.vector(-1, 1).cast<Real>();
-        joint.localAnchorB = input.vector(-1, 1).cast<Real>();
+        const Transform& poseA = world.bodies[std::size_t(joint.bodyA)].transform;
+        const Transform& poseB = world.bodies[std::size_t(joint.bodyB)].transform;
+        const Vec3 pointA = poseA.apply(input.vector(-1, 1).cast<Real>());
+        const Vec3 pointB = joint.type == JointType::Distance ? poseB.apply(input.vector(-1, 1).cast<Real>()) : pointA;
+        joint.localAnchorA = poseA.applyInverse(pointA);
+        joint.localAnchorB = poseB.applyInverse(pointB);
+        joint.length = (pointB - pointA).norm();
+        joint.referenceRotation = poseA.rotation.conjugate() * poseB.rotation;
         joint.axis = randomRotation(input) * Vec3::UnitY();
         joint.coneAngle = Real(input.uniform(0, 3));
         world.joints.push_back(joint);
