@@ -9,18 +9,6 @@ namespace stepwise {
 
 namespace {
 
-int addStaticBox(World& world, const std::string& name, const Vec3& position, const Vec3& halfExtents,
-                 const Quat& rotation, const Material& material) {
-    BodyDef def;
-    def.name = name;
-    def.type = BodyType::Static;
-    def.shape = Shape::box(halfExtents);
-    def.transform.position = position;
-    def.transform.rotation = rotation;
-    def.material = material;
-    return addBody(world, def);
-}
-
 World namedWorld(const std::string& name) {
     World world;
     world.name = name;

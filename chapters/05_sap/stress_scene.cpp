@@ -77,12 +77,7 @@ void addStressBodies(World& world, const StressParams& params) {
     const Grid grid = layoutFor(params);
     const Real halfWidth = Real(0.5) * spacing * static_cast<Real>(grid.columns);
 
-    BodyDef ground;
-    ground.name = "ground";
-    ground.type = BodyType::Static;
-    ground.shape = Shape::box(Vec3(halfWidth + 10, Real(0.5), halfWidth + 10));
-    ground.transform.position = Vec3(0, Real(-0.5), 0);
-    addBody(world, ground);
+    addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(halfWidth + 10, Real(0.5), halfWidth + 10));
 
     const StressShapes shapes;
     Random random(params.seed);

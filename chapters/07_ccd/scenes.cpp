@@ -14,15 +14,6 @@ namespace {
 constexpr Real kTargetZ[2] = {Real(-2), Real(2)};  // the wall's and the stack's z
 constexpr Real kTargetX = 0;
 
-void addStatic(World& world, const char* name, const Vec3& halfExtents, const Vec3& position) {
-    BodyDef def;
-    def.name = name;
-    def.type = BodyType::Static;
-    def.shape = Shape::box(halfExtents);
-    def.transform.position = position;
-    addBody(world, def);
-}
-
 /// A world of the chapter's scenes: its name, its CCD setting, and gravity or none.
 World emptyWorld(const char* name, CcdMode ccd, bool gravity) {
     World world;
@@ -64,8 +55,8 @@ int fireBullet(World& world, int target, Real height, Real speed) {
 
 World buildGunRange(Real speed, CcdMode ccd) {
     World world = emptyWorld("ccd-gun", ccd, true);
-    addStatic(world, "ground", Vec3(30, Real(0.5), 10), Vec3(0, Real(-0.5), 0));
-    addStatic(world, "wall", Vec3(kWallHalfThickness, Real(1.5), Real(1.5)), Vec3(kTargetX, Real(1.5), kTargetZ[0]));
+    addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(30, Real(0.5), 10));
+    addStaticBox(world, "wall", Vec3(kTargetX, Real(1.5), kTargetZ[0]), Vec3(kWallHalfThickness, Real(1.5), Real(1.5)));
     for (int level = 0; level < 5; ++level) {
         BodyDef box;
         box.name = "stack" + std::to_string(level);
@@ -80,7 +71,7 @@ World buildGunRange(Real speed, CcdMode ccd) {
 
 World buildSpinningRod(CcdMode ccd) {
     World world = emptyWorld("ccd-spinning-rod", ccd, false);
-    addStatic(world, "wall", Vec3(kWallHalfThickness, 3, 3), Vec3::Zero());
+    addStaticBox(world, "wall", Vec3::Zero(), Vec3(kWallHalfThickness, 3, 3));
     BodyDef rod = flyingBody("rod", Shape::box(Vec3(Real(0.01), Real(0.5), Real(0.01))), Vec3(-2, 0, 0), Vec3(50, 0, 0));
     rod.angularVelocity = Vec3(0, 0, 100);  // about z: the rod's ends sweep through the x-y plane
     addBody(world, rod);

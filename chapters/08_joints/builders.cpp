@@ -9,12 +9,7 @@ namespace stepwise {
 
 Chain addChain(World& world, const ChainSpec& spec) {
     Chain chain;
-    BodyDef anchor;
-    anchor.name = spec.prefix + "-anchor";
-    anchor.type = BodyType::Static;
-    anchor.shape = Shape::box(Vec3::Constant(Real(0.05)));
-    anchor.transform.position = spec.anchor;
-    chain.anchorBody = addBody(world, anchor);
+    chain.anchorBody = addStaticBox(world, spec.prefix + "-anchor", spec.anchor, Vec3::Constant(Real(0.05)));
     const Vec3 direction = spec.direction.normalized();
     int previous = chain.anchorBody;
     for (int i = 0; i < spec.links; ++i) {

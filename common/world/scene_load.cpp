@@ -107,7 +107,7 @@ JointMotor readMotor(const JsonCursor& cursor, JointType type) {
 void completeJointFromPoses(JointDesc& joint, const World& world, bool hasReference) {
     const Transform& poseA = world.bodies[static_cast<std::size_t>(joint.bodyA)].transform;
     const Transform& poseB = world.bodies[static_cast<std::size_t>(joint.bodyB)].transform;
-    if (!hasReference) joint.referenceRotation = (poseA.rotation.conjugate() * poseB.rotation).normalized();
+    if (!hasReference) joint.referenceRotation = poseA.rotation.conjugate() * poseB.rotation;
     if (joint.type == JointType::Distance && !joint.length)
         joint.length = (poseB.apply(joint.localAnchorB) - poseA.apply(joint.localAnchorA)).norm();
 }
@@ -149,7 +149,11 @@ JointDesc readJoint(const JsonCursor& cursor, const World& world, ErrorList& err
     read("friction_torque", [&](const JsonCursor& v) { joint.frictionTorque = v.inRange(0, kMaxForce); });
     bool hasReference = false;
     read("reference_rotation", [&](const JsonCursor& v) {
-        joint.referenceRotation = v.unitQuaternion();
+        // Kept as written when it is unit to float precision: normalising again may move the last
+        // bit, and a saved scene would not load back to itself.
+        const Quat unit = v.unitQuaternion();
+        const Quat written(v.element(3).number(), v.element(0).number(), v.element(1).number(), v.element(2).number());
+        joint.referenceRotation = std::abs(written.norm() - 1) < Real(1e-6) ? written : unit;
         hasReference = true;
     });
     if (foundA && foundB && joint.bodyA != joint.bodyB) completeJointFromPoses(joint, world, hasReference);

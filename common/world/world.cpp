@@ -43,6 +43,18 @@ int World::dynamicBodyCount() const {
     return count;
 }
 
+int addStaticBox(World& world, const std::string& name, const Vec3& position, const Vec3& halfExtents,
+                 const Quat& rotation, const Material& material) {
+    BodyDef def;
+    def.name = name;
+    def.type = BodyType::Static;
+    def.shape = Shape::box(halfExtents);
+    def.transform.position = position;
+    def.transform.rotation = rotation;
+    def.material = material;
+    return addBody(world, def);
+}
+
 // [foundation-add-body]
 int addBody(World& world, const BodyDef& def) {
     Body body;

@@ -137,6 +137,10 @@ struct World {
 /// Returns the body index. Static bodies get no Motion.
 int addBody(World& world, const BodyDef& def);
 
+/// Adds a static box (ground, walls, posts) and returns its index.
+int addStaticBox(World& world, const std::string& name, const Vec3& position, const Vec3& halfExtents,
+                 const Quat& rotation = Quat::Identity(), const Material& material = Material{});
+
 /// Centre of mass of a body in world space.
 Vec3 worldCenterOfMass(const World& world, int bodyIndex);
 

@@ -52,12 +52,7 @@ namespace {
 std::vector<Point2> energyGain(Real beta, Real depth, int frames) {
     World world;
     world.settings.baumgarte = beta;
-    BodyDef ground;
-    ground.name = "ground";
-    ground.type = BodyType::Static;
-    ground.shape = Shape::box(Vec3(5, Real(0.5), 5));
-    ground.transform.position = Vec3(0, Real(-0.5), 0);
-    addBody(world, ground);
+    addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(5, Real(0.5), 5));
     BodyDef ball;
     ball.name = "ball";
     ball.shape = Shape::sphere(Real(0.25));

@@ -41,12 +41,7 @@ inline World randomWorld(Random& random, Layout layout, int count) {
     World world;
     world.name = std::string("random ") + toString(layout);
     if (layout == Layout::HugeGround) {
-        BodyDef ground;
-        ground.name = "ground";
-        ground.type = BodyType::Static;
-        ground.shape = Shape::box(Vec3(1000, Real(0.5), 1000));
-        ground.transform.position = Vec3(0, Real(-0.5), 0);
-        addBody(world, ground);
+        addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(1000, Real(0.5), 1000));
     }
     const Vec3 offset = layout == Layout::FarFromOrigin ? Vec3(Real(9000), Real(-4000), Real(7000)) : Vec3::Zero();
     const int side = 1 + static_cast<int>(std::cbrt(static_cast<double>(count)));

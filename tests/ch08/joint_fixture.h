@@ -8,13 +8,7 @@ namespace stepwise::test {
 constexpr Real kDegree = kPi / 180;
 
 /// A static 10 cm cube at the origin.
-inline int addPost(World& world) {
-    BodyDef post;
-    post.name = "post";
-    post.type = BodyType::Static;
-    post.shape = Shape::box(Vec3::Constant(Real(0.05)));
-    return addBody(world, post);
-}
+inline int addPost(World& world) { return addStaticBox(world, "post", Vec3::Zero(), Vec3::Constant(Real(0.05))); }
 
 /// A dynamic box body: its name, half extents, mass and position.
 inline BodyDef boxBody(const char* name, const Vec3& halfExtents, Real mass, const Vec3& position = Vec3::Zero()) {

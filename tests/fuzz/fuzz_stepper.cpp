@@ -64,12 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     world.name = "fuzz";
     world.settings = randomSettings(input);
 
-    BodyDef ground;
-    ground.name = "ground";
-    ground.type = BodyType::Static;
-    ground.shape = Shape::box(Vec3(50, Real(0.5), 50));
-    ground.transform.position = Vec3(0, Real(-0.5), 0);
-    addBody(world, ground);
+    addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(50, Real(0.5), 50));
 
     const int count = input.integer(1, 6);
     bool driven = false;

@@ -36,12 +36,7 @@ inline Settings zeroGravitySettings() {
 
 /// A static box whose top face is the plane y = topY. Returns the body index.
 inline int addGround(World& world, Real topY = 0, Real halfSize = 50, Real halfThickness = Real(0.5)) {
-    BodyDef def;
-    def.name = "ground";
-    def.type = BodyType::Static;
-    def.shape = Shape::box(Vec3(halfSize, halfThickness, halfSize));
-    def.transform.position = Vec3(0, topY - halfThickness, 0);
-    return addBody(world, def);
+    return addStaticBox(world, "ground", Vec3(0, topY - halfThickness, 0), Vec3(halfSize, halfThickness, halfSize));
 }
 
 /// A box; dynamic bodies get their mass from `density` (kg/m^3) unless `mass` (kg) is > 0.
