@@ -112,11 +112,34 @@ Pipeline pipelineFor(const World& world, const Config& config) {
 }
 // [ch08-bench-variants]
 
+// [ch08-bench-sag]
+/// How long soft joints hold a hanging chain at rest, whatever the solver: at rest each row is a
+/// spring of stiffness m_eff w^2 (Box2D's soft constraint, w = 2 pi hertz) carrying the weight
+/// below it, so it is longer by that weight over m_eff w^2. Summed over the joints, as a fraction
+/// of the rest length.
+double restingSag(const World& world, const Chain& chain, const Config& config) {
+    const double h = double(world.settings.dt) / (config.iterations * config.substeps);
+    const double omega = 2 * double(kPi) * double(config.hertzPerRate) / h;
+    const auto inverseMass = [&](int body) {
+        const Motion* motion = world.motionOf(body);
+        return motion ? double(motion->inverseMass) : 0.0;
+    };
+    double below = 0, sag = 0;  // N of weight below the joint; m
+    for (auto joint = chain.joints.rbegin(); joint != chain.joints.rend(); ++joint) {
+        const JointDesc& desc = world.joints[static_cast<std::size_t>(*joint)];
+        below += double(world.settings.gravity.norm()) / inverseMass(desc.bodyB);
+        sag += below * (inverseMass(desc.bodyA) + inverseMass(desc.bodyB)) / (omega * omega);
+    }
+    return sag / double(chain.restLength);
+}
+// [ch08-bench-sag]
+
 struct Outcome {
     double seconds = 0;       // simulated; less than asked when the run stopped
     double stepMs = 0;
     double largestStretch = std::nan("");  // chains only
     double finalStretch = std::nan("");
+    double restingSag = std::nan("");      // chains hanging at rest only
     JointErrorSummary error;  // chains: over the run; ragdolls: over the last second
 };
 
@@ -139,11 +162,12 @@ Outcome run(Case which, const Config& config, double seconds, int ragdolls) {
     }
     world.settings.solverIterations = config.iterations;
     world.settings.substeps = config.substeps;
+    Outcome outcome;
+    if (which == Case::Hanging || which == Case::HeavyEnd) outcome.restingSag = restingSag(world, chain, config);
     world.settings.warmStarting = config.warm;
     Pipeline pipeline = pipelineFor(world, config);
     const int frames = static_cast<int>(std::lround(seconds / double(world.settings.dt)));
     const int measuredFrom = which == Case::RagdollPile ? frames - static_cast<int>(std::lround(1 / double(world.settings.dt))) : 0;
-    Outcome outcome;
     double cpu = 0;
     int frame = 0;
     for (; frame < frames; ++frame) {
@@ -262,13 +286,14 @@ void measureJoints(BenchRun& bench) {
     }
 
     // What a direct solve would buy: the same chains with their joints (near) converged.
-    CsvTable direct({"case", "solve", "largest stretch", "final stretch", "step (ms)", "cost"});
+    CsvTable direct({"case", "solve", "largest stretch", "final stretch", "springs' sag at rest", "step (ms)", "cost"});
     const int sweeps = 50, manyIterations = 200;
     bench.progress().stage("direct", long(std::size(kChains) * (quick ? 1 : 2)));
     for (Case which : kChains) {
         const Outcome& base = defaults[which];
         const auto addDirect = [&](const std::string& solve, const Outcome& m) {
-            direct.addRow({caseName(which), solve, percent(m.largestStretch), percent(m.finalStretch), formatNumber(m.stepMs),
+            direct.addRow({caseName(which), solve, percent(m.largestStretch), percent(m.finalStretch),
+                           std::isnan(m.restingSag) ? "-" : percent(m.restingSag), formatNumber(m.stepMs),
                            formatNumber(m.stepMs / base.stepMs, 3) + "x"});
         };
         addDirect("default (10 iterations)", base);
