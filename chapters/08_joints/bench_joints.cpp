@@ -162,9 +162,9 @@ Outcome run(Case which, const Config& config, double seconds, int ragdolls) {
     }
     world.settings.solverIterations = config.iterations;
     world.settings.substeps = config.substeps;
+    world.settings.warmStarting = config.warm;
     Outcome outcome;
     if (which == Case::Hanging || which == Case::HeavyEnd) outcome.restingSag = restingSag(world, chain, config);
-    world.settings.warmStarting = config.warm;
     Pipeline pipeline = pipelineFor(world, config);
     const int frames = static_cast<int>(std::lround(seconds / double(world.settings.dt)));
     const int measuredFrom = which == Case::RagdollPile ? frames - static_cast<int>(std::lround(1 / double(world.settings.dt))) : 0;
@@ -198,9 +198,8 @@ std::string cell(double value) { return std::isnan(value) ? "-" : formatNumber(v
 
 void addRow(CsvTable& table, Case which, const Config& config, const Outcome& m) {
     table.addRow({caseName(which), toString(config.order), feedbackName(config), config.warm ? "on" : "off",
-                  std::to_string(config.iterations),
-                  std::to_string(config.substeps), std::to_string(config.sweeps), formatNumber(m.seconds),
-                  formatNumber(m.stepMs), cell(m.largestStretch), cell(m.finalStretch),
+                  std::to_string(config.iterations), std::to_string(config.substeps), std::to_string(config.sweeps),
+                  formatNumber(m.seconds), formatNumber(m.stepMs), cell(m.largestStretch), cell(m.finalStretch),
                   formatNumber(double(m.error.position)), formatNumber(double(m.error.angle))});
 }
 
@@ -251,8 +250,8 @@ void measureJoints(BenchRun& bench) {
         }
     }
 
-    // Joint order at the default settings, and without warm starting (each sweep then starts
-    // from no load, and the order decides how far up the chain one sweep carries it).
+    // Joint order at the default settings, and without warm starting (each substep's sweep then
+    // starts from no impulse, and the order decides which way along the chain it carries a change).
     CsvTable orders({"case", "order", "warm starting", "largest stretch", "final stretch", "step (ms)"});
     bench.progress().stage("order and feedback", long(std::size(kChains) * 6 + 2));
     for (Case which : kChains) {

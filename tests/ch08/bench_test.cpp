@@ -16,7 +16,7 @@ enum Column { kCase, kOrder, kFeedback, kWarm, kIterations, kSubsteps, kSweeps, 
 
 }  // namespace
 
-TEST_CASE("bench joints writes its table and plots; iterations shrink the stretch, rigid rows diverge", "[ch08][bench]") {
+TEST_CASE("bench joints writes its table and plots: more iterations stretch a chain less, rigid rows diverge", "[ch08][bench]") {
     const test::QuickBench run = test::runQuickBench(
         jointsBench(), "ch08_bench_test",
         "case,order,feedback,warm_starting,iterations,substeps,joint_sweeps,seconds,step_ms,largest_stretch,final_stretch,"
