@@ -16,19 +16,19 @@ enum Column { kCase, kOrder, kFeedback, kWarm, kIterations, kSubsteps, kSweeps, 
 
 }  // namespace
 
-TEST_CASE("bench joints writes its table and plots: more iterations stretch a chain less, rigid rows diverge", "[ch08][bench]") {
+TEST_CASE("bench joints writes its table and plots: more iterations stretch a chain less, rigid rows fail", "[ch08][bench]") {
     const test::QuickBench run = test::runQuickBench(
         jointsBench(), "ch08_bench_test",
         "case,order,feedback,warm_starting,iterations,substeps,joint_sweeps,seconds,step_ms,largest_stretch,final_stretch,"
         "joint_error_m,joint_error_rad");
     std::map<std::string, double> largest;  // swinging chain at 1 substep, default order: by iterations
-    bool rigidStopped = false;
+    double rigidLargest = -1;
     double pileError = -1;
     for (const std::vector<std::string>& cell : run.rows) {
         REQUIRE(cell.size() == 13);
         const bool plain = cell[kOrder] == "leaves_first" && cell[kWarm] == "on" && cell[kSweeps] == "1" && cell[kSubsteps] == "1";
         if (cell[kCase] == "swinging_chain" && plain && cell[kFeedback] == "soft") largest[cell[kIterations]] = std::stod(cell[kLargest]);
-        if (cell[kFeedback] == "baumgarte") rigidStopped = std::stod(cell[kSeconds]) < 3;
+        if (cell[kFeedback] == "baumgarte") rigidLargest = std::stod(cell[kLargest]);
         if (cell[kCase] == "ragdoll_pile" && plain && cell[kIterations] == "10") pileError = std::stod(cell[kErrorM]);
         CHECK(std::stod(cell[kStepMs]) > 0);
     }
@@ -39,8 +39,9 @@ TEST_CASE("bench joints writes its table and plots: more iterations stretch a ch
     CHECK(largest["40"] < largest["10"]);
     CHECK(largest["10"] < largest["2"]);
     CHECK(largest["10"] < 0.02);
-    // Rigid Baumgarte rows: the run stops early, the chain over twice its length.
-    CHECK(rigidStopped);
+    // Rigid Baumgarte rows: the hanging chain stretches by a fifth or more (float: past twice its
+    // length, and the run stops; double: 82% in 3 s), against 0.14% with the soft rows.
+    CHECK(rigidLargest > 0.2);
     // A settled ragdoll pile holds its joints within a millimetre.
     CHECK(pileError >= 0);
     CHECK(pileError < 1e-3);
