@@ -7,6 +7,8 @@
 #include "03_epa/narrowphase.h"
 #include "world/pipeline.h"
 
+#include <functional>
+
 #include <vector>
 
 namespace stepwise {
@@ -69,6 +71,9 @@ bool allPairsClosedForm(const World& world);
 /// The deepest overlap between any two bodies (static pairs skipped), m; 0 when none overlap.
 /// The penetration probe of run reports (max_penetration).
 Real measureDeepestPenetration(const World& world);
+/// The same over the pairs `counts` accepts (body indices, lower first): chapter 8 leaves out the
+/// pairs a joint holds together, which overlap at their joints by design and never collide.
+Real measureDeepestPenetration(const World& world, const std::function<bool(int bodyA, int bodyB)>& counts);
 
 /// Chapter 2's pipeline with its narrowphase stage replaced by chapter 3's.
 Pipeline makeChapter03Pipeline(const World& world, ContactSearch search = ContactSearch::EverySubstep);

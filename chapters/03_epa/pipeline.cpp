@@ -212,7 +212,9 @@ bool allPairsClosedForm(const World& world) {
     return true;
 }
 
-Real measureDeepestPenetration(const World& world) {
+Real measureDeepestPenetration(const World& world) { return measureDeepestPenetration(world, {}); }
+
+Real measureDeepestPenetration(const World& world, const std::function<bool(int bodyA, int bodyB)>& counts) {
     // Sweep along x: sorted by the boxes' lower x, a body only needs testing against the bodies
     // that start before it ends, so a run report does not pay for all n^2 pairs every frame.
     const std::vector<Aabb> bounds = bodyBounds(world);
@@ -229,6 +231,7 @@ Real measureDeepestPenetration(const World& world) {
             const Body& a = world.bodies[std::min(i, j)];
             const Body& b = world.bodies[std::max(i, j)];
             if (!canCollide(a, b) || !bounds[i].overlaps(bounds[j])) continue;
+            if (counts && !counts(std::min(i, j), std::max(i, j))) continue;
             const ContactQuery query = collideShapes(a.shape, a.transform, b.shape, b.transform, options);
             if (query.intersect) deepest = std::max(deepest, query.depth);
         }

@@ -20,7 +20,14 @@ Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options);
 /// The same on a chapter 7 pipeline made with other options.
 Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options, Pipeline chapter7);
 
-/// Removes from World::candidatePairs every pair a joint connects without collide_connected.
+/// The pairs (lower body first, sorted) that a joint holds together without collide_connected:
+/// they overlap at their joints by design, and never collide.
+std::vector<BodyPair> jointedPairs(const World& world);
+
+/// Removes the jointed pairs from World::candidatePairs.
 void dropJointedPairs(World& world);
+
+/// Chapter 3's deepest overlap, over the pairs that can collide: the run report's max_penetration.
+Real measureDeepestCollidingPenetration(const World& world);
 
 }  // namespace stepwise

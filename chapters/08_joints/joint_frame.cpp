@@ -30,8 +30,10 @@ Real twistAngle(const Quat& deviation, const Vec3& localAxis) {
 }
 // [ch08-twist]
 
+// atan2 of the sine and cosine, not the arc cosine of the dot product: near 1 the cosine moves
+// by angle^2 / 2, and float resolves no swing below 0.0007 rad that way.
 Real swingAngle(const JointFrame& frame) {
-    return std::acos(std::clamp(frame.axisA.dot(frame.axisB), Real(-1), Real(1)));
+    return std::atan2(frame.axisA.cross(frame.axisB).norm(), frame.axisA.dot(frame.axisB));
 }
 
 Vec3 rotationError(const JointFrame& frame) { return frame.rotationA * (2 * frame.deviation.vec()); }

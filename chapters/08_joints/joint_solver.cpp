@@ -98,7 +98,12 @@ void JointConstraints::prepare(const World& world, const std::vector<SolverBody>
     // The biased pass starts from last solve's impulses only with warm starting on; the relax pass
     // always starts from the impulses the biased pass applied.
     const bool carry = !positionFeedback || world.settings.warmStarting;
-    for (int jointIndex : jointSolveOrder(world, order_)) appendJointRows(rows_, world, jointIndex, bodies, h, feedback, carry);
+    // The joints do not change within a solve: sorted once, used by all its substeps and passes.
+    if (!sweepFound_) {
+        sweep_ = jointSolveOrder(world, order_);
+        sweepFound_ = true;
+    }
+    for (int jointIndex : sweep_) appendJointRows(rows_, world, jointIndex, bodies, h, feedback, carry);
 }
 
 void JointConstraints::warmStart(std::vector<SolverBody>& bodies) {

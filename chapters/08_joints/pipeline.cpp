@@ -14,13 +14,26 @@ Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options) 
     return makeChapter08Pipeline(world, options, makeChapter07Pipeline(world));
 }
 
-void dropJointedPairs(World& world) {
+std::vector<BodyPair> jointedPairs(const World& world) {
     std::vector<BodyPair> jointed;
     for (const JointDesc& joint : world.joints)
         if (!joint.collideConnected)
             jointed.push_back({std::min(joint.bodyA, joint.bodyB), std::max(joint.bodyA, joint.bodyB)});
-    if (jointed.empty()) return;
     std::sort(jointed.begin(), jointed.end());
+    return jointed;
+}
+
+Real measureDeepestCollidingPenetration(const World& world) {
+    const std::vector<BodyPair> jointed = jointedPairs(world);
+    if (jointed.empty()) return measureDeepestPenetration(world);
+    return measureDeepestPenetration(world, [&](int bodyA, int bodyB) {
+        return !std::binary_search(jointed.begin(), jointed.end(), BodyPair{bodyA, bodyB});
+    });
+}
+
+void dropJointedPairs(World& world) {
+    const std::vector<BodyPair> jointed = jointedPairs(world);
+    if (jointed.empty()) return;
     std::vector<BodyPair>& pairs = world.candidatePairs;
     pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
                                [&](const BodyPair& pair) {

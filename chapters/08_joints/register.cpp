@@ -10,6 +10,7 @@ namespace stepwise {
 void registerChapter08(Registry& registry) {
     registry.addChapter({8, addChapter08Scenes, [](const World& world) { return makeChapter08Pipeline(world); },
                          {jointsBench()}});
+    registry.addPenetrationProbe(PenetrationProbe{8, measureDeepestCollidingPenetration});
 }
 
 }  // namespace stepwise

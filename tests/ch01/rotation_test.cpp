@@ -127,7 +127,7 @@ TEST_CASE("one Newton step of the midpoint rule keeps energy / |L|^2, and the re
     }
 }
 
-TEST_CASE("Catto's backward-Euler gyroscopic step damps the T-handle; the midpoint step does not",
+TEST_CASE("Catto's backward-Euler gyroscopic step damps the T-handle, and the midpoint step does not",
           "[ch01][rotation]") {
     auto momentumLoss = [](bool backwardEuler) {
         World world = buildTHandle(GyroscopicMode::Off);

@@ -57,7 +57,7 @@ TEST_CASE("The chapter 3 pipeline swaps GJK's yes/no stage for one that makes co
     CHECK(measureDeepestPenetration(world) == Approx(0.05).epsilon(1e-4));
 }
 
-TEST_CASE("A world of spheres plans the closed-form stage; static pairs are skipped", "[ch03][pipeline]") {
+TEST_CASE("A world of spheres plans the closed-form stage, and static pairs are skipped", "[ch03][pipeline]") {
     World world = test::makeWorld(test::zeroGravitySettings());
     test::addSphere(world, Vec3(0, 0, 0), 1, BodyType::Static);
     test::addSphere(world, Vec3(Real(0.5), 0, 0), 1, BodyType::Static);  // static-static: ignored

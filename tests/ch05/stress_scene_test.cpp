@@ -78,7 +78,7 @@ TEST_CASE("the stress scene lays its bodies out sparse or dense, above the groun
     }
 }
 
-TEST_CASE("the same parameters give the same world; another seed another", "[ch05][stress]") {
+TEST_CASE("the same parameters give the same world, and another seed another", "[ch05][stress]") {
     StressParams params;
     params.count = 50;
     const World first = buildStressScene(params), second = buildStressScene(params);

@@ -189,7 +189,7 @@ World boxOnGround(Real overlap) {
 
 }  // namespace
 
-TEST_CASE("a box resting exactly on the ground is a contact, moving or not; one two slops above is not",
+TEST_CASE("a box resting exactly on the ground is a contact, moving or not, and one two slops above is not",
           "[ch06][persistence]") {
     for (const Real gap : {Real(0), Real(0.002)}) {
         World world = boxOnGround(-gap);

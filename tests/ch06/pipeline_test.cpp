@@ -37,7 +37,7 @@ TEST_CASE("chapter 6's pipeline: manifolds as the narrowphase, the stabilisation
     CHECK(chapterRegistry().makePipeline(buildBoxStack(2)).enabledStageNames() == pipeline.enabledStageNames());
 }
 
-TEST_CASE("manifolds keep a box flat on the ground; one point per pair lets it rock", "[ch06][pipeline]") {
+TEST_CASE("manifolds keep a box flat on the ground, and one point per pair lets it rock", "[ch06][pipeline]") {
     double tilt[2] = {0, 0};
     for (int multi = 0; multi < 2; ++multi) {
         World world = buildBoxStack(3);

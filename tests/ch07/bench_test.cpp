@@ -9,7 +9,7 @@
 
 using namespace stepwise;
 
-TEST_CASE("bench ccd writes its table and plots; CCD stops the tunnels that CCD off lets through", "[ch07][bench]") {
+TEST_CASE("bench ccd writes its table and plots, and CCD stops the tunnels that CCD off lets through", "[ch07][bench]") {
     const test::QuickBench run = test::runQuickBench(ccdBench(), "ch07_bench_test",
                                                      "method,speed_mps,shots,tunnelled,tunnel_rate,step_us,impacts_per_shot");
     std::map<std::string, int> tunnels;

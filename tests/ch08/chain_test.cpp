@@ -70,7 +70,7 @@ TEST_CASE("a 10:1 mass at the end of a 10-link chain stretches it less than 3%",
     CHECK(swinging.largest < Real(0.03));
 }
 
-TEST_CASE("rigid Baumgarte joint rows make a 10-link chain diverge; the soft rows do not", "[ch08][chain]") {
+TEST_CASE("rigid Baumgarte joint rows make a 10-link chain diverge, and the soft rows do not", "[ch08][chain]") {
     ChainSpec spec;
     spec.links = 10;
     JointOptions rigid;

@@ -95,7 +95,7 @@ TEST_CASE("A report is valid JSON with the contract's keys in order", "[common][
     CHECK(report["warnings"].empty());
 }
 
-TEST_CASE("Static bodies report zero velocities; arrays of numbers stay on one line", "[common][report]") {
+TEST_CASE("Static bodies report zero velocities, and arrays of numbers stay on one line", "[common][report]") {
     const World world = sampleWorld();
     const std::string text = reportToJson(world, sampleStats(world), "stepwise test");
     const Json report = Json::parse(text);

@@ -138,7 +138,7 @@ TEST_CASE("Absent keys take the documented defaults", "[common][scene]") {
     CHECK(world.springs.empty());
 }
 
-TEST_CASE("An empty object is an empty world; a file's name defaults to its stem", "[common][scene]") {
+TEST_CASE("An empty object is an empty world, and a file's name defaults to its stem", "[common][scene]") {
     CHECK(loadSceneFromString("{}").bodies.empty());
     const auto path = std::filesystem::temp_directory_path() / "stepwise-unnamed-scene.json";
     std::ofstream(path) << sceneWith(kBall);
