@@ -125,6 +125,7 @@ bool validBodies(const World& world, const JointDesc& joint) {
 
 Color stretchColor(Real stretch) {
     if (stretch < 0) return mix(colors::kGreen, colors::kCyan, float(-stretch / Real(0.25)));
+    if (stretch >= Real(0.25)) return colors::kOrange;
     if (stretch < Real(0.1)) return mix(colors::kGreen, colors::kYellow, float(stretch / Real(0.1)));
     return mix(colors::kYellow, colors::kOrange, float((stretch - Real(0.1)) / Real(0.15)));
 }

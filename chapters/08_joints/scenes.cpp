@@ -146,9 +146,10 @@ World buildJointGallery() {
         return std::pair<int, Vec3>(addStaticBox(world, name + "-post", kPostHalf, at), at);
     };
     const Vec3 below(0, -kPostHalf.y(), 0), beside(kPostHalf.x(), 0, 0);
-    {   // A ball on a spring 1 m long, let go off to the side: it bounces and swings.
+    {   // A ball on a spring 1 m long, let go 30 cm stretched: it bounces, and settles g / omega^2
+        // (6 cm) longer than its rest length.
         const auto [p, at] = post("spring");
-        const int ball = addDynamic(world, "spring-ball", Shape::sphere(Real(0.15)), at + below + Vec3(Real(0.5), -1, 0));
+        const int ball = addDynamic(world, "spring-ball", Shape::sphere(Real(0.15)), at + below + Vec3(0, Real(-1.3), 0));
         JointDesc& joint = join(world, JointType::Distance, p, ball, at + below);
         joint.localAnchorB = Vec3::Zero();
         joint.length = 1;
