@@ -139,11 +139,11 @@ TEST_CASE("the joint gallery shows each joint's limits, motor and spring", "[ch0
     // The spring at rest stretches by g / omega^2 (k = m omega^2): 9.81 / (4 pi)^2 = 6.2 cm.
     const JointFrame spring = jointFrame(world, jointTo(world, "spring-ball"));
     const Real omega = 2 * kPi * 2;
-    CHECK((spring.anchorB - spring.anchorA).norm() == Approx(1 + Real(9.81) / (omega * omega)).margin(0.005));
-    CHECK(angleAbout(world, jointTo(world, "hinge-limits-bar")) == Approx(-45 * kDegree).margin(2 * kDegree));
+    CHECK((spring.anchorB - spring.anchorA).norm() == Approx(1 + Real(9.81) / (omega * omega)).margin(0.002));
+    CHECK(angleAbout(world, jointTo(world, "hinge-limits-bar")) == Approx(-45 * kDegree).margin(1 * kDegree));
     CHECK(world.motionOf(world.findBody("hinge-motor-blade"))->angularVelocity.z() == Approx(2).margin(0.05));
     const JointDesc& cone = jointTo(world, "cone-twist-bar");
-    CHECK(swingAngle(jointFrame(world, cone)) == Approx(30 * kDegree).margin(2 * kDegree));
+    CHECK(swingAngle(jointFrame(world, cone)) == Approx(30 * kDegree).margin(1 * kDegree));
     CHECK(std::abs(angleAbout(world, cone)) < 21 * kDegree);
     CHECK(slideLow == Approx(-0.5).margin(0.01));
     CHECK(slide(world, slider) == Approx(0.5).margin(0.01));
