@@ -134,7 +134,7 @@ std::string describeJoint(const JointDesc& joint) {
     std::string out = toString(joint.type);
     const auto add = [&out](const char* format, auto... values) {
         char text[64];
-        std::snprintf(text, sizeof text, format, double(values)...);
+        std::snprintf(text, sizeof text, format, values...);  // callers pass doubles and strings
         out += text;
     };
     const auto degrees = [](Real radians) { return double(radians / kDegree); };
@@ -142,21 +142,21 @@ std::string describeJoint(const JointDesc& joint) {
     switch (joint.type) {
         case JointType::Distance:
             if (joint.springHertz > 0)
-                add(", spring %.3g Hz, damping ratio %.3g", double(joint.springHertz), double(joint.springDampingRatio));
+                add(" spring %.3g Hz, ratio %.3g", double(joint.springHertz), double(joint.springDampingRatio));
             break;
         case JointType::Hinge:
         case JointType::Slider: {
             const bool hinge = joint.type == JointType::Hinge;
             const auto [lo, hi] = joint.limits.value_or(none);
-            if (joint.limits && hinge) add(", limits [%.0f, %.0f] deg", degrees(lo), degrees(hi));
-            if (joint.limits && !hinge) add(", limits [%.3g, %.3g] m", double(lo), double(hi));
+            if (joint.limits && hinge) add(" [%.0f, %.0f] deg", degrees(lo), degrees(hi));
+            if (joint.limits && !hinge) add(" [%.3g, %.3g] m", double(lo), double(hi));
             if (joint.motor)
-                add(hinge ? ", motor %.3g rad/s, %.3g N m" : ", motor %.3g m/s, %.3g N", double(joint.motor->speed),
-                    double(joint.motor->maxForce));
+                add(hinge ? "%s motor %.3g rad/s, %.3g N m" : "%s motor %.3g m/s, %.3g N", joint.limits ? "," : "",
+                    double(joint.motor->speed), double(joint.motor->maxForce));
             break;
         }
         case JointType::ConeTwist: {
-            add(", cone %.0f deg", degrees(joint.coneAngle));
+            add(" cone %.0f deg", degrees(joint.coneAngle));
             const auto [lo, hi] = joint.twistLimits.value_or(none);
             if (joint.twistLimits) add(", twist [%.0f, %.0f] deg", degrees(lo), degrees(hi));
             break;
@@ -168,7 +168,7 @@ std::string describeJoint(const JointDesc& joint) {
 }
 
 // [ch08-joint-view]
-void drawJoint(DebugDraw& draw, const World& world, const JointDesc& joint, bool label) {
+void drawJoint(DebugDraw& draw, const World& world, const JointDesc& joint, Real labelHeight) {
     if (!validBodies(world, joint)) return;
     const JointFrame frame = jointFrame(world, joint);
     // A spring is meant to stretch: its colour says how far, and only rigid joints turn red.
@@ -194,12 +194,14 @@ void drawJoint(DebugDraw& draw, const World& world, const JointDesc& joint, bool
     }
     draw.point(frame.anchorA, kAnchorPixels, off ? colors::kRed : colors::kYellow);
     draw.point(frame.anchorB, kAnchorPixels, off ? colors::kRed : colors::kYellow);
-    if (label) draw.text(frame.anchorA + Vec3(0, Real(0.45), 0), describeJoint(joint), colors::kWhite);
+    if (labelHeight > 0) draw.text(frame.anchorA + Vec3(0, labelHeight, 0), describeJoint(joint), colors::kWhite);
 }
 // [ch08-joint-view]
 
 void JointView::draw(const World& world, DebugDraw& draw) const {
-    for (const JointDesc& joint : world.joints) drawJoint(draw, world, joint, labels_);
+    // Labels at two heights in turn: neighbours' labels, which run right, do not overlap.
+    for (std::size_t i = 0; i < world.joints.size(); ++i)
+        drawJoint(draw, world, world.joints[i], labels_ ? Real(0.45) + Real(0.3) * Real(i % 2) : 0);
     // Each kinematic path as the line its body's origin runs along, ends marked.
     for (const KinematicPath& path : world.kinematicPaths) {
         const Vec3 from = path.center - path.amplitude, to = path.center + path.amplitude;

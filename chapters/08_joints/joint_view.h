@@ -19,11 +19,12 @@ constexpr Real kJointErrorShown = Real(0.01);
 /// yellow to orange at 25% longer (a spring at full swing), cyan when shorter (only a spring can be).
 Color stretchColor(Real stretch);
 
-/// One line naming a joint and its settings, for labels: "hinge, limits [-45, 45] deg".
+/// One line naming a joint and its settings, for labels: "hinge [-45, 45] deg".
 std::string describeJoint(const JointDesc& joint);
 
-/// Draws one joint (nothing when its body indices are not valid).
-void drawJoint(DebugDraw& draw, const World& world, const JointDesc& joint, bool label = false);
+/// Draws one joint (nothing when its body indices are not valid); with a label height above 0,
+/// its describeJoint label that far (m) above its first anchor.
+void drawJoint(DebugDraw& draw, const World& world, const JointDesc& joint, Real labelHeight = 0);
 
 class JointView : public SceneView {
 public:

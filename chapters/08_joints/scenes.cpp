@@ -13,12 +13,13 @@ constexpr Real kDegree = kPi / 180;
 
 Quat turn(Real degrees, const Vec3& axis) { return Quat(Eigen::AngleAxis<Real>(degrees * kDegree, axis)); }
 
-int addStaticBox(World& world, const std::string& name, const Vec3& halfExtents, const Vec3& position) {
+int addStaticBox(World& world, const std::string& name, const Vec3& halfExtents, const Vec3& position,
+                 const Quat& rotation = Quat::Identity()) {
     BodyDef def;
     def.name = name;
     def.type = BodyType::Static;
     def.shape = Shape::box(halfExtents);
-    def.transform.position = position;
+    def.transform = Transform{position, rotation};
     return addBody(world, def);
 }
 
@@ -55,15 +56,27 @@ void addStack(World& world, const Vec3& base, int boxes) {
                    base + Vec3(0, half + 2 * half * Real(level), 0));
 }
 
-// ---- the gallery: one post per joint type, in a row along x ----
+// The demo's default camera looks from yaw 0.6 rad about +y (renderer_dx12/camera.h). The sandbox
+// and the gallery are laid out in a frame turned by that yaw, x running across the screen and z
+// towards the viewer, so they open with every piece in view and moving across the screen.
+constexpr Real kViewYaw = Real(0.6);
+const Quat kFacingView(Eigen::AngleAxis<Real>(kViewYaw, Vec3::UnitY()));
 
-constexpr Real kPostHeight = 3;        // m, the posts' centres
-constexpr Real kPostSpacing = Real(1.8);
+Vec3 facingView(Real across, Real height, Real towardsViewer) {
+    return kFacingView * Vec3(across, height, towardsViewer);
+}
+
+// ---- the gallery: one post per joint type, in a row across the view ----
+
+constexpr Real kPostHeight = Real(2.2);  // m, the posts' centres: the spring's ball clears the ground
+constexpr Real kPostSpacing = Real(1.4);
 const Vec3 kPostHalf = Vec3::Constant(Real(0.1));
+constexpr Real kBarThickness = Real(0.07);  // m, half
 
-/// A bar along x from the point `from` (its left end), half a metre long unless told.
+/// A bar running across the view from the point `from` (its left end), 0.8 m long unless told.
 int addBar(World& world, const std::string& name, const Vec3& from, Real halfLength = Real(0.4)) {
-    return addDynamic(world, name, Shape::box(Vec3(halfLength, Real(0.05), Real(0.05))), from + Vec3(halfLength, 0, 0));
+    return addDynamic(world, name, Shape::box(Vec3(halfLength, kBarThickness, kBarThickness)),
+                      from + kFacingView * Vec3(halfLength, 0, 0), kFacingView);
 }
 
 }  // namespace
@@ -76,8 +89,9 @@ int addMovingPlatform(World& world, const PlatformSpec& spec) {
     platform.name = spec.prefix;
     platform.type = BodyType::Kinematic;
     platform.shape = Shape::box(Vec3(1, Real(0.1), Real(0.75)));
+    platform.transform.rotation = turn(spec.heading / kDegree, Vec3::UnitY());
     KinematicPath path;
-    path.amplitude = Vec3(spec.amplitude, 0, 0);
+    path.amplitude = platform.transform.rotation * Vec3(spec.amplitude, 0, 0);
     path.period = spec.period;
     path.phase = kPi / 2;  // sin = 1: the far end of the path, at rest
     platform.path = path;
@@ -85,7 +99,7 @@ int addMovingPlatform(World& world, const PlatformSpec& spec) {
     const int index = addBody(world, platform);
     // The rider: a 0.6 m box resting on the platform's top face.
     addDynamic(world, spec.prefix + "-rider", Shape::box(Vec3::Constant(Real(0.3))),
-               platform.transform.position + Vec3(0, Real(0.1) + Real(0.3), 0));
+               platform.transform.position + Vec3(0, Real(0.1) + Real(0.3), 0), platform.transform.rotation);
     return index;
 }
 // [ch08-platform]
@@ -109,43 +123,49 @@ int addRotator(World& world, const RotatorSpec& spec) {
     return index;
 }
 
+// [ch08-sandbox]
 World buildJointsSandbox() {
     World world;
     world.name = "joints-sandbox";
     addGround(world);
-    // Back row (z = -1.5): the stack, the chain, the ragdoll. Front row (z = 1.5): the platform
-    // and the rotator. Laid out along x, the way the demo's camera looks.
-    addStack(world, Vec3(-4, 0, Real(-1.5)), 5);
+    // Facing the view (facingView): the tall pieces stand at the back, the low ones in front, and
+    // the chain swings across the screen, not towards it.
+    const auto place = facingView;
+    addStack(world, place(-3, 0, Real(-0.8)), 5);
     ChainSpec chain;
     chain.links = 10;
-    chain.linkRadius = Real(0.08);
-    chain.anchor = Vec3(Real(-1.5), 4, Real(-1.5));
-    chain.direction = Vec3(0, 0, 1);  // level: it swings down towards the camera
+    chain.linkRadius = Real(0.1);
+    chain.anchor = place(-1, 4, Real(-1.6));
+    chain.direction = kFacingView * Vec3::UnitX();  // level: it swings down and across
     addChain(world, chain);
     RagdollSpec ragdoll;
-    ragdoll.pelvis = Vec3(2, 3, Real(-1.5));  // feet 2 m up
-    ragdoll.orientation = turn(30, Vec3::UnitY()) * turn(25, Vec3::UnitZ());
+    ragdoll.pelvis = place(Real(2.2), 3, Real(-0.8));  // feet 2 m up
+    ragdoll.orientation = kFacingView * turn(25, Vec3::UnitZ());
     addRagdoll(world, ragdoll);
     PlatformSpec platform;
-    platform.center = Vec3(-2, Real(0.5), Real(1.5));
+    platform.center = place(Real(-1.5), Real(0.5), Real(1));
+    platform.heading = kViewYaw;
     addMovingPlatform(world, platform);
     RotatorSpec rotator;
-    rotator.center = Vec3(3, 0, Real(1.5));
+    rotator.center = place(3, 0, Real(1));
     addRotator(world, rotator);
     return world;
 }
+// [ch08-sandbox]
 
 // [ch08-gallery]
 World buildJointGallery() {
     World world;
     world.name = "joints-gallery";
     addGround(world);
+    // Posts in a row across the view, turned with it: "across" and "front" are the view's x and z.
     int slot = 0;
     const auto post = [&](const std::string& name) {
-        const Vec3 at(kPostSpacing * (Real(slot++) - 3), kPostHeight, 0);
-        return std::pair<int, Vec3>(addStaticBox(world, name + "-post", kPostHalf, at), at);
+        const Vec3 at = facingView(kPostSpacing * (Real(slot++) - 3), kPostHeight, 0);
+        return std::pair<int, Vec3>(addStaticBox(world, name + "-post", kPostHalf, at, kFacingView), at);
     };
-    const Vec3 below(0, -kPostHalf.y(), 0), beside(kPostHalf.x(), 0, 0);
+    const Vec3 across = kFacingView * Vec3::UnitX(), front = kFacingView * Vec3::UnitZ();
+    const Vec3 below(0, -kPostHalf.y(), 0), beside = across * kPostHalf.x();
     {   // A ball on a spring 1 m long, let go 30 cm stretched: it bounces, and settles g / omega^2
         // (6 cm) longer than its rest length.
         const auto [p, at] = post("spring");
@@ -156,47 +176,50 @@ World buildJointGallery() {
         joint.springHertz = 2;
         joint.springDampingRatio = Real(0.2);
     }
-    {   // A bar on a ball socket, set swinging about x: it circles under its post.
+    {   // A bar on a ball socket, tilted across the view and set swinging about that axis: it
+        // circles under its post.
         const auto [p, at] = post("ball-socket");
         const Vec3 pivot = at + below;
-        const int bar = addDynamic(world, "ball-socket-bar", Shape::box(Vec3(Real(0.05), Real(0.4), Real(0.05))),
-                                   pivot + turn(35, Vec3::UnitZ()) * Vec3(0, Real(-0.4), 0), turn(35, Vec3::UnitZ()));
+        const Quat tilt = Quat(Eigen::AngleAxis<Real>(35 * kDegree, front)) * kFacingView;
+        const int bar = addDynamic(world, "ball-socket-bar", Shape::box(Vec3(kBarThickness, Real(0.4), kBarThickness)),
+                                   pivot + tilt * Vec3(0, Real(-0.4), 0), tilt);
         join(world, JointType::BallSocket, p, bar, pivot);
         Motion& motion = *world.motionOf(bar);
-        motion.angularVelocity = Vec3(3, 0, 0);
+        motion.angularVelocity = across * 3;
         motion.linearVelocity = motion.angularVelocity.cross(worldCenterOfMass(world, bar) - pivot);
     }
-    {   // A level bar on a hinge about z: it falls and rests on its -45 degree limit.
+    {   // A level bar on a hinge facing the viewer: it falls and rests on its -45 degree limit.
         const auto [p, at] = post("hinge-limits");
         const int bar = addBar(world, "hinge-limits-bar", at + beside);
-        join(world, JointType::Hinge, p, bar, at + beside, Vec3::UnitZ()).limits = {{-45 * kDegree, 45 * kDegree}};
+        join(world, JointType::Hinge, p, bar, at + beside, front).limits = {{-45 * kDegree, 45 * kDegree}};
     }
     {   // A propeller hinged at its middle in front of its post: the motor turns it at 2 rad/s.
         const auto [p, at] = post("hinge-motor");
-        const Vec3 hub = at + Vec3(0, 0, Real(0.2));
-        const int blade = addDynamic(world, "hinge-motor-blade", Shape::box(Vec3(Real(0.5), Real(0.05), Real(0.05))), hub);
-        join(world, JointType::Hinge, p, blade, hub, Vec3::UnitZ()).motor = JointMotor{2, 50};
+        const Vec3 hub = at + front * Real(0.25);
+        const int blade = addDynamic(world, "hinge-motor-blade", Shape::box(Vec3(Real(0.5), kBarThickness, kBarThickness)),
+                                     hub, kFacingView);
+        join(world, JointType::Hinge, p, blade, hub, front).motor = JointMotor{2, 50};
     }
-    {   // A level bar on a cone-twist about x, spun about its length: it droops onto its 30 degree
+    {   // A level bar on a cone-twist along its length, spun about it: it droops onto its 30 degree
         // cone, and the spin runs into the twist limits.
         const auto [p, at] = post("cone-twist");
         const int bar = addBar(world, "cone-twist-bar", at + beside);
-        JointDesc& joint = join(world, JointType::ConeTwist, p, bar, at + beside, Vec3::UnitX());
+        JointDesc& joint = join(world, JointType::ConeTwist, p, bar, at + beside, across);
         joint.coneAngle = 30 * kDegree;
         joint.twistLimits = {{-20 * kDegree, 20 * kDegree}};
-        world.motionOf(bar)->angularVelocity = Vec3(4, 0, 0);
+        world.motionOf(bar)->angularVelocity = across * 4;
     }
-    {   // A 2 kg block on a slider along x, thrown towards -x: it stops at -0.5 m, then its motor
+    {   // A 2 kg block on a slider across the view, thrown left: it stops at -0.5 m, then its motor
         // (0.5 m/s, 5 N) drives it to the +0.5 m end and holds it there.
         const auto [p, at] = post("slider");
         BodyDef block;
         block.name = "slider-block";
         block.shape = Shape::box(Vec3::Constant(Real(0.12)));
         block.mass = 2;
-        block.transform.position = at + Vec3(0, 0, Real(0.35));
-        block.linearVelocity = Vec3(-2, 0, 0);
+        block.transform = Transform{at + front * Real(0.35), kFacingView};
+        block.linearVelocity = across * -2;
         const int b = addBody(world, block);
-        JointDesc& joint = join(world, JointType::Slider, p, b, block.transform.position, Vec3::UnitX());
+        JointDesc& joint = join(world, JointType::Slider, p, b, block.transform.position, across);
         joint.limits = {{Real(-0.5), Real(0.5)}};
         joint.motor = JointMotor{Real(0.5), 5};
     }

@@ -18,7 +18,8 @@ void addGround(World& world);
 /// its speed is zero, so the box is not jerked off at the first step.
 struct PlatformSpec {
     Vec3 center = Vec3(0, Real(0.5), 0);   // the middle of the platform's path
-    Real amplitude = 2;                     // m along x
+    Real amplitude = 2;                     // m along the platform's length
+    Real heading = 0;                       // rad about +y: the length runs along x turned by this
     Real period = 4;                        // s: the largest acceleration, A (2 pi / T)^2 = 4.9 m/s^2,
                                             // stays below friction's 0.6 g = 5.9 m/s^2
     std::string prefix = "platform";        // the box is "<prefix>-rider"
