@@ -89,7 +89,7 @@ int addMovingPlatform(World& world, const PlatformSpec& spec) {
     platform.name = spec.prefix;
     platform.type = BodyType::Kinematic;
     platform.shape = Shape::box(Vec3(1, Real(0.1), Real(0.75)));
-    platform.transform.rotation = turn(spec.heading / kDegree, Vec3::UnitY());
+    platform.transform.rotation = Quat(Eigen::AngleAxis<Real>(spec.heading, Vec3::UnitY()));
     KinematicPath path;
     path.amplitude = platform.transform.rotation * Vec3(spec.amplitude, 0, 0);
     path.period = spec.period;
@@ -123,35 +123,32 @@ int addRotator(World& world, const RotatorSpec& spec) {
     return index;
 }
 
-// [ch08-sandbox]
 World buildJointsSandbox() {
     World world;
     world.name = "joints-sandbox";
     addGround(world);
     // Facing the view (facingView): the tall pieces stand at the back, the low ones in front, and
     // the chain swings across the screen, not towards it.
-    const auto place = facingView;
-    addStack(world, place(-3, 0, Real(-0.8)), 5);
+    addStack(world, facingView(-3, 0, Real(-0.8)), 5);
     ChainSpec chain;
     chain.links = 10;
     chain.linkRadius = Real(0.1);
-    chain.anchor = place(-1, 4, Real(-1.6));
+    chain.anchor = facingView(-1, 4, Real(-1.6));
     chain.direction = kFacingView * Vec3::UnitX();  // level: it swings down and across
     addChain(world, chain);
     RagdollSpec ragdoll;
-    ragdoll.pelvis = place(Real(2.2), 3, Real(-0.8));  // feet 2 m up
+    ragdoll.pelvis = facingView(Real(2.2), 3, Real(-0.8));  // feet 2 m up
     ragdoll.orientation = kFacingView * turn(25, Vec3::UnitZ());
     addRagdoll(world, ragdoll);
     PlatformSpec platform;
-    platform.center = place(Real(-1.5), Real(0.5), Real(1));
+    platform.center = facingView(Real(-1.5), Real(0.5), Real(1));
     platform.heading = kViewYaw;
     addMovingPlatform(world, platform);
     RotatorSpec rotator;
-    rotator.center = place(3, 0, Real(1));
+    rotator.center = facingView(3, 0, Real(1));
     addRotator(world, rotator);
     return world;
 }
-// [ch08-sandbox]
 
 // [ch08-gallery]
 World buildJointGallery() {

@@ -12,7 +12,6 @@ class Registry;
 /// A static ground box 40 m x 40 m, top face at y = 0.
 void addGround(World& world);
 
-// [ch08-platform-spec]
 /// A kinematic platform that follows a KinematicPath back and forth along x, with a dynamic box
 /// resting on it: friction alone carries the box. The platform starts at the path's end, where
 /// its speed is zero, so the box is not jerked off at the first step.
@@ -24,7 +23,6 @@ struct PlatformSpec {
                                             // stays below friction's 0.6 g = 5.9 m/s^2
     std::string prefix = "platform";        // the box is "<prefix>-rider"
 };
-// [ch08-platform-spec]
 int addMovingPlatform(World& world, const PlatformSpec& spec);  // returns the platform's index
 
 /// A kinematic paddle spinning about the vertical at `spin` rad/s, sweeping the ground around
