@@ -117,8 +117,12 @@ int addRotator(World& world, const RotatorSpec& spec) {
         const Real angle = (Real(30) + Real(60) * Real(i)) * kDegree;
         const Real radius = Real(0.55) + Real(0.1) * Real(i % 3);
         const Vec3 at = spec.center + Vec3(radius * std::cos(angle), Real(0.15), radius * std::sin(angle));
-        const Shape shape = i % 2 ? Shape::sphere(Real(0.15)) : Shape::box(Vec3::Constant(Real(0.15)));
-        addDynamic(world, spec.prefix + "-target" + std::to_string(i), shape, at);
+        const bool ball = i % 2 == 1;
+        const Shape shape = ball ? Shape::sphere(Real(0.15)) : Shape::box(Vec3::Constant(Real(0.15)));
+        const int target = addDynamic(world, spec.prefix + "-target" + std::to_string(i), shape, at);
+        // The contacts have no rolling resistance: a thrown ball would roll out of the picture.
+        // Drag on its spin stands in for it.
+        if (ball) world.dampings.push_back({target, 0, 2});
     }
     return index;
 }
