@@ -227,6 +227,20 @@ TEST_CASE("the joint view draws what each joint allows and turns a joint red pas
         CHECK(degrees(radii[0], radii[2]) == Approx(75).margin(0.1));
         CHECK(degrees(radii[1], radii[2]) == Approx(15).margin(0.1));
     }
+    SECTION("a cone-twist's cone opens at its cone angle about A's axis") {
+        const JointDesc& cone = jointTo(world, "cone-twist-bar");
+        const JointFrame frame = jointFrame(world, cone);
+        RecordingDraw lines;
+        drawJoint(lines, world, cone);
+        int rays = 0;  // the cone's lines from its apex to its ring
+        for (const auto& command : lines.commands()) {
+            if (!sameColor(command.color, colors::kMagenta) || (command.a - frame.anchorA).norm() > Real(1e-5)) continue;
+            const Real angle = std::acos(std::clamp((command.b - command.a).normalized().dot(frame.axisA), Real(-1), Real(1)));
+            CHECK(angle == Approx(30 * kDegree).margin(1e-3));
+            ++rays;
+        }
+        CHECK(rays == 8);
+    }
     SECTION("a slider's travel ends in ticks at its limits") {
         const JointDesc& slider = jointTo(world, "slider-block");
         const JointFrame frame = jointFrame(world, slider);
