@@ -73,7 +73,7 @@ bool allPairsClosedForm(const World& world);
 Real measureDeepestPenetration(const World& world);
 /// The same over the pairs `counts` accepts (body indices, lower first): chapter 8 leaves out the
 /// pairs a joint holds together, which overlap at their joints by design and never collide.
-Real measureDeepestPenetration(const World& world, const std::function<bool(int bodyA, int bodyB)>& counts);
+Real measureDeepestPenetrationAmong(const World& world, const std::function<bool(int bodyA, int bodyB)>& counts);
 
 /// Chapter 2's pipeline with its narrowphase stage replaced by chapter 3's.
 Pipeline makeChapter03Pipeline(const World& world, ContactSearch search = ContactSearch::EverySubstep);

@@ -212,9 +212,9 @@ bool allPairsClosedForm(const World& world) {
     return true;
 }
 
-Real measureDeepestPenetration(const World& world) { return measureDeepestPenetration(world, {}); }
+Real measureDeepestPenetration(const World& world) { return measureDeepestPenetrationAmong(world, {}); }
 
-Real measureDeepestPenetration(const World& world, const std::function<bool(int bodyA, int bodyB)>& counts) {
+Real measureDeepestPenetrationAmong(const World& world, const std::function<bool(int bodyA, int bodyB)>& counts) {
     // Sweep along x: sorted by the boxes' lower x, a body only needs testing against the bodies
     // that start before it ends, so a run report does not pay for all n^2 pairs every frame.
     const std::vector<Aabb> bounds = bodyBounds(world);

@@ -56,7 +56,7 @@ JointError measureJointError(const World& world, const JointDesc& joint) {
     JointError error;
     switch (joint.type) {
         case JointType::Distance:
-            error.position = std::abs(gap.norm() - joint.length.value_or(0));
+            error.position = std::abs(gap.norm() - joint.length.value_or(gap.norm()));  // as the solver reads it
             break;
         case JointType::BallSocket: error.position = gap.norm(); break;
         case JointType::Hinge:

@@ -26,7 +26,7 @@ std::vector<BodyPair> jointedPairs(const World& world) {
 Real measureDeepestCollidingPenetration(const World& world) {
     const std::vector<BodyPair> jointed = jointedPairs(world);
     if (jointed.empty()) return measureDeepestPenetration(world);
-    return measureDeepestPenetration(world, [&](int bodyA, int bodyB) {
+    return measureDeepestPenetrationAmong(world, [&](int bodyA, int bodyB) {
         return !std::binary_search(jointed.begin(), jointed.end(), BodyPair{bodyA, bodyB});
     });
 }

@@ -13,16 +13,6 @@ constexpr Real kDegree = kPi / 180;
 
 Quat turn(Real degrees, const Vec3& axis) { return Quat(Eigen::AngleAxis<Real>(degrees * kDegree, axis)); }
 
-int addStaticBox(World& world, const std::string& name, const Vec3& halfExtents, const Vec3& position,
-                 const Quat& rotation = Quat::Identity()) {
-    BodyDef def;
-    def.name = name;
-    def.type = BodyType::Static;
-    def.shape = Shape::box(halfExtents);
-    def.transform = Transform{position, rotation};
-    return addBody(world, def);
-}
-
 int addDynamic(World& world, const std::string& name, const Shape& shape, const Vec3& position,
                const Quat& rotation = Quat::Identity()) {
     BodyDef def;
@@ -81,7 +71,7 @@ int addBar(World& world, const std::string& name, const Vec3& from, Real halfLen
 
 }  // namespace
 
-void addGround(World& world) { addStaticBox(world, "ground", Vec3(20, Real(0.5), 20), Vec3(0, Real(-0.5), 0)); }
+void addGround(World& world) { addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(20, Real(0.5), 20)); }
 
 // [ch08-platform]
 int addMovingPlatform(World& world, const PlatformSpec& spec) {
@@ -163,7 +153,7 @@ World buildJointGallery() {
     int slot = 0;
     const auto post = [&](const std::string& name) {
         const Vec3 at = facingView(kPostSpacing * (Real(slot++) - 3), kPostHeight, 0);
-        return std::pair<int, Vec3>(addStaticBox(world, name + "-post", kPostHalf, at, kFacingView), at);
+        return std::pair<int, Vec3>(addStaticBox(world, name + "-post", at, kPostHalf, kFacingView), at);
     };
     const Vec3 across = kFacingView * Vec3::UnitX(), front = kFacingView * Vec3::UnitZ();
     const Vec3 below(0, -kPostHalf.y(), 0), beside = across * kPostHalf.x();

@@ -57,7 +57,7 @@ struct JointDesc {
     /// slider and fixed joints measure their angles from. Taken from the bodies' poses at load
     /// unless the scene gives it.
     Quat referenceRotation = Quat::Identity();
-    std::optional<Real> length;          // distance joint, m; the anchors' distance at load when absent
+    std::optional<Real> length;          // distance joint, m; the loader sets the anchors' distance at load when absent (code that leaves it unset gets no length held)
     Real springHertz = 0;                // distance joint: > 0 makes it a spring of this frequency
     Real springDampingRatio = 0;
     std::optional<std::pair<Real, Real>> limits;      // hinge (rad) and slider (m)
