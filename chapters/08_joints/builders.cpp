@@ -112,7 +112,7 @@ Ragdoll addRagdoll(World& world, const RagdollSpec& spec) {
         joint.localAnchorA = at - parts[static_cast<std::size_t>(partA)].center;
         joint.localAnchorB = at - parts[static_cast<std::size_t>(partB)].center;
         joint.axis = axis;
-        joint.frictionTorque = type == JointType::ConeTwist ? spec.frictionTorque : 0;
+        joint.frictionTorque = spec.frictionTorque;
         ragdoll.joints.push_back(static_cast<int>(world.joints.size()));
         world.joints.push_back(joint);
         return world.joints.back();

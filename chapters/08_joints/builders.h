@@ -40,10 +40,9 @@ struct RagdollSpec {
     Vec3 pelvis = Vec3(0, 1, 0);           // where the pelvis is (standing: feet at y = pelvis - 0.95)
     Quat orientation = Quat::Identity();   // the whole body turned about the pelvis
     Real mass = 70;                        // kg, shared out by human segment fractions
-    /// N m at every cone-twist joint (joint friction, Box2D's ragdoll does the same with zero-speed
-    /// motors). Without it a pile never quite stops: a head keeps rocking in its neck's cone at
-    /// 0.4 m/s after 8 s; with 0.5 N m the pile's kinetic energy is 6 microjoules by then
-    /// (tests/ch08/ragdoll_test.cpp).
+    /// N m at every joint (joint friction; Box2D's ragdoll does the same with zero-speed motors).
+    /// Without it a pile never quite stops: a head keeps rocking in its neck's cone at 0.4 m/s
+    /// after 8 s, a shin swings on its knee (tests/ch08/ragdoll_test.cpp).
     Real frictionTorque = Real(0.5);
     std::string prefix = "ragdoll";
 };

@@ -158,6 +158,8 @@ void addLimitAndMotorRows(RowBuilder& builder, const JointDesc& joint, const Con
     addLimitRows(builder, joint, along, coordinate, limits);
     if (joint.motor)
         builder.motor(along, joint.motor->speed, joint.motor->maxForce);
+    else if (joint.frictionTorque > 0)  // a hinge's joint friction: the motor slot at speed zero
+        builder.motor(along, 0, joint.frictionTorque);
     else
         builder.unused(joint.bodyA, joint.bodyB);
 }

@@ -77,7 +77,7 @@ std::vector<const char*> jointKeys(JointType type) {
     switch (type) {
         case JointType::Distance: return {"length", "spring_hertz", "spring_damping_ratio"};
         case JointType::BallSocket: return {};
-        case JointType::Hinge: return {"axis", "limits", "motor", "reference_rotation"};
+        case JointType::Hinge: return {"axis", "limits", "motor", "friction_torque", "reference_rotation"};
         case JointType::ConeTwist: return {"axis", "cone_angle", "twist_limits", "friction_torque", "reference_rotation"};
         case JointType::Slider: return {"axis", "limits", "motor", "reference_rotation"};
         case JointType::Fixed: return {"reference_rotation"};

@@ -91,8 +91,9 @@ std::string saveSceneToString(const World& world) {
         if (type == JointType::ConeTwist) {
             out["cone_angle"] = tidyNumber(joint.coneAngle);
             if (joint.twistLimits) out["twist_limits"] = pair(*joint.twistLimits);
-            if (joint.frictionTorque > 0) out["friction_torque"] = tidyNumber(joint.frictionTorque);
         }
+        if ((type == JointType::ConeTwist || type == JointType::Hinge) && joint.frictionTorque > 0)
+            out["friction_torque"] = tidyNumber(joint.frictionTorque);
         joints.push_back(out);
     }
     if (!joints.empty()) scene["joints"] = joints;

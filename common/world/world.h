@@ -64,7 +64,7 @@ struct JointDesc {
     Real coneAngle = 0;                  // cone-twist: largest swing of the twist axis, rad
     std::optional<std::pair<Real, Real>> twistLimits; // cone-twist, rad
     std::optional<JointMotor> motor;     // hinge and slider
-    Real frictionTorque = 0;             // cone-twist: N m resisting any relative turn (joint friction)
+    Real frictionTorque = 0;             // cone-twist, hinge without motor: N m resisting the turn (joint friction)
     bool collideConnected = false;       // whether the two bodies still collide with each other
 };
 

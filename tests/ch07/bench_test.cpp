@@ -23,7 +23,8 @@ TEST_CASE("bench ccd writes its table and plots, and CCD stops the tunnels that 
     for (const auto& [method, count] : rows) CHECK(count == 3);
     CHECK(tunnels["ccd on"] == 0);
     CHECK(tunnels["ccd off"] > 0);
-    CHECK(tunnels["16 substeps"] < tunnels["ccd off"]);
+    // Substeps alone do not stop them: contacts are searched once per frame (the page's numbers).
+    CHECK(tunnels["16 substeps"] > 0);
     // Both time-of-impact methods find the same impacts on the same sweeps.
     const std::size_t methods = run.printed.find("time of impact, two ways");
     REQUIRE(methods != std::string::npos);
