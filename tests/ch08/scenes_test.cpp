@@ -11,6 +11,7 @@
 #include "app/runner.h"
 #include "world/debug_draw.h"
 #include "world/scene.h"
+#include "support/scene_rejection.h"
 
 #include <catch2/catch.hpp>
 
@@ -65,15 +66,7 @@ int countColored(const RecordingDraw& draw, const Color& color) {
                              [&](const RecordingDraw::Command& command) { return sameColor(command.color, color); }));
 }
 
-SceneError rejectionOf(const std::string& text) {
-    try {
-        loadSceneFromString(text);
-    } catch (const SceneError& error) {
-        return error;
-    }
-    FAIL("the scene loaded: " << text);
-    return SceneError("", "");
-}
+using test::rejectionOf;
 
 /// A post and a bar, joined by `joint` (JSON text without a and b), for the error cases.
 std::string sceneWithJoint(const std::string& joint, const std::string& barExtra = "") {

@@ -2,6 +2,7 @@
 // user fixes a file in one go instead of one run per mistake.
 
 #include "world/scene.h"
+#include "support/scene_rejection.h"
 
 #include <catch2/catch.hpp>
 
@@ -20,15 +21,7 @@ std::vector<std::string> pathsOf(const SceneError& error) {
     return paths;
 }
 
-SceneError rejectionOf(const std::string& text) {
-    try {
-        loadSceneFromString(text);
-    } catch (const SceneError& error) {
-        return error;
-    }
-    FAIL("the scene loaded: " << text);
-    return SceneError("", "");
-}
+using test::rejectionOf;
 
 }  // namespace
 
