@@ -5,6 +5,7 @@
 #include "07_ccd/shots.h"
 #include "app/registry.h"
 #include "app/runner.h"
+#include "support/report_compare.h"
 #include "world/report.h"
 
 #include <catch2/catch.hpp>
@@ -26,12 +27,9 @@ std::string ccdNote(const Pipeline& pipeline) {
     return note == pipeline.planNotes().end() ? "" : note->second;
 }
 
-/// The report without its timings and without chapter 7's "ccd" entry.
-std::string reportWithoutCcd(const World& world, RunStats stats) {
-    stats.planNotes.clear();
-    stats.stepMs.assign(stats.stepMs.size(), 0);
-    stats.stageMeanMs.clear();
-    return reportToJson(world, stats, "test");
+/// The report without its timings and without chapter 7's "ccd" entry (a plan note).
+std::string reportWithoutCcd(const World& world, const RunStats& stats) {
+    return test::reportWithoutTimingsAndNotes(world, stats);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "app/registry.h"
 #include "app/runner.h"
 #include "promises/promises.h"
+#include "support/report_compare.h"
 #include "world/report.h"
 
 #include <catch2/catch.hpp>
@@ -21,13 +22,6 @@ std::vector<test::PipelineVariant> throughChapter8() {
              }}};
 }
 
-/// The report without its timings and plan notes (chapter 8 adds two).
-std::string reportWithoutNotes(const World& world, RunStats stats) {
-    stats.planNotes.clear();
-    stats.stepMs.assign(stats.stepMs.size(), 0);
-    stats.stageMeanMs.clear();
-    return reportToJson(world, stats, "test");
-}
 
 }  // namespace
 
@@ -54,7 +48,7 @@ TEST_CASE("scenes of chapters 1 to 7: the same reports with and without chapter 
         options.frames = 120;
         const RunStats stats7 = runHeadless(world7, pipeline7, registry, options);
         const RunStats stats8 = runHeadless(world8, pipeline8, registry, options);
-        CHECK(reportWithoutNotes(world8, stats8) == reportWithoutNotes(world7, stats7));
+        CHECK(test::reportWithoutTimingsAndNotes(world8, stats8) == test::reportWithoutTimingsAndNotes(world7, stats7));
         ++compared;
     }
     CHECK(compared >= 15);
