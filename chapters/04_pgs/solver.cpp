@@ -35,16 +35,18 @@ void scatterSolverBodies(World& world, const std::vector<SolverBody>& bodies) {
 // An impulse lambda along the row changes the bodies' velocities by dv = M^-1 J^T lambda, and
 // so the row's own velocity by J M^-1 J^T lambda. The effective mass is the inverse of that
 // scalar: the impulse that changes J v by exactly 1 m/s.
+Real effectiveMass(const ConstraintRow& row, const std::vector<SolverBody>& bodies) {
+    const SolverBody& a = bodies[row.bodyA];
+    const SolverBody& b = bodies[row.bodyB];
+    const Real inverseEffectiveMass = a.inverseMass * row.linearA.squaredNorm() +
+                                      row.angularA.dot(a.inverseInertia * row.angularA) +
+                                      b.inverseMass * row.linearB.squaredNorm() +
+                                      row.angularB.dot(b.inverseInertia * row.angularB);
+    return inverseEffectiveMass > 0 ? 1 / inverseEffectiveMass : 0;
+}
+
 void computeEffectiveMasses(std::vector<ConstraintRow>& rows, const std::vector<SolverBody>& bodies) {
-    for (ConstraintRow& row : rows) {
-        const SolverBody& a = bodies[row.bodyA];
-        const SolverBody& b = bodies[row.bodyB];
-        const Real inverseEffectiveMass = a.inverseMass * row.linearA.squaredNorm() +
-                                          row.angularA.dot(a.inverseInertia * row.angularA) +
-                                          b.inverseMass * row.linearB.squaredNorm() +
-                                          row.angularB.dot(b.inverseInertia * row.angularB);
-        row.effectiveMass = inverseEffectiveMass > 0 ? 1 / inverseEffectiveMass : 0;
-    }
+    for (ConstraintRow& row : rows) row.effectiveMass = effectiveMass(row, bodies);
 }
 // [ch04-effective-mass]
 

@@ -17,6 +17,9 @@ std::vector<SolverBody> gatherSolverBodies(const World& world);
 /// Writes the solved velocities back into the Motions of the dynamic bodies.
 void scatterSolverBodies(World& world, const std::vector<SolverBody>& bodies);
 
+/// One row's 1 / (J M^-1 J^T), 0 when no body can move along it.
+Real effectiveMass(const ConstraintRow& row, const std::vector<SolverBody>& bodies);
+
 /// Fills each row's effectiveMass = 1 / (J M^-1 J^T) from the bodies' inverse masses.
 void computeEffectiveMasses(std::vector<ConstraintRow>& rows, const std::vector<SolverBody>& bodies);
 

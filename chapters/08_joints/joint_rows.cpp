@@ -47,7 +47,8 @@ bool finiteRow(const ConstraintRow& row) {
 // Collects one joint's rows, slot by slot.
 class RowBuilder {
 public:
-    RowBuilder(const JointFeedback& feedback, Real h) : feedback_(feedback), h_(h) {}
+    // Appends straight to `out`: no vectors of its own to allocate per joint and pass.
+    RowBuilder(JointRows& out, const JointFeedback& feedback, Real h) : out_(out), feedback_(feedback), h_(h) {}
 
     // [ch08-bias]
     // C = 0 wanted: the error goes back in by the feedback's rule.
@@ -106,18 +107,14 @@ public:
     }
 
     void add(const ConstraintRow& row, const Softness& soft) {
-        rows_.push_back(row);
-        softness_.push_back(soft);
+        out_.rows.push_back(row);
+        out_.softness.push_back(soft);
     }
 
-    std::vector<ConstraintRow>& rows() { return rows_; }
-    std::vector<Softness>& softness() { return softness_; }
-
 private:
+    JointRows& out_;
     JointFeedback feedback_;
     Real h_;
-    std::vector<ConstraintRow> rows_;
-    std::vector<Softness> softness_;
 };
 
 // Two unit vectors perpendicular to `axis` and to each other.
@@ -256,7 +253,8 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
         return;
     }
     const JointFrame frame = jointFrame(world, joint);
-    RowBuilder builder(feedback, h);
+    const std::size_t first = out.rows.size();
+    RowBuilder builder(out, feedback, h);
     switch (joint.type) {
         case JointType::Distance: addDistanceRow(builder, joint, frame, h); break;
         case JointType::BallSocket: addPointRows(builder, joint, frame); break;
@@ -268,22 +266,28 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
             addWeldRows(builder, joint, frame);
             break;
     }
-    std::vector<ConstraintRow>& rows = builder.rows();
-    if (!std::all_of(rows.begin(), rows.end(), finiteRow)) {
+    const auto rows = out.rows.begin() + static_cast<std::ptrdiff_t>(first);
+    const std::size_t rowCount = out.rows.size() - first;
+    if (!std::all_of(rows, out.rows.end(), finiteRow)) {
+        out.rows.resize(first);
+        out.softness.resize(first);
         ++out.invalidSkipped;
         return;
     }
-    computeEffectiveMasses(rows, bodies);
     const bool carried = carryImpulses && static_cast<std::size_t>(jointIndex) < world.jointImpulses.size();
-    for (std::size_t slot = 0; slot < rows.size() && slot < JointImpulses::kSlots; ++slot) {
-        const Real impulse = carried ? world.jointImpulses[static_cast<std::size_t>(jointIndex)].slot[slot] : Real(0);
-        rows[slot].impulse = std::isfinite(impulse) ? std::clamp(impulse, rows[slot].lower, rows[slot].upper) : Real(0);
+    for (std::size_t slot = 0; slot < rowCount; ++slot) {
+        ConstraintRow& row = rows[static_cast<std::ptrdiff_t>(slot)];
+        row.effectiveMass = effectiveMass(row, bodies);
+        const Real impulse = carried && slot < JointImpulses::kSlots
+                                 ? world.jointImpulses[static_cast<std::size_t>(jointIndex)].slot[slot]
+                                 : Real(0);
+        row.impulse = std::isfinite(impulse) ? std::clamp(impulse, row.lower, row.upper) : Real(0);
     }
 
     JointRowSet set;
     set.joint = jointIndex;
-    set.firstRow = static_cast<int>(out.rows.size());
-    set.rowCount = static_cast<int>(rows.size());
+    set.firstRow = static_cast<int>(first);
+    set.rowCount = static_cast<int>(rowCount);
     const bool pointJoint = joint.type != JointType::Distance && joint.type != JointType::Slider;
     if (pointJoint) {
         // [ch08-point-mass]
@@ -303,8 +307,6 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
         set.pointArmA = frame.armA;
         set.pointArmB = frame.armB;
     }
-    out.rows.insert(out.rows.end(), rows.begin(), rows.end());
-    out.softness.insert(out.softness.end(), builder.softness().begin(), builder.softness().end());
     out.joints.push_back(set);
 }
 

@@ -92,7 +92,11 @@ JointFeedback jointFeedback(const Settings& settings, Real h, JointFeedback::Kin
 // [ch08-joint-solve]
 void JointConstraints::prepare(const World& world, const std::vector<SolverBody>& bodies, Real h,
                                bool positionFeedback) {
-    rows_ = JointRows{};
+    // Cleared, not replaced: the vectors keep their room for the solve's other substeps and passes.
+    rows_.rows.clear();
+    rows_.softness.clear();
+    rows_.joints.clear();
+    rows_.invalidSkipped = 0;
     JointFeedback feedback = jointFeedback(world.settings, h, feedback_);
     if (!positionFeedback) feedback.kind = JointFeedback::Kind::None;
     // The biased pass starts from last solve's impulses only with warm starting on; the relax pass
