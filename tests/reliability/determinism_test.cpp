@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "golden_runs.h"
-#include "state_hash.h"
+#include "world/state_hash.h"
 
 #include "app/registry.h"
 

@@ -6,7 +6,7 @@
 // The build runs --check as the ctest reliability.golden_hashes; the target `golden-hashes`
 // runs --write for the build's precision (docs/reliability.md).
 #include "golden_runs.h"
-#include "state_hash.h"
+#include "world/state_hash.h"
 
 #include "app/runner.h"
 
@@ -27,7 +27,7 @@ const char* precisionName() { return sizeof(Real) == sizeof(double) ? "double" :
 std::string goldenText(const std::vector<GoldenRun>& runs) {
     std::ostringstream text;
     text << "# Golden state hashes, " << precisionName() << " build: every built-in scene and scenes/*.json after "
-         << kGoldenFrames << " frames\n# through their own chapter's engine, the files through the latest (tests/reliability/state_hash.h). "
+         << kGoldenFrames << " frames\n# through their own chapter's engine, the files through the latest (common/world/state_hash.h). "
          << "Regenerate with the target golden-hashes\n# (docs/reliability.md) after a change that is meant to "
          << "change results.\n";
     for (const GoldenRun& run : runs) text << run.scene << " " << hexHash(run.hash) << "\n";

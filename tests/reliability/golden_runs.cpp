@@ -1,6 +1,6 @@
 #include "golden_runs.h"
 
-#include "state_hash.h"
+#include "world/state_hash.h"
 #include "world/scene.h"
 
 #include <algorithm>

@@ -1,9 +1,9 @@
-#include "state_hash.h"
+#include "world/state_hash.h"
 
 #include <cstdio>
 #include <cstring>
 
-namespace stepwise::reliability {
+namespace stepwise {
 
 namespace {
 
@@ -50,4 +50,4 @@ std::string hexHash(std::uint64_t hash) {
     return text;
 }
 
-}  // namespace stepwise::reliability
+}  // namespace stepwise

@@ -8,11 +8,11 @@
 #include <cstdint>
 #include <string>
 
-namespace stepwise::reliability {
+namespace stepwise {
 
 std::uint64_t stateHash(const World& world);
 
 /// "0x0123456789abcdef".
 std::string hexHash(std::uint64_t hash);
 
-}  // namespace stepwise::reliability
+}  // namespace stepwise
