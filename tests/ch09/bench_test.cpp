@@ -23,15 +23,17 @@ TEST_CASE("bench debug writes its tables and plots: history is cheap, GJK ray ca
         CHECK(std::stod(cells[4]) > 1000);                  // and holds the world: more than a kilobyte a frame
     }
     CHECK(run.printed.find("ray casts") != std::string::npos);
-    // The last GJK row per shape (cap 64) deviates from the closed form by less than a micrometre.
+    // The last GJK row per shape (cap 64) deviates from the closed form by less than a micrometre
+    // and calls (almost) every ray as the closed form does.
     int converged = 0;
     std::istringstream lines(run.printed);
     for (std::string line; std::getline(lines, line);) {
         std::istringstream cells(line);
         std::vector<std::string> words;
         for (std::string word; cells >> word;) words.push_back(word);
-        if (words.size() == 6 && words[1] == "GJK" && words[2] == "64") {
-            CHECK(std::stod(words[5]) < 1e-6);
+        if (words.size() == 7 && words[1] == "GJK" && words[2] == "64") {
+            CHECK(std::stod(words[5]) <= 2);          // at most a couple of grazes of 2,000 rays called otherwise
+            CHECK(std::stod(words[6]) < 1e-6);
             ++converged;
         }
     }
