@@ -5,6 +5,11 @@
 
 namespace stepwise {
 
+bool jointBodiesValid(const World& world, const JointDesc& joint) {
+    const int count = static_cast<int>(world.bodies.size());
+    return joint.bodyA >= 0 && joint.bodyB >= 0 && joint.bodyA < count && joint.bodyB < count && joint.bodyA != joint.bodyB;
+}
+
 JointFrame jointFrame(const World& world, const JointDesc& joint) {
     const Transform& poseA = world.bodies[static_cast<std::size_t>(joint.bodyA)].transform;
     const Transform& poseB = world.bodies[static_cast<std::size_t>(joint.bodyB)].transform;

@@ -21,6 +21,9 @@ struct JointFrame {
 };
 
 /// The frame of joint `joint` with the bodies where they are now.
+/// Whether the joint names two different bodies of the world (what every use of it checks first).
+bool jointBodiesValid(const World& world, const JointDesc& joint);
+
 JointFrame jointFrame(const World& world, const JointDesc& joint);
 
 // [ch08-angles]

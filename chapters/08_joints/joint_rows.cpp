@@ -238,17 +238,12 @@ void addDistanceRow(RowBuilder& builder, const JointDesc& joint, const JointFram
 }
 // [ch08-distance-row]
 
-bool validBodies(const World& world, const JointDesc& joint) {
-    const int count = static_cast<int>(world.bodies.size());
-    return joint.bodyA >= 0 && joint.bodyB >= 0 && joint.bodyA < count && joint.bodyB < count && joint.bodyA != joint.bodyB;
-}
-
 }  // namespace
 
 void appendJointRows(JointRows& out, const World& world, int jointIndex, const std::vector<SolverBody>& bodies, Real h,
                      const JointFeedback& feedback, bool carryImpulses) {
     const JointDesc& joint = world.joints[static_cast<std::size_t>(jointIndex)];
-    if (!validBodies(world, joint) || !(h > 0)) {
+    if (!jointBodiesValid(world, joint) || !(h > 0)) {
         ++out.invalidSkipped;
         return;
     }

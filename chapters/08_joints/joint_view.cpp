@@ -16,7 +16,6 @@ constexpr Real kArcRadius = Real(0.3);
 constexpr Real kTwistRadius = Real(0.12);
 constexpr Real kTick = Real(0.06);
 constexpr float kAnchorPixels = 7;
-constexpr Real kDegree = kPi / 180;
 
 constexpr Color kLimitColor{0.85f, 0.85f, 0.88f, 1};   // what the joint allows: arcs, cone, travel
 constexpr Color kMotorColor = colors::kGreen;
@@ -115,12 +114,6 @@ void drawSlider(DebugDraw& draw, const JointFrame& frame, const JointDesc& joint
         draw.arrow(frame.anchorB, frame.anchorB + axis * (joint.motor->speed > 0 ? Real(0.2) : Real(-0.2)), kMotorColor);
 }
 
-bool validBodies(const World& world, const JointDesc& joint) {
-    const int count = int(world.bodies.size());
-    return joint.bodyA >= 0 && joint.bodyA < count && joint.bodyB >= 0 && joint.bodyB < count &&
-           joint.bodyA != joint.bodyB;
-}
-
 }  // namespace
 
 Color stretchColor(Real stretch) {
@@ -169,7 +162,7 @@ std::string describeJoint(const JointDesc& joint) {
 
 // [ch08-joint-view]
 void drawJoint(DebugDraw& draw, const World& world, const JointDesc& joint, Real labelHeight) {
-    if (!validBodies(world, joint)) return;
+    if (!jointBodiesValid(world, joint)) return;
     const JointFrame frame = jointFrame(world, joint);
     // A spring is meant to stretch: its colour says how far, and only rigid joints turn red.
     const bool spring = joint.type == JointType::Distance && joint.springHertz > 0;

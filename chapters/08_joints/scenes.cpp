@@ -9,7 +9,6 @@ namespace stepwise {
 
 namespace {
 
-constexpr Real kDegree = kPi / 180;
 
 Quat turn(Real degrees, const Vec3& axis) { return Quat(Eigen::AngleAxis<Real>(degrees * kDegree, axis)); }
 

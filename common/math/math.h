@@ -22,6 +22,7 @@ using Mat3 = Eigen::Matrix<Real, 3, 3>;
 using Quat = Eigen::Quaternion<Real>;
 
 constexpr Real kPi = Real(3.14159265358979323846);
+constexpr Real kDegree = kPi / 180;   // one degree in radians
 constexpr Real kRealMax = std::numeric_limits<Real>::max();
 constexpr Real kEpsilon = std::numeric_limits<Real>::epsilon();
 

@@ -1,6 +1,7 @@
 // Free rotation: the gyroscopic term and the Dzhanibekov (tennis racket) flip. A box with three
 // distinct moments of inertia spun about its intermediate axis is unstable: a tiny wobble grows
 // until the body turns over, again and again, while its angular momentum L stays fixed in space.
+#include "oscillator.h"
 #include "01_integrators/chapter.h"
 #include "01_integrators/forces.h"
 #include "01_integrators/integrate.h"
@@ -16,8 +17,6 @@ using namespace stepwise;
 using namespace stepwise::test;
 
 namespace {
-
-bool isDoubleBuild() { return sizeof(Real) == sizeof(double); }
 
 struct SpinRecord {
     double initialMomentum = 0, initialEnergy = 0;

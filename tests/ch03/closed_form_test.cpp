@@ -11,6 +11,7 @@
 #include <vector>
 
 using namespace stepwise;
+using stepwise::test::finiteQuery;
 using stepwise::Random;
 using Vec3d = Eigen::Vector3d;
 
@@ -18,10 +19,6 @@ namespace {
 
 // Float keeps about 7 digits: a value of size `size` is good to a few ulps of it.
 const double kUlps = 16 * double(kEpsilon);
-
-bool finiteQuery(const ContactQuery& query) {
-    return isFinite(query.depth) && isFinite(query.normal) && isFinite(query.pointA) && isFinite(query.pointB);
-}
 
 /// Expected contact of two fat points (double): depth and normal from the cores.
 void checkAgainstCores(const ContactQuery& query, const Vec3d& coreA, double radiusA, const Vec3d& coreB,

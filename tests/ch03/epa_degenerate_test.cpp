@@ -11,14 +11,10 @@
 #include <string>
 
 using namespace stepwise;
+using stepwise::test::finiteQuery;
 using stepwise::Random;
 
 namespace {
-
-bool finiteQuery(const ContactQuery& query) {
-    return isFinite(query.depth) && isFinite(query.normal) && isFinite(query.pointA) && isFinite(query.pointB) &&
-           std::abs(query.normal.norm() - Real(1)) < Real(1e-4);
-}
 
 /// Runs a box pair and checks it against the SAT oracle: depth to `relative` of the exact
 /// depth (plus a few ulps of the size), normal a direction of least overlap, points on surfaces.

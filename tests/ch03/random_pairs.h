@@ -5,12 +5,19 @@
 #include "02_gjk/box_oracle.h"
 #include "app/bench_util.h"
 #include "math/random.h"
+#include "03_epa/narrowphase.h"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
 namespace stepwise::test {
+
+/// A query every number of which is finite, with a unit normal: what any input must get.
+inline bool finiteQuery(const ContactQuery& query) {
+    return isFinite(query.depth) && isFinite(query.normal) && isFinite(query.pointA) && isFinite(query.pointB) &&
+           std::abs(query.normal.norm() - Real(1)) < Real(1e-4);
+}
 
 /// Signed distance from a point to a box's surface (negative inside), in double.
 inline double boxSurfaceDistance(const Vec3& point, const Vec3& halfExtents, const Transform& pose) {

@@ -1,6 +1,7 @@
 // Chapter 6's manifolds against an independent reference (tests/ch06/sat_reference.h: SAT over
 // faces and edge pairs, then clipping, in double): box-box in face-face, edge-face and edge-edge
 // contact, box-hull and hull-hull; the reduction to four; round shapes; degenerate input.
+#include "ch06/manifold_fixture.h"
 #include "06_manifolds/clipping.h"
 #include "06_manifolds/manifold.h"
 #include "06_manifolds/polytope_faces.h"
@@ -16,6 +17,7 @@
 #include <string>
 
 using namespace stepwise;
+using namespace stepwise::test;
 
 namespace {
 
@@ -32,12 +34,6 @@ constexpr double kPointTolerance = sizeof(Real) == sizeof(double) ? 1e-5 : 2e-5;
 
 /// Tolerance the reference uses to prefer faces, as the engine does.
 constexpr double kFaceTolerance = 0.0005;
-
-Quat axisAngle(const Vec3& axis, double degrees) {
-    return Quat(Eigen::AngleAxis<Real>(static_cast<Real>(degrees * 3.14159265358979323846 / 180.0), axis.normalized()));
-}
-
-Transform pose(const Vec3& position, const Quat& rotation = Quat::Identity()) { return Transform{position, rotation}; }
 
 std::string describe(const Contact& contact) {
     std::ostringstream text;
@@ -88,9 +84,6 @@ void requireMatchesReference(const Shape& a, const Transform& ta, const Shape& b
     for (int i = 0; i < contact.pointCount; ++i) deepestEngine = std::max(deepestEngine, static_cast<double>(contact.points[i].depth));
     REQUIRE(std::abs(deepestEngine - deepestExpected) < kPointTolerance);
 }
-
-const Shape kUnitBox = Shape::box(Vec3(Real(0.5), Real(0.5), Real(0.5)));
-const Shape kSlab = Shape::box(Vec3(1, Real(0.25), Real(0.75)));
 
 Shape octahedronHull(Real size) {
     return Shape::convex({Vec3(size, 0, 0), Vec3(-size, 0, 0), Vec3(0, size, 0), Vec3(0, -size, 0), Vec3(0, 0, size),

@@ -1,6 +1,7 @@
 // Chapter 6's persistence: feature ids that survive a small motion, matching that carries the
 // impulses (by id, then by anchor distance), the life cycle of a pair's record, and the stage in a
 // running pipeline (chapter 5's, with updateManifolds as its narrowphase).
+#include "ch06/manifold_fixture.h"
 #include "05_sap/chapter.h"
 #include "06_manifolds/manifold.h"
 #include "06_manifolds/persistence.h"
@@ -14,17 +15,9 @@
 #include <vector>
 
 using namespace stepwise;
+using namespace stepwise::test;
 
 namespace {
-
-Quat axisAngle(const Vec3& axis, double degrees) {
-    return Quat(Eigen::AngleAxis<Real>(static_cast<Real>(degrees * 3.14159265358979323846 / 180.0), axis.normalized()));
-}
-
-Transform pose(const Vec3& position, const Quat& rotation = Quat::Identity()) { return Transform{position, rotation}; }
-
-const Shape kUnitBox = Shape::box(Vec3(Real(0.5), Real(0.5), Real(0.5)));
-const Shape kSlab = Shape::box(Vec3(1, Real(0.25), Real(0.75)));
 
 std::vector<std::uint32_t> sortedIds(const Contact& contact) {
     std::vector<std::uint32_t> ids;

@@ -17,7 +17,6 @@ namespace {
 using test::addPost;
 using test::boxBody;
 using test::jointBetween;
-using test::kDegree;
 
 /// A 1 m rod (10 cm square) hanging from a hinge about z at the origin, turned by `angle`.
 struct Pendulum {

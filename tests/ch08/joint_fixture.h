@@ -5,7 +5,6 @@
 
 namespace stepwise::test {
 
-constexpr Real kDegree = kPi / 180;
 
 /// A static 10 cm cube at the origin.
 inline int addPost(World& world) { return addStaticBox(world, "post", Vec3::Zero(), Vec3::Constant(Real(0.05))); }

@@ -17,7 +17,6 @@ namespace {
 using test::addPost;
 using test::boxBody;
 using test::jointBetween;
-using test::kDegree;
 
 /// A 20 kg block on a vertical slider from the post, limits and motor as given.
 World sliderWorld(int& body, std::optional<std::pair<Real, Real>> limits, std::optional<JointMotor> motor,

@@ -24,7 +24,6 @@ using namespace stepwise;
 
 namespace {
 
-constexpr Real kDegree = kPi / 180;
 
 bool finiteState(const World& world) {
     for (const Body& body : world.bodies)
