@@ -1,5 +1,7 @@
 #include "09_debug/body_edit.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <stdexcept>
 

@@ -50,10 +50,14 @@ PairDiagnosis diagnosePair(const World& world, int bodyA, int bodyB);
 /// the ground"). Empty (-1, -1) when the world has fewer than two bodies.
 BodyPair chosenPair(const World& world, const HitTree& tree, const HitSelection& selection, int selectedBody);
 
-/// Where the A - B overlay goes: beside the scene, above the ground, so it never hides the bodies.
-Vec3 minkowskiAnchor(const World& world);
+/// Where the A - B overlay goes: to the right of the moving bodies, clear of them by its own size,
+/// so it never hides them.
+Vec3 minkowskiAnchor(const World& world, const PairDiagnosis& diagnosis);
 
-/// Draws the enabled views. `selectedBody` (-1: none) and `selection` choose what is highlighted.
+/// Draws the enabled views, the bodies themselves included (colliders): a demo draws this instead
+/// of drawWorld, so the selected body and the bodies it touches can be drawn as wireframes rather
+/// than solids. `selectedBody` (-1: none) and `selection` choose what is highlighted: the selected
+/// contact point as a larger white cube, its pair's bodies as wireframes.
 void drawDebugViews(DebugDraw& draw, const World& world, const DebugViews& views, int selectedBody,
                     const HitTree& tree, const HitSelection& selection);
 

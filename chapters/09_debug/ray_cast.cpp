@@ -125,6 +125,41 @@ RayHit rayCapsule(const Ray& ray, const Transform& pose, Real radius, Real halfH
     return withinReach(best, ray);
 }
 
+RayHit rayHullPlanes(const Ray& ray, const Transform& pose, const ConvexHull& hull) {
+    const Mat3 toLocal = pose.rotation.toRotationMatrix().transpose();
+    const Vec3 origin = toLocal * (ray.origin - pose.position);
+    const Vec3 direction = toLocal * ray.direction;
+    Real entry = -kRealMax, exit = kRealMax;
+    const HullFace* entryFace = nullptr;
+    bool inside = true;
+    for (const HullFace& face : hull.faces) {
+        const Real height = face.normal.dot(origin) - face.offset;   // > 0: outside this plane
+        const Real approach = face.normal.dot(direction);
+        inside = inside && height <= 0;
+        if (approach == 0) {
+            if (height > 0) return RayHit{};
+            continue;
+        }
+        const Real crossing = -height / approach;
+        if (approach < 0) {
+            if (crossing > entry) {
+                entry = crossing;
+                entryFace = &face;
+            }
+        } else {
+            exit = std::min(exit, crossing);
+        }
+    }
+    if (inside) return insideHit(ray);
+    if (!entryFace || entry > exit || entry < 0) return RayHit{};
+    RayHit result;
+    result.hit = true;
+    result.distance = entry;
+    result.point = ray.origin + entry * ray.direction;
+    result.normal = pose.rotation * entryFace->normal;
+    return withinReach(result, ray);
+}
+
 // [ch09-ray-gjk]
 RayHit rayConvex(const Ray& ray, const ConvexProxy& shape, int maxIterations) {
     // van den Bergen's loop. x = origin + t direction; the simplex keeps support points p_i of the

@@ -39,6 +39,11 @@ RayHit rayBox(const Ray& ray, const Transform& pose, const Vec3& halfExtents);
 RayHit rayCapsule(const Ray& ray, const Transform& pose, Real radius, Real halfHeight);
 // [ch09-ray-closed-forms]
 
+/// A convex hull by its face planes (Cyrus and Beck 1978): the ray enters the latest of the planes
+/// it crosses inwards and must not leave any before. Exact for polytopes; what the GJK cast of a
+/// hull is measured against.
+RayHit rayHullPlanes(const Ray& ray, const Transform& pose, const ConvexHull& hull);
+
 /// GJK ray cast against any convex proxy: the ray's point x = origin + t direction walks towards
 /// the shape, each support plane the simplex finds moving t forward, until x is within a
 /// relative tolerance of the shape.

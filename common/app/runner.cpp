@@ -98,7 +98,9 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
     const bool showProgress = options.progress && stderrIsTerminal();
     std::map<std::string, double> stageTotals;
     for (long frame = 0; frame < options.frames; ++frame) {
+        if (options.beforeFrame) options.beforeFrame(world);
         pipeline.step(world);
+        if (options.afterFrame) options.afterFrame(world);
         stats.stepMs.push_back(pipeline.lastStepMs());
         for (const Stage& stage : pipeline.stages())
             if (stage.enabled) stageTotals[stageGroup(stage.name)] += stage.lastMs;

@@ -5,6 +5,7 @@
 #include "app/registry.h"
 #include "world/report.h"
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -14,6 +15,10 @@ struct RunOptions {
     long frames = 600;
     int maxChapter = 99;           // use the pipeline of this chapter (default: the latest)
     bool progress = false;         // progress line on stderr (only when it is a terminal)
+    /// Called before each frame's step and after it (chapter 9's recordings apply hand edits
+    /// before a frame and hash the state after it). A throw from either ends the run.
+    std::function<void(World& world)> beforeFrame;
+    std::function<void(World& world)> afterFrame;
 };
 
 /// Runs `frames` frames and measures them. The world is advanced in place.

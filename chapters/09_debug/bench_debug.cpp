@@ -1,0 +1,188 @@
+// `stepwise bench debug`: the cost of the tools, so a reader knows what leaving them on costs.
+//
+//   history   pyramids of 10 to 528 boxes: the step's CPU time, the time to record a frame into
+//             the 120-frame ring, the memory a frame takes, and a rewind of 60 frames, 60
+//             speculative steps and a resume.
+//   ray casts random rays at a sphere, a box, a capsule and a hull: the closed forms' time per
+//             cast, and the GJK cast's time and largest deviation from them as its iteration cap
+//             grows (the hull's reference is its face planes).
+#include "09_debug/benches.h"
+
+#include "06_manifolds/scenes.h"
+#include "08_joints/chapter.h"
+#include "09_debug/debug_session.h"
+#include "09_debug/ray_cast.h"
+#include "app/bench_util.h"
+#include "math/random.h"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+namespace stepwise {
+
+namespace {
+
+struct HistoryCost {
+    int bodies = 0;
+    double stepMs = 0, recordMs = 0, rewindResumeMs = 0;
+    double bytesPerFrame = 0;
+};
+
+HistoryCost measureHistory(int rows) {
+    World world = buildPyramid(rows);
+    Pipeline pipeline = makeChapter08Pipeline(world);
+    for (int frame = 0; frame < 30; ++frame) pipeline.step(world);   // settle and grow every vector
+    HistoryCost cost;
+    cost.bodies = static_cast<int>(world.bodies.size());
+    History history;
+    std::vector<double> steps, records;
+    for (int frame = 0; frame < 2 * kHistoryFrames; ++frame) {
+        ThreadStopwatch clock;
+        pipeline.step(world);
+        steps.push_back(clock.seconds() * 1e3);
+        clock.restart();
+        history.record(world);
+        records.push_back(clock.seconds() * 1e3);
+    }
+    cost.stepMs = median(steps);
+    cost.recordMs = median(records);   // the second lap: slots reused, as in a long session
+    cost.bytesPerFrame = double(history.bytes()) / double(history.size());
+    DebugSession session(world, std::move(pipeline));
+    for (int frame = 0; frame < 60; ++frame) session.step();
+    ThreadStopwatch clock;
+    session.rewindBy(60);
+    for (int frame = 0; frame < 60; ++frame) session.step();
+    const double withSteps = clock.seconds() * 1e3;
+    session.resume();
+    cost.rewindResumeMs = withSteps;
+    return cost;
+}
+
+struct Target {
+    const char* name;
+    Shape shape;
+    Transform pose;
+};
+
+std::vector<Target> targets() {
+    const Quat tilt(Eigen::AngleAxis<Real>(Real(0.7), Vec3(1, 2, 3).normalized()));
+    std::vector<Vec3> gem{Vec3(0, Real(0.35), 0), Vec3(0, Real(-0.25), 0)};
+    for (int i = 0; i < 8; ++i)
+        gem.push_back(Vec3(Real(0.3) * std::cos(Real(i) * kPi / 4), Real(0.05), Real(0.3) * std::sin(Real(i) * kPi / 4)));
+    return {{"sphere", Shape::sphere(Real(0.5)), Transform{Vec3(Real(0.2), Real(1), 0), Quat::Identity()}},
+            {"box", Shape::box(Vec3(Real(0.5), Real(0.3), Real(0.2))), Transform{Vec3(0, Real(1), Real(0.1)), tilt}},
+            {"capsule", Shape::capsule(Real(0.3), Real(0.4)), Transform{Vec3(Real(-0.1), Real(1), 0), tilt}},
+            {"hull", Shape::convex(gem), Transform{Vec3(0, Real(1), 0), tilt}}};
+}
+
+/// Rays from 3 m away aimed at random points of the shape's bounds: most hit, some graze or miss.
+std::vector<Ray> aimedRays(const Target& target, int count, Random& random) {
+    const Aabb bounds = computeAabb(target.shape, target.pose);
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 from = target.pose.position + 3 * random.unitVector();
+        const Vec3 fraction(random.uniformReal(0, 1), random.uniformReal(0, 1), random.uniformReal(0, 1));
+        const Vec3 at = bounds.min + (bounds.max - bounds.min).cwiseProduct(fraction);
+        rays.push_back(Ray{from, (at - from).normalized(), kRealMax});
+    }
+    return rays;
+}
+
+RayHit reference(const Ray& ray, const Target& target) {
+    if (target.shape.type == ShapeType::Convex) return rayHullPlanes(ray, target.pose, *target.shape.hull);
+    return castRay(ray, target.shape, target.pose);
+}
+
+}  // namespace
+
+BenchEntry debugBench() {
+    BenchEntry entry;
+    entry.name = "debug";
+    entry.chapter = 9;
+    entry.description = "history cost per frame against scene size, rewind and resume, GJK ray cast error against its iteration cap";
+    entry.files = {{BenchFile::Kind::Csv, "", "history: step, record and memory per frame against body count"},
+                   {BenchFile::Kind::Csv, "-rays", "ray casts: time per cast and deviation from the closed form"},
+                   {BenchFile::Kind::Plot, "", "history: step and record time against body count"},
+                   {BenchFile::Kind::Plot, "-rays", "GJK ray cast deviation against time per cast, iteration cap growing"}};
+    entry.measure = [](BenchRun& bench) {
+        const bool quick = bench.quick();
+        const std::vector<int> rows = quick ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8, 16, 24, 32};
+        CsvTable history({"bodies", "step (ms)", "record (ms)", "record / step", "bytes per frame", "120 frames (MB)",
+                          "rewind 60 + 60 steps + resume (ms)"});
+        PlotSeries stepSeries, recordSeries;
+        stepSeries.title = "step (chapter 8 pipeline)";
+        recordSeries.title = "record one frame";
+        bench.progress().stage("history", long(rows.size()));
+        for (int count : rows) {
+            const HistoryCost cost = measureHistory(count);
+            history.addRow({std::to_string(cost.bodies), formatNumber(cost.stepMs), formatNumber(cost.recordMs),
+                            formatNumber(100 * cost.recordMs / cost.stepMs, 3) + "%", formatNumber(cost.bytesPerFrame),
+                            formatNumber(cost.bytesPerFrame * kHistoryFrames / 1e6, 3), formatNumber(cost.rewindResumeMs)});
+            stepSeries.x.push_back(cost.bodies);
+            stepSeries.y.push_back(cost.stepMs);
+            recordSeries.x.push_back(cost.bodies);
+            recordSeries.y.push_back(cost.recordMs);
+            bench.progress().advance();
+        }
+
+        const int rayCount = quick ? 2000 : 20000;
+        const std::vector<int> caps{1, 2, 3, 4, 6, 8, 16, 64};
+        CsvTable rays({"shape", "method", "iteration cap", "ns per cast", "hits", "largest deviation (m)"});
+        PlotSpec rayPlot("GJK ray cast: deviation from the closed form against time per cast (" + std::string(realTypeName()) + ")",
+                         "time per cast (ns, CPU)", "largest deviation (m)");
+        rayPlot.caption = std::to_string(rayCount) + " rays per shape from 3 m; along each line the iteration cap grows " +
+                          "1 to 64; a deviation of 0 is drawn at 1e-12 m.";
+        bench.progress().stage("ray casts", long(targets().size()));
+        for (const Target& target : targets()) {
+            Random random(9);
+            const std::vector<Ray> aimed = aimedRays(target, rayCount, random);
+            std::vector<RayHit> exact(aimed.size());
+            ThreadStopwatch clock;
+            for (std::size_t i = 0; i < aimed.size(); ++i) exact[i] = reference(aimed[i], target);
+            const double exactNs = clock.seconds() * 1e9 / double(aimed.size());
+            const long exactHits = std::count_if(exact.begin(), exact.end(), [](const RayHit& hit) { return hit.hit; });
+            rays.addRow({target.name, target.shape.type == ShapeType::Convex ? "face planes" : "closed form", "-",
+                         formatNumber(exactNs), std::to_string(exactHits), "0 (reference)"});
+            PlotSeries series;
+            series.title = target.name;
+            const ConvexProxy proxy{&target.shape, target.pose};
+            for (int cap : caps) {
+                std::vector<RayHit> cast(aimed.size());
+                clock.restart();
+                for (std::size_t i = 0; i < aimed.size(); ++i) cast[i] = rayConvex(aimed[i], proxy, cap);
+                const double ns = clock.seconds() * 1e9 / double(aimed.size());
+                double deviation = 0;
+                long hits = 0;
+                for (std::size_t i = 0; i < aimed.size(); ++i) {
+                    hits += cast[i].hit ? 1 : 0;
+                    if (cast[i].hit != exact[i].hit) deviation = std::max(deviation, 1.0);   // a miss counted as 1 m
+                    else if (cast[i].hit) deviation = std::max(deviation, double(std::abs(cast[i].distance - exact[i].distance)));
+                }
+                rays.addRow({target.name, "GJK", std::to_string(cap), formatNumber(ns), std::to_string(hits), formatNumber(deviation)});
+                series.x.push_back(ns);
+                series.y.push_back(std::max(deviation, 1e-12));
+            }
+            rayPlot.series.push_back(series);
+            bench.progress().advance();
+        }
+        bench.progress().endStage();
+
+        std::ostream& out = bench.out();
+        out << "history (" << realTypeName() << ", pyramids through chapter 8's pipeline, medians of " << 2 * kHistoryFrames
+            << " frames):\n"
+            << history.toText() << "\nray casts (" << rayCount << " rays per shape):\n" << rays.toText();
+        bench.writeCsv(history);
+        bench.writeCsv(rays, "-rays");
+        PlotSpec historyPlot("History: recording a frame beside stepping it (" + std::string(realTypeName()) + ")",
+                             "bodies", "ms per frame (CPU, median)");
+        historyPlot.series = {stepSeries, recordSeries};
+        historyPlot.caption = "Pyramids of boxes through chapter 8's pipeline; recording copies the whole world into the "
+                              "120-frame ring (slots reused).";
+        bench.writePlot(historyPlot);
+        bench.writePlot(rayPlot, "-rays");
+    };
+    return entry;
+}
+
+}  // namespace stepwise

@@ -1,0 +1,211 @@
+#include "09_debug/recording.h"
+
+#include "09_debug/debug_session.h"
+#include "app/runner.h"
+#include "world/json_reader.h"
+#include "world/report.h"
+#include "world/scene.h"
+#include "world/state_hash.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace stepwise {
+
+namespace {
+
+constexpr const char* kFormat = "stepwise-recording";
+constexpr int kVersion = 1;
+
+// Recordings must give back the exact bits: numbers are written as doubles (every float is one),
+// which JSON prints with enough digits to read back unchanged, never through tidyNumber.
+Json exact(const Vec3& v) { return Json::array({double(v.x()), double(v.y()), double(v.z())}); }
+Json exact(const Quat& q) { return Json::array({double(q.x()), double(q.y()), double(q.z()), double(q.w())}); }
+
+Real exactNumber(const JsonCursor& cursor) {
+    if (!cursor.json().is_number()) cursor.fail("must be a number");
+    return Real(cursor.json().get<double>());
+}
+Vec3 exactVec3(const JsonCursor& cursor) {
+    if (!cursor.json().is_array() || cursor.json().size() != 3) cursor.fail("must be an array of 3 numbers [x, y, z]");
+    return Vec3(exactNumber(cursor.element(0)), exactNumber(cursor.element(1)), exactNumber(cursor.element(2)));
+}
+Quat exactQuat(const JsonCursor& cursor) {
+    if (!cursor.json().is_array() || cursor.json().size() != 4) cursor.fail("must be an array of 4 numbers [x, y, z, w]");
+    return Quat(exactNumber(cursor.element(3)), exactNumber(cursor.element(0)), exactNumber(cursor.element(1)),
+                exactNumber(cursor.element(2)));
+}
+
+Json editToJson(const World& world, const BodyEdit& edit) {
+    Json inertia = Json::array();
+    for (int row = 0; row < 3; ++row) inertia.push_back(exact(Vec3(edit.inertiaLocal.row(row).transpose())));
+    return {{"frame", edit.frame},
+            {"body", world.bodies.at(static_cast<std::size_t>(edit.body)).name},
+            {"position", exact(edit.transform.position)},
+            {"orientation", exact(edit.transform.rotation)},
+            {"linear_velocity", exact(edit.linearVelocity)},
+            {"angular_velocity", exact(edit.angularVelocity)},
+            {"mass", double(edit.mass)},
+            {"inertia", inertia}};
+}
+
+std::uint64_t parseHash(const JsonCursor& cursor) {
+    const std::string text = cursor.string();
+    char* end = nullptr;
+    const unsigned long long value = std::strtoull(text.c_str(), &end, 16);
+    if (text.size() != 18 || text.compare(0, 2, "0x") != 0 || !end || *end != '\0')
+        cursor.fail("must be a hash \"0x\" followed by 16 hex digits (got \"" + text + "\")");
+    return value;
+}
+
+}  // namespace
+
+Recording recordingOf(const DebugSession& session, int chapter) {
+    Recording recording;
+    recording.chapter = chapter;
+    recording.sceneJson = saveSceneToString(session.startWorld());
+    recording.edits = session.edits();
+    recording.frameHashes = session.frameHashes();
+    return recording;
+}
+
+// [ch09-record-run]
+Recording recordRun(const Registry& registry, const std::string& sceneNameOrPath, int chapter, long frames) {
+    Recording recording;
+    recording.chapter = chapter;
+    recording.sceneJson = saveSceneToString(loadSceneOrBuiltin(registry, sceneNameOrPath));
+    // The run starts from the scene as written, not as built: the replay will read the same text,
+    // so both start from the same bits whatever rounding the scene format does.
+    World world = loadSceneFromString(recording.sceneJson, sceneNameOrPath, registry.sceneGenerators());
+    Pipeline pipeline = registry.makePipeline(world, chapter);
+    RunOptions options;
+    options.frames = frames;
+    options.maxChapter = chapter;
+    options.afterFrame = [&](World& stepped) { recording.frameHashes.push_back(stateHash(stepped)); };
+    const RunStats stats = runHeadless(world, pipeline, registry, options);
+    recording.reportJson = reportToJson(world, stats, engineVersion());
+    return recording;
+}
+// [ch09-record-run]
+
+std::string recordingToJson(const Recording& recording) {
+    const World scene = loadSceneFromString(recording.sceneJson, "recording scene");
+    Json json = {{"format", kFormat}, {"version", kVersion}, {"engine", engineVersion()}, {"chapter", recording.chapter}};
+    json["frames"] = recording.frameHashes.size();
+    json["scene"] = Json::parse(recording.sceneJson);
+    json["edits"] = Json::array();
+    for (const BodyEdit& edit : recording.edits) json["edits"].push_back(editToJson(scene, edit));
+    json["frame_hashes"] = Json::array();
+    for (std::uint64_t hash : recording.frameHashes) json["frame_hashes"].push_back(hexHash(hash));
+    if (!recording.reportJson.empty()) json["report"] = Json::parse(recording.reportJson);
+    return json.dump(2) + "\n";
+}
+
+Recording recordingFromJson(const std::string& text, const std::string& source) {
+    const Json json = parseStrictJson(text, source);
+    const JsonCursor root(json, "");
+    if (!json.is_object()) root.fail(source + " must be a JSON object (a recording: docs/scene-format.md)");
+    root.expectObject({"format", "version", "engine", "chapter", "frames", "scene", "edits", "frame_hashes", "report"});
+    if (root.child("format").string() != kFormat) root.child("format").fail(std::string("must be \"") + kFormat + "\"");
+    if (root.child("version").integer(1, 1000) != kVersion) root.child("version").fail("must be 1 (this program reads version 1)");
+    const std::string engine = root.child("engine").string();
+    if (engine != engineVersion())
+        root.child("engine").fail("recorded by " + engine + ", but this is " + engineVersion() +
+                                  ": the frame hashes hold the exact bits of that build and cannot be met here");
+    Recording recording;
+    recording.chapter = root.child("chapter").integer(1, 99);
+    const JsonCursor scene = root.child("scene");
+    if (!scene.json().is_object()) scene.fail("must be a scene object (docs/scene-format.md)");
+    recording.sceneJson = scene.json().dump();
+    const World world = loadSceneFromString(recording.sceneJson, source + " scene");
+    const JsonCursor hashes = root.child("frame_hashes");
+    const std::size_t frames = hashes.arraySizeAtMost(std::size_t(100000000));
+    for (std::size_t i = 0; i < frames; ++i) recording.frameHashes.push_back(parseHash(hashes.element(i)));
+    if (root.child("frames").integer(0, 100000000) != static_cast<int>(frames))
+        root.child("frames").fail("must equal the number of frame_hashes (" + std::to_string(frames) + ")");
+    const JsonCursor edits = root.child("edits");
+    long previousFrame = -1;
+    for (std::size_t i = 0; i < edits.arraySize(); ++i) {
+        const JsonCursor entry = edits.element(i);
+        entry.expectObject({"frame", "body", "position", "orientation", "linear_velocity", "angular_velocity", "mass", "inertia"});
+        BodyEdit edit;
+        edit.frame = entry.child("frame").integer(0, 100000000);
+        if (edit.frame < previousFrame) entry.child("frame").fail("edits must be in frame order");
+        previousFrame = edit.frame;
+        const std::string name = entry.child("body").string();
+        edit.body = world.findBody(name);
+        if (edit.body < 0) entry.child("body").fail("no body named \"" + name + "\" in the recording's scene");
+        edit.transform.position = exactVec3(entry.child("position"));
+        edit.transform.rotation = exactQuat(entry.child("orientation"));
+        edit.linearVelocity = exactVec3(entry.child("linear_velocity"));
+        edit.angularVelocity = exactVec3(entry.child("angular_velocity"));
+        edit.mass = exactNumber(entry.child("mass"));
+        const JsonCursor inertia = entry.child("inertia");
+        if (inertia.arraySize() != 3) inertia.fail("must be 3 rows of 3 numbers");
+        for (int row = 0; row < 3; ++row) edit.inertiaLocal.row(row) = exactVec3(inertia.element(std::size_t(row))).transpose();
+        const std::string problem = validateEdit(world, edit);
+        if (!problem.empty()) entry.fail(problem);
+        recording.edits.push_back(edit);
+    }
+    if (const auto report = root.optional("report")) {
+        if (!report->json().is_object()) report->fail("must be a run report object");
+        recording.reportJson = report->json().dump(2);
+    }
+    return recording;
+}
+
+Recording readRecordingFile(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw SceneError("", "cannot read recording '" + path + "'");
+    std::stringstream text;
+    text << in.rdbuf();
+    return recordingFromJson(text.str(), path);
+}
+
+void writeRecordingFile(const std::string& path, const Recording& recording) {
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error("cannot write recording '" + path + "'");
+    out << recordingToJson(recording);
+    if (!out) throw std::runtime_error("writing recording '" + path + "' failed");
+}
+
+std::string comparableReport(const std::string& reportJson) {
+    if (reportJson.empty()) return "";
+    Json report = Json::parse(reportJson);
+    report.erase("timing_ms");
+    return report.dump(2);
+}
+
+// [ch09-replay]
+ReplayResult replay(const Registry& registry, const Recording& recording) {
+    World world = loadSceneFromString(recording.sceneJson, "recording scene", registry.sceneGenerators());
+    Pipeline pipeline = registry.makePipeline(world, recording.chapter);
+    ReplayResult result;
+    std::size_t nextEdit = 0;
+    RunOptions options;
+    options.frames = static_cast<long>(recording.frameHashes.size());
+    options.maxChapter = recording.chapter;
+    options.beforeFrame = [&](World& stepped) {
+        for (; nextEdit < recording.edits.size() && recording.edits[nextEdit].frame <= stepped.frame; ++nextEdit)
+            applyEdit(stepped, recording.edits[nextEdit]);
+    };
+    options.afterFrame = [&](World& stepped) {
+        const std::uint64_t hash = stateHash(stepped);
+        const std::size_t index = static_cast<std::size_t>(result.frames++);
+        if (result.firstMismatch < 0 && hash != recording.frameHashes[index]) {
+            result.firstMismatch = result.frames;
+            result.expectedHash = recording.frameHashes[index];
+            result.actualHash = hash;
+        }
+    };
+    const RunStats stats = runHeadless(world, pipeline, registry, options);
+    result.reportJson = reportToJson(world, stats, engineVersion());
+    result.reportMatches = !recording.reportJson.empty() &&
+                           comparableReport(result.reportJson) == comparableReport(recording.reportJson);
+    return result;
+}
+// [ch09-replay]
+
+}  // namespace stepwise

@@ -1,0 +1,93 @@
+#include "09_debug/scenes.h"
+
+#include "04_pgs/scenes.h"
+#include "app/registry.h"
+
+#include <cmath>
+
+namespace stepwise {
+
+namespace {
+
+World namedWorld(const std::string& name) {
+    World world;
+    world.name = name;
+    return world;
+}
+
+}  // namespace
+
+World buildDebugDrop() {
+    World world = namedWorld("debug-drop");
+    addGroundPlane(world);
+    const Quat tilt(Eigen::AngleAxis<Real>(Real(0.5), Vec3(1, 0, 1).normalized()));
+    addCrate(world, "box", Vec3(0, Real(1.2), 0), Vec3(Real(0.3), Real(0.2), Real(0.25)), 2, Material{}, tilt);
+    // Higher up and beside it, so its first contact comes on a later frame than the box's.
+    addBall(world, "ball", Vec3(Real(1.0), Real(2.5), Real(0.2)), Real(0.25), 1, Material{});
+    return world;
+}
+
+World buildDebugHullOnBox() {
+    World world = namedWorld("debug-hull-on-box");
+    addGroundPlane(world);
+    addCrate(world, "crate", Vec3(0, Real(0.3), 0), Vec3(Real(0.6), Real(0.3), Real(0.6)), 20, Material{});
+    // A gem: an octagon ring and two apexes, tilted so it lands on an edge and rolls onto a face.
+    std::vector<Vec3> points{Vec3(0, Real(0.35), 0), Vec3(0, Real(-0.25), 0)};
+    for (int i = 0; i < 8; ++i) {
+        const Real angle = Real(2) * kPi * Real(i) / 8;
+        points.push_back(Vec3(Real(0.3) * std::cos(angle), Real(0.05), Real(0.3) * std::sin(angle)));
+    }
+    BodyDef gem;
+    gem.name = "gem";
+    gem.shape = Shape::convex(points);
+    gem.transform = Transform{Vec3(Real(0.1), Real(1.4), 0), Quat(Eigen::AngleAxis<Real>(Real(0.6), Vec3::UnitZ()))};
+    gem.mass = 1;
+    addBody(world, gem);
+    return world;
+}
+
+World buildDebugTunnel() {
+    World world = namedWorld("debug-tunnel");
+    world.settings.gravity = Vec3::Zero();
+    world.settings.ccd = CcdMode::Off;   // the bug to find; `ccd: on` is the fix the page shows
+    addStaticBox(world, "wall", Vec3(0, 1, 0), Vec3(Real(0.05), 1, 1));
+    BodyDef plate;
+    plate.name = "plate";
+    plate.shape = Shape::box(Vec3(Real(0.02), Real(0.3), Real(0.3)));
+    plate.transform.position = Vec3(-2, 1, 0);
+    // 12 m/s: 20 cm a frame at 60 Hz, more than the wall and the plate are thick together (14 cm).
+    plate.linearVelocity = Vec3(12, 0, 0);
+    addBody(world, plate);
+    return world;
+}
+
+World buildDebugJitter() {
+    World world = namedWorld("debug-jitter");
+    world.settings.warmStarting = false;   // what makes it jitter; the page turns it back on
+    addGroundPlane(world);
+    for (int level = 0; level < 5; ++level)
+        addCrate(world, "box" + std::to_string(level), Vec3(0, Real(0.25) + Real(0.5) * Real(level), 0),
+                 Vec3::Constant(Real(0.25)), 1, Material{});
+    return world;
+}
+
+void addChapter09Scenes(Registry& registry) {
+    const auto add = [&](const char* name, const char* category, const char* observe, World (*build)()) {
+        registry.addScene(SceneEntry{name, 9, category, observe, build, {}});
+    };
+    add("debug-drop", "debugging",
+        "Hold Space: the run stops on the frame the box first touches the ground (Left Alt goes on); "
+        "then drag the timeline back and step the impact again",
+        buildDebugDrop);
+    add("debug-hull-on-box", "debugging",
+        "Turn on the EPA face and A - B views: the blue face is the one whose normal became the contact normal",
+        buildDebugHullOnBox);
+    add("debug-tunnel", "debugging",
+        "The plate passes the wall between two frames: rewind one frame at a time to see it never touched; set ccd on",
+        buildDebugTunnel);
+    add("debug-jitter", "debugging",
+        "Warm starting is off: select a contact in the hit tree and watch its impulse jump every frame; turn it on",
+        buildDebugJitter);
+}
+
+}  // namespace stepwise
