@@ -267,10 +267,10 @@ void DemoState::buildDrawList(DrawList& list, const ViewOptions& options) const 
     if (impulses) shown.contactNormals = false;
     drawDebugViews(list, world, shown, selectedBody, hitTree(), hitSelection());
     if (impulses) {
-        ContactDrawOptions impulses;
-        impulses.points = impulses.normals = false;
-        impulses.impulses = true;
-        drawContacts(list, world, impulses);
+        ContactDrawOptions arrows;
+        arrows.points = arrows.normals = false;
+        arrows.impulses = true;
+        drawContacts(list, world, arrows);
     }
     if (view_) view_->draw(world, list);
     if (!options.showLabels) list.labels.clear();

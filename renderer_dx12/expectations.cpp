@@ -4,6 +4,7 @@
 #include "debug_panel.h"
 #include "picking.h"
 #include "ui_shell.h"
+#include "world/contact_draw.h"
 #include "world/shape.h"
 
 #include <algorithm>
