@@ -135,6 +135,9 @@ int runOffscreen(DemoState& state, ViewOptions& view, const Options& options) {
         tools.perf.sample(std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count());
     }
     scriptBeforeFraming(state, options);
+    // Framed as the window frames a new scene (from frame 0), or, once a body is selected, as F
+    // frames it then: the A - B overlay of the selected body's pair is beside the bodies now.
+    const Framing framed = options.select.empty() ? state.initialFraming() : state.framing();
     DrawList list;
     // Dear ImGui lays auto-sized windows out over a couple of frames: build six, draw the
     // last. The camera is framed (from the scene at frame 0, as the window does on loading)
@@ -149,7 +152,7 @@ int runOffscreen(DemoState& state, ViewOptions& view, const Options& options) {
         state.buildDrawList(list, view);
         drawLabels(list, camera, io.DisplaySize.x, io.DisplaySize.y);
         ImGui::Render();
-        if (uiFrame == kFramingFrame) frameScene(camera, state.initialFraming(), view, io.DisplaySize.x, io.DisplaySize.y);
+        if (uiFrame == kFramingFrame) frameScene(camera, framed, view, io.DisplaySize.x, io.DisplaySize.y);
         if (uiFrame == kFramingFrame + 1) scriptAfterFraming(state, options, camera, io.DisplaySize.x, io.DisplaySize.y);
     }
     device.beginFrame();
@@ -160,7 +163,8 @@ int runOffscreen(DemoState& state, ViewOptions& view, const Options& options) {
     if (!options.screenshot.empty()) {
         target.savePng(options.screenshot);
         const bool impulses = view.showImpulses && chapterReading("solver") <= state.chapter();
-        writeExpectations(options.screenshot + ".txt", state, camera, impulses, options.width, options.height);
+        writeExpectations(options.screenshot + ".txt", state, camera, framed.bounds, impulses, !options.views.empty(),
+                          options.width, options.height);
         std::cout << "wrote " << options.screenshot << " (" << options.width << "x" << options.height << ", scene '"
                   << state.world().name << "', frame " << state.world().frame << ")\n";
     }

@@ -104,7 +104,7 @@ void viewsSection(DemoState& state, ViewOptions& view) {
     if (view.showImpulses && views.contactNormals) ImGui::TextDisabled("normals: the impulse arrows take their place");
     if (views.epaFace || views.gjkSimplex || views.minkowski) {
         const BodyPair pair = chosenPair(state.world(), state.hitTree(), state.hitSelection(), state.selectedBody);
-        ImGui::TextDisabled("pair: %s / %s (select a contact or a body to choose)", bodyName(state.world(), pair.bodyA).c_str(),
+        ImGui::TextDisabled("pair: %s / %s (click to choose)", bodyName(state.world(), pair.bodyA).c_str(),
                             bodyName(state.world(), pair.bodyB).c_str());
     }
 }

@@ -205,8 +205,8 @@ void pickableBodies(ExpectationWriter& writer, const DemoState& state, const Cam
 
 }  // namespace
 
-void writeExpectations(const std::string& path, const DemoState& state, const Camera& camera, bool impulsesShown, int width,
-                       int height) {
+void writeExpectations(const std::string& path, const DemoState& state, const Camera& camera, const Aabb& framed,
+                       bool impulsesShown, bool viewMarks, int width, int height) {
     ExpectationWriter writer(path, camera, width, height);
     std::ofstream& out = writer.out();
     out << "# Written by the demo with its screenshot: kind name x y r g b minShade (see tests/render/check_png.cpp)\n";
@@ -216,9 +216,8 @@ void writeExpectations(const std::string& path, const DemoState& state, const Ca
     if (hasPanel) out << "panel " << panel[0] << ' ' << panel[1] << ' ' << panel[2] << ' ' << panel[3] << '\n';
     if (hasDebugger) out << "debugger " << debugger[0] << ' ' << debugger[1] << ' ' << debugger[2] << ' ' << debugger[3] << '\n';
     writer.setCovered(hasPanel ? panel : nullptr, hasDebugger ? debugger : nullptr);
-    // Where the box the camera was framed from (the scene at frame 0, overlay included) lands:
+    // Where the box the camera was framed from (bodies and overlays) lands:
     // the test wants all of it on screen and clear of the panel and the debugger.
-    const Aabb& framed = state.initialFraming().bounds;
     if ((framed.min.array() <= framed.max.array()).all()) {
         float x0 = float(width), y0 = float(height), x1 = 0, y1 = 0;
         bool behind = false;
@@ -233,7 +232,7 @@ void writeExpectations(const std::string& path, const DemoState& state, const Ca
         else out << "framed " << x0 << ' ' << y0 << ' ' << x1 << ' ' << y1 << '\n';
     }
     if (state.views.colliders) bodyExpectations(writer, state);
-    viewExpectations(writer, state, impulsesShown);
+    if (viewMarks) viewExpectations(writer, state, impulsesShown);
     pickableBodies(writer, state, camera, width, height);
 }
 

@@ -13,7 +13,10 @@
 
 namespace stepwise::render {
 
-void writeExpectations(const std::string& path, const DemoState& state, const Camera& camera, bool impulsesShown, int width,
-                       int height);
+/// `viewMarks`: write the debug views' marks. Only a run told which views to show asks for them:
+/// it chose a scene and frame where they are in sight, while a default view may well have its
+/// contacts inside the overlap it shows (chapter 3's boxes).
+void writeExpectations(const std::string& path, const DemoState& state, const Camera& camera, const Aabb& framed,
+                       bool impulsesShown, bool viewMarks, int width, int height);
 
 }  // namespace stepwise::render

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,10 +20,15 @@ bool dragVec3(const char* label, Vec3& value, float speed, const char* format = 
     return true;
 }
 
-/// Euler angles in degrees, R = Rx(a) Ry(b) Rz(c) (Eigen's eulerAngles(0, 1, 2) convention).
+/// Euler angles in degrees, R = Rx(a) Ry(b) Rz(c), with a and c in [-180, 180] and b in
+/// [-90, 90]: from R's first row and last column (R02 = sin b, R12 = -sin a cos b,
+/// R22 = cos a cos b, R01 = -cos b sin c, R00 = cos b cos c). Eigen's eulerAngles() picks
+/// a in [0, 180] instead, which shows a 45 degree turn about z as (180, 180, -135).
 void toEuler(const Quat& rotation, float degrees[3]) {
-    const Vec3 angles = rotation.toRotationMatrix().eulerAngles(0, 1, 2);
-    for (int i = 0; i < 3; ++i) degrees[i] = float(angles[i]) * kDegrees;
+    const Mat3 r = rotation.toRotationMatrix();
+    degrees[0] = float(std::atan2(-r(1, 2), r(2, 2))) * kDegrees;
+    degrees[1] = float(std::asin(std::clamp(r(0, 2), Real(-1), Real(1)))) * kDegrees;
+    degrees[2] = float(std::atan2(-r(0, 1), r(0, 0))) * kDegrees;
 }
 
 Quat fromEuler(const float degrees[3]) {
@@ -61,22 +67,24 @@ void inspectorSection(Inspector& inspector, DemoState& state) {
     const bool dynamic = shown.type == BodyType::Dynamic;
     const bool moving = shown.type != BodyType::Static;
 
+    // Narrow fields, so the labels (with their units) fit in the debugger's width.
+    ImGui::PushItemWidth(190);
     bool changed = false;
     changed |= dragVec3("position (m)", draft.transform.position, 0.01f);
     float q[4] = {float(draft.transform.rotation.w()), float(draft.transform.rotation.x()), float(draft.transform.rotation.y()),
                   float(draft.transform.rotation.z())};
-    if (ImGui::InputFloat4("rotation (w x y z)", q, "%.4f")) {
+    if (ImGui::InputFloat4("rotation wxyz", q, "%.4f")) {
         draft.transform.rotation = Quat(Real(q[0]), Real(q[1]), Real(q[2]), Real(q[3]));
         changed = true;
     }
-    if (ImGui::DragFloat3("rotation (deg, x y z)", inspector.eulerDegrees, 0.5f, 0.0f, 0.0f, "%.1f")) {
+    if (ImGui::DragFloat3("rotation xyz (deg)", inspector.eulerDegrees, 0.5f, 0.0f, 0.0f, "%.1f")) {
         draft.transform.rotation = fromEuler(inspector.eulerDegrees);
         changed = true;
     }
     inspector.eulerActive = ImGui::IsItemActive();
     if (moving) {
         changed |= dragVec3("velocity (m/s)", draft.linearVelocity, 0.01f);
-        changed |= dragVec3("angular vel. (rad/s)", draft.angularVelocity, 0.01f);
+        changed |= dragVec3("ang. vel. (rad/s)", draft.angularVelocity, 0.01f);
     }
     if (dynamic) {
         float mass = float(draft.mass);
@@ -88,15 +96,16 @@ void inspectorSection(Inspector& inspector, DemoState& state) {
         // axes, not for a hull) are shown so a reader can see the matrix is not always diagonal.
         Vec3 diagonal = draft.inertiaLocal.diagonal();
         float d[3] = {float(diagonal.x()), float(diagonal.y()), float(diagonal.z())};
-        if (ImGui::InputFloat3("inertia diag (kg m2)", d, "%.4g")) {
+        if (ImGui::InputFloat3("inertia (kg m2)", d, "%.4g")) {
             for (int i = 0; i < 3; ++i) draft.inertiaLocal(i, i) = Real(d[i]);
             changed = true;
         }
         const Mat3& I = draft.inertiaLocal;
-        ImGui::TextDisabled("products: xy %.4g  xz %.4g  yz %.4g", double(I(0, 1)), double(I(0, 2)), double(I(1, 2)));
+        ImGui::TextDisabled("products of inertia: xy %.3g  xz %.3g  yz %.3g", double(I(0, 1)), double(I(0, 2)), double(I(1, 2)));
     } else if (shown.type == BodyType::Kinematic) {
         ImGui::TextDisabled("kinematic: moved by its velocity, no mass");
     }
+    ImGui::PopItemWidth();
 
     if (changed) {
         inspector.problem = validateEdit(world, draft);
