@@ -3,7 +3,7 @@
 //   chNN_demo --scene NAME --frames N --screenshot F.png --hidden   frame N offscreen, exit
 //   chNN_demo --frames N                                    window, exit after N presents
 //   offscreen scripting for the render tests (scripted.h): --views, --select, --pick X,Y,
-//   --select-contact, --rewind K, --open SECTIONS
+//   --select-contact, --rewind K, --open SECTIONS, --draw-every-frame
 // Console subsystem on purpose: errors and --list go to stdout/stderr on every platform.
 #include "expectations.h"
 #include "frame.h"
@@ -50,6 +50,7 @@ struct Options {
     bool selectContact = false;
     int rewind = -1;
     std::string open;
+    bool drawEveryFrame = false;
 };
 
 std::string title() { return "Stepwise chapter " + std::to_string(STEPWISE_DEMO_CHAPTER) + " demo (Direct3D 12)"; }
@@ -127,24 +128,8 @@ int runOffscreen(DemoState& state, ViewOptions& view, const Options& options) {
     Camera camera;
     DebugTools tools;
     openSections(options.open, tools);
-    const long frames = std::max(0L, options.frames);
-    // Each offscreen step stands for a displayed frame in the performance monitor.
-    for (long i = 0; i < frames; ++i) {
-        const auto before = std::chrono::steady_clock::now();
-        state.step();
-        tools.perf.sample(std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count());
-    }
-    scriptBeforeFraming(state, options);
-    // Framed as the window frames a new scene (from frame 0), or, once a body is selected, as F
-    // frames it then: the A - B overlay of the selected body's pair is beside the bodies now.
-    const Framing framed = options.select.empty() ? state.initialFraming() : state.framing();
     DrawList list;
-    // Dear ImGui lays auto-sized windows out over a couple of frames: build six, draw the
-    // last. The camera is framed (from the scene at frame 0, as the window does on loading)
-    // once the panels have their size, so the scene lands between them; a scripted pick
-    // follows, and the last frames lay out what it opened (the inspector, the hit tree).
-    constexpr int kUiFrames = 6, kFramingFrame = 2;
-    for (int uiFrame = 0; uiFrame < kUiFrames; ++uiFrame) {
+    const auto buildFrame = [&] {
         ImGui_ImplDX12_NewFrame();
         ImGui::NewFrame();
         drawShell(state, view, camera, shellInfo(device, 60), tools);
@@ -152,13 +137,42 @@ int runOffscreen(DemoState& state, ViewOptions& view, const Options& options) {
         state.buildDrawList(list, view);
         drawLabels(list, camera, io.DisplaySize.x, io.DisplaySize.y);
         ImGui::Render();
+    };
+    const auto drawFrame = [&](OffscreenTarget* readback) {
+        device.beginFrame();
+        recordFrame(device, renderer, target.view(), frameConstants(camera, view, options.width, options.height), list,
+                    ImGui::GetDrawData(), readback);
+        device.endFrame();
+    };
+    // Each offscreen frame stands for a displayed one in the performance monitor: a step, or with
+    // --draw-every-frame a step and the whole frame drawn (what the window pays, but the present).
+    const long frames = std::max(0L, options.frames);
+    constexpr long kFramingFrame = 2;
+    for (long i = 0; i < frames; ++i) {
+        const auto before = std::chrono::steady_clock::now();
+        state.step();
+        if (options.drawEveryFrame) {
+            buildFrame();
+            if (i == kFramingFrame) frameScene(camera, state.initialFraming(), view, io.DisplaySize.x, io.DisplaySize.y);
+            drawFrame(nullptr);
+        }
+        tools.perf.sample(std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count());
+    }
+    scriptBeforeFraming(state, options);
+    // Framed as the window frames a new scene (from frame 0), or, once a body is selected, as F
+    // frames it then: the A - B overlay of the selected body's pair is beside the bodies now.
+    const Framing framed = options.select.empty() ? state.initialFraming() : state.framing();
+    // Dear ImGui lays auto-sized windows out over a couple of frames: build six, draw the
+    // last. The camera is framed once the panels have their size, so the scene lands between
+    // them; a scripted pick follows, and the last frames lay out what it opened (the inspector,
+    // the hit tree).
+    constexpr int kUiFrames = 6;
+    for (int uiFrame = 0; uiFrame < kUiFrames; ++uiFrame) {
+        buildFrame();
         if (uiFrame == kFramingFrame) frameScene(camera, framed, view, io.DisplaySize.x, io.DisplaySize.y);
         if (uiFrame == kFramingFrame + 1) scriptAfterFraming(state, options, camera, io.DisplaySize.x, io.DisplaySize.y);
     }
-    device.beginFrame();
-    recordFrame(device, renderer, target.view(), frameConstants(camera, view, options.width, options.height), list,
-                ImGui::GetDrawData(), &target);
-    device.endFrame();
+    drawFrame(&target);
     device.waitIdle();
     if (!options.screenshot.empty()) {
         target.savePng(options.screenshot);
@@ -288,6 +302,8 @@ int run(int argc, char** argv) {
     app.add_option("--pick", options.pick, "offscreen: click at pixel X,Y once framed; prints the body picked");
     app.add_flag("--select-contact", options.selectContact, "offscreen: select the first contact point of the hit tree");
     app.add_option("--rewind", options.rewind, "offscreen: after the frames, rewind this many")->check(CLI::Range(0, 100000));
+    app.add_flag("--draw-every-frame", options.drawEveryFrame,
+                 "offscreen: draw each of the frames, not only the last (the performance monitor then measures whole frames)");
     app.add_option("--open", options.open, "offscreen: open these debugger sections (session, views, hits, inspector, perf)");
     try {
         app.parse(argc, argv);

@@ -73,7 +73,7 @@ void inspectorSection(Inspector& inspector, DemoState& state) {
     changed |= dragVec3("position (m)", draft.transform.position, 0.01f);
     float q[4] = {float(draft.transform.rotation.w()), float(draft.transform.rotation.x()), float(draft.transform.rotation.y()),
                   float(draft.transform.rotation.z())};
-    if (ImGui::InputFloat4("rotation wxyz", q, "%.4f")) {
+    if (ImGui::InputFloat4("rotation wxyz", q, "%.3f")) {
         draft.transform.rotation = Quat(Real(q[0]), Real(q[1]), Real(q[2]), Real(q[3]));
         changed = true;
     }
@@ -101,7 +101,7 @@ void inspectorSection(Inspector& inspector, DemoState& state) {
             changed = true;
         }
         const Mat3& I = draft.inertiaLocal;
-        ImGui::TextDisabled("products of inertia: xy %.3g  xz %.3g  yz %.3g", double(I(0, 1)), double(I(0, 2)), double(I(1, 2)));
+        ImGui::TextDisabled("products: xy %.2g  xz %.2g  yz %.2g", double(I(0, 1)), double(I(0, 2)), double(I(1, 2)));
     } else if (shown.type == BodyType::Kinematic) {
         ImGui::TextDisabled("kinematic: moved by its velocity, no mass");
     }

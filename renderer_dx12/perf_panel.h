@@ -13,6 +13,10 @@ namespace stepwise::render {
 class PerfMonitor {
 public:
     static constexpr std::size_t kSamples = 240;   // four seconds at 60 frames per second
+    /// The OS counts process CPU time in scheduler ticks (15.6 ms on Windows, 10 ms under wine),
+    /// coarser than a frame: per frame it reads 0 or a whole tick. Its mean over this many frames
+    /// is what the graph shows.
+    static constexpr std::size_t kCpuWindow = 30;
 
     /// One displayed frame that took `wallSeconds`; reads the process CPU time since the last call.
     void sample(double wallSeconds);
@@ -23,7 +27,7 @@ public:
 
 private:
     std::deque<float> frameMs_, fps_, cpuMs_;
-    double lastCpuSeconds_ = -1;
+    std::deque<double> cpuSeconds_;   // the process's CPU time at the last kCpuWindow + 1 frames
 };
 
 /// The monitor's section of the debugger window: one graph per measure and per pipeline stage.

@@ -7,6 +7,7 @@
 //   --select-contact                    select the first point of the hit tree
 //   --rewind K                          after the frames, rewind K frames
 //   --open session,views,hits,...       open these sections of the debugger
+//   --draw-every-frame                  draw every frame, so the performance monitor measures frames
 
 #include "debug_panel.h"
 #include "demo_state.h"
