@@ -27,26 +27,23 @@ void sessionSection(DemoState& state, DebugTools& tools) {
     ImGui::Checkbox("simulation enabled", &session.simulationEnabled);
     ImGui::SameLine();
     ImGui::Checkbox("stop on new contact", &tools.stopOnNewContact);
-    if (session.lastStop() == StopReason::NewContact && state.paused()) {
-        for (const BodyPair& pair : session.newContacts())
-            ImGui::TextColored(ImVec4(1, 0.85f, 0.3f, 1), "stopped: new contact %s / %s", bodyName(state.world(), pair.bodyA).c_str(),
-                               bodyName(state.world(), pair.bodyB).c_str());
-    }
-    if (state.paused() && ImGui::Button("Continue (Alt)")) state.setPaused(false);
 
-    // The timeline: every kept frame, the live one at the right end.
+    // Rows keep their places whatever the state (a button that came and went would move the
+    // timeline under the mouse): run control and status, timeline, steps, resume and save.
+    if (ImGui::Button(state.paused() ? "Continue (Alt)" : "Pause (P)")) state.setPaused(!state.paused());
+    ImGui::SameLine();
     const History& history = session.history();
     const long frame = state.world().frame;
-    if (session.rewound()) {
-        if (state.speculativeSteps() > 0)
-            ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "REWOUND, speculative: frame %ld (+%d steps), live %ld", frame,
-                               state.speculativeSteps(), session.liveFrame());
-        else
-            ImGui::TextColored(ImVec4(0.5f, 0.75f, 1, 1), "REWOUND: frame %ld of %ld..%ld", frame, history.oldestFrame(),
-                               history.newestFrame());
-    } else {
-        ImGui::TextColored(ImVec4(0.45f, 0.9f, 0.45f, 1), "LIVE: frame %ld", frame);
-    }
+    if (!session.rewound())
+        ImGui::TextColored(ImVec4(0.45f, 0.9f, 0.45f, 1), "LIVE frame %ld", frame);
+    else if (state.speculativeSteps() > 0)
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "SPECULATIVE %ld (+%d), live %ld", frame, state.speculativeSteps(),
+                           session.liveFrame());
+    else
+        ImGui::TextColored(ImVec4(0.5f, 0.75f, 1, 1), "REWOUND frame %ld (%ld..%ld)", frame, history.oldestFrame(),
+                           history.newestFrame());
+
+    // The timeline: every kept frame, the live one at the right end.
     int shown = static_cast<int>(std::clamp(frame, history.oldestFrame(), history.newestFrame()));
     ImGui::SetNextItemWidth(-1);
     if (!history.empty() && ImGui::SliderInt("##timeline", &shown, static_cast<int>(history.oldestFrame()),
@@ -68,17 +65,18 @@ void sessionSection(DemoState& state, DebugTools& tools) {
         state.setPaused(true);
         state.step();
     }
-    if (session.rewound()) {
-        ImGui::SameLine();
-        if (ImGui::Button("Resume live")) state.resume();
-    }
+    ImGui::BeginDisabled(!session.rewound());
+    if (ImGui::Button("Resume live")) state.resume();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Save recording")) tools.recordingMessage = saveRecording(state);
     ImGui::TextDisabled("history %d/%d frames, %.1f MB", history.size(), history.capacity(),
                         static_cast<double>(history.bytes()) / (1024.0 * 1024.0));
-
-    if (ImGui::Button("Save recording")) tools.recordingMessage = saveRecording(state);
-    if (!tools.recordingMessage.empty()) {
-        ImGui::SameLine();
-        ImGui::TextWrapped("%s", tools.recordingMessage.c_str());
+    if (!tools.recordingMessage.empty()) ImGui::TextWrapped("%s", tools.recordingMessage.c_str());
+    if (session.lastStop() == StopReason::NewContact && state.paused()) {
+        for (const BodyPair& pair : session.newContacts())
+            ImGui::TextColored(ImVec4(1, 0.85f, 0.3f, 1), "stopped: new contact %s / %s", bodyName(state.world(), pair.bodyA).c_str(),
+                               bodyName(state.world(), pair.bodyB).c_str());
     }
 }
 
