@@ -9,57 +9,88 @@ namespace stepwise {
 
 namespace {
 
-RayHit insideHit(const Ray& ray) {
+// [ch09-ray-local]
+/// The ray in a shape's own frame, started afresh just outside the shape's bounding sphere. Far
+/// from the shape, every product of the ray's coordinates loses the digits that decide where it
+/// enters (a float ray 3 m away has 0.2 um steps; a grazing entry multiplies them): so the move
+/// to the shape's frame and up to its sphere is done in double, and the routines below work on
+/// small local numbers. The distance skipped is added back at the end (Haines et al., "Precision
+/// Improvements for Ray/Sphere Intersection", Ray Tracing Gems, 2019, start near the sphere too).
+struct LocalRay {
+    Vec3 origin = Vec3::Zero();
+    Vec3 direction = Vec3::UnitX();
+    double skipped = 0;     // world distance from the ray's origin to `origin`
+    bool misses = false;    // the ray misses the bounding sphere, or leaves it before starting
+};
+
+LocalRay localRay(const Ray& ray, const Transform& pose, Real boundRadius) {
+    using Vec3d = Eigen::Vector3d;
+    const Eigen::Quaterniond toLocal = pose.rotation.cast<double>().conjugate();
+    const Vec3d direction = toLocal * ray.direction.cast<double>();
+    const Vec3d origin = toLocal * (ray.origin.cast<double>() - pose.position.cast<double>());
+    LocalRay local;
+    const double along = -origin.dot(direction);            // to the closest approach to the centre
+    const double radius = 1.01 * double(boundRadius) + 1e-9;
+    const double clearance = radius * radius - (origin + along * direction).squaredNorm();
+    local.misses = clearance < 0 || along + std::sqrt(std::max(0.0, clearance)) < 0;
+    local.skipped = std::max(0.0, along - std::sqrt(std::max(0.0, clearance)));
+    local.origin = (origin + local.skipped * direction).cast<Real>();
+    local.direction = direction.cast<Real>();
+    return local;
+}
+// [ch09-ray-local]
+
+/// A local hit (distance along the local ray, normal in the shape's frame) back in the world.
+RayHit toWorld(const Ray& ray, const Transform& pose, const LocalRay& local, Real localDistance, const Vec3& localNormal) {
     RayHit result;
     result.hit = true;
-    result.startedInside = true;
-    result.point = ray.origin;
-    result.normal = -ray.direction;
+    result.distance = Real(local.skipped + double(localDistance));
+    result.startedInside = local.skipped == 0 && localDistance == 0;
+    if (result.distance > ray.maxDistance) return RayHit{};
+    result.point = ray.origin + result.distance * ray.direction;
+    result.normal = result.startedInside ? Vec3(-ray.direction) : Vec3(pose.rotation * localNormal);
     return result;
 }
 
 /// The nearer root of |f + t d|^2 = r^2 for a ray starting outside (c = |f|^2 - r^2 > 0) and
-/// heading in (along = f.d < 0), with dd = d.d. The discriminant is taken from the closest approach
-/// (r^2 minus its squared distance) and the root as c / (-along + sqrt(...)): both keep their digits
-/// where the textbook (-b - sqrt(b^2 - 4ac)) / 2a cancels (Haines et al., "Precision Improvements
-/// for Ray/Sphere Intersection", Ray Tracing Gems, 2019). Negative when the ray misses.
+/// heading in (f.d < 0), with dd = d.d. The discriminant is taken from the closest approach (r^2
+/// minus its squared distance) and the root as c / (-f.d + sqrt(...)): both keep their digits
+/// where the textbook (-b - sqrt(b^2 - 4ac)) / 2a cancels (Haines et al., 2019). Negative: a miss.
 Real nearerRoot(const Vec3& f, const Vec3& d, Real dd, Real radius) {
     const Real along = f.dot(d);
     const Vec3 closestApproach = f - (along / dd) * d;
     const Real clearance = radius * radius - closestApproach.squaredNorm();
     if (clearance < 0) return -1;
-    const Real c = (f.squaredNorm() - radius * radius);
+    const Real c = f.squaredNorm() - radius * radius;
     return c / (-along + std::sqrt(dd * clearance));
 }
 
-RayHit withinReach(RayHit result, const Ray& ray) {
-    if (result.hit && !result.startedInside && result.distance > ray.maxDistance) return RayHit{};
-    return result;
+/// Local sphere at the origin: distance along the local ray, or -1; 0 when it starts inside.
+Real localSphere(const Vec3& origin, const Vec3& direction, Real radius) {
+    if (origin.squaredNorm() <= radius * radius) return 0;
+    if (origin.dot(direction) >= 0) return -1;
+    return nearerRoot(origin, direction, 1, radius);
 }
 
 }  // namespace
 
 // [ch09-ray-sphere]
 RayHit raySphere(const Ray& ray, const Vec3& center, Real radius) {
-    const Vec3 fromCenter = ray.origin - center;
-    if (fromCenter.squaredNorm() <= radius * radius) return insideHit(ray);
-    if (fromCenter.dot(ray.direction) >= 0) return RayHit{};   // outside and heading away
-    const Real distance = nearerRoot(fromCenter, ray.direction, 1, radius);
+    const Transform pose{center, Quat::Identity()};
+    const LocalRay local = localRay(ray, pose, radius);
+    if (local.misses) return RayHit{};
+    const Real distance = localSphere(local.origin, local.direction, radius);
     if (distance < 0) return RayHit{};
-    RayHit result;
-    result.hit = true;
-    result.distance = distance;
-    result.point = ray.origin + distance * ray.direction;
-    result.normal = (fromCenter + distance * ray.direction).normalized();
-    return withinReach(result, ray);
+    return toWorld(ray, pose, local, distance, (local.origin + distance * local.direction).normalized());
 }
 // [ch09-ray-sphere]
 
 RayHit rayBox(const Ray& ray, const Transform& pose, const Vec3& halfExtents) {
-    const Mat3 toLocal = pose.rotation.toRotationMatrix().transpose();
-    const Vec3 origin = toLocal * (ray.origin - pose.position);
-    const Vec3 direction = toLocal * ray.direction;
-    if ((origin.cwiseAbs().array() <= halfExtents.array()).all()) return insideHit(ray);
+    const LocalRay local = localRay(ray, pose, halfExtents.norm());
+    if (local.misses) return RayHit{};
+    const Vec3& origin = local.origin;
+    const Vec3& direction = local.direction;
+    if ((origin.cwiseAbs().array() <= halfExtents.array()).all()) return toWorld(ray, pose, local, 0, Vec3::Zero());
     // Slabs: the ray is inside the box while it is inside all three; it enters at the latest
     // entry and must not have left any slab before.
     Real entry = -kRealMax, exit = kRealMax;
@@ -80,61 +111,54 @@ RayHit rayBox(const Ray& ray, const Transform& pose, const Vec3& halfExtents) {
         exit = std::min(exit, far);
     }
     if (entryAxis < 0 || entry > exit || entry < 0) return RayHit{};
-    Vec3 localPoint = origin + entry * direction;
-    localPoint[entryAxis] = entrySign * halfExtents[entryAxis];   // on the face, not a rounding off it
-    RayHit result;
-    result.hit = true;
-    result.distance = entry;
-    result.point = pose.position + pose.rotation * localPoint;
-    result.normal = pose.rotation * (entrySign * Vec3::Unit(entryAxis));
-    return withinReach(result, ray);
+    return toWorld(ray, pose, local, entry, entrySign * Vec3::Unit(entryAxis));
 }
 
 RayHit rayCapsule(const Ray& ray, const Transform& pose, Real radius, Real halfHeight) {
-    const Mat3 toLocal = pose.rotation.toRotationMatrix().transpose();
-    const Vec3 origin = toLocal * (ray.origin - pose.position);
-    const Vec3 direction = toLocal * ray.direction;
+    const LocalRay local = localRay(ray, pose, radius + halfHeight);
+    if (local.misses) return RayHit{};
+    const Vec3& origin = local.origin;
+    const Vec3& direction = local.direction;
     const Vec3 nearestOnCore(0, std::clamp(origin.y(), -halfHeight, halfHeight), 0);
-    if ((origin - nearestOnCore).squaredNorm() <= radius * radius) return insideHit(ray);
+    if ((origin - nearestOnCore).squaredNorm() <= radius * radius) return toWorld(ray, pose, local, 0, Vec3::Zero());
 
     // The capsule holds its side and both end spheres, so its entry is the nearest of the side's
     // entry (where it lies between the ends) and the two spheres' entries.
-    RayHit best;
+    Real best = -1;
+    Vec3 bestNormal = Vec3::Zero();
     const Vec3 flatOrigin(origin.x(), 0, origin.z());
     const Vec3 flatDirection(direction.x(), 0, direction.z());
     const Real flatLength2 = flatDirection.squaredNorm();
     if (flatLength2 > 0 && flatOrigin.squaredNorm() > radius * radius && flatOrigin.dot(flatDirection) < 0) {
         const Real distance = nearerRoot(flatOrigin, flatDirection, flatLength2, radius);
-        const Real y = origin.y() + distance * direction.y();
-        if (distance >= 0 && std::abs(y) <= halfHeight) {
-            best.hit = true;
-            best.distance = distance;
-            const Vec3 local = origin + distance * direction;
-            best.point = pose.position + pose.rotation * local;
-            best.normal = pose.rotation * Vec3(local.x(), 0, local.z()).normalized();
+        if (distance >= 0 && std::abs(origin.y() + distance * direction.y()) <= halfHeight) {
+            best = distance;
+            bestNormal = (flatOrigin + distance * flatDirection).normalized();
         }
     }
     for (Real end : {-halfHeight, halfHeight}) {
-        const RayHit cap = raySphere(Ray{origin, direction, kRealMax}, Vec3(0, end, 0), radius);
-        if (cap.hit && (!best.hit || cap.distance < best.distance)) {
-            best = cap;
-            best.point = pose.position + pose.rotation * cap.point;
-            best.normal = pose.rotation * cap.normal;
+        const Vec3 fromEnd = origin - Vec3(0, end, 0);
+        const Real distance = localSphere(fromEnd, direction, radius);
+        if (distance > 0 && (best < 0 || distance < best)) {
+            best = distance;
+            bestNormal = (fromEnd + distance * direction).normalized();
         }
     }
-    return withinReach(best, ray);
+    if (best < 0) return RayHit{};
+    return toWorld(ray, pose, local, best, bestNormal);
 }
 
 RayHit rayHullPlanes(const Ray& ray, const Transform& pose, const ConvexHull& hull) {
-    const Mat3 toLocal = pose.rotation.toRotationMatrix().transpose();
-    const Vec3 origin = toLocal * (ray.origin - pose.position);
-    const Vec3 direction = toLocal * ray.direction;
+    Real reach = 0;
+    for (const Vec3& vertex : hull.vertices) reach = std::max(reach, vertex.norm());
+    const LocalRay local = localRay(ray, pose, reach);
+    if (local.misses) return RayHit{};
     Real entry = -kRealMax, exit = kRealMax;
     const HullFace* entryFace = nullptr;
     bool inside = true;
     for (const HullFace& face : hull.faces) {
-        const Real height = face.normal.dot(origin) - face.offset;   // > 0: outside this plane
-        const Real approach = face.normal.dot(direction);
+        const Real height = face.normal.dot(local.origin) - face.offset;   // > 0: outside this plane
+        const Real approach = face.normal.dot(local.direction);
         inside = inside && height <= 0;
         if (approach == 0) {
             if (height > 0) return RayHit{};
@@ -150,43 +174,55 @@ RayHit rayHullPlanes(const Ray& ray, const Transform& pose, const ConvexHull& hu
             exit = std::min(exit, crossing);
         }
     }
-    if (inside) return insideHit(ray);
+    if (inside) return toWorld(ray, pose, local, 0, Vec3::Zero());
     if (!entryFace || entry > exit || entry < 0) return RayHit{};
-    RayHit result;
-    result.hit = true;
-    result.distance = entry;
-    result.point = ray.origin + entry * ray.direction;
-    result.normal = pose.rotation * entryFace->normal;
-    return withinReach(result, ray);
+    return toWorld(ray, pose, local, entry, entryFace->normal);
 }
 
 // [ch09-ray-gjk]
-RayHit rayConvex(const Ray& ray, const ConvexProxy& shape, int maxIterations) {
-    // van den Bergen's loop. x = origin + t direction; the simplex keeps support points p_i of the
-    // shape, and v is the point of conv{x - p_i} nearest the origin: x minus the nearest point of
-    // the shape's simplex. A support point p beyond which x lies (v.(x - p) > 0) gives a plane
-    // separating x from the shape; x jumps to where the ray crosses that plane, or, if the ray
-    // runs away from the plane, there is no hit.
-    const Real scale = shapeScale(*shape.shape) + (ray.origin - shape.center()).norm();
-    const Real tolerance2 = Real(16) * kEpsilon * kEpsilon * scale * scale;
+RayHit rayConvex(const Ray& ray, const ConvexProxy& proxy, int maxIterations) {
+    const Shape& shape = *proxy.shape;
+    const LocalRay local = localRay(ray, proxy.transform, boundingRadius(shape));
+    if (local.misses) return RayHit{};
+    // van den Bergen's loop, in the shape's frame. x = origin + t direction; the simplex keeps
+    // support points p_i of the shape, and v is the point of conv{x - p_i} nearest the origin: x
+    // minus the nearest point of the shape's simplex. A support point p beyond which x lies
+    // (v.(x - p) > 0) gives a plane separating x from the shape; x jumps to where the ray crosses
+    // that plane, or, if the ray runs away from the plane, there is no hit. A sphere or a capsule
+    // is cast as its core (a point, a segment) grown by its radius, the planes pushed out by it:
+    // on the core the loop ends in a few steps, where on the round surface it would only creep
+    // closer (the paper's section on shapes with a margin; chapter 2's distance does the same).
+    const bool round = shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule;
+    const Real margin = round ? shape.radius : Real(0);
+    const auto coreSupport = [&](const Vec3& direction) -> Vec3 {
+        if (shape.type == ShapeType::Sphere) return Vec3::Zero();
+        if (shape.type == ShapeType::Capsule) return Vec3(0, direction.y() >= 0 ? shape.halfHeight : -shape.halfHeight, 0);
+        return localSupport(shape, direction, proxy.mode);
+    };
+    const Real scale = shapeScale(shape);
+    const Real tolerance = Real(4) * kEpsilon * scale;
+    Vec3 centre = Vec3::Zero();
+    if (shape.type == ShapeType::Convex && shape.hull && !shape.hull->vertices.empty()) {
+        for (const Vec3& vertex : shape.hull->vertices) centre += vertex;
+        centre /= Real(shape.hull->vertices.size());
+    }
     Vec3 supports[4];
     int count = 0;
     Real t = 0;
-    Vec3 x = ray.origin;
+    Vec3 x = local.origin;
     Vec3 normal = Vec3::Zero();
-    Vec3 v = x - shape.center();
-    RayHit result;
-    for (int iteration = 0; iteration < maxIterations; ++iteration) {
-        result.iterations = iteration + 1;
-        const Vec3 p = shape.support(v);
+    Vec3 v = x - centre;
+    int iterations = 0;
+    for (; iterations < maxIterations; ++iterations) {
+        const Vec3 p = coreSupport(v);
         const Vec3 w = x - p;
-        const Real vw = v.dot(w);
-        if (vw > 0) {
-            const Real vr = v.dot(ray.direction);
+        const Real vLength = v.norm();
+        const Real gap = v.dot(w) - margin * vLength;   // > 0: x is beyond the (pushed-out) plane
+        if (gap > 0) {
+            const Real vr = v.dot(local.direction);
             if (vr >= 0) return RayHit{};
-            t -= vw / vr;
-            if (t > ray.maxDistance) return RayHit{};
-            x = ray.origin + t * ray.direction;
+            t -= gap / vr;
+            x = local.origin + t * local.direction;
             normal = v;
         }
         bool repeated = false;
@@ -200,13 +236,16 @@ RayHit rayConvex(const Ray& ray, const ConvexProxy& shape, int maxIterations) {
         count = closest.keptCount;
         std::copy(kept, kept + count, supports);
         v = closest.point;
-        if (count == 4 || v.squaredNorm() <= tolerance2 || (repeated && vw <= 0)) break;
+        // Done when x is on the shape: within the tolerance of the core plus the margin, inside
+        // the simplex, or the support repeats (the plane cannot move x any further).
+        if (count == 4 || v.norm() <= margin + tolerance || (repeated && gap <= tolerance)) {
+            ++iterations;
+            break;
+        }
     }
-    if (t == 0) return insideHit(ray);
-    result.hit = true;
-    result.distance = t;
-    result.point = x;
-    result.normal = normal.normalized();
+    if (round && t > 0) normal = v;   // from the core's nearest point (x - v) out to x: the surface normal
+    RayHit result = toWorld(ray, proxy.transform, local, t, t == 0 ? Vec3::Zero() : Vec3(normal.normalized()));
+    result.iterations = iterations;
     return result;
 }
 // [ch09-ray-gjk]

@@ -7,6 +7,7 @@
 #include "world/scene.h"
 #include "world/state_hash.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -26,7 +27,9 @@ Json exact(const Quat& q) { return Json::array({double(q.x()), double(q.y()), do
 
 Real exactNumber(const JsonCursor& cursor) {
     if (!cursor.json().is_number()) cursor.fail("must be a number");
-    return Real(cursor.json().get<double>());
+    const double value = cursor.json().get<double>();
+    if (!std::isfinite(value) || std::abs(value) > double(kRealMax)) cursor.fail("must be a finite number");
+    return Real(value);
 }
 Vec3 exactVec3(const JsonCursor& cursor) {
     if (!cursor.json().is_array() || cursor.json().size() != 3) cursor.fail("must be an array of 3 numbers [x, y, z]");
@@ -38,9 +41,71 @@ Quat exactQuat(const JsonCursor& cursor) {
                 exactNumber(cursor.element(2)));
 }
 
+Json exact(const Mat3& m) {
+    Json rows = Json::array();
+    for (int row = 0; row < 3; ++row) rows.push_back(exact(Vec3(m.row(row).transpose())));
+    return rows;
+}
+Mat3 exactMat3(const JsonCursor& cursor) {
+    if (cursor.arraySize() != 3) cursor.fail("must be 3 rows of 3 numbers");
+    Mat3 m;
+    for (int row = 0; row < 3; ++row) m.row(row) = exactVec3(cursor.element(std::size_t(row))).transpose();
+    return m;
+}
+
+ExactBodyState exactStateOf(const World& world, int body) {
+    ExactBodyState state;
+    state.transform = world.bodies[std::size_t(body)].transform;
+    if (const Motion* motion = world.motionOf(body)) {
+        state.linearVelocity = motion->linearVelocity;
+        state.angularVelocity = motion->angularVelocity;
+        state.mass = motion->mass;
+        state.inverseMass = motion->inverseMass;
+        state.localCenter = motion->localCenter;
+        state.inertiaLocal = motion->inertiaLocal;
+        state.inverseInertiaLocal = motion->inverseInertiaLocal;
+    }
+    return state;
+}
+
+std::vector<ExactBodyState> exactStatesOf(const World& world) {
+    std::vector<ExactBodyState> states;
+    for (int body = 0; body < static_cast<int>(world.bodies.size()); ++body) states.push_back(exactStateOf(world, body));
+    return states;
+}
+
+Json stateToJson(const ExactBodyState& state) {
+    return {{"position", exact(state.transform.position)},
+            {"orientation", exact(state.transform.rotation)},
+            {"linear_velocity", exact(state.linearVelocity)},
+            {"angular_velocity", exact(state.angularVelocity)},
+            {"mass", double(state.mass)},
+            {"inverse_mass", double(state.inverseMass)},
+            {"local_center", exact(state.localCenter)},
+            {"inertia", exact(state.inertiaLocal)},
+            {"inverse_inertia", exact(state.inverseInertiaLocal)}};
+}
+
+ExactBodyState stateFromJson(const JsonCursor& entry) {
+    entry.expectObject({"position", "orientation", "linear_velocity", "angular_velocity", "mass", "inverse_mass",
+                        "local_center", "inertia", "inverse_inertia"});
+    ExactBodyState state;
+    state.transform.position = exactVec3(entry.child("position"));
+    state.transform.rotation = exactQuat(entry.child("orientation"));
+    if (std::abs(state.transform.rotation.norm() - 1) > Real(1e-3)) entry.child("orientation").fail("must be a unit quaternion");
+    state.linearVelocity = exactVec3(entry.child("linear_velocity"));
+    state.angularVelocity = exactVec3(entry.child("angular_velocity"));
+    state.mass = exactNumber(entry.child("mass"));
+    state.inverseMass = exactNumber(entry.child("inverse_mass"));
+    if (state.mass < 0 || state.inverseMass < 0) entry.child("mass").fail("must be >= 0");
+    state.localCenter = exactVec3(entry.child("local_center"));
+    state.inertiaLocal = exactMat3(entry.child("inertia"));
+    state.inverseInertiaLocal = exactMat3(entry.child("inverse_inertia"));
+    return state;
+}
+
 Json editToJson(const World& world, const BodyEdit& edit) {
-    Json inertia = Json::array();
-    for (int row = 0; row < 3; ++row) inertia.push_back(exact(Vec3(edit.inertiaLocal.row(row).transpose())));
+    const Json inertia = exact(edit.inertiaLocal);
     return {{"frame", edit.frame},
             {"body", world.bodies.at(static_cast<std::size_t>(edit.body)).name},
             {"position", exact(edit.transform.position)},
@@ -66,6 +131,7 @@ Recording recordingOf(const DebugSession& session, int chapter) {
     Recording recording;
     recording.chapter = chapter;
     recording.sceneJson = saveSceneToString(session.startWorld());
+    recording.start = exactStatesOf(session.startWorld());
     recording.edits = session.edits();
     recording.frameHashes = session.frameHashes();
     return recording;
@@ -75,10 +141,9 @@ Recording recordingOf(const DebugSession& session, int chapter) {
 Recording recordRun(const Registry& registry, const std::string& sceneNameOrPath, int chapter, long frames) {
     Recording recording;
     recording.chapter = chapter;
-    recording.sceneJson = saveSceneToString(loadSceneOrBuiltin(registry, sceneNameOrPath));
-    // The run starts from the scene as written, not as built: the replay will read the same text,
-    // so both start from the same bits whatever rounding the scene format does.
-    World world = loadSceneFromString(recording.sceneJson, sceneNameOrPath, registry.sceneGenerators());
+    World world = loadSceneOrBuiltin(registry, sceneNameOrPath);
+    recording.sceneJson = saveSceneToString(world);
+    recording.start = exactStatesOf(world);
     Pipeline pipeline = registry.makePipeline(world, chapter);
     RunOptions options;
     options.frames = frames;
@@ -95,6 +160,8 @@ std::string recordingToJson(const Recording& recording) {
     Json json = {{"format", kFormat}, {"version", kVersion}, {"engine", engineVersion()}, {"chapter", recording.chapter}};
     json["frames"] = recording.frameHashes.size();
     json["scene"] = Json::parse(recording.sceneJson);
+    json["start"] = Json::array();
+    for (const ExactBodyState& state : recording.start) json["start"].push_back(stateToJson(state));
     json["edits"] = Json::array();
     for (const BodyEdit& edit : recording.edits) json["edits"].push_back(editToJson(scene, edit));
     json["frame_hashes"] = Json::array();
@@ -107,7 +174,7 @@ Recording recordingFromJson(const std::string& text, const std::string& source) 
     const Json json = parseStrictJson(text, source);
     const JsonCursor root(json, "");
     if (!json.is_object()) root.fail(source + " must be a JSON object (a recording: docs/scene-format.md)");
-    root.expectObject({"format", "version", "engine", "chapter", "frames", "scene", "edits", "frame_hashes", "report"});
+    root.expectObject({"format", "version", "engine", "chapter", "frames", "scene", "start", "edits", "frame_hashes", "report"});
     if (root.child("format").string() != kFormat) root.child("format").fail(std::string("must be \"") + kFormat + "\"");
     if (root.child("version").integer(1, 1000) != kVersion) root.child("version").fail("must be 1 (this program reads version 1)");
     const std::string engine = root.child("engine").string();
@@ -120,6 +187,10 @@ Recording recordingFromJson(const std::string& text, const std::string& source) 
     if (!scene.json().is_object()) scene.fail("must be a scene object (docs/scene-format.md)");
     recording.sceneJson = scene.json().dump();
     const World world = loadSceneFromString(recording.sceneJson, source + " scene");
+    const JsonCursor start = root.child("start");
+    if (start.arraySize() != world.bodies.size())
+        start.fail("must hold one state per body of the scene (" + std::to_string(world.bodies.size()) + ")");
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) recording.start.push_back(stateFromJson(start.element(i)));
     const JsonCursor hashes = root.child("frame_hashes");
     const std::size_t frames = hashes.arraySizeAtMost(std::size_t(100000000));
     for (std::size_t i = 0; i < frames; ++i) recording.frameHashes.push_back(parseHash(hashes.element(i)));
@@ -142,9 +213,7 @@ Recording recordingFromJson(const std::string& text, const std::string& source) 
         edit.linearVelocity = exactVec3(entry.child("linear_velocity"));
         edit.angularVelocity = exactVec3(entry.child("angular_velocity"));
         edit.mass = exactNumber(entry.child("mass"));
-        const JsonCursor inertia = entry.child("inertia");
-        if (inertia.arraySize() != 3) inertia.fail("must be 3 rows of 3 numbers");
-        for (int row = 0; row < 3; ++row) edit.inertiaLocal.row(row) = exactVec3(inertia.element(std::size_t(row))).transpose();
+        edit.inertiaLocal = exactMat3(entry.child("inertia"));
         const std::string problem = validateEdit(world, edit);
         if (!problem.empty()) entry.fail(problem);
         recording.edits.push_back(edit);
@@ -178,9 +247,30 @@ std::string comparableReport(const std::string& reportJson) {
     return report.dump(2);
 }
 
+World startingWorld(const Registry& registry, const Recording& recording) {
+    World world = loadSceneFromString(recording.sceneJson, "recording scene", registry.sceneGenerators());
+    if (recording.start.size() != world.bodies.size())
+        throw SceneError("start", "holds " + std::to_string(recording.start.size()) + " states for " +
+                                      std::to_string(world.bodies.size()) + " bodies");
+    for (std::size_t body = 0; body < world.bodies.size(); ++body) {
+        const ExactBodyState& state = recording.start[body];
+        world.bodies[body].transform = state.transform;
+        if (Motion* motion = world.motionOf(int(body))) {
+            motion->linearVelocity = state.linearVelocity;
+            motion->angularVelocity = state.angularVelocity;
+            motion->mass = state.mass;
+            motion->inverseMass = state.inverseMass;
+            motion->localCenter = state.localCenter;
+            motion->inertiaLocal = state.inertiaLocal;
+            motion->inverseInertiaLocal = state.inverseInertiaLocal;
+        }
+    }
+    return world;
+}
+
 // [ch09-replay]
 ReplayResult replay(const Registry& registry, const Recording& recording) {
-    World world = loadSceneFromString(recording.sceneJson, "recording scene", registry.sceneGenerators());
+    World world = startingWorld(registry, recording);
     Pipeline pipeline = registry.makePipeline(world, recording.chapter);
     ReplayResult result;
     std::size_t nextEdit = 0;

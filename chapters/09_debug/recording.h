@@ -16,10 +16,23 @@ namespace stepwise {
 
 class DebugSession;
 
+/// One body's state to the bit: what the scene format, written for people, rounds (a rotation is
+/// renormalised when read, a hull's inertia summed again from its vertices), the recording keeps
+/// exactly, so a replay starts from the very bits the recorded run did.
+struct ExactBodyState {
+    Transform transform;
+    Vec3 linearVelocity = Vec3::Zero();
+    Vec3 angularVelocity = Vec3::Zero();
+    Real mass = 0, inverseMass = 0;
+    Vec3 localCenter = Vec3::Zero();
+    Mat3 inertiaLocal = Mat3::Zero(), inverseInertiaLocal = Mat3::Zero();
+};
+
 // [ch09-recording]
 struct Recording {
     int chapter = 0;                          // the pipeline: registry.makePipeline(scene, chapter)
     std::string sceneJson;                    // the scene at the start (saveSceneToString)
+    std::vector<ExactBodyState> start;        // every body's exact state at the start
     std::vector<BodyEdit> edits;              // in frame order
     std::vector<std::uint64_t> frameHashes;   // stateHash after each frame, frame 1 first
     std::string reportJson;                   // the run report (may be empty: the demo's recordings)
@@ -39,6 +52,9 @@ std::string recordingToJson(const Recording& recording);
 Recording recordingFromJson(const std::string& text, const std::string& source = "recording");
 Recording readRecordingFile(const std::string& path);
 void writeRecordingFile(const std::string& path, const Recording& recording);
+
+/// The world a recording starts from: its scene loaded, then every body set to its exact state.
+World startingWorld(const Registry& registry, const Recording& recording);
 
 struct ReplayResult {
     long frames = 0;                 // frames replayed

@@ -15,7 +15,7 @@ World buildDebugDrop();
 /// "debug-hull-on-box": a convex hull dropped onto a crate on the ground: the EPA face and A - B.
 World buildDebugHullOnBox();
 
-/// "debug-tunnel": a thin plate fired at a thin wall with continuous collision off: it passes
+/// "debug-tunnel": a bullet fired at a thin wall with continuous collision off: it passes
 /// through between two frames, which the rewind shows (and `ccd` on cures).
 World buildDebugTunnel();
 

@@ -53,17 +53,17 @@ void RecordingDraw::point(const Vec3& at, float, Color color) { commands_.push_b
 void RecordingDraw::arrow(const Vec3& from, const Vec3& to, Color color) {
     commands_.push_back({Kind::Arrow, from, to, color, {}});
 }
-void RecordingDraw::box(const Transform& pose, const Vec3& halfExtents, Color color, Fill) {
-    commands_.push_back({Kind::Box, pose.position, halfExtents, color, {}});
+void RecordingDraw::box(const Transform& pose, const Vec3& halfExtents, Color color, Fill fill) {
+    commands_.push_back({Kind::Box, pose.position, halfExtents, color, {}, fill});
 }
-void RecordingDraw::sphere(const Vec3& center, Real radius, Color color, Fill) {
-    commands_.push_back({Kind::Sphere, center, Vec3::Constant(radius), color, {}});
+void RecordingDraw::sphere(const Vec3& center, Real radius, Color color, Fill fill) {
+    commands_.push_back({Kind::Sphere, center, Vec3::Constant(radius), color, {}, fill});
 }
-void RecordingDraw::capsule(const Transform& pose, Real radius, Real halfHeight, Color color, Fill) {
-    commands_.push_back({Kind::Capsule, pose.position, Vec3(radius, halfHeight, 0), color, {}});
+void RecordingDraw::capsule(const Transform& pose, Real radius, Real halfHeight, Color color, Fill fill) {
+    commands_.push_back({Kind::Capsule, pose.position, Vec3(radius, halfHeight, 0), color, {}, fill});
 }
-void RecordingDraw::hull(const Transform& pose, const ConvexHull&, Color color, Fill) {
-    commands_.push_back({Kind::Hull, pose.position, pose.position, color, {}});
+void RecordingDraw::hull(const Transform& pose, const ConvexHull&, Color color, Fill fill) {
+    commands_.push_back({Kind::Hull, pose.position, pose.position, color, {}, fill});
 }
 void RecordingDraw::triangle(const Vec3& a, const Vec3& b, const Vec3& c, Color color) {
     commands_.push_back({Kind::Triangle, a, b, color, {}});

@@ -64,6 +64,7 @@ public:
         Vec3 b = Vec3::Zero();
         Color color;
         std::string message;
+        Fill fill = Fill::Solid;   // shapes: solid or wireframe
     };
 
     void line(const Vec3& from, const Vec3& to, Color color) override;

@@ -10,6 +10,8 @@
 //   (numbers to 1e-4, since the page rounds them; strings, booleans and counts exactly).
 // - The report example ("stepwise-report") must have the keys, in order, and the pipeline of a
 //   real report of the scene it names.
+// - The recording example ("stepwise-recording") must have the keys, in order, of a recording the
+//   program writes.
 // - Every query shipped in scenes/queries/ is one of the page's query examples, as it stands.
 // - Every "error: ..." line in a ```text block must be printed, as a whole line, by a run of one
 //   of the bad files the CLI test runs (tests/cli/cases.txt).
@@ -143,7 +145,7 @@ int main(int argc, char** argv) {
     const std::regex block("```(json|text)\\n([\\s\\S]*?)```");
     Json lastResults;  // the program's answer to the latest query example
     std::vector<Json> queryExamples;
-    int scenes = 0, queries = 0, outputs = 0, reports = 0, errorLines = 0;
+    int scenes = 0, queries = 0, outputs = 0, reports = 0, recordings = 0, errorLines = 0;
     std::vector<std::string> badFileLines;
     for (auto it = std::sregex_iterator(page.begin(), page.end(), block); it != std::sregex_iterator(); ++it) {
         const std::string kind = (*it)[1].str(), text = (*it)[2].str();
@@ -196,6 +198,19 @@ int main(int argc, char** argv) {
                 check(keysOf(example["energy"]) == keysOf(real["energy"]), "the report example's energy keys");
             }
             ++reports;
+        } else if (example.value("format", "") == "stepwise-recording") {
+            // Its hashes hold one build's bits, so it is not replayed: it must have a real
+            // recording's keys in order, and so must its start states and edits.
+            const fs::path recording = scratch / "recording.json";
+            const Run run = runProgram(program, "record debug-drop --frames 3 --output \"" + recording.string() + "\"",
+                                       scratch, scratch);
+            check(run.code == 0, "stepwise record runs for the recording example: " + run.err);
+            if (run.code == 0) {
+                const Json real = Json::parse(readText(recording));
+                check(keysOf(example) == keysOf(real), "the recording example has a real recording's keys in order");
+                check(keysOf(example["start"][0]) == keysOf(real["start"][0]), "the recording example's start state keys");
+            }
+            ++recordings;
         } else {
             const Run run = runProgram(program, "run \"" + file.string() + "\" --frames 60 --quiet", scratch, scratch);
             check(run.code == 0, "the scene example runs (exit " + std::to_string(run.code) + "): " + run.err + "\n" + text);
@@ -209,9 +224,10 @@ int main(int argc, char** argv) {
         check(shown, "the page shows the shipped query " + entry.path().filename().string() + " as it stands");
     }
     // The page shows at least its shipped scenes, one query with its output, a report and errors.
-    check(scenes >= 3 && queries >= 1 && outputs >= 1 && reports == 1 && errorLines >= 10,
+    check(scenes >= 3 && queries >= 1 && outputs >= 1 && reports == 1 && recordings == 1 && errorLines >= 10,
           "examples found: " + std::to_string(scenes) + " scenes, " + std::to_string(queries) + " queries, " +
               std::to_string(outputs) + " outputs, " + std::to_string(reports) + " reports, " +
+              std::to_string(recordings) + " recordings, " +
               std::to_string(errorLines) + " error lines");
     std::cout << "docs examples: " << checks - failures << " passed, " << failures << " failed\n";
     return failures ? 1 : 0;
