@@ -254,10 +254,8 @@ int runWindow(DemoState& state, ViewOptions& view, const Options& options) {
             const ImGuiIO& io = ImGui::GetIO();
             const bool gizmoOwnsMouse = updateGizmo(tools.gizmo, state, camera, width, height);
             if (!gizmoOwnsMouse && !io.WantCaptureMouse && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
-                io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 16.0f && ImGui::IsMousePosValid()) {
+                io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 16.0f && ImGui::IsMousePosValid())
                 clickAt(state, camera, io.MousePos.x, io.MousePos.y, width, height);
-                std::cerr << "DEBUG click " << io.MousePos.x << ' ' << io.MousePos.y << " -> " << state.selectedBody << std::endl;
-            }
             drawShell(state, view, camera, shellInfo(device, fps), tools);
             state.buildDrawList(list, view);
             drawLabels(list, camera, width, height);
