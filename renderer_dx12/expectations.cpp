@@ -136,8 +136,12 @@ void viewExpectations(ExpectationWriter& writer, const DemoState& state, bool im
                                     kFlatShade);
             }
     if (const HitPoint* point = selectedPoint(tree, state.hitSelection())) {
-        writer.emit("mark selected-contact", "A", point->pointA, colors::kWhite, kLitShade);
-        writer.emit("mark selected-contact", "B", point->pointB, colors::kWhite, kLitShade);
+        // The highlight's white arrow (0.8 m along the normal from B's point), not its white cubes:
+        // a lit white face is as grey as the ground, a flat white line is not.
+        const HitSelection& selection = state.hitSelection();
+        const Vec3& normal = tree.pairs[static_cast<size_t>(selection.pair)].manifolds[static_cast<size_t>(selection.manifold)].normal;
+        for (Real along : {Real(0.2), Real(0.4), Real(0.6)})
+            writer.emit("mark selected-contact", "arrow", point->pointB + along * normal, colors::kWhite, kFlatShade);
     }
     const int selected = state.selectedBody;
     if (views.wireframeSelection && selected >= 0 && selected < static_cast<int>(world.bodies.size()) &&

@@ -3,7 +3,7 @@
 // puts them, the ImGui panel (and the debugger, when open) is drawn, the box the camera was
 // framed from (bodies and the scene's overlay) lies on screen between them, and every debug
 // view's group of marks ("mark contact ...": red cubes at the contact points, "mark normal",
-// "mark epa", ...) shows its colour at one of its places at least. The demo writes IMAGE.txt
+// "mark epa", ...) shows its colour at a quarter of its places at least. The demo writes IMAGE.txt
 // next to the image with those screen places (renderer_dx12/expectations.cpp), computed from
 // the world and the camera, never from the image.
 //   check_png IMAGE.png [EXPECTATIONS.txt]     screenshot check
@@ -228,8 +228,7 @@ int checkScreenshot(const std::string& imagePath, const std::string& expectPath)
             if (!hit) std::cout << "  " << kind << " '" << name << "' not seen at (" << x << ", " << y << ")\n";
         } else if (kind == "mark") {
             // A debug view's mark: small (a 6 cm cube, a 2-pixel line), so it is looked for
-            // within 4 pixels; each group needs one place where it shows (others may be hidden
-            // behind a body).
+            // within 4 pixels; some places of a group may be hidden behind a body.
             std::string group;
             int x = 0, y = 0, color[3] = {0, 0, 0};
             double minShade = 0;
@@ -242,7 +241,12 @@ int checkScreenshot(const std::string& imagePath, const std::string& expectPath)
     }
     for (const auto& [group, counts] : marks) {
         std::cout << "  view '" << group << "': seen at " << counts.second << " of " << counts.first << " places\n";
-        if (counts.second == 0) failures.push_back("view '" + group + "': its colour shows at none of its " + std::to_string(counts.first) + " places");
+        // A quarter of the places at least: enough that a colour some body happens to share
+        // near a few of them (cyan bounds beside a cyan box) does not pass for the view.
+        const int needed = std::max(1, (counts.first + 3) / 4);
+        if (counts.second < needed)
+            failures.push_back("view '" + group + "': its colour shows at " + std::to_string(counts.second) + " of its " +
+                               std::to_string(counts.first) + " places (at least " + std::to_string(needed) + " wanted)");
     }
     if (!panel) failures.push_back("panel: the demo reported no ImGui panel");
     // A view of wireframes only (the selection and what it touches) leaves no solid body: its
