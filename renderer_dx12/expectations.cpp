@@ -143,11 +143,19 @@ void viewExpectations(ExpectationWriter& writer, const DemoState& state, bool im
         for (Real along : {Real(0.2), Real(0.4), Real(0.6)})
             writer.emit("mark selected-contact", "arrow", point->pointB + along * normal, colors::kWhite, kFlatShade);
     }
+    // Wireframe boxes meet at their corners: the selected body's in white, the bodies of its
+    // pairs (or of the selected contact's) in their own colours. Static ones are left out: a
+    // ground's corners are far off screen.
     const int selected = state.selectedBody;
-    if (views.wireframeSelection && selected >= 0 && selected < static_cast<int>(world.bodies.size()) &&
-        world.bodies[static_cast<size_t>(selected)].shape.type == ShapeType::Box)
-        for (const Vec3& corner : boxCorners(world.bodies[static_cast<size_t>(selected)]))
-            writer.emit("mark selection", world.bodies[static_cast<size_t>(selected)].name, corner, colors::kWhite, kFlatShade);
+    const std::vector<char> wire = wireBodies(state);
+    for (size_t i = 0; i < world.bodies.size(); ++i) {
+        const Body& body = world.bodies[i];
+        if (!wire[i] || body.shape.type != ShapeType::Box || body.type == BodyType::Static) continue;
+        const Color color = static_cast<int>(i) == selected ? colors::kWhite
+                            : body.type == BodyType::Kinematic ? colors::kBlue
+                                                               : bodyColor(static_cast<int>(i));
+        for (const Vec3& corner : boxCorners(body)) writer.emit("mark selection", body.name, corner, color, kFlatShade);
+    }
     if (views.bounds)
         for (const Body& body : world.bodies) {
             if (body.type == BodyType::Static) continue;
