@@ -21,8 +21,8 @@ shot ch09_contacts --scene debug-drop --frames 90 --views colliders,contacts,nor
 shot ch09_epa_face --scene debug-hull-on-box --frames 60 --views colliders,epa,wireframe,contacts --select gem
 shot ch09_minkowski --scene debug-hull-on-box --frames 60 --views colliders,simplex,minkowski,epa --select gem
 shot ch09_wireframe --scene debug-jitter --frames 120 --views colliders,contacts,wireframe --select 2
-shot ch09_bounds_joints --scene "$root/scenes/joint-gallery.json" --frames 60 --views colliders,bounds,joints
+shot ch09_bounds_joints --scene joints-sandbox --frames 60 --views colliders,bounds,joints
 shot ch09_inspector --scene debug-hull-on-box --frames 60 --views colliders,contacts,wireframe --select gem --open inspector
-shot ch09_hit_tree --scene debug-jitter --frames 120 --views colliders,contacts,normals --select-contact --open hits
+shot ch09_hit_tree --scene debug-jitter --frames 120 --views colliders,contacts,normals,wireframe --select-contact --open hits
 shot ch09_perf --scene debug-jitter --frames 240 --views colliders,contacts --open perf --draw-every-frame
 shot ch09_rewind --scene debug-drop --frames 90 --views colliders,contacts,normals --rewind 55 --open session
