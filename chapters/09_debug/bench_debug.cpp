@@ -14,6 +14,7 @@
 #include "08_joints/chapter.h"
 #include "09_debug/debug_session.h"
 #include "09_debug/ray_cast.h"
+#include "09_debug/ray_targets.h"
 #include "app/bench_util.h"
 #include "math/random.h"
 
@@ -61,37 +62,7 @@ HistoryCost measureHistory(int rows) {
     return cost;
 }
 
-struct Target {
-    const char* name;
-    Shape shape;
-    Transform pose;
-};
-
-std::vector<Target> targets() {
-    const Quat tilt(Eigen::AngleAxis<Real>(Real(0.7), Vec3(1, 2, 3).normalized()));
-    std::vector<Vec3> gem{Vec3(0, Real(0.35), 0), Vec3(0, Real(-0.25), 0)};
-    for (int i = 0; i < 8; ++i)
-        gem.push_back(Vec3(Real(0.3) * std::cos(Real(i) * kPi / 4), Real(0.05), Real(0.3) * std::sin(Real(i) * kPi / 4)));
-    return {{"sphere", Shape::sphere(Real(0.5)), Transform{Vec3(Real(0.2), Real(1), 0), Quat::Identity()}},
-            {"box", Shape::box(Vec3(Real(0.5), Real(0.3), Real(0.2))), Transform{Vec3(0, Real(1), Real(0.1)), tilt}},
-            {"capsule", Shape::capsule(Real(0.3), Real(0.4)), Transform{Vec3(Real(-0.1), Real(1), 0), tilt}},
-            {"hull", Shape::convex(gem), Transform{Vec3(0, Real(1), 0), tilt}}};
-}
-
-/// Rays from 3 m away aimed at random points of the shape's bounds: most hit, some graze or miss.
-std::vector<Ray> aimedRays(const Target& target, int count, Random& random) {
-    const Aabb bounds = computeAabb(target.shape, target.pose);
-    std::vector<Ray> rays;
-    for (int i = 0; i < count; ++i) {
-        const Vec3 from = target.pose.position + 3 * random.unitVector();
-        const Vec3 fraction(random.uniformReal(0, 1), random.uniformReal(0, 1), random.uniformReal(0, 1));
-        const Vec3 at = bounds.min + (bounds.max - bounds.min).cwiseProduct(fraction);
-        rays.push_back(Ray{from, (at - from).normalized(), kRealMax});
-    }
-    return rays;
-}
-
-RayHit reference(const Ray& ray, const Target& target) {
+RayHit reference(const Ray& ray, const RayTarget& target) {
     if (target.shape.type == ShapeType::Convex) return rayHullPlanes(ray, target.pose, *target.shape.hull);
     return castRay(ray, target.shape, target.pose);
 }
@@ -136,10 +107,11 @@ BenchEntry debugBench() {
                          "time per cast (ns, CPU)", "largest deviation across the surface (m)");
         rayPlot.caption = std::to_string(rayCount) + " rays per shape from 3 m; along each line the iteration cap grows " +
                           "1 to 64; drawn at 1 m while a ray is still called otherwise, a deviation of 0 at 1e-12 m.";
-        bench.progress().stage("ray casts", long(targets().size()));
-        for (const Target& target : targets()) {
+        bench.progress().stage("ray casts", long(rayTargets().size()));
+        for (const RayTarget& target : rayTargets()) {
             Random random(9);
-            const std::vector<Ray> aimed = aimedRays(target, rayCount, random);
+            std::vector<Ray> aimed;
+            for (int i = 0; i < rayCount; ++i) aimed.push_back(aimedRay(target, random));
             std::vector<RayHit> exact(aimed.size());
             ThreadStopwatch clock;
             for (std::size_t i = 0; i < aimed.size(); ++i) exact[i] = reference(aimed[i], target);

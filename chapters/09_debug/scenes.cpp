@@ -7,18 +7,9 @@
 
 namespace stepwise {
 
-namespace {
-
-World namedWorld(const std::string& name) {
-    World world;
-    world.name = name;
-    return world;
-}
-
-}  // namespace
-
 World buildDebugDrop() {
-    World world = namedWorld("debug-drop");
+    World world;
+    world.name = "debug-drop";
     addGroundPlane(world);
     const Quat tilt(Eigen::AngleAxis<Real>(Real(0.5), Vec3(1, 0, 1).normalized()));
     addCrate(world, "box", Vec3(0, Real(1.2), 0), Vec3(Real(0.3), Real(0.2), Real(0.25)), 2, Material{}, tilt);
@@ -28,7 +19,8 @@ World buildDebugDrop() {
 }
 
 World buildDebugHullOnBox() {
-    World world = namedWorld("debug-hull-on-box");
+    World world;
+    world.name = "debug-hull-on-box";
     addGroundPlane(world);
     addCrate(world, "crate", Vec3(0, Real(0.3), 0), Vec3(Real(0.6), Real(0.3), Real(0.6)), 20, Material{});
     // A gem: an octagon ring and two apexes, tilted so it lands on an edge and rolls onto a face.
@@ -47,7 +39,8 @@ World buildDebugHullOnBox() {
 }
 
 World buildDebugTunnel() {
-    World world = namedWorld("debug-tunnel");
+    World world;
+    world.name = "debug-tunnel";
     world.settings.gravity = Vec3::Zero();
     world.settings.ccd = CcdMode::Off;   // the bug to find; `ccd: on` is the fix the page shows
     // Chapter 4's solve: chapter 6's relax and soft step search contacts a whole frame ahead (a
@@ -67,7 +60,8 @@ World buildDebugTunnel() {
 }
 
 World buildDebugJitter() {
-    World world = namedWorld("debug-jitter");
+    World world;
+    world.name = "debug-jitter";
     world.settings.warmStarting = false;   // what makes it jitter; the page turns it back on
     addGroundPlane(world);
     for (int level = 0; level < 5; ++level)

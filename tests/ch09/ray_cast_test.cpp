@@ -3,6 +3,7 @@
 // capsule as the set of points within its radius of its segment), within 1e-6 m; hits, misses,
 // grazing rays and rays that start inside. And the GJK cast against the same answers.
 #include "09_debug/ray_cast.h"
+#include "09_debug/ray_targets.h"
 
 #include "math/random.h"
 
@@ -92,33 +93,7 @@ std::optional<Exact> exactEntry(const Ray& ray, const Shape& shape, const Transf
     return inside;
 }
 
-struct Case {
-    const char* name;
-    Shape shape;
-    Transform pose;
-};
-
-std::vector<Case> cases() {
-    const Quat tilt(Eigen::AngleAxis<Real>(Real(0.7), Vec3(1, 2, 3).normalized()));
-    std::vector<Vec3> gem{Vec3(0, Real(0.35), 0), Vec3(0, Real(-0.25), 0)};
-    for (int i = 0; i < 8; ++i)
-        gem.push_back(Vec3(Real(0.3) * std::cos(Real(i) * kPi / 4), Real(0.05), Real(0.3) * std::sin(Real(i) * kPi / 4)));
-    return {{"sphere", Shape::sphere(Real(0.5)), Transform{Vec3(Real(0.2), Real(1), 0), Quat::Identity()}},
-            {"box", Shape::box(Vec3(Real(0.5), Real(0.3), Real(0.2))), Transform{Vec3(0, Real(1), Real(0.1)), tilt}},
-            {"capsule", Shape::capsule(Real(0.3), Real(0.4)), Transform{Vec3(Real(-0.1), Real(1), 0), tilt}},
-            {"hull", Shape::convex(gem), Transform{Vec3(0, Real(1), 0), tilt}}};
-}
-
-/// A ray from 3 m away at a random point of the shape's bounds: hits, near misses and grazes.
-Ray aimedRay(const Case& target, Random& random) {
-    const Aabb bounds = computeAabb(target.shape, target.pose);
-    const Vec3 from = target.pose.position + 3 * random.unitVector();
-    const Vec3 fraction(random.uniformReal(0, 1), random.uniformReal(0, 1), random.uniformReal(0, 1));
-    const Vec3 at = bounds.min + (bounds.max - bounds.min).cwiseProduct(fraction);
-    return Ray{from, (at - from).normalized(), kRealMax};
-}
-
-void checkAgainstOracle(const Ray& ray, const Case& target, const RayHit& hit) {
+void checkAgainstOracle(const Ray& ray, const RayTarget& target, const RayHit& hit) {
     const std::optional<Exact> entry = exactEntry(ray, target.shape, target.pose);
     // A ray passing within the oracle's step of the surface may be called either way; only a
     // clear hit or a clear miss must agree.
@@ -150,7 +125,7 @@ void checkAgainstOracle(const Ray& ray, const Case& target, const RayHit& hit) {
 }  // namespace
 
 TEST_CASE("ray casts: the closed forms against the exact entry, within 1e-6 m", "[ch09][ray]") {
-    for (const Case& target : cases()) {
+    for (const RayTarget& target : rayTargets()) {
         INFO(target.name);
         Random random(21);
         int hits = 0, misses = 0;
@@ -167,7 +142,7 @@ TEST_CASE("ray casts: the closed forms against the exact entry, within 1e-6 m", 
 }
 
 TEST_CASE("ray casts: GJK on the support map meets the closed forms within 1e-6 m", "[ch09][ray]") {
-    for (const Case& target : cases()) {
+    for (const RayTarget& target : rayTargets()) {
         INFO(target.name);
         Random random(22);
         const ConvexProxy proxy{&target.shape, target.pose};
@@ -181,7 +156,7 @@ TEST_CASE("ray casts: GJK on the support map meets the closed forms within 1e-6 
 }
 
 TEST_CASE("ray casts: a ray that starts inside hits at 0, one that points away misses", "[ch09][ray]") {
-    for (const Case& target : cases()) {
+    for (const RayTarget& target : rayTargets()) {
         INFO(target.name);
         const Vec3 centre = target.pose.position;
         const RayHit inside = castRay(Ray{centre, Vec3::UnitX(), 10}, target.shape, target.pose);
