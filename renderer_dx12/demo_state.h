@@ -62,7 +62,7 @@ public:
 
     // The session's clock, through the state so the cached hit tree and selection follow.
     bool paused() const { return session_->paused; }
-    void setPaused(bool paused) { session_->paused = paused; }
+    void setPaused(bool value) { session_->paused = value; }
     /// Shows a kept frame (pausing: stepping on from there is speculative). False when not kept.
     bool rewindTo(long frame);
     /// Back to the live run, discarding the speculative frames.
@@ -91,12 +91,14 @@ public:
     /// Set when the selection came from the scene (a click): the tree panel opens and scrolls to it.
     bool revealSelection = false;
 
-    /// Bodies, the scene's own drawing, contacts, and the ground grid.
+    /// The ground grid, chapter 9's views (bodies, contacts, highlights), the solver's impulse
+    /// arrows, and the scene's own drawing.
     void buildDrawList(DrawList& list, const ViewOptions& options) const;
     /// The moving bodies when there are any (a huge ground would dwarf them), else all bodies.
     Aabb bodyBounds() const;
-    /// What to frame now: bodyBounds() plus everything the scene's draw hook emits (overlays
-    /// beside or above the bodies), extended down to the ground so the ground stays in view.
+    /// What to frame now: bodyBounds() plus everything the scene's draw hook emits and the
+    /// debugger's A - B overlay (beside or above the bodies), extended down to the ground so the
+    /// ground stays in view.
     Framing framing() const;
     /// framing() when the scene was loaded (frame 0): what a new scene is framed from.
     const Framing& initialFraming() const { return initialFraming_; }
