@@ -107,6 +107,16 @@ void viewsSection(DemoState& state, ViewOptions& view) {
     }
 }
 
+void gizmoModeButtons(Gizmo& gizmo) {
+    int mode = gizmo.mode == Gizmo::Mode::Translate ? 0 : 1;
+    ImGui::TextUnformatted("gizmo");
+    ImGui::SameLine();
+    ImGui::RadioButton("move (W)", &mode, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("turn (E)", &mode, 1);
+    gizmo.mode = mode == 0 ? Gizmo::Mode::Translate : Gizmo::Mode::Rotate;
+}
+
 bool header(const char* label, DebugTools& tools, DebugTools::Section section, bool defaultOpen) {
     if (tools.openRequest[section]) {
         ImGui::SetNextItemOpen(true);
@@ -158,7 +168,10 @@ void drawDebugger(DemoState& state, ViewOptions& view, DebugTools& tools) {
         if (header("Hit results", tools, DebugTools::HitResults, false)) hitTreeSection(state);
         else state.revealSelection = false;
         if (state.selectedBody >= 0 && tools.inspector.body != state.selectedBody) tools.openRequest[DebugTools::InspectorSection] = true;
-        if (header("Inspector", tools, DebugTools::InspectorSection, false)) inspectorSection(tools.inspector, state);
+        if (header("Inspector", tools, DebugTools::InspectorSection, false)) {
+            inspectorSection(tools.inspector, state);
+            if (state.selectedBody >= 0) gizmoModeButtons(tools.gizmo);
+        }
         else if (state.selectedBody != tools.inspector.body) tools.inspector.body = -1;
         if (header("Performance", tools, DebugTools::Performance, false)) perfSection(tools.perf, state);
     }
