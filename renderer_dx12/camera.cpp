@@ -122,4 +122,20 @@ bool Camera::project(const Vec3f& world, float width, float height, float& x, fl
     return true;
 }
 
+Vec3f Camera::pixelDirection(float x, float y, float width, float height) const {
+    // projection(): x_ndc = (f / aspect) x_view / depth + shiftX and y_ndc = f y_view / depth, so
+    // at depth 1 the pixel's view-space point is ((x_ndc - shiftX) aspect / f, y_ndc / f, -1).
+    const float aspect = width / std::max(height, 1.0f);
+    const float f = 1.0f / std::tan(0.5f * fovY);
+    const float ndcX = 2.0f * x / std::max(width, 1.0f) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * y / std::max(height, 1.0f);
+    const Vec3f side = right(), up = side.cross(forward());
+    return ((ndcX - shiftX) * aspect / f * side + ndcY / f * up + forward()).normalized();
+}
+
+float Camera::metresPerPixel(const Vec3f& world, float height) const {
+    const float depth = std::max((world - eye()).dot(forward()), nearPlane);
+    return 2.0f * depth * std::tan(0.5f * fovY) / std::max(height, 1.0f);
+}
+
 }  // namespace stepwise::render

@@ -46,6 +46,12 @@ struct Camera {
 
     /// Screen position (pixels, origin top-left) of a world point; false when behind the eye.
     bool project(const Vec3f& world, float width, float height, float& x, float& y) const;
+    /// The inverse of project(): the ray from the eye through pixel (x, y) of a width x height
+    /// view, as a unit direction. Picking casts it into the world.
+    Vec3f pixelDirection(float x, float y, float width, float height) const;
+    /// Metres one pixel spans at a world point's depth: turns a pick radius or a gizmo's size in
+    /// pixels into metres.
+    float metresPerPixel(const Vec3f& world, float height) const;
 };
 
 }  // namespace stepwise::render

@@ -11,24 +11,38 @@
 
 namespace stepwise::render {
 
-DemoState::DemoState(const Registry& registry, int chapter) : registry_(registry), chapter_(chapter) {
+DemoState::DemoState(const Registry& registry, int chapter)
+    : registry_(registry), chapter_(chapter), session_(std::make_unique<DebugSession>(World(), Pipeline())) {
     for (const SceneEntry& entry : registry.scenes()) {
         if (entry.chapter <= chapter && entry.build) scenes_.push_back(&entry);
     }
 }
 
 void DemoState::setWorld(World next) {
-    world = std::move(next);
     accumulator_ = 0;
     stageHistory.clear();
     frameHistory.clear();
     pipelineError.clear();
+    Pipeline pipeline;
     try {
-        pipeline = registry_.makePipeline(world, chapter_);
+        pipeline = registry_.makePipeline(next, chapter_);
     } catch (const std::exception& error) {
-        pipeline = Pipeline();
         pipelineError = error.what();
     }
+    // A new session per load: the history, edits and frame hashes belong to one run. The
+    // switches a learner set (pause, simulation off, stop rules) carry over, as the pause
+    // always did across a restart.
+    auto session = std::make_unique<DebugSession>(std::move(next), std::move(pipeline));
+    session->paused = session_->paused;
+    session->simulationEnabled = session_->simulationEnabled;
+    session->rules = session_->rules;
+    session_ = std::move(session);
+    speculativeSteps_ = 0;
+    selectedBody = -1;
+    selectedA_ = selectedB_ = -1;
+    selection_ = HitSelection();
+    revealSelection = false;
+    worldChanged();
     initialFraming_ = framing();
 }
 
@@ -67,12 +81,13 @@ void DemoState::reload() {
 }
 
 void DemoState::advance(double wallSeconds) {
-    if (paused) return;
+    if (session_->paused) return;
+    const World& world = session_->world();
     const double dt = world.settings.dt > 0 ? static_cast<double>(world.settings.dt) : 1.0 / 60.0;
     accumulator_ += std::clamp(wallSeconds, 0.0, 0.25) * static_cast<double>(timeScale);
     // At most 4 steps per displayed frame: a slow machine runs in slow motion instead of
     // falling further and further behind (Gaffer on Games, "Fix your timestep").
-    for (int steps = 0; accumulator_ >= dt && steps < 4; ++steps) {
+    for (int steps = 0; accumulator_ >= dt && steps < 4 && !session_->paused; ++steps) {
         step();
         accumulator_ -= dt;
     }
@@ -80,17 +95,75 @@ void DemoState::advance(double wallSeconds) {
 }
 
 void DemoState::step() {
-    pipeline.step(world);
-    for (const Stage& stage : pipeline.stages()) {
+    if (session_->step() == StopReason::Disabled) return;
+    if (session_->rewound()) ++speculativeSteps_;
+    worldChanged();
+    for (const Stage& stage : session_->pipeline().stages()) {
         auto& history = stageHistory[stage.name];
         history.push_back(static_cast<float>(stage.enabled ? stage.lastMs : 0.0));
         if (history.size() > kHistory) history.pop_front();
     }
-    frameHistory.push_back(static_cast<float>(pipeline.lastStepMs()));
+    frameHistory.push_back(static_cast<float>(session_->pipeline().lastStepMs()));
     if (frameHistory.size() > kHistory) frameHistory.pop_front();
 }
 
+bool DemoState::rewindTo(long frame) {
+    if (!session_->rewindTo(frame)) return false;
+    session_->paused = true;
+    speculativeSteps_ = 0;
+    worldChanged();
+    return true;
+}
+
+void DemoState::resume() {
+    session_->resume();
+    speculativeSteps_ = 0;
+    worldChanged();
+}
+
+void DemoState::edit(const BodyEdit& change) {
+    session_->edit(change);
+    worldChanged();
+}
+
+const HitTree& DemoState::hitTree() const {
+    if (treeStale_) {
+        tree_ = buildHitTree(session_->world());
+        treeStale_ = false;
+        // The selected node follows its pair; its manifold and point only while they still exist.
+        HitSelection kept = selectedA_ >= 0 ? findPair(tree_, selectedA_, selectedB_) : HitSelection();
+        if (!kept.empty() && selection_.manifold >= 0) {
+            const HitPair& pair = tree_.pairs[static_cast<std::size_t>(kept.pair)];
+            if (selection_.manifold < static_cast<int>(pair.manifolds.size())) {
+                kept.manifold = selection_.manifold;
+                const auto& points = pair.manifolds[static_cast<std::size_t>(kept.manifold)].points;
+                if (selection_.point < static_cast<int>(points.size())) kept.point = selection_.point;
+            }
+        }
+        selection_ = kept;
+    }
+    return tree_;
+}
+
+const HitSelection& DemoState::hitSelection() const {
+    hitTree();
+    return selection_;
+}
+
+void DemoState::selectHit(const HitSelection& selection) {
+    const HitTree& tree = hitTree();
+    if (selection.empty() || selection.pair >= static_cast<int>(tree.pairs.size())) {
+        selection_ = HitSelection();
+        selectedA_ = selectedB_ = -1;
+        return;
+    }
+    selection_ = selection;
+    selectedA_ = tree.pairs[static_cast<std::size_t>(selection.pair)].bodyA;
+    selectedB_ = tree.pairs[static_cast<std::size_t>(selection.pair)].bodyB;
+}
+
 Real DemoState::groundLevel() const {
+    const World& world = session_->world();
     const Body* widest = nullptr;
     Real widestArea = 0;
     Real lowest = kRealMax;
@@ -110,6 +183,7 @@ Real DemoState::groundLevel() const {
 }
 
 Aabb DemoState::bodyBounds() const {
+    const World& world = session_->world();
     Aabb moving, all;
     for (const Body& body : world.bodies) {
         const Aabb box = computeAabb(body.shape, body.transform);
@@ -126,6 +200,7 @@ Aabb DemoState::bodyBounds() const {
 }
 
 Framing DemoState::framing() const {
+    const World& world = session_->world();
     Framing framing;
     Aabb& result = framing.bounds;
     result = bodyBounds();
@@ -140,6 +215,18 @@ Framing DemoState::framing() const {
         }
         if (!measure.empty()) result.grow(measure.bounds());
         framing.labels = std::move(measure.labels);
+    }
+    // So is the debugger's A - B overlay beside the bodies; only the overlays are measured (the
+    // views that draw the bodies would bring in the whole ground).
+    if (views.gjkSimplex || views.minkowski) {
+        DebugViews overlays;
+        overlays.colliders = overlays.wireframeSelection = overlays.contactPoints = overlays.contactNormals = false;
+        overlays.gjkSimplex = views.gjkSimplex;
+        overlays.minkowski = views.minkowski;
+        BoundsDraw measure;
+        drawDebugViews(measure, world, overlays, selectedBody, hitTree(), hitSelection());
+        if (!measure.empty()) result.grow(measure.bounds());
+        for (TextLabel& label : measure.labels) framing.labels.push_back(std::move(label));
     }
     // Keep the ground (a static slab, or the grid at groundLevel()) in the picture: always when
     // there is a static body; for bodies in free space only when the ground is near them, so a
@@ -171,12 +258,19 @@ void DemoState::buildDrawList(DrawList& list, const ViewOptions& options) const 
         list.lineWidth(Vec3(0, y, 0), Vec3(1, y, 0), colors::kRed, 3);
         list.lineWidth(Vec3(0, y, 0), Vec3(0, y, 1), colors::kBlue, 3);
     }
-    drawWorld(list, world);
-    if (options.showContacts || options.showImpulses) {
-        ContactDrawOptions contactOptions;
-        contactOptions.points = contactOptions.normals = options.showContacts;
-        contactOptions.impulses = options.showImpulses && chapterReading("solver") <= chapter_;
-        drawContacts(list, world, contactOptions);
+    const World& world = session_->world();
+    // Chapter 9's views draw the bodies, the contacts (cubes and normals) and whatever the
+    // debugger highlights. The solver chapters' impulse arrows take the place of the fixed-length
+    // normals when shown: both are yellow arrows from the same point.
+    const bool impulses = options.showImpulses && chapterReading("solver") <= chapter_;
+    DebugViews shown = views;
+    if (impulses) shown.contactNormals = false;
+    drawDebugViews(list, world, shown, selectedBody, hitTree(), hitSelection());
+    if (impulses) {
+        ContactDrawOptions arrows;
+        arrows.points = arrows.normals = false;
+        arrows.impulses = true;
+        drawContacts(list, world, arrows);
     }
     if (view_) view_->draw(world, list);
     if (!options.showLabels) list.labels.clear();

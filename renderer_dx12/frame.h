@@ -21,9 +21,4 @@ void recordFrame(Device& device, SceneRenderer& renderer, const TargetView& targ
 void initImGui(Device& device);
 void shutdownImGui();
 
-/// Writes what a test should find in a screenshot (tests/render/check_png.cpp reads it):
-/// where the ground and each body's centre land on screen and in which colour, the rectangle
-/// of the shell's panel, and the screen rectangle of the box the camera was framed from.
-void writeExpectations(const std::string& path, const DemoState& state, const Camera& camera, int width, int height);
-
 }  // namespace stepwise::render

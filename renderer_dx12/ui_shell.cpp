@@ -72,71 +72,11 @@ void settingsSection(World& world, int chapter, int lastChapter) {
                                 use.chapter > lastChapter ? " (to come)" : "");
 }
 
-/// Durations readable at a glance: "850 ns", "4.2 us", "1.25 ms", "2.5 s".
-void formatDuration(char* out, size_t size, double ms) {
-    if (ms < 0.001) std::snprintf(out, size, "%.0f ns", ms * 1e6);
-    else if (ms < 1.0) std::snprintf(out, size, "%.3g us", ms * 1e3);
-    else if (ms < 1000.0) std::snprintf(out, size, "%.3g ms", ms);
-    else std::snprintf(out, size, "%.3g s", ms * 1e-3);
-}
-
-/// The smallest 1, 2 or 5 times a power of ten at or above `value`: a graph's full scale.
-double niceCeiling(double value) {
-    if (!(value > 0)) return 0;
-    const double decade = std::pow(10.0, std::floor(std::log10(value)));
-    for (double step : {1.0, 2.0, 5.0, 10.0})
-        if (step * decade >= value * (1 - 1e-9)) return step * decade;
-    return 10 * decade;
-}
-
-/// A history graph scaled to its recent maximum so that sub-millisecond curves fill its height.
-/// "Maximum" leaves out the top 5% of the samples: one slow step (often the very first)
-/// would otherwise flatten the rest into the baseline. Those few clip at the top, and the
-/// graph's corner prints the full scale and, when it is higher, the peak.
-void historyGraph(const char* id, const std::deque<float>& history, float height, const char* caption = nullptr) {
-    if (history.empty()) return;
-    std::vector<float> samples(history.begin(), history.end());
-    std::vector<float> sorted = samples;
-    std::sort(sorted.begin(), sorted.end());
-    const double peak = static_cast<double>(sorted.back());
-    const double typicalMax = static_cast<double>(sorted[(sorted.size() - 1) * 95 / 100]);
-    const double top = niceCeiling(typicalMax > 0 ? typicalMax : peak);
-    // Auto-resized windows give a negative width only a few pixels: size the graph explicitly.
-    const float width = std::max(ImGui::GetContentRegionAvail().x, 300.0f);
-    const ImVec2 corner = ImGui::GetCursorScreenPos();
-    ImGui::PushID(id);
-    ImGui::PlotLines("##history", samples.data(), static_cast<int>(samples.size()), 0, nullptr, 0.0f,
-                     top > 0 ? static_cast<float>(top) : 1.0f, ImVec2(width, height));
-    ImGui::PopID();
-    char scale[64] = "0";
-    if (top > 0) {
-        char full[24], highest[24];
-        formatDuration(full, sizeof full, top);
-        formatDuration(highest, sizeof highest, peak);
-        if (peak > top) std::snprintf(scale, sizeof scale, "0..%s, peak %s", full, highest);
-        else std::snprintf(scale, sizeof scale, "0..%s", full);
-    }
-    // Captions on a dark backing, so the curve under them does not garble them.
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    const ImU32 backing = ImGui::GetColorU32(ImGuiCol_WindowBg, 0.8f);
-    const ImVec2 scaleSize = ImGui::CalcTextSize(scale);
-    const ImVec2 scaleAt(corner.x + width - scaleSize.x - 3, corner.y + 1);
-    draw->AddRectFilled(ImVec2(scaleAt.x - 2, scaleAt.y), ImVec2(scaleAt.x + scaleSize.x + 1, scaleAt.y + scaleSize.y), backing);
-    draw->AddText(scaleAt, ImGui::GetColorU32(ImGuiCol_TextDisabled), scale);
-    if (caption) {
-        const ImVec2 captionSize = ImGui::CalcTextSize(caption);
-        const ImVec2 captionAt(corner.x + 3, corner.y + 1);
-        draw->AddRectFilled(ImVec2(captionAt.x - 1, captionAt.y), ImVec2(captionAt.x + captionSize.x + 2, captionAt.y + captionSize.y),
-                            backing);
-        draw->AddText(captionAt, ImGui::GetColorU32(ImGuiCol_Text), caption);
-    }
-}
-
 void pipelineSection(DemoState& state) {
     if (!ImGui::CollapsingHeader("Pipeline", ImGuiTreeNodeFlags_DefaultOpen)) return;
     if (!state.pipelineError.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%s", state.pipelineError.c_str());
     char duration[32];
-    for (Stage& stage : state.pipeline.stages()) {
+    for (Stage& stage : state.pipeline().stages()) {
         ImGui::Checkbox(stage.name.c_str(), &stage.enabled);
         // A long stage name pushes the time right instead of running into it.
         ImGui::SameLine();
@@ -158,11 +98,14 @@ void helpOverlay() {
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(0.5f * size.x, 0.5f * size.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("Hotkeys (F1)", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
-    const char* const rows[][2] = {{"F1", "this help"}, {"F2", "hide / show the panel"}, {"Space", "run / pause"},
-                                   {"N or Right", "single step (paused)"}, {"R", "restart the scene"},
+    const char* const rows[][2] = {{"F1", "this help"}, {"F2", "hide / show the panel"}, {"P", "run / pause"},
+                                   {"Space (hold)", "stop at the next new contact"}, {"Left Alt", "continue (unpause)"},
+                                   {"N or Right", "single step (paused)"}, {"Left", "one frame back in the history"},
+                                   {"Left click", "select a body or a contact point"}, {"W / E (selected)", "move / turn gizmo"},
+                                   {"Esc", "deselect"}, {"R", "restart the scene"},
                                    {"PgUp / PgDn", "previous / next scene"}, {"F", "frame the scene"},
                                    {"C", "orbit / fly camera"}, {"Z", "wireframe"}, {"G", "ground grid"},
-                                   {"W A S D Q E", "fly (or move the orbit centre)"},
+                                   {"W A S D Q E", "fly (nothing selected)"},
                                    {"Right mouse drag", "orbit / look"}, {"Middle drag", "pan"}, {"Wheel", "zoom"}};
     for (const auto& row : rows) {
         ImGui::TextUnformatted(row[0]);
@@ -173,6 +116,73 @@ void helpOverlay() {
 }
 
 }  // namespace
+
+void formatDuration(char* out, size_t size, double ms) {
+    if (ms < 0.001) std::snprintf(out, size, "%.0f ns", ms * 1e6);
+    else if (ms < 1.0) std::snprintf(out, size, "%.3g us", ms * 1e3);
+    else if (ms < 1000.0) std::snprintf(out, size, "%.3g ms", ms);
+    else std::snprintf(out, size, "%.3g s", ms * 1e-3);
+}
+
+namespace {
+
+/// The smallest 1, 2 or 5 times a power of ten at or above `value`: a graph's full scale.
+double niceCeiling(double value) {
+    if (!(value > 0)) return 0;
+    const double decade = std::pow(10.0, std::floor(std::log10(value)));
+    for (double step : {1.0, 2.0, 5.0, 10.0})
+        if (step * decade >= value * (1 - 1e-9)) return step * decade;
+    return 10 * decade;
+}
+
+}  // namespace
+
+// "Maximum" leaves out the top 5% of the samples: one slow step (often the very first) would
+// otherwise flatten the rest into the baseline. Those few clip at the top, and the graph's
+// corner prints the full scale and, when it is higher, the peak.
+void historyGraph(const char* id, const std::deque<float>& history, float height, const char* caption, bool durations) {
+    if (history.empty()) return;
+    std::vector<float> samples(history.begin(), history.end());
+    std::vector<float> sorted = samples;
+    std::sort(sorted.begin(), sorted.end());
+    const double peak = static_cast<double>(sorted.back());
+    const double typicalMax = static_cast<double>(sorted[(sorted.size() - 1) * 95 / 100]);
+    const double top = niceCeiling(typicalMax > 0 ? typicalMax : peak);
+    // Auto-resized windows give a negative width only a few pixels: size the graph explicitly.
+    const float width = std::max(ImGui::GetContentRegionAvail().x, 300.0f);
+    const ImVec2 corner = ImGui::GetCursorScreenPos();
+    ImGui::PushID(id);
+    ImGui::PlotLines("##history", samples.data(), static_cast<int>(samples.size()), 0, nullptr, 0.0f,
+                     top > 0 ? static_cast<float>(top) : 1.0f, ImVec2(width, height));
+    ImGui::PopID();
+    char scale[64] = "0";
+    if (top > 0) {
+        char full[24], highest[24];
+        if (durations) {
+            formatDuration(full, sizeof full, top);
+            formatDuration(highest, sizeof highest, peak);
+        } else {
+            std::snprintf(full, sizeof full, "%.4g", top);
+            std::snprintf(highest, sizeof highest, "%.4g", peak);
+        }
+        if (peak > top) std::snprintf(scale, sizeof scale, "0..%s, peak %s", full, highest);
+        else std::snprintf(scale, sizeof scale, "0..%s", full);
+    }
+    // Captions on a dark backing, so the curve under them does not garble them.
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImU32 backing = ImGui::GetColorU32(ImGuiCol_WindowBg, 0.8f);
+    const ImVec2 scaleSize = ImGui::CalcTextSize(scale);
+    const ImVec2 scaleAt(corner.x + width - scaleSize.x - 3, corner.y + 1);
+    draw->AddRectFilled(ImVec2(scaleAt.x - 2, scaleAt.y), ImVec2(scaleAt.x + scaleSize.x + 1, scaleAt.y + scaleSize.y), backing);
+    draw->AddText(scaleAt, ImGui::GetColorU32(ImGuiCol_TextDisabled), scale);
+    if (caption) {
+        const ImVec2 captionSize = ImGui::CalcTextSize(caption);
+        const ImVec2 captionAt(corner.x + 3, corner.y + 1);
+        draw->AddRectFilled(ImVec2(captionAt.x - 1, captionAt.y), ImVec2(captionAt.x + captionSize.x + 2, captionAt.y + captionSize.y),
+                            backing);
+        draw->AddText(captionAt, ImGui::GetColorU32(ImGuiCol_Text), caption);
+    }
+}
 
 void ImGuiPanel::text(const std::string& line) { ImGui::TextWrapped("%s", line.c_str()); }
 bool ImGuiPanel::checkbox(const std::string& label, bool& value) { return ImGui::Checkbox(label.c_str(), &value); }
@@ -187,9 +197,10 @@ bool ImGuiPanel::combo(const std::string& label, int& index, const char* const* 
     return ImGui::Combo(label.c_str(), &index, items, count);
 }
 
-void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellInfo& info) {
+void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellInfo& info, DebugTools& tools) {
     if (view.showHelp) helpOverlay();
     if (!view.showPanel) return;
+    World& world = state.world();
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(370, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin(kMainWindow, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -198,7 +209,7 @@ void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellI
 
     const auto& scenes = state.scenes();
     const SceneEntry* current = state.scene();
-    if (ImGui::BeginCombo("scene", current ? current->name.c_str() : state.world.name.c_str())) {
+    if (ImGui::BeginCombo("scene", current ? current->name.c_str() : world.name.c_str())) {
         std::string category;
         for (size_t i = 0; i < scenes.size(); ++i) {
             if (scenes[i]->category != category) {
@@ -215,27 +226,27 @@ void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellI
     if (current && !current->observe.empty()) ImGui::TextWrapped("Observe: %s", current->observe.c_str());
     if (!state.loadError.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", state.loadError.c_str());
 
-    if (ImGui::Button(state.paused ? "Run" : "Pause")) state.paused = !state.paused;
+    if (ImGui::Button(state.paused() ? "Run" : "Pause")) state.setPaused(!state.paused());
     ImGui::SameLine();
     if (ImGui::Button("Step")) {
-        state.paused = true;
+        state.setPaused(true);
         state.step();
     }
     ImGui::SameLine();
     if (ImGui::Button("Restart")) state.reload();
     ImGui::SliderFloat("time scale", &state.timeScale, 0.05f, 4.0f, "%.2fx");
-    ImGui::Text("t = %.2f s  frame %ld  bodies %d (%d dynamic)  contacts %d", state.world.time, state.world.frame,
-                static_cast<int>(state.world.bodies.size()), state.world.dynamicBodyCount(),
-                static_cast<int>(state.world.contacts.size()));
+    ImGui::Text("t = %.2f s  frame %ld  bodies %d (%d dynamic)  contacts %d", static_cast<double>(world.time), world.frame,
+                static_cast<int>(world.bodies.size()), world.dynamicBodyCount(), static_cast<int>(world.contacts.size()));
 
     pipelineSection(state);
-    settingsSection(state.world, state.chapter(), state.registry().lastChapter());
+    settingsSection(world, state.chapter(), state.registry().lastChapter());
     if (ImGui::CollapsingHeader("View")) {
         ImGui::Checkbox("wireframe (Z)", &view.wireframe);
         ImGui::SliderFloat("line width (px)", &view.lineWidth, 1.0f, 8.0f, "%.1f");
         ImGui::Checkbox("grid (G)", &view.showGrid);
         ImGui::SameLine();
-        ImGui::Checkbox("contacts", &view.showContacts);
+        bool contacts = state.views.contactPoints || state.views.contactNormals;
+        if (ImGui::Checkbox("contacts", &contacts)) state.views.contactPoints = state.views.contactNormals = contacts;
         if (chapterReading("solver") <= state.chapter()) {
             ImGui::SameLine();
             ImGui::Checkbox("impulses", &view.showImpulses);
@@ -249,21 +260,37 @@ void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellI
     if (SceneView* sceneView = state.view();
         sceneView && sceneView->hasPanel() && ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGuiPanel panel;
-        sceneView->panel(state.world, panel);
+        sceneView->panel(world, panel);
     }
     ImGui::End();
+    drawDebugger(state, view, tools);
 }
 
-bool handleInput(DemoState& state, ViewOptions& view, Camera& camera, float viewportHeight, float seconds) {
+bool handleInput(DemoState& state, ViewOptions& view, Camera& camera, DebugTools& tools, float viewportHeight, float seconds) {
     ImGuiIO& io = ImGui::GetIO();
     bool reframe = false;
+    // The CS550 write-up's contact debug mode: hold Space while the scene runs and it stops at the
+    // first new contact; Left Alt lets it go on. 1.86 has no left/right Alt codes: either Alt.
+    const bool holdToStop = !io.WantCaptureKeyboard && down(STEPWISE_KEY(VK_SPACE, ImGuiKey_Space));
+    state.session().rules.stopOnNewContact = tools.stopOnNewContact || holdToStop;
     if (!io.WantCaptureKeyboard) {
         if (pressed(STEPWISE_KEY(VK_F1, ImGuiKey_F1))) view.showHelp = !view.showHelp;
         if (pressed(STEPWISE_KEY(VK_F2, ImGuiKey_F2))) view.showPanel = !view.showPanel;
-        if (pressed(STEPWISE_KEY(VK_SPACE, ImGuiKey_Space))) state.paused = !state.paused;
+        if (pressed(STEPWISE_KEY('P', ImGuiKey_P))) state.setPaused(!state.paused());
+        if (pressed(STEPWISE_KEY(VK_MENU, ImGuiKey_LeftAlt))) state.setPaused(false);
         if (pressed(STEPWISE_KEY('N', ImGuiKey_N)) || pressed(STEPWISE_KEY(VK_RIGHT, ImGuiKey_RightArrow))) {
-            state.paused = true;
+            state.setPaused(true);
             state.step();
+        }
+        if (pressed(STEPWISE_KEY(VK_LEFT, ImGuiKey_LeftArrow)) && !state.session().history().empty())
+            state.rewindTo(std::max(state.session().history().oldestFrame(), state.world().frame - 1));
+        // With a body selected, W and E are the editors' gizmo keys; the fly keys wait for a deselect.
+        const bool selected = state.selectedBody >= 0;
+        if (selected && pressed(STEPWISE_KEY('W', ImGuiKey_W))) tools.gizmo.mode = Gizmo::Mode::Translate;
+        if (selected && pressed(STEPWISE_KEY('E', ImGuiKey_E))) tools.gizmo.mode = Gizmo::Mode::Rotate;
+        if (pressed(STEPWISE_KEY(VK_ESCAPE, ImGuiKey_Escape))) {
+            state.selectedBody = -1;
+            state.selectHit(HitSelection());
         }
         if (pressed(STEPWISE_KEY('R', ImGuiKey_R))) state.reload();
         const int count = static_cast<int>(state.scenes().size());
@@ -282,9 +309,10 @@ bool handleInput(DemoState& state, ViewOptions& view, Camera& camera, float view
         if (pressed(STEPWISE_KEY('Z', ImGuiKey_Z))) view.wireframe = !view.wireframe;
         if (pressed(STEPWISE_KEY('G', ImGuiKey_G))) view.showGrid = !view.showGrid;
         const float speed = std::max(2.0f, 0.5f * camera.distance) * seconds * (io.KeyShift ? 4.0f : 1.0f);
-        const float forward = (down(STEPWISE_KEY('W', ImGuiKey_W)) ? 1.0f : 0.0f) - (down(STEPWISE_KEY('S', ImGuiKey_S)) ? 1.0f : 0.0f);
-        const float right = (down(STEPWISE_KEY('D', ImGuiKey_D)) ? 1.0f : 0.0f) - (down(STEPWISE_KEY('A', ImGuiKey_A)) ? 1.0f : 0.0f);
-        const float up = (down(STEPWISE_KEY('E', ImGuiKey_E)) ? 1.0f : 0.0f) - (down(STEPWISE_KEY('Q', ImGuiKey_Q)) ? 1.0f : 0.0f);
+        const auto key = [&](int code) { return !selected && down(code); };
+        const float forward = (key(STEPWISE_KEY('W', ImGuiKey_W)) ? 1.0f : 0.0f) - (key(STEPWISE_KEY('S', ImGuiKey_S)) ? 1.0f : 0.0f);
+        const float right = (key(STEPWISE_KEY('D', ImGuiKey_D)) ? 1.0f : 0.0f) - (key(STEPWISE_KEY('A', ImGuiKey_A)) ? 1.0f : 0.0f);
+        const float up = (key(STEPWISE_KEY('E', ImGuiKey_E)) ? 1.0f : 0.0f) - (key(STEPWISE_KEY('Q', ImGuiKey_Q)) ? 1.0f : 0.0f);
         if (forward != 0 || right != 0 || up != 0) camera.move(forward * speed, right * speed, up * speed);
     }
     if (!io.WantCaptureMouse) {
@@ -332,17 +360,20 @@ float labelWidth(const char* text) {
 }  // namespace
 
 void frameScene(Camera& camera, const Framing& framing, const ViewOptions& view, float width, float height) {
-    // The panel's right edge (it sits at the left); 8 px of air between it and the scene.
-    constexpr float kUsualPanelRight = 405;
-    float left = 0;
+    // The panel's right edge (it sits at the left) and the debugger's left edge (it sits at the
+    // right); 8 px of air between them and the scene.
+    constexpr float kUsualPanelRight = 405, kUsualDebuggerWidth = 366;
+    const float viewWidth = std::max(width, 1.0f), aspect = viewWidth / std::max(height, 1.0f);
+    float left = 0, right = viewWidth;
     if (view.showPanel) {
         float rect[4];
         left = (shellRect(rect) ? rect[2] : kUsualPanelRight) + 8;
+        if (debuggerRect(rect)) right = rect[0] - 8;
+        else if (view.debuggerOpen && !ImGui::FindWindowByName("Debugger")) right = viewWidth - kUsualDebuggerWidth;
     }
-    // In a window too narrow for both, frame for the whole view: F2 hides the panel.
-    const float viewWidth = std::max(width, 1.0f), aspect = viewWidth / std::max(height, 1.0f);
+    // In a window too narrow for all three, frame for the whole view: F2 hides the shell.
     const float leftFraction = left < 0.6f * viewWidth ? left / viewWidth : 0.0f;
-    float rightFraction = 1.0f;
+    float rightFraction = right - left > 0.3f * viewWidth ? right / viewWidth : 1.0f;
     camera.frame(framing.bounds, aspect, leftFraction, rightFraction);
     // Labels run right from their anchors: while one ends past the right edge, give the
     // scene that much less room and frame again (a few rounds settle it).
@@ -351,9 +382,9 @@ void frameScene(Camera& camera, const Framing& framing, const ViewOptions& view,
         for (const TextLabel& label : framing.labels) {
             float x = 0, y = 0;
             if (!camera.project(label.at.cast<float>(), viewWidth, height, x, y)) continue;
-            overflow = std::max(overflow, x + labelWidth(label.message.c_str()) + 8 - viewWidth);
+            overflow = std::max(overflow, x + labelWidth(label.message.c_str()) + 8 - right);
         }
-        const float narrower = std::max(rightFraction - 1.1f * overflow / viewWidth, leftFraction + 0.35f);
+        const float narrower = std::max(rightFraction - 1.1f * overflow / viewWidth, leftFraction + 0.25f);
         if (overflow <= 0 || narrower >= rightFraction) break;
         rightFraction = narrower;
         camera.frame(framing.bounds, aspect, leftFraction, rightFraction);

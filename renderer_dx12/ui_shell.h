@@ -5,8 +5,11 @@
 
 #include "app/panel.h"
 #include "camera.h"
+#include "debug_panel.h"
 #include "demo_state.h"
 
+#include <cstddef>
+#include <deque>
 #include <string>
 
 namespace stepwise::render {
@@ -28,17 +31,25 @@ struct ShellInfo {
     float framesPerSecond = 0;
 };
 
-/// Builds the whole ImGui frame content (between ImGui::NewFrame and ImGui::Render).
-void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellInfo& info);
+/// Durations readable at a glance: "850 ns", "4.2 us", "1.25 ms", "2.5 s".
+void formatDuration(char* out, size_t size, double ms);
+/// A history graph scaled to its recent maximum so that sub-millisecond curves fill its height;
+/// its corner prints the full scale (as durations of milliseconds, or plain numbers).
+void historyGraph(const char* id, const std::deque<float>& history, float height, const char* caption = nullptr,
+                  bool durations = true);
+
+/// Builds the whole ImGui frame content (between ImGui::NewFrame and ImGui::Render): the main
+/// panel on the left and the debugger on the right.
+void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellInfo& info, DebugTools& tools);
 /// Hotkeys and mouse camera control; skipped where ImGui wants the input. Returns true when
 /// the camera should be re-framed (new scene, F key).
-bool handleInput(DemoState& state, ViewOptions& view, Camera& camera, float viewportHeight, float seconds);
+bool handleInput(DemoState& state, ViewOptions& view, Camera& camera, DebugTools& tools, float viewportHeight, float seconds);
 /// DebugDraw::text labels, drawn over the 3D view.
 void drawLabels(const DrawList& list, const Camera& camera, float width, float height);
 /// The rectangle the shell's main window covers (x0, y0, x1, y1), after ImGui::Render.
 bool shellRect(float rect[4]);
-/// Frames the scene in the part of a width x height view the panel leaves free (all of it
-/// when the panel is hidden; before the panel's first layout, its usual width is assumed),
+/// Frames the scene in the part of a width x height view the panel and the debugger leave free
+/// (all of it when the shell is hidden; before their first layout, their usual widths are assumed),
 /// narrowing that part until the framing's labels end inside the image.
 void frameScene(Camera& camera, const Framing& framing, const ViewOptions& view, float width, float height);
 

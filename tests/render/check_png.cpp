@@ -1,9 +1,11 @@
 // Checks a demo screenshot for content, natively (no wine): the image is not blank, at least
 // one body and (when the scene has one) the ground show in their colours where the camera
-// puts them, the ImGui panel is drawn, and the box the camera was framed from (bodies and the
-// scene's overlay) lies on screen and right of the panel. The demo writes IMAGE.txt next to the image with
-// those screen places (renderer_dx12/frame.cpp, writeExpectations), computed from the world
-// and the camera, never from the image.
+// puts them, the ImGui panel (and the debugger, when open) is drawn, the box the camera was
+// framed from (bodies and the scene's overlay) lies on screen between them, and every debug
+// view's group of marks ("mark contact ...": red cubes at the contact points, "mark normal",
+// "mark epa", ...) shows its colour at a quarter of its places at least. The demo writes IMAGE.txt
+// next to the image with those screen places (renderer_dx12/expectations.cpp), computed from
+// the world and the camera, never from the image.
 //   check_png IMAGE.png [EXPECTATIONS.txt]     screenshot check
 //   check_png --window SCREEN.xwd             the swap-chain test: a window with the shell shows
 // Exit 0 when every check passes, 1 with one line per failed check, 2 on bad input.
@@ -17,6 +19,7 @@
 #include <cstdint>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -121,8 +124,10 @@ int checkNotBlank(const Image& image, std::vector<std::string>& failures) {
     return static_cast<int>(distinct.size());
 }
 
-/// Dear ImGui's dark style: window background ~(15,15,15), title bar (41,74,122), light text.
-void checkPanel(const Image& image, int x0, int y0, int x1, int y1, std::vector<std::string>& failures) {
+/// Dear ImGui's dark style: window background ~(15,15,15), title bar (41,74,122) when focused,
+/// light text. `what` names the window in failures.
+void checkPanel(const Image& image, int x0, int y0, int x1, int y1, bool focused, const std::string& what,
+                std::vector<std::string>& failures) {
     x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, image.width), y1 = std::min(y1, image.height);
     size_t dark = 0, bright = 0, total = 0, title = 0, titleTotal = 0;
     const int titleBlue[3] = {41, 74, 122};
@@ -137,10 +142,10 @@ void checkPanel(const Image& image, int x0, int y0, int x1, int y1, std::vector<
                 if (matches(p, titleBlue, 0.85)) ++title;
             }
         }
-    if (total == 0) return failures.push_back("panel: empty rectangle");
-    if (dark < total * 4 / 10) failures.push_back("panel: background not drawn (" + std::to_string(100 * dark / total) + "% dark)");
-    if (bright < total / 200) failures.push_back("panel: no text drawn");
-    if (titleTotal == 0 || title < titleTotal / 2) failures.push_back("panel: no title bar");
+    if (total == 0) return failures.push_back(what + ": empty rectangle");
+    if (dark < total * 4 / 10) failures.push_back(what + ": background not drawn (" + std::to_string(100 * dark / total) + "% dark)");
+    if (bright < total / 200) failures.push_back(what + ": no text drawn");
+    if (focused && (titleTotal == 0 || title < titleTotal / 2)) failures.push_back(what + ": no title bar");
 }
 
 int checkWindow(const std::string& path) {
@@ -170,7 +175,8 @@ int checkScreenshot(const std::string& imagePath, const std::string& expectPath)
     const int distinct = checkNotBlank(image, failures);
     int bodies = 0, bodyHits = 0, grounds = 0, groundHits = 0;
     bool panel = false;
-    float panelRight = 0;
+    float panelRight = 0, debuggerLeft = float(image.width);
+    std::map<std::string, std::pair<int, int>> marks;   // group -> (places, places where seen)
     std::string line;
     while (std::getline(expectations, line)) {
         std::istringstream in(line);
@@ -183,9 +189,14 @@ int checkScreenshot(const std::string& imagePath, const std::string& expectPath)
         } else if (kind == "panel") {
             float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
             in >> x0 >> y0 >> x1 >> y1;
-            checkPanel(image, int(x0), int(y0), int(x1), int(y1), failures);
+            checkPanel(image, int(x0), int(y0), int(x1), int(y1), true, "panel", failures);
             panel = true;
             panelRight = x1;
+        } else if (kind == "debugger") {
+            float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+            in >> x0 >> y0 >> x1 >> y1;
+            checkPanel(image, int(x0), int(y0), int(x1), int(y1), false, "debugger", failures);
+            debuggerLeft = x0;
         } else if (kind == "framed") {
             // The box the camera was framed from must be on screen, right of the panel (the
             // panel line comes first); 2 px for rounding.
@@ -202,6 +213,8 @@ int checkScreenshot(const std::string& imagePath, const std::string& expectPath)
             std::ostringstream where;
             where << "framed box spans x " << x0 << ".." << x1 << ", y " << y0 << ".." << y1;
             if (x0 < panelRight - 2) failures.push_back("framing: " + where.str() + ", under the panel (right edge " + std::to_string(int(panelRight)) + ")");
+            if (x1 > debuggerLeft + 2)
+                failures.push_back("framing: " + where.str() + ", under the debugger (left edge " + std::to_string(int(debuggerLeft)) + ")");
             if (x0 < -2 || y0 < -2 || x1 > image.width + 2 || y1 > image.height + 2)
                 failures.push_back("framing: " + where.str() + ", not all on screen");
         } else if (kind == "body" || kind == "ground") {
@@ -213,11 +226,33 @@ int checkScreenshot(const std::string& imagePath, const std::string& expectPath)
             (kind == "body" ? bodies : grounds) += 1;
             (kind == "body" ? bodyHits : groundHits) += hit ? 1 : 0;
             if (!hit) std::cout << "  " << kind << " '" << name << "' not seen at (" << x << ", " << y << ")\n";
+        } else if (kind == "mark") {
+            // A debug view's mark: small (a 6 cm cube, a 2-pixel line), so it is looked for
+            // within 4 pixels; some places of a group may be hidden behind a body.
+            std::string group;
+            int x = 0, y = 0, color[3] = {0, 0, 0};
+            double minShade = 0;
+            in >> group >> name >> x >> y >> color[0] >> color[1] >> color[2] >> minShade;
+            if (!in) return std::cerr << "check_png: bad line '" << line << "'\n", 2;
+            const bool hit = matchesNear(image, x, y, color, minShade, 4);
+            marks[group].first += 1;
+            marks[group].second += hit ? 1 : 0;
         }
     }
+    for (const auto& [group, counts] : marks) {
+        std::cout << "  view '" << group << "': seen at " << counts.second << " of " << counts.first << " places\n";
+        // A quarter of the places at least: enough that a colour some body happens to share
+        // near a few of them (cyan bounds beside a cyan box) does not pass for the view.
+        const int needed = std::max(1, (counts.first + 3) / 4);
+        if (counts.second < needed)
+            failures.push_back("view '" + group + "': its colour shows at " + std::to_string(counts.second) + " of its " +
+                               std::to_string(counts.first) + " places (at least " + std::to_string(needed) + " wanted)");
+    }
     if (!panel) failures.push_back("panel: the demo reported no ImGui panel");
-    if (bodies == 0) failures.push_back("bodies: no body in view per the camera");
-    else if (bodyHits == 0) failures.push_back("bodies: none of " + std::to_string(bodies) + " bodies shows its colour where the camera puts it");
+    // A view of wireframes only (the selection and what it touches) leaves no solid body: its
+    // marks stand in for them.
+    if (bodies == 0 && marks.empty()) failures.push_back("bodies: no body in view per the camera");
+    else if (bodies > 0 && bodyHits == 0) failures.push_back("bodies: none of " + std::to_string(bodies) + " bodies shows its colour where the camera puts it");
     if (grounds > 0 && groundHits == 0) failures.push_back("ground: not seen at any of " + std::to_string(grounds) + " places");
     for (const std::string& failure : failures) std::cout << "FAIL " << failure << '\n';
     std::cout << (failures.empty() ? "ok " : "failed ") << imagePath << ": " << distinct << " colours, bodies "
@@ -237,7 +272,8 @@ int selfTest(const std::string& folder) {
             }
     };
     const std::string expect = "size 320 200\npanel 4 4 100 120\nframed 110 20 300 190\nbody cube 200 60 235 188 69 0.25\n"
-                               "ground floor 200 170 140 140 148 0.55\n";
+                               "ground floor 200 170 140 140 148 0.55\nmark contact p0 262 152 230 51 51 0.3\n"
+                               "mark contact p1 150 190 230 51 51 0.3\n";
     fill(0, 0, w, h, 41, 46, 54);
     const std::string blank = folder + "/blank.png";
     if (!stbi_write_png(blank.c_str(), w, h, 3, rgb.data(), w * 3)) return 2;
@@ -247,6 +283,7 @@ int selfTest(const std::string& folder) {
         for (int x = 0; x < w; x += 4) fill(x, y, x + 4, y + 1, uint8_t(41 + x / 4), 46, uint8_t(54 + y / 2));
     for (int y = 100; y < h; ++y) fill(0, y, w, y + 1, uint8_t(100 + (y - 100) / 3), uint8_t(100 + (y - 100) / 3), uint8_t(106 + (y - 100) / 3));
     fill(180, 40, 230, 90, 200, 160, 59);
+    fill(259, 149, 265, 155, 150, 35, 35);   // a contact cube, on its shaded side
     fill(4, 4, 100, 120, 15, 15, 15);
     fill(4, 4, 100, 18, 41, 74, 122);
     for (int row = 30; row < 110; row += 12) fill(10, row, 90, row + 2, 230, 230, 230);
@@ -259,12 +296,18 @@ int selfTest(const std::string& folder) {
     std::string coveredExpect = expect;
     coveredExpect.replace(coveredExpect.find("framed 110"), 10, "framed  50");
     std::ofstream(covered + ".txt") << coveredExpect;
+    // The same picture, but the debug view promised an EPA face that is not drawn.
+    const std::string unmarked = folder + "/unmarked.png";
+    if (!stbi_write_png(unmarked.c_str(), w, h, 3, rgb.data(), w * 3)) return 2;
+    std::ofstream(unmarked + ".txt") << expect << "mark epa on-A 200 120 64 115 242 0.3\n";
     const int blankResult = checkScreenshot(blank, blank + ".txt");
     const int goodResult = checkScreenshot(good, good + ".txt");
     const int coveredResult = checkScreenshot(covered, covered + ".txt");
+    const int unmarkedResult = checkScreenshot(unmarked, unmarked + ".txt");
     std::cout << "self-test: blank image -> " << blankResult << " (want 1), drawn image -> " << goodResult
-              << " (want 0), scene under the panel -> " << coveredResult << " (want 1)\n";
-    return blankResult == 1 && goodResult == 0 && coveredResult == 1 ? 0 : 1;
+              << " (want 0), scene under the panel -> " << coveredResult << " (want 1), view not drawn -> "
+              << unmarkedResult << " (want 1)\n";
+    return blankResult == 1 && goodResult == 0 && coveredResult == 1 && unmarkedResult == 1 ? 0 : 1;
 }
 
 }  // namespace
