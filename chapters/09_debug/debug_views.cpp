@@ -93,15 +93,21 @@ Vec3 minkowskiAnchor(const World& world, const PairDiagnosis& diagnosis) {
 
 void drawDebugViews(DebugDraw& draw, const World& world, const DebugViews& views, int selectedBody,
                     const HitTree& tree, const HitSelection& selection) {
-    // Bodies: the selected one and those it touches (or the selected contact's pair) as
-    // wireframes, so an overlap between them stays visible; the rest solid.
+    // Bodies: the selected one and the moving bodies it touches (or the selected contact's
+    // pair) as wireframes, so an overlap between them stays visible; the rest solid. The ground
+    // a selected box rests on stays solid: drawn as a wireframe the floor would vanish.
     std::vector<char> wire(world.bodies.size(), 0);
+    const auto wireIfMoving = [&](int body) {
+        if (world.bodies[static_cast<std::size_t>(body)].type != BodyType::Static) wire[static_cast<std::size_t>(body)] = 1;
+    };
     if (views.wireframeSelection) {
         if (validBody(world, selectedBody)) {
             wire[static_cast<std::size_t>(selectedBody)] = 1;
             for (const HitPair& pair : tree.pairs)
-                if (pair.bodyA == selectedBody || pair.bodyB == selectedBody)
-                    wire[static_cast<std::size_t>(pair.bodyA)] = wire[static_cast<std::size_t>(pair.bodyB)] = 1;
+                if (pair.bodyA == selectedBody || pair.bodyB == selectedBody) {
+                    wireIfMoving(pair.bodyA);
+                    wireIfMoving(pair.bodyB);
+                }
         }
         if (selection.pair >= 0 && selection.pair < static_cast<int>(tree.pairs.size())) {
             const HitPair& pair = tree.pairs[static_cast<std::size_t>(selection.pair)];

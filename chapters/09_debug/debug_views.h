@@ -17,7 +17,7 @@ namespace stepwise {
 // [ch09-view-flags]
 struct DebugViews {
     bool colliders = true;          // every body's shape (off: only what the other views draw)
-    bool wireframeSelection = true; // the selected body and the bodies it touches as wireframes
+    bool wireframeSelection = true; // the selected body and the moving bodies it touches as wireframes
     bool contactPoints = true;      // red cubes on both surfaces
     bool contactNormals = true;     // yellow arrows
     bool epaFace = false;           // the chosen pair's EPA face, blue, on both bodies

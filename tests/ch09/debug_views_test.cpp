@@ -100,13 +100,20 @@ TEST_CASE("each view flag draws its own commands, in its own colour", "[ch09][vi
     CHECK(countOf(minkowski, RecordingDraw::Kind::Point, colors::kGrey) == 64);
     const RecordingDraw bounds = drawn([](DebugViews& v) { v.bounds = true; });
     CHECK(countOf(bounds, RecordingDraw::Kind::Box, colors::kCyan) == 2);
-    // The selected body and the body it touches as wireframes, nothing solid left of them.
-    const RecordingDraw selection = drawn([](DebugViews& v) { v.colliders = v.wireframeSelection = true; }, 1);
-    int wire = 0, solid = 0;
-    for (const RecordingDraw::Command& command : selection.commands())
-        if (command.kind == RecordingDraw::Kind::Box) (command.fill == Fill::Wire ? wire : solid) += 1;
-    CHECK(wire == 2);
-    CHECK(solid == 0);
+    // The selected body as a wireframe; the static base it rests on stays solid (the floor must
+    // not vanish). A selected contact draws both bodies of its pair as wireframes.
+    const auto fills = [](const RecordingDraw& draw) {
+        std::pair<int, int> wireAndSolid{0, 0};
+        for (const RecordingDraw::Command& command : draw.commands())
+            if (command.kind == RecordingDraw::Kind::Box) (command.fill == Fill::Wire ? wireAndSolid.first : wireAndSolid.second) += 1;
+        return wireAndSolid;
+    };
+    CHECK(fills(drawn([](DebugViews& v) { v.colliders = v.wireframeSelection = true; }, 1)) == std::pair<int, int>{1, 1});
+    DebugViews both = none;
+    both.colliders = both.wireframeSelection = true;
+    RecordingDraw pairDraw;
+    drawDebugViews(pairDraw, world, both, -1, tree, HitSelection{0, -1, -1});
+    CHECK(fills(pairDraw) == std::pair<int, int>{2, 0});
 }
 
 TEST_CASE("the joint view draws every joint of the gallery", "[ch09][views]") {
