@@ -16,10 +16,13 @@ constexpr long kGoldenFrames = 240;  // 4 s at 60 Hz: long enough for stacks to 
 struct GoldenRun {
     std::string scene;      // built-in name, or "scenes/<file>.json"
     std::uint64_t hash = 0; // stateHash after kGoldenFrames frames
+    bool skipped = false;   // more bodies than the run was allowed (no hash)
 };
 
-/// The built-in scenes in registry order, then the scene files of `sceneFolder` by name.
-std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder);
+/// The built-in scenes in registry order, then the scene files of `sceneFolder` by name. Scenes
+/// of more than `maxBodies` bodies are listed as skipped, not run (the sanitizer build's budget).
+std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder,
+                                       std::size_t maxBodies = std::size_t(-1));
 
 /// Runs one scene for `frames` frames through the pipeline of the latest chapter up to
 /// `maxChapter` and returns its final state hash.
