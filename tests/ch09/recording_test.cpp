@@ -109,11 +109,11 @@ TEST_CASE("malformed recordings are rejected with the JSON path of what is wrong
     const Json edit = {{"frame", 1},      {"body", "box"},          {"position", {0, 1, 0}},      {"orientation", {0, 0, 0, 1}},
                        {"linear_velocity", {0, 0, 0}}, {"angular_velocity", {0, 0, 0}}, {"mass", 2},
                        {"inertia", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}};
-    CHECK(rejection([&](Json& j) { j["edits"] = {edit}; }).empty());
-    CHECK(rejection([&](Json& j) { j["edits"] = {edit}; j["edits"][0]["body"] = "crate"; }).find("edits[0].body") != std::string::npos);
-    CHECK(rejection([&](Json& j) { j["edits"] = {edit}; j["edits"][0]["mass"] = -2; }).find("mass must be positive") != std::string::npos);
-    CHECK(rejection([&](Json& j) { j["edits"] = {edit}; j["edits"][0]["inertia"][0][1] = 0.5; }).find("symmetric") != std::string::npos);
-    CHECK(rejection([&](Json& j) { j["edits"] = {edit}; j["edits"][0]["orientation"] = {0, 0, 0, 3}; }).find("unit") != std::string::npos);
-    CHECK(rejection([&](Json& j) { j["edits"] = {edit, edit}; j["edits"][1]["frame"] = 0; }).find("frame order") != std::string::npos);
-    CHECK(rejection([&](Json& j) { j["edits"] = {edit}; j["edits"][0]["colour"] = "red"; }).find("colour") != std::string::npos);
+    CHECK(rejection([&](Json& j) { j["edits"] = Json::array({edit}); }).empty());
+    CHECK(rejection([&](Json& j) { j["edits"] = Json::array({edit}); j["edits"][0]["body"] = "crate"; }).find("edits[0].body") != std::string::npos);
+    CHECK(rejection([&](Json& j) { j["edits"] = Json::array({edit}); j["edits"][0]["mass"] = -2; }).find("mass must be positive") != std::string::npos);
+    CHECK(rejection([&](Json& j) { j["edits"] = Json::array({edit}); j["edits"][0]["inertia"][0][1] = 0.5; }).find("symmetric") != std::string::npos);
+    CHECK(rejection([&](Json& j) { j["edits"] = Json::array({edit}); j["edits"][0]["orientation"] = {0, 0, 0, 3}; }).find("unit") != std::string::npos);
+    CHECK(rejection([&](Json& j) { j["edits"] = Json::array({edit, edit}); j["edits"][1]["frame"] = 0; }).find("frame order") != std::string::npos);
+    CHECK(rejection([&](Json& j) { j["edits"] = Json::array({edit}); j["edits"][0]["colour"] = "red"; }).find("colour") != std::string::npos);
 }
