@@ -142,13 +142,23 @@ GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterat
     // [ch02-gjk-loop]
 
     // [ch02-gjk-verdict]
-    // A clean exit answers directly. The others (rounding floors, the cap) happen when the
-    // origin is within rounding of the boundary of A - B, i.e. the shapes touch: then "touching
-    // counts as intersecting" exactly when the closest point found is within tolerance.
-    if (exit == GjkExit::Intersect || exit == GjkExit::Separated)
+    // A clean exit answers directly. The others (rounding floors, the cap) prove nothing by
+    // themselves: "separated" needs a plane. At the closest point the support plane towards the
+    // origin passes through it, so a pair that is apart shows its gap there; a walk that stalled
+    // short of the closest point (a sliver of A - B, a needle against a small box) finds no such
+    // plane, and the origin may well be inside. Without a plane leaving the origin outside by
+    // more than the touching tolerance the pair counts as touching, and EPA, which grows the
+    // simplex into a tetrahedron around the origin, says how deep.
+    if (exit == GjkExit::Intersect || exit == GjkExit::Separated) {
         result.intersect = exit == GjkExit::Intersect;
-    else
-        result.intersect = walk.v.squaredNorm() <= touchingSquared;
+    } else if (walk.v.squaredNorm() <= touchingSquared) {
+        result.intersect = true;
+    } else {
+        const Vec3 towardsOrigin = -walk.v.normalized();
+        const SupportPoint point = minkowskiSupport(pair.a, pair.b, towardsOrigin);
+        ++result.iterations;
+        result.intersect = !(point.w.dot(towardsOrigin) < -tolerances.touching);
+    }
     // [ch02-gjk-verdict]
     result.exit = exit;
     result.newestDropped = walk.newestDropped;
