@@ -1,18 +1,17 @@
 #include "09_debug/ray_targets.h"
 
+#include "09_debug/scenes.h"
+
 #include <cmath>
 
 namespace stepwise {
 
 std::vector<RayTarget> rayTargets() {
     const Quat tilt(Eigen::AngleAxis<Real>(Real(0.7), Vec3(1, 2, 3).normalized()));
-    std::vector<Vec3> gem{Vec3(0, Real(0.35), 0), Vec3(0, Real(-0.25), 0)};
-    for (int i = 0; i < 8; ++i)
-        gem.push_back(Vec3(Real(0.3) * std::cos(Real(i) * kPi / 4), Real(0.05), Real(0.3) * std::sin(Real(i) * kPi / 4)));
     return {{"sphere", Shape::sphere(Real(0.5)), Transform{Vec3(Real(0.2), Real(1), 0), Quat::Identity()}},
             {"box", Shape::box(Vec3(Real(0.5), Real(0.3), Real(0.2))), Transform{Vec3(0, Real(1), Real(0.1)), tilt}},
             {"capsule", Shape::capsule(Real(0.3), Real(0.4)), Transform{Vec3(Real(-0.1), Real(1), 0), tilt}},
-            {"hull", Shape::convex(gem), Transform{Vec3(0, Real(1), 0), tilt}}};
+            {"hull", Shape::convex(gemPoints()), Transform{Vec3(0, Real(1), 0), tilt}}};
 }
 
 Ray aimedRay(const RayTarget& target, Random& random) {

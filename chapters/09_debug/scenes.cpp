@@ -18,20 +18,24 @@ World buildDebugDrop() {
     return world;
 }
 
-World buildDebugHullOnBox() {
-    World world;
-    world.name = "debug-hull-on-box";
-    addGroundPlane(world);
-    addCrate(world, "crate", Vec3(0, Real(0.3), 0), Vec3(Real(0.6), Real(0.3), Real(0.6)), 20, Material{});
-    // A gem: an octagon ring and two apexes, tilted so it lands on an edge and rolls onto a face.
+std::vector<Vec3> gemPoints() {
     std::vector<Vec3> points{Vec3(0, Real(0.35), 0), Vec3(0, Real(-0.25), 0)};
     for (int i = 0; i < 8; ++i) {
         const Real angle = Real(2) * kPi * Real(i) / 8;
         points.push_back(Vec3(Real(0.3) * std::cos(angle), Real(0.05), Real(0.3) * std::sin(angle)));
     }
+    return points;
+}
+
+World buildDebugHullOnBox() {
+    World world;
+    world.name = "debug-hull-on-box";
+    addGroundPlane(world);
+    addCrate(world, "crate", Vec3(0, Real(0.3), 0), Vec3(Real(0.6), Real(0.3), Real(0.6)), 20, Material{});
+    // The gem tilted so it lands on an edge and rolls onto a face.
     BodyDef gem;
     gem.name = "gem";
-    gem.shape = Shape::convex(points);
+    gem.shape = Shape::convex(gemPoints());
     gem.transform = Transform{Vec3(Real(0.1), Real(1.4), 0), Quat(Eigen::AngleAxis<Real>(Real(0.6), Vec3::UnitZ()))};
     gem.mass = 1;
     addBody(world, gem);

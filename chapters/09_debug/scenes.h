@@ -4,6 +4,8 @@
 
 #include "world/world.h"
 
+#include <vector>
+
 namespace stepwise {
 
 class Registry;
@@ -11,6 +13,10 @@ class Registry;
 /// "debug-drop": a tilted box and, later, a ball fall onto the ground: hold Space and the run
 /// stops on the frame each first touches.
 World buildDebugDrop();
+
+/// A gem of ten points: an octagon ring of radius 0.3 m and two apexes, 0.6 m tall (the hull of
+/// debug-hull-on-box and of the ray-cast tests).
+std::vector<Vec3> gemPoints();
 
 /// "debug-hull-on-box": a convex hull dropped onto a crate on the ground: the EPA face and A - B.
 World buildDebugHullOnBox();
