@@ -269,7 +269,7 @@ void drawShell(DemoState& state, ViewOptions& view, Camera& camera, const ShellI
 bool handleInput(DemoState& state, ViewOptions& view, Camera& camera, DebugTools& tools, float viewportHeight, float seconds) {
     ImGuiIO& io = ImGui::GetIO();
     bool reframe = false;
-    // The CS550 write-up's contact debug mode: hold Space while the scene runs and it stops at the
+    // Contact debug mode: hold Space while the scene runs and it stops at the
     // first new contact; Left Alt lets it go on. 1.86 has no left/right Alt codes: either Alt.
     const bool holdToStop = !io.WantCaptureKeyboard && down(STEPWISE_KEY(VK_SPACE, ImGuiKey_Space));
     state.session().rules.stopOnNewContact = tools.stopOnNewContact || holdToStop;

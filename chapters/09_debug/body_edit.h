@@ -35,7 +35,7 @@ std::string validateEdit(const World& world, const BodyEdit& edit);
 void applyEdit(World& world, const BodyEdit& edit);
 
 /// What the gizmo does: moves the body to `transform` and stops it, since a velocity kept from
-/// before the drag would fling it (the DX12 write-up resets velocities the same way).
+/// before the drag would fling it.
 BodyEdit moveEdit(const World& world, int body, const Transform& transform);
 
 }  // namespace stepwise

@@ -15,7 +15,7 @@
 namespace stepwise {
 
 // [ch09-stop-rules]
-/// When a running session stops by itself. The CS550 write-up's "contact debug mode": stop the
+/// When a running session stops by itself. A "contact debug mode": stop the
 /// moment a new contact appears, so the frame that made it can be looked at (and rewound).
 struct StopRules {
     bool stopOnNewContact = false;
@@ -42,7 +42,7 @@ public:
     const History& history() const { return history_; }
 
     // Running. A paused session steps only when asked (single step); the switch stops even that
-    // (the write-up's "enable/disable simulation": nothing integrates, nothing solves).
+    // (nothing integrates, nothing solves).
     bool paused = false;
     bool simulationEnabled = true;
     StopRules rules;

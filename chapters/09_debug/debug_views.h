@@ -46,8 +46,8 @@ struct PairDiagnosis {
 PairDiagnosis diagnosePair(const World& world, int bodyA, int bodyB);
 
 /// Which pair the diagnostic views look at: the selected contact's pair, else the selected body
-/// with the first body it touches, else the first two bodies (as the write-up's "first cube and
-/// the ground"). Empty (-1, -1) when the world has fewer than two bodies.
+/// with the first body it touches, else the first two bodies (in most scenes the ground and the
+/// first body on it). Empty (-1, -1) when the world has fewer than two bodies.
 BodyPair chosenPair(const World& world, const HitTree& tree, const HitSelection& selection, int selectedBody);
 
 /// Where the A - B overlay goes: to the right of the moving bodies, clear of them by its own size,
