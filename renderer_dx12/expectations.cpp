@@ -74,20 +74,8 @@ std::vector<Vec3> boxCorners(const Body& body) {
 /// the bodies it touches, and the selected contact's pair.
 std::vector<char> wireBodies(const DemoState& state) {
     const World& world = state.world();
-    std::vector<char> wire(world.bodies.size(), 0);
-    if (!state.views.wireframeSelection) return wire;
-    const HitTree& tree = state.hitTree();
-    const int selected = state.selectedBody;
-    for (const HitPair& pair : tree.pairs)
-        if (selected >= 0 && (pair.bodyA == selected || pair.bodyB == selected))
-            wire[static_cast<size_t>(pair.bodyA)] = wire[static_cast<size_t>(pair.bodyB)] = 1;
-    if (selected >= 0 && selected < static_cast<int>(wire.size())) wire[static_cast<size_t>(selected)] = 1;
-    const HitSelection& selection = state.hitSelection();
-    if (!selection.empty() && selection.pair < static_cast<int>(tree.pairs.size())) {
-        const HitPair& pair = tree.pairs[static_cast<size_t>(selection.pair)];
-        wire[static_cast<size_t>(pair.bodyA)] = wire[static_cast<size_t>(pair.bodyB)] = 1;
-    }
-    return wire;
+    if (!state.views.wireframeSelection) return std::vector<char>(world.bodies.size(), 0);
+    return wireframeBodies(world, state.selectedBody, state.hitTree(), state.hitSelection());
 }
 
 void bodyExpectations(ExpectationWriter& writer, const DemoState& state) {
@@ -110,8 +98,7 @@ void bodyExpectations(ExpectationWriter& writer, const DemoState& state) {
             }
             continue;
         }
-        const Color color = body.type == BodyType::Kinematic ? colors::kBlue : bodyColor(static_cast<int>(i));
-        writer.emit("body", body.name, box.center(), color, 0.25f);
+        writer.emit("body", body.name, box.center(), bodyTypeColor(world, static_cast<int>(i)), 0.25f);
     }
 }
 
@@ -151,9 +138,7 @@ void viewExpectations(ExpectationWriter& writer, const DemoState& state, bool im
     for (size_t i = 0; i < world.bodies.size(); ++i) {
         const Body& body = world.bodies[i];
         if (!wire[i] || body.shape.type != ShapeType::Box || body.type == BodyType::Static) continue;
-        const Color color = static_cast<int>(i) == selected ? colors::kWhite
-                            : body.type == BodyType::Kinematic ? colors::kBlue
-                                                               : bodyColor(static_cast<int>(i));
+        const Color color = static_cast<int>(i) == selected ? colors::kWhite : bodyTypeColor(world, static_cast<int>(i));
         for (const Vec3& corner : boxCorners(body)) writer.emit("mark selection", body.name, corner, color, kFlatShade);
     }
     if (views.bounds)

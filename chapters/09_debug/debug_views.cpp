@@ -80,6 +80,26 @@ BodyPair chosenPair(const World& world, const HitTree& tree, const HitSelection&
     return BodyPair{};
 }
 
+std::vector<char> wireframeBodies(const World& world, int selectedBody, const HitTree& tree, const HitSelection& selection) {
+    std::vector<char> wire(world.bodies.size(), 0);
+    const auto wireIfMoving = [&](int body) {
+        if (world.bodies[static_cast<std::size_t>(body)].type != BodyType::Static) wire[static_cast<std::size_t>(body)] = 1;
+    };
+    if (validBody(world, selectedBody)) {
+        wire[static_cast<std::size_t>(selectedBody)] = 1;
+        for (const HitPair& pair : tree.pairs)
+            if (pair.bodyA == selectedBody || pair.bodyB == selectedBody) {
+                wireIfMoving(pair.bodyA);
+                wireIfMoving(pair.bodyB);
+            }
+    }
+    if (selection.pair >= 0 && selection.pair < static_cast<int>(tree.pairs.size())) {
+        const HitPair& pair = tree.pairs[static_cast<std::size_t>(selection.pair)];
+        wire[static_cast<std::size_t>(pair.bodyA)] = wire[static_cast<std::size_t>(pair.bodyB)] = 1;
+    }
+    return wire;
+}
+
 Vec3 minkowskiAnchor(const World& world, const PairDiagnosis& diagnosis) {
     Aabb moving;
     for (const Body& body : world.bodies)
@@ -93,32 +113,12 @@ Vec3 minkowskiAnchor(const World& world, const PairDiagnosis& diagnosis) {
 
 void drawDebugViews(DebugDraw& draw, const World& world, const DebugViews& views, int selectedBody,
                     const HitTree& tree, const HitSelection& selection) {
-    // Bodies: the selected one and the moving bodies it touches (or the selected contact's
-    // pair) as wireframes, so an overlap between them stays visible; the rest solid. The ground
-    // a selected box rests on stays solid: drawn as a wireframe the floor would vanish.
-    std::vector<char> wire(world.bodies.size(), 0);
-    const auto wireIfMoving = [&](int body) {
-        if (world.bodies[static_cast<std::size_t>(body)].type != BodyType::Static) wire[static_cast<std::size_t>(body)] = 1;
-    };
-    if (views.wireframeSelection) {
-        if (validBody(world, selectedBody)) {
-            wire[static_cast<std::size_t>(selectedBody)] = 1;
-            for (const HitPair& pair : tree.pairs)
-                if (pair.bodyA == selectedBody || pair.bodyB == selectedBody) {
-                    wireIfMoving(pair.bodyA);
-                    wireIfMoving(pair.bodyB);
-                }
-        }
-        if (selection.pair >= 0 && selection.pair < static_cast<int>(tree.pairs.size())) {
-            const HitPair& pair = tree.pairs[static_cast<std::size_t>(selection.pair)];
-            wire[static_cast<std::size_t>(pair.bodyA)] = wire[static_cast<std::size_t>(pair.bodyB)] = 1;
-        }
-    }
+    // Bodies: the selection wireframes, so an overlap between them stays visible; the rest solid.
+    const std::vector<char> wire = views.wireframeSelection ? wireframeBodies(world, selectedBody, tree, selection)
+                                                            : std::vector<char>(world.bodies.size(), 0);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const Body& body = world.bodies[i];
-        const Color color = body.type == BodyType::Static      ? colors::kGrey
-                            : body.type == BodyType::Kinematic ? colors::kBlue
-                                                               : bodyColor(static_cast<int>(i));
+        const Color color = bodyTypeColor(world, static_cast<int>(i));
         if (wire[i]) drawBody(draw, body, static_cast<int>(i) == selectedBody ? kSelection : color, Fill::Wire);
         else if (views.colliders) drawBody(draw, body, color, Fill::Solid);
     }

@@ -50,6 +50,11 @@ PairDiagnosis diagnosePair(const World& world, int bodyA, int bodyB);
 /// first body on it). Empty (-1, -1) when the world has fewer than two bodies.
 BodyPair chosenPair(const World& world, const HitTree& tree, const HitSelection& selection, int selectedBody);
 
+/// Which bodies the selection wireframe view draws as wireframes (1) instead of solids: the
+/// selected body, the moving bodies it touches, and both bodies of the selected contact's pair.
+/// A static body a selected box rests on stays solid: drawn as a wireframe the floor would vanish.
+std::vector<char> wireframeBodies(const World& world, int selectedBody, const HitTree& tree, const HitSelection& selection);
+
 /// Where the A - B overlay goes: to the right of the moving bodies, clear of them by its own size,
 /// so it never hides them.
 Vec3 minkowskiAnchor(const World& world, const PairDiagnosis& diagnosis);

@@ -201,11 +201,7 @@ RayHit rayConvex(const Ray& ray, const ConvexProxy& proxy, int maxIterations) {
     };
     const Real scale = shapeScale(shape);
     const Real tolerance = Real(4) * kEpsilon * scale;
-    Vec3 centre = Vec3::Zero();
-    if (shape.type == ShapeType::Convex && shape.hull && !shape.hull->vertices.empty()) {
-        for (const Vec3& vertex : shape.hull->vertices) centre += vertex;
-        centre /= Real(shape.hull->vertices.size());
-    }
+    const Vec3 centre = proxy.transform.rotateInverse(proxy.center() - proxy.transform.position);
     Vec3 supports[4];
     int count = 0;
     Real t = 0;

@@ -36,14 +36,14 @@ Color bodyColor(int bodyIndex) {
     return Color{r, g, b, 1};
 }
 
+Color bodyTypeColor(const World& world, int bodyIndex) {
+    const BodyType type = world.bodies[static_cast<size_t>(bodyIndex)].type;
+    return type == BodyType::Static ? colors::kGrey : type == BodyType::Kinematic ? colors::kBlue : bodyColor(bodyIndex);
+}
+
 void drawWorld(DebugDraw& draw, const World& world) {
-    for (size_t i = 0; i < world.bodies.size(); ++i) {
-        const Body& body = world.bodies[i];
-        const Color color = body.type == BodyType::Static      ? colors::kGrey
-                            : body.type == BodyType::Kinematic ? colors::kBlue
-                                                               : bodyColor(static_cast<int>(i));
-        drawBody(draw, body, color);
-    }
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+        drawBody(draw, world.bodies[i], bodyTypeColor(world, static_cast<int>(i)));
 }
 
 void RecordingDraw::line(const Vec3& from, const Vec3& to, Color color) {

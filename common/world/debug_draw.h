@@ -54,6 +54,9 @@ void drawWorld(DebugDraw& draw, const World& world);
 /// A colour per body index that neighbours can tell apart.
 Color bodyColor(int bodyIndex);
 
+/// How every demo colours a body: statics grey, kinematics blue, dynamics bodyColor(index).
+Color bodyTypeColor(const World& world, int bodyIndex);
+
 /// Keeps every call as a record: the drawer for tests and headless runs.
 class RecordingDraw final : public DebugDraw {
 public:
