@@ -42,6 +42,10 @@ struct Motion {
     Vec3 force = Vec3::Zero();              // accumulated this step, world frame, N
     Vec3 torque = Vec3::Zero();             // accumulated this step, world frame, N m
     std::optional<IntegratorKind> integrator;  // per-body override of Settings::integrator
+    // Sleeping (chapter 10; earlier chapters never set them): a body that stayed slow for a while
+    // sleeps with its island and costs nothing until something wakes it.
+    bool asleep = false;
+    Real sleepTime = 0;                     // s spent below the sleep speeds
 };
 
 }  // namespace stepwise

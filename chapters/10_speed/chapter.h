@@ -1,0 +1,21 @@
+#pragma once
+// Chapter 10's pipeline: chapter 9's step (chapter 8's stages), made fast where the scene allows
+// it. The solve runs on the data of solver_data.h, wide (SIMD, coloured) or scalar; the scene
+// planner (planner.h) decides per scene and the run report says why.
+
+#include "09_debug/chapter.h"
+#include "10_speed/contact_solver.h"
+#include "world/pipeline.h"
+
+namespace stepwise {
+
+/// What chapter 10 adds, each switchable for the bench's "one optimisation off at a time".
+struct SpeedOptions {
+    bool fastSolve = true;             // false: chapter 8's solve (the reference)
+    SolverPath solverPath = SolverPath::Wide;
+};
+
+Pipeline makeChapter10Pipeline(const World& world);
+Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options);
+
+}  // namespace stepwise

@@ -1,0 +1,241 @@
+#pragma once
+// The contact solve written once for any lane count (lanes.h): warm start, one Gauss-Seidel
+// sweep with or without position feedback, and restitution, over a ManifoldBlock. The scalar
+// solver runs it with N = 1 in contact order; the wide solver with N = kWideLanes over the
+// colours. The arithmetic is the same, so the two agree to the Gauss-Seidel ordering.
+
+#include "10_speed/solver_data.h"
+
+#include <algorithm>
+
+namespace stepwise {
+
+// [ch10-body-pack]
+/// Both bodies of every lane, gathered from the states array (the one place that reads it).
+template <int N>
+struct BodyPack {
+    PackVec3<N> linearVelocity, angularVelocity, deltaPosition;
+    PackQuat<N> deltaRotation;
+};
+
+template <int N>
+inline BodyPack<N> gatherBodies(const SolverBodyState* states, const int* slots) {
+    BodyPack<N> body;
+    for (int i = 0; i < N; ++i) {
+        const SolverBodyState& s = states[slots[i]];
+        body.linearVelocity.x[i] = s.linearVelocity[0];
+        body.linearVelocity.y[i] = s.linearVelocity[1];
+        body.linearVelocity.z[i] = s.linearVelocity[2];
+        body.angularVelocity.x[i] = s.angularVelocity[0];
+        body.angularVelocity.y[i] = s.angularVelocity[1];
+        body.angularVelocity.z[i] = s.angularVelocity[2];
+        body.deltaPosition.x[i] = s.deltaPosition[0];
+        body.deltaPosition.y[i] = s.deltaPosition[1];
+        body.deltaPosition.z[i] = s.deltaPosition[2];
+        body.deltaRotation.x[i] = s.deltaRotation[0];
+        body.deltaRotation.y[i] = s.deltaRotation[1];
+        body.deltaRotation.z[i] = s.deltaRotation[2];
+        body.deltaRotation.w[i] = s.deltaRotation[3];
+    }
+    return body;
+}
+
+/// Writes the velocities back. Slot 0 (statics, sleepers, empty lanes) is never written: its
+/// lanes computed a zero change (zero inverse mass), and several lanes may share it.
+template <int N>
+inline void scatterVelocities(SolverBodyState* states, const int* slots, const BodyPack<N>& body) {
+    for (int i = 0; i < N; ++i) {
+        if (slots[i] == 0) continue;
+        SolverBodyState& s = states[slots[i]];
+        s.linearVelocity[0] = body.linearVelocity.x[i];
+        s.linearVelocity[1] = body.linearVelocity.y[i];
+        s.linearVelocity[2] = body.linearVelocity.z[i];
+        s.angularVelocity[0] = body.angularVelocity.x[i];
+        s.angularVelocity[1] = body.angularVelocity.y[i];
+        s.angularVelocity[2] = body.angularVelocity.z[i];
+    }
+}
+// [ch10-body-pack]
+
+#if defined(__AVX2__) && !defined(STEPWISE_DOUBLE)
+// [ch10-avx2-gather]
+// The AVX2 float build gathers eight bodies with two loads each and an 8x8 transpose (rows: lanes'
+// states; columns: fields), the way Box3D gathers its bodies, instead of 8 x 13 scalar loads.
+inline void transpose8(__m256 (&row)[8]) {
+    const __m256 t0 = _mm256_unpacklo_ps(row[0], row[1]), t1 = _mm256_unpackhi_ps(row[0], row[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(row[2], row[3]), t3 = _mm256_unpackhi_ps(row[2], row[3]);
+    const __m256 t4 = _mm256_unpacklo_ps(row[4], row[5]), t5 = _mm256_unpackhi_ps(row[4], row[5]);
+    const __m256 t6 = _mm256_unpacklo_ps(row[6], row[7]), t7 = _mm256_unpackhi_ps(row[6], row[7]);
+    const __m256 u0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), u1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 u2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), u3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 u4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0)), u5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 u6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0)), u7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
+    row[0] = _mm256_permute2f128_ps(u0, u4, 0x20);
+    row[1] = _mm256_permute2f128_ps(u1, u5, 0x20);
+    row[2] = _mm256_permute2f128_ps(u2, u6, 0x20);
+    row[3] = _mm256_permute2f128_ps(u3, u7, 0x20);
+    row[4] = _mm256_permute2f128_ps(u0, u4, 0x31);
+    row[5] = _mm256_permute2f128_ps(u1, u5, 0x31);
+    row[6] = _mm256_permute2f128_ps(u2, u6, 0x31);
+    row[7] = _mm256_permute2f128_ps(u3, u7, 0x31);
+}
+
+template <>
+inline BodyPack<8> gatherBodies<8>(const SolverBodyState* states, const int* slots) {
+    static_assert(sizeof(SolverBodyState) == 16 * sizeof(float), "two 8-float rows per body");
+    __m256 first[8], second[8];
+    for (int i = 0; i < 8; ++i) {
+        const float* state = states[slots[i]].linearVelocity;
+        first[i] = _mm256_load_ps(state);       // v.xyz w.xyz dp.xy
+        second[i] = _mm256_load_ps(state + 8);  // dp.z dq.xyzw (3 unused)
+    }
+    transpose8(first);
+    transpose8(second);
+    BodyPack<8> body;
+    body.linearVelocity = {packOf(first[0]), packOf(first[1]), packOf(first[2])};
+    body.angularVelocity = {packOf(first[3]), packOf(first[4]), packOf(first[5])};
+    body.deltaPosition = {packOf(first[6]), packOf(first[7]), packOf(second[0])};
+    body.deltaRotation = {packOf(second[1]), packOf(second[2]), packOf(second[3]), packOf(second[4])};
+    return body;
+}
+
+template <>
+inline void scatterVelocities<8>(SolverBodyState* states, const int* slots, const BodyPack<8>& body) {
+    __m256 row[8] = {load(body.linearVelocity.x), load(body.linearVelocity.y), load(body.linearVelocity.z),
+                     load(body.angularVelocity.x), load(body.angularVelocity.y), load(body.angularVelocity.z),
+                     load(body.deltaPosition.x), load(body.deltaPosition.y)};
+    transpose8(row);  // back to one row per lane; the delta position goes back as it was read
+    for (int i = 0; i < 8; ++i)
+        if (slots[i] != 0) _mm256_store_ps(states[slots[i]].linearVelocity, row[i]);
+}
+// [ch10-avx2-gather]
+#endif
+
+/// v += m^-1 P and w += I^-1 (arm x P) on B, the opposite on A.
+template <int N>
+inline void applyImpulse(const ManifoldBlock<N>& c, const PackVec3<N>& armA, const PackVec3<N>& armB,
+                         const PackVec3<N>& impulse, BodyPack<N>& a, BodyPack<N>& b) {
+    a.linearVelocity = a.linearVelocity - c.inverseMassA * impulse;
+    a.angularVelocity = a.angularVelocity - c.inverseInertiaA * cross(armA, impulse);
+    b.linearVelocity = b.linearVelocity + c.inverseMassB * impulse;
+    b.angularVelocity = b.angularVelocity + c.inverseInertiaB * cross(armB, impulse);
+}
+
+/// Velocity of B's material point minus A's, at the arms.
+template <int N>
+inline PackVec3<N> relativeVelocity(const BodyPack<N>& a, const BodyPack<N>& b, const PackVec3<N>& armA,
+                                    const PackVec3<N>& armB) {
+    return (b.linearVelocity + cross(b.angularVelocity, armB)) - (a.linearVelocity + cross(a.angularVelocity, armA));
+}
+
+// [ch10-warm-start]
+/// Pushes the bodies by the impulses the points carry (from last frame, then from each substep):
+/// every substep starts from the whole accumulated impulse, as Box3D does.
+template <int N>
+inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
+    BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+    BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    for (const ManifoldPointPack<N>& p : c.point) {
+        const PackVec3<N> impulse =
+            p.normalImpulse * c.normal + p.tangentImpulse1 * c.tangent1 + p.tangentImpulse2 * c.tangent2;
+        applyImpulse(c, p.armA, p.armB, impulse, a, b);
+    }
+    scatterVelocities(states, c.slotA, a);
+    scatterVelocities(states, c.slotB, b);
+}
+// [ch10-warm-start]
+
+// [ch10-solve-block]
+/// One Gauss-Seidel sweep over the block's points: the normal rows first (with position feedback
+/// when `useBias`), then friction against the normal impulses just found.
+template <int N>
+inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
+    BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+    BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    const Pack<N> inverseH = Pack<N>::splat(1 / params.substep);
+    const Pack<N> slop = Pack<N>::splat(params.slop);
+    const Pack<N> maxPush = Pack<N>::splat(-params.maxPushOutSpeed);
+    const PackVec3<N> movedApart = b.deltaPosition - a.deltaPosition;
+
+    for (ManifoldPointPack<N>& p : c.point) {
+        // Where the two material points are now: the separation found at the frame's start plus
+        // how far the bodies have moved and turned since (the points ride on their bodies).
+        // (adjustedSeparation holds the start's normal . (armB - armA) taken out, so the arms as
+        // turned now go in whole.)
+        const PackVec3<N> armNowA = rotate(a.deltaRotation, p.armA);
+        const PackVec3<N> armNowB = rotate(b.deltaRotation, p.armB);
+        const Pack<N> separation = dot(c.normal, movedApart + armNowB - armNowA) + p.adjustedSeparation;
+
+        // A gap may close by itself within the substep and no faster (speculative); a point deeper
+        // than the slop is pushed out (Baumgarte or a soft spring), at most maxPushOutSpeed.
+        Pack<N> bias = separation * inverseH, massScale = one, impulseScale = zero;
+        if (useBias) {
+            const Pack<N> excess = separation + slop;  // < 0: deeper than the slop
+            const Pack<N> push = max(c.biasRate * excess, maxPush);
+            const Pack<N> deep = -excess;
+            bias = selectPositive(separation, bias, selectPositive(deep, push, zero));
+            massScale = selectPositive(deep, c.massScale, one);
+            impulseScale = selectPositive(deep, c.impulseScale, zero);
+        } else {
+            bias = selectPositive(separation, bias, zero);
+        }
+
+        const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
+        Pack<N> impulse = -(p.normalMass * massScale * (normalSpeed + bias)) - impulseScale * p.normalImpulse;
+        const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
+        impulse = accumulated - p.normalImpulse;
+        p.normalImpulse = accumulated;
+        p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
+        applyImpulse(c, p.armA, p.armB, impulse * c.normal, a, b);
+    }
+
+    for (ManifoldPointPack<N>& p : c.point) {
+        const Pack<N> limit = c.friction * p.normalImpulse;
+        const PackVec3<N> slide = relativeVelocity(a, b, p.armA, p.armB);
+        // Each direction is clamped to +-mu lambda on its own: a box around the friction cone,
+        // as chapter 4's rows do.
+        Pack<N> impulse = -(p.tangentMass1 * dot(c.tangent1, slide));
+        Pack<N> accumulated = max(min(p.tangentImpulse1 + impulse, limit), -limit);
+        impulse = accumulated - p.tangentImpulse1;
+        p.tangentImpulse1 = accumulated;
+        applyImpulse(c, p.armA, p.armB, impulse * c.tangent1, a, b);
+
+        const PackVec3<N> slide2 = relativeVelocity(a, b, p.armA, p.armB);
+        impulse = -(p.tangentMass2 * dot(c.tangent2, slide2));
+        accumulated = max(min(p.tangentImpulse2 + impulse, limit), -limit);
+        impulse = accumulated - p.tangentImpulse2;
+        p.tangentImpulse2 = accumulated;
+        applyImpulse(c, p.armA, p.armB, impulse * c.tangent2, a, b);
+    }
+    scatterVelocities(states, c.slotA, a);
+    scatterVelocities(states, c.slotB, b);
+}
+// [ch10-solve-block]
+
+// [ch10-restitution]
+/// After the last substep (Box3D's order): a point that approached faster than the threshold and
+/// pushed this frame gets its normal speed set to -e times the approach speed, push only.
+template <int N>
+inline void restitutionBlock(ManifoldBlock<N>& c, SolverBodyState* states, Real threshold) {
+    BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+    BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    const Pack<N> zero = Pack<N>::splat(0);
+    const Pack<N> fastApproach = Pack<N>::splat(-threshold);
+    for (ManifoldPointPack<N>& p : c.point) {
+        // Lanes where the rule does not apply get a zero mass, so a zero impulse.
+        const Pack<N> applies = selectPositive(fastApproach - p.approachSpeed, p.maxNormalImpulse, zero);
+        const Pack<N> mass = selectPositive(applies, p.normalMass, zero);
+        const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
+        Pack<N> impulse = -(mass * (normalSpeed + c.restitution * p.approachSpeed));
+        const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
+        impulse = accumulated - p.normalImpulse;
+        p.normalImpulse = accumulated;
+        applyImpulse(c, p.armA, p.armB, impulse * c.normal, a, b);
+    }
+    scatterVelocities(states, c.slotA, a);
+    scatterVelocities(states, c.slotB, b);
+}
+// [ch10-restitution]
+
+}  // namespace stepwise

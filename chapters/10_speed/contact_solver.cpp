@@ -1,0 +1,468 @@
+#include "10_speed/contact_solver.h"
+
+#include "01_integrators/integrate.h"
+#include "01_integrators/rotation.h"
+#include "04_pgs/contact_constraints.h"
+#include "06_manifolds/stabilisation.h"
+#include "10_speed/colouring.h"
+#include "10_speed/contact_kernels.h"
+#include "10_speed/wide_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace stepwise {
+
+const char* toString(SolverPath path) { return path == SolverPath::Wide ? "wide" : "scalar"; }
+
+bool fastSolveApplies(const World& world, std::string* why) {
+    auto refuse = [&](const char* reason) {
+        if (why) *why = reason;
+        return false;
+    };
+    const Settings& settings = world.settings;
+    if (!isSubstepped(settings.stabilisation)) return refuse("the stabilisation is not relax or soft_step");
+    if (settings.solver != SolverKind::GaussSeidel) return refuse("the solver is Jacobi");
+    if (settings.gyroscopic == GyroscopicMode::Explicit) return refuse("the gyroscopic term is explicit");
+    if (settings.integrator != IntegratorKind::SemiImplicitEuler) return refuse("the integrator is not semi-implicit Euler");
+    if (!world.joints.empty()) return refuse("the scene has joints");
+    if (!world.springs.empty()) return refuse("the scene has springs");
+    if (!world.dampings.empty()) return refuse("the scene has dampings");
+    for (const Motion& motion : world.motions) {
+        if (motion.integrator && *motion.integrator != IntegratorKind::SemiImplicitEuler)
+            return refuse("a body uses another integrator");
+        if (world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Kinematic)
+            return refuse("the scene has kinematic bodies");
+    }
+    return true;
+}
+
+namespace {
+
+// [ch10-prepare-bodies]
+void prepareBodies(const World& world, SolverBodies& bodies) {
+    bodies.states.assign(1, SolverBodyState{});  // slot 0: everything that does not move
+    bodies.info.assign(1, SolverBodyInfo{});
+    bodies.slotOfBody.assign(world.bodies.size(), 0);
+    for (const Motion& motion : world.motions) {
+        const Body& body = world.bodies[static_cast<std::size_t>(motion.bodyIndex)];
+        if (body.type != BodyType::Dynamic || motion.asleep) continue;
+        bodies.slotOfBody[static_cast<std::size_t>(motion.bodyIndex)] = static_cast<int>(bodies.states.size());
+        SolverBodyState state;
+        for (int k = 0; k < 3; ++k) {
+            state.linearVelocity[k] = motion.linearVelocity[k];
+            state.angularVelocity[k] = motion.angularVelocity[k];
+        }
+        bodies.states.push_back(state);
+        SolverBodyInfo info;
+        info.bodyIndex = motion.bodyIndex;
+        info.inverseMass = motion.inverseMass;
+        info.inverseInertia = worldInverseInertia(body, motion);
+        info.startCenter = body.transform.apply(motion.localCenter);
+        info.startRotation = body.transform.rotation;
+        const Mat3& inertia = motion.inertiaLocal;
+        info.gyroscopic = !(inertia - Mat3::Identity() * inertia(0, 0)).isZero(0);
+        bodies.info.push_back(info);
+    }
+}
+// [ch10-prepare-bodies]
+
+template <int N>
+void setLane(PackVec3<N>& pack, int lane, const Vec3& value) {
+    pack.x[lane] = value.x();
+    pack.y[lane] = value.y();
+    pack.z[lane] = value.z();
+}
+
+template <int N>
+void setLane(PackSym3<N>& pack, int lane, const Mat3& m) {
+    pack.xx[lane] = m(0, 0);
+    pack.yy[lane] = m(1, 1);
+    pack.zz[lane] = m(2, 2);
+    pack.xy[lane] = m(0, 1);
+    pack.xz[lane] = m(0, 2);
+    pack.yz[lane] = m(1, 2);
+}
+
+Vec3 velocityAt(const SolverBodyState& state, const Vec3& arm) {
+    const Vec3 linear(state.linearVelocity[0], state.linearVelocity[1], state.linearVelocity[2]);
+    const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+    return linear + angular.cross(arm);
+}
+
+Real inverseEffectiveMass(const SolverBodyInfo& a, const SolverBodyInfo& b, const Vec3& armA, const Vec3& armB,
+                          const Vec3& direction) {
+    const Vec3 angularA = armA.cross(direction), angularB = armB.cross(direction);
+    return a.inverseMass + b.inverseMass + angularA.dot(a.inverseInertia * angularA) +
+           angularB.dot(b.inverseInertia * angularB);
+}
+
+// [ch10-prepare-contact]
+/// Fills one lane of a block from a contact record: everything the substeps need, computed once.
+template <int N>
+void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contactIndex, const SolverBodies& bodies,
+              const ContactSolveParams& params) {
+    const Contact& contact = world.contacts[static_cast<std::size_t>(contactIndex)];
+    const int slotA = bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)];
+    const int slotB = bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)];
+    const SolverBodyInfo& infoA = bodies.info[static_cast<std::size_t>(slotA)];
+    const SolverBodyInfo& infoB = bodies.info[static_cast<std::size_t>(slotB)];
+    const SolverBodyState& stateA = bodies.states[static_cast<std::size_t>(slotA)];
+    const SolverBodyState& stateB = bodies.states[static_cast<std::size_t>(slotB)];
+    // A static body's centre is its origin (slot 0 has none): arms only matter for bodies that move.
+    const Vec3 centerA = slotA ? infoA.startCenter : worldCenterOfMass(world, contact.bodyA);
+    const Vec3 centerB = slotB ? infoB.startCenter : worldCenterOfMass(world, contact.bodyB);
+    const Material& materialA = world.bodies[static_cast<std::size_t>(contact.bodyA)].material;
+    const Material& materialB = world.bodies[static_cast<std::size_t>(contact.bodyB)].material;
+    const Vec3& normal = contact.normal;
+
+    block.slotA[lane] = slotA;
+    block.slotB[lane] = slotB;
+    block.contactIndex[lane] = contactIndex;
+    block.pointCount[lane] = contact.pointCount;
+    const Real friction = combinedFriction(materialA, materialB);
+    block.friction[lane] = friction;
+    block.restitution[lane] = combinedRestitution(materialA, materialB);
+    block.inverseMassA[lane] = infoA.inverseMass;
+    block.inverseMassB[lane] = infoB.inverseMass;
+    setLane(block.inverseInertiaA, lane, infoA.inverseInertia);
+    setLane(block.inverseInertiaB, lane, infoB.inverseInertia);
+    const bool againstStatic = slotA == 0 || slotB == 0;
+    block.biasRate[lane] = againstStatic ? params.staticBiasRate : params.dynamicBiasRate;
+    block.massScale[lane] = againstStatic ? params.staticMassScale : params.dynamicMassScale;
+    block.impulseScale[lane] = againstStatic ? params.staticImpulseScale : params.dynamicImpulseScale;
+
+    // One pair of friction directions for the manifold, along the sliding at its centre (chapter
+    // 4's rule, taken once per frame).
+    Vec3 middle = Vec3::Zero();
+    for (int i = 0; i < contact.pointCount; ++i)
+        middle += Real(0.5) * (contact.points[i].pointA + contact.points[i].pointB);
+    middle /= static_cast<Real>(std::max(1, contact.pointCount));
+    Vec3 tangent1, tangent2;
+    frictionDirections(normal, velocityAt(stateB, middle - centerB) - velocityAt(stateA, middle - centerA), tangent1,
+                       tangent2);
+    setLane(block.normal, lane, normal);
+    setLane(block.tangent1, lane, tangent1);
+    setLane(block.tangent2, lane, tangent2);
+    Vec3 basis1, basis2;
+    tangentBasis(normal, basis1, basis2);
+
+    for (int i = 0; i < 4; ++i) {
+        ManifoldPointPack<N>& p = block.point[i];
+        if (i >= contact.pointCount) {  // an empty point: zero masses give zero impulses
+            setLane(p.armA, lane, Vec3::Zero());
+            setLane(p.armB, lane, Vec3::Zero());
+            p.adjustedSeparation[lane] = p.normalMass[lane] = p.tangentMass1[lane] = p.tangentMass2[lane] = 0;
+            p.normalImpulse[lane] = p.tangentImpulse1[lane] = p.tangentImpulse2[lane] = 0;
+            p.approachSpeed[lane] = p.maxNormalImpulse[lane] = 0;
+            continue;
+        }
+        const ContactPoint& point = contact.points[i];
+        const Vec3 at = Real(0.5) * (point.pointA + point.pointB);
+        const Vec3 armA = at - centerA, armB = at - centerB;
+        setLane(p.armA, lane, armA);
+        setLane(p.armB, lane, armB);
+        p.adjustedSeparation[lane] = -point.depth - normal.dot(armB - armA);
+        const Real normalInverse = inverseEffectiveMass(infoA, infoB, armA, armB, normal);
+        const Real tangentInverse1 = inverseEffectiveMass(infoA, infoB, armA, armB, tangent1);
+        const Real tangentInverse2 = inverseEffectiveMass(infoA, infoB, armA, armB, tangent2);
+        p.normalMass[lane] = normalInverse > 0 ? 1 / normalInverse : 0;
+        p.tangentMass1[lane] = tangentInverse1 > 0 ? 1 / tangentInverse1 : 0;
+        p.tangentMass2[lane] = tangentInverse2 > 0 ? 1 / tangentInverse2 : 0;
+        p.approachSpeed[lane] = normal.dot(velocityAt(stateB, armB) - velocityAt(stateA, armA));
+        p.maxNormalImpulse[lane] = 0;
+        // Last frame's impulses, the friction part re-expressed along this frame's directions and
+        // kept inside the friction cone of the carried normal impulse.
+        const Real carriedNormal = std::max(Real(0), point.normalImpulse);
+        Vec3 carriedFriction = point.tangentImpulse[0] * basis1 + point.tangentImpulse[1] * basis2;
+        const Real limit = friction * carriedNormal, size = carriedFriction.norm();
+        if (size > limit) carriedFriction *= size > 0 ? limit / size : Real(0);
+        const bool warm = world.settings.warmStarting;
+        p.normalImpulse[lane] = warm ? carriedNormal : 0;
+        p.tangentImpulse1[lane] = warm ? carriedFriction.dot(tangent1) : 0;
+        p.tangentImpulse2[lane] = warm ? carriedFriction.dot(tangent2) : 0;
+    }
+}
+// [ch10-prepare-contact]
+
+template <int N>
+void emptyLane(ManifoldBlock<N>& block, int lane) {
+    block.slotA[lane] = block.slotB[lane] = 0;
+    block.contactIndex[lane] = -1;
+    block.pointCount[lane] = 0;
+    block.friction[lane] = block.restitution[lane] = 0;
+    block.inverseMassA[lane] = block.inverseMassB[lane] = 0;
+    setLane(block.inverseInertiaA, lane, Mat3::Zero());
+    setLane(block.inverseInertiaB, lane, Mat3::Zero());
+    block.biasRate[lane] = block.impulseScale[lane] = 0;
+    block.massScale[lane] = 1;
+    setLane(block.normal, lane, Vec3::UnitY());
+    setLane(block.tangent1, lane, Vec3::UnitX());
+    setLane(block.tangent2, lane, Vec3::UnitZ());
+    for (ManifoldPointPack<N>& p : block.point) {
+        setLane(p.armA, lane, Vec3::Zero());
+        setLane(p.armB, lane, Vec3::Zero());
+        p.adjustedSeparation[lane] = p.normalMass[lane] = p.tangentMass1[lane] = p.tangentMass2[lane] = 0;
+        p.normalImpulse[lane] = p.tangentImpulse1[lane] = p.tangentImpulse2[lane] = 0;
+        p.approachSpeed[lane] = p.maxNormalImpulse[lane] = 0;
+    }
+}
+
+// [ch10-store]
+template <int N>
+void storeBlock(const ManifoldBlock<N>& block, World& world) {
+    for (int lane = 0; lane < N; ++lane) {
+        if (block.contactIndex[lane] < 0) continue;
+        Contact& contact = world.contacts[static_cast<std::size_t>(block.contactIndex[lane])];
+        const Vec3 normal = contact.normal;
+        const Vec3 tangent1(block.tangent1.x[lane], block.tangent1.y[lane], block.tangent1.z[lane]);
+        const Vec3 tangent2(block.tangent2.x[lane], block.tangent2.y[lane], block.tangent2.z[lane]);
+        Vec3 basis1, basis2;
+        tangentBasis(normal, basis1, basis2);
+        for (int i = 0; i < contact.pointCount; ++i) {
+            const ManifoldPointPack<N>& p = block.point[i];
+            ContactPoint& point = contact.points[i];
+            point.normalImpulse = p.normalImpulse[lane];
+            point.normalMass = p.normalMass[lane];
+            const Vec3 friction = p.tangentImpulse1[lane] * tangent1 + p.tangentImpulse2[lane] * tangent2;
+            point.tangentImpulse[0] = friction.dot(basis1);
+            point.tangentImpulse[1] = friction.dot(basis2);
+        }
+    }
+}
+// [ch10-store]
+
+ContactSolveParams solveParams(const Settings& settings, Real h) {
+    ContactSolveParams params;
+    params.substep = h;
+    params.slop = settings.slop;
+    params.maxPushOutSpeed = kMaxPushOutSpeed;
+    params.restitutionThreshold = settings.restitutionThreshold;
+    if (settings.stabilisation == Stabilisation::SoftStep) {
+        // Chapter 6's soft contacts: Box2D v3's 30 Hz (at most a quarter of the substep rate),
+        // twice as stiff against a body that cannot move.
+        const Real hertz = std::min(kContactHertz, Real(0.25) / h);
+        const Softness dynamicSoft = makeSoftness(hertz, kContactDampingRatio, h);
+        const Softness staticSoft = makeSoftness(2 * hertz, kContactDampingRatio, h);
+        params.dynamicBiasRate = dynamicSoft.biasRate;
+        params.dynamicMassScale = dynamicSoft.massScale;
+        params.dynamicImpulseScale = dynamicSoft.impulseScale;
+        params.staticBiasRate = staticSoft.biasRate;
+        params.staticMassScale = staticSoft.massScale;
+        params.staticImpulseScale = staticSoft.impulseScale;
+    } else {  // relax: Baumgarte's fraction per substep, rigid rows
+        params.dynamicBiasRate = params.staticBiasRate = settings.baumgarte / h;
+    }
+    return params;
+}
+
+// [ch10-integrate]
+void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep) {
+    const Vec3 gravity = world.settings.gravity;
+    const bool implicitGyroscopic = world.settings.gyroscopic == GyroscopicMode::Implicit;
+    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
+        SolverBodyState& state = bodies.states[slot];
+        const SolverBodyInfo& info = bodies.info[slot];
+        Vec3 acceleration = gravity;
+        if (firstSubstep) {  // a user's push, held for the frame's first substep as chapter 6 does
+            Motion& motion = *world.motionOf(info.bodyIndex);
+            acceleration += info.inverseMass * motion.force;
+            const Vec3 spin = h * (info.inverseInertia * motion.torque);
+            for (int k = 0; k < 3; ++k) state.angularVelocity[k] += spin[k];
+            motion.force = motion.torque = Vec3::Zero();
+        }
+        for (int k = 0; k < 3; ++k) state.linearVelocity[k] += h * acceleration[k];
+        if (info.gyroscopic && implicitGyroscopic) {
+            const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
+            const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+            const Motion& motion = *world.motionOf(info.bodyIndex);
+            const Vec3 turned = gyroscopicStepImplicit(angular, (delta * info.startRotation).normalized(), motion.inertiaLocal, h);
+            for (int k = 0; k < 3; ++k) state.angularVelocity[k] = turned[k];
+        }
+    }
+}
+
+void integratePositions(SolverBodies& bodies, Real h) {
+    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
+        SolverBodyState& state = bodies.states[slot];
+        for (int k = 0; k < 3; ++k) state.deltaPosition[k] += h * state.linearVelocity[k];
+        const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
+        const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+        // Chapter 1's rotation step on the rotation since the frame began: q = dq q0 changes by
+        // h/2 (0, w) dq q0, so integrating dq is integrating q.
+        const Quat turned = integrateRotation(delta, angular, h);
+        state.deltaRotation[0] = turned.x();
+        state.deltaRotation[1] = turned.y();
+        state.deltaRotation[2] = turned.z();
+        state.deltaRotation[3] = turned.w();
+    }
+}
+
+void writeBodiesBack(World& world, const SolverBodies& bodies) {
+    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
+        const SolverBodyState& state = bodies.states[slot];
+        const SolverBodyInfo& info = bodies.info[slot];
+        Motion& motion = *world.motionOf(info.bodyIndex);
+        Transform& pose = world.bodies[static_cast<std::size_t>(info.bodyIndex)].transform;
+        const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
+        const Vec3 center = info.startCenter + Vec3(state.deltaPosition[0], state.deltaPosition[1], state.deltaPosition[2]);
+        pose.rotation = (delta * info.startRotation).normalized();
+        pose.position = center - pose.rotation * motion.localCenter;
+        motion.linearVelocity = Vec3(state.linearVelocity[0], state.linearVelocity[1], state.linearVelocity[2]);
+        motion.angularVelocity = Vec3(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+    }
+}
+// [ch10-integrate]
+
+bool usableContact(const World& world, const Contact& contact, const SolverBodies& bodies) {
+    const int count = static_cast<int>(world.bodies.size());
+    if (contact.bodyA < 0 || contact.bodyB < 0 || contact.bodyA >= count || contact.bodyB >= count) return false;
+    if (contact.pointCount <= 0 || contact.pointCount > 4 || contact.bodyA == contact.bodyB) return false;
+    if (!contact.normal.allFinite() || std::abs(contact.normal.norm() - 1) > Real(1e-3)) return false;
+    for (int i = 0; i < contact.pointCount; ++i)
+        if (!contact.points[i].pointA.allFinite() || !contact.points[i].pointB.allFinite() ||
+            !std::isfinite(contact.points[i].depth))
+            return false;
+    return bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)] != 0 ||
+           bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)] != 0;
+}
+
+// [ch10-wide-blocks]
+/// Colours the contacts and packs each colour kWideLanes at a time; the overflow goes to
+/// scratch.scalarBlocks.
+void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params) {
+    const std::vector<int>& order = scratch.contactOrder;
+    colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(scratch.bodies.states.size()), scratch.colours,
+                   scratch.colourBits);
+    FastSolveStats& stats = scratch.stats;
+    scratch.wideBlocks.clear();
+    scratch.scalarBlocks.clear();
+    for (int colour = 0; colour < kMaxColours; ++colour) {
+        int lane = kWideLanes;
+        bool used = false;
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            if (scratch.colours[i] != colour) continue;
+            if (lane == kWideLanes) {
+                scratch.wideBlocks.emplace_back();
+                lane = 0;
+                ++stats.blocks;
+            }
+            fillLane(scratch.wideBlocks.back(), lane++, world, order[i], scratch.bodies, params);
+            ++stats.lanesFilled;
+            used = true;
+        }
+        if (!used) break;  // greedy colours are used in order: none after an empty one
+        for (; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
+        stats.colours = colour + 1;
+    }
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (scratch.colours[i] >= 0) continue;
+        scratch.scalarBlocks.emplace_back();
+        fillLane(scratch.scalarBlocks.back(), 0, world, order[i], scratch.bodies, params);
+        ++stats.overflow;
+    }
+}
+// [ch10-wide-blocks]
+
+template <int N>
+void warmStartAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states) {
+    for (ManifoldBlock<N>& block : blocks) warmStartBlock(block, states);
+}
+template <int N>
+void solveAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
+              bool useBias) {
+    for (ManifoldBlock<N>& block : blocks) solveBlock(block, states, params, useBias);
+}
+template <int N>
+void restitutionAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, Real threshold) {
+    for (ManifoldBlock<N>& block : blocks) restitutionBlock(block, states, threshold);
+}
+
+void resetImpulses(std::vector<ManifoldBlock<1>>& blocks) {
+    for (ManifoldBlock<1>& block : blocks)
+        for (ManifoldPointPack<1>& p : block.point) p.normalImpulse = p.tangentImpulse1 = p.tangentImpulse2 = Pack<1>::splat(0);
+}
+void resetImpulses(std::vector<ManifoldBlock<kWideLanes>>& blocks) {
+    for (ManifoldBlock<kWideLanes>& block : blocks)
+        for (ManifoldPointPack<kWideLanes>& p : block.point)
+            p.normalImpulse = p.tangentImpulse1 = p.tangentImpulse2 = Pack<kWideLanes>::splat(0);
+}
+
+}  // namespace
+
+// [ch10-solve-fast]
+void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scratch) {
+    if (!(dt > 0) || !std::isfinite(dt)) return;
+    scratch.stats = FastSolveStats{};
+    FastSolveStats& stats = scratch.stats;
+    prepareBodies(world, scratch.bodies);
+    stats.bodies = static_cast<int>(scratch.bodies.states.size()) - 1;
+
+    const int substeps = std::max(1, world.settings.solverIterations);
+    const Real h = dt / static_cast<Real>(substeps);
+    const ContactSolveParams params = solveParams(world.settings, h);
+
+    // The contacts that involve a moving body, in contact order (canonical: sorted by pair).
+    scratch.contactOrder.clear();
+    scratch.slotA.clear();
+    scratch.slotB.clear();
+    SolverStats solverStats;
+    for (std::size_t i = 0; i < world.contacts.size(); ++i) {
+        const Contact& contact = world.contacts[i];
+        if (!usableContact(world, contact, scratch.bodies)) {
+            if (contact.pointCount > 0 && (contact.bodyA < 0 || contact.bodyB < 0 || contact.pointCount > 4 ||
+                                           !contact.normal.allFinite()))
+                solverStats.invalidSkipped += std::clamp(contact.pointCount, 1, 4);
+            continue;
+        }
+        scratch.contactOrder.push_back(static_cast<int>(i));
+        scratch.slotA.push_back(scratch.bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)]);
+        scratch.slotB.push_back(scratch.bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)]);
+        stats.points += contact.pointCount;
+    }
+    stats.manifolds = static_cast<int>(scratch.contactOrder.size());
+
+    if (path == SolverPath::Wide) {
+        buildWideBlocks(world, scratch, params);
+    } else {
+        scratch.wideBlocks.clear();
+        scratch.scalarBlocks.resize(scratch.contactOrder.size());
+        for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i)
+            fillLane(scratch.scalarBlocks[i], 0, world, scratch.contactOrder[i], scratch.bodies, params);
+    }
+
+    SolverBodyState* states = scratch.bodies.states.data();
+    const bool warmStarting = world.settings.warmStarting;
+    for (int substep = 0; substep < substeps; ++substep) {
+        integrateVelocities(world, scratch.bodies, h, substep == 0);
+        if (!warmStarting) {
+            resetImpulses(scratch.wideBlocks);
+            resetImpulses(scratch.scalarBlocks);
+        } else {
+            warmStartWide(scratch.wideBlocks, states);
+            warmStartAll(scratch.scalarBlocks, states);
+        }
+        solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
+        solveAll(scratch.scalarBlocks, states, params, true);
+        integratePositions(scratch.bodies, h);
+        solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
+        solveAll(scratch.scalarBlocks, states, params, false);
+    }
+    restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
+    restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
+
+    writeBodiesBack(world, scratch.bodies);
+    for (const ManifoldBlock<kWideLanes>& block : scratch.wideBlocks) storeBlock(block, world);
+    for (const ManifoldBlock<1>& block : scratch.scalarBlocks) storeBlock(block, world);
+
+    if (getenv("DEBUGFAST")) fprintf(stderr, "frame %ld contacts %zu manifolds %d points %d bodies %d colours %d overflow %d blocks %d\n", world.frame, world.contacts.size(), stats.manifolds, stats.points, stats.bodies, stats.colours, stats.overflow, stats.blocks);
+    solverStats.contactPoints = stats.points;
+    solverStats.rows = 3 * stats.points;
+    world.step.solver = solverStats;
+    world.step.velocitiesBeforeForces.clear();
+}
+// [ch10-solve-fast]
+
+}  // namespace stepwise

@@ -1,0 +1,51 @@
+#pragma once
+// The fast step's solve: chapter 6's relax and soft step (substeps of one biased and one relax
+// sweep, warm started), on the data of solver_data.h, built once per frame. Two paths give the same
+// physics: the scalar one solves the contacts one after another in contact order; the wide one
+// solves kWideLanes contacts of a colour at once (colouring.h) and the overflow after them.
+
+#include "10_speed/solver_data.h"
+#include "world/world.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace stepwise {
+
+enum class SolverPath { Scalar, Wide };
+const char* toString(SolverPath path);
+
+/// What one fast solve did (World::step.solver carries the engine-wide figures).
+struct FastSolveStats {
+    int bodies = 0;          // moving bodies solved (awake dynamic)
+    int manifolds = 0;       // contacts with at least one moving body
+    int points = 0;
+    int colours = 0;         // used by the wide path
+    int overflow = 0;        // contacts left to the scalar overflow
+    int blocks = 0;          // wide blocks (kWideLanes lanes each)
+    int lanesFilled = 0;     // lanes of those blocks that hold a contact
+};
+
+/// The buffers a solve works in. Rebuilt from the World every frame and carrying nothing from one
+/// frame to the next (all state stays in the World); kept only so that a steady scene allocates
+/// nothing per step.
+struct ContactSolverScratch {
+    SolverBodies bodies;
+    std::vector<ManifoldBlock<1>> scalarBlocks;          // scalar path, and the wide path's overflow
+    std::vector<ManifoldBlock<kWideLanes>> wideBlocks;   // grouped by colour
+    std::vector<int> contactOrder, slotA, slotB, colours;
+    std::vector<std::uint64_t> colourBits;
+    FastSolveStats stats;
+};
+
+/// Whether the fast solve can run this world exactly as chapter 6/8's solve would: relax or soft
+/// step with Gauss-Seidel, semi-implicit Euler everywhere, no springs, dampings, joints or kinematic
+/// bodies, gyroscopic off or implicit. Otherwise `why` says what stands in the way.
+bool fastSolveApplies(const World& world, std::string* why = nullptr);
+
+/// The frame's solve and integration (the substeps of Settings::solverIterations): gathers the awake
+/// dynamic bodies (Motion::asleep skipped: they are static for the solve), builds the contacts'
+/// blocks, steps, writes poses, velocities and carried impulses back.
+void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scratch);
+
+}  // namespace stepwise

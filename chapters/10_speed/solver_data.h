@@ -1,0 +1,83 @@
+#pragma once
+// The data the fast step solves on, laid out for speed. Chapters 4 and 6 build a ConstraintRow per
+// contact direction with both bodies' indices into the World and a full 3x3 inverse inertia per
+// body, and rebuild them every substep. Here (as in Box3D and Jolt):
+//
+// - a body's hot state, the part every contact reads and writes, is 64 bytes, one cache line, in a
+//   contiguous array (SolverBodyState); its cold data (mass, inertia, start pose) sits apart and
+//   is read once per frame or substep (SolverBodyInfo);
+// - a contact's data is built once per frame, for up to four points together (ManifoldBlock), and
+//   the substeps only update each point's separation from how far its bodies moved;
+// - manifolds are grouped N at a time, one per lane, into blocks whose lanes never share a moving
+//   body (colouring.h), so N of them are solved with one stream of SIMD instructions.
+
+#include "10_speed/lanes.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace stepwise {
+
+/// What every contact row of a body reads and writes during a frame: one cache line.
+struct alignas(64) SolverBodyState {
+    Real linearVelocity[3] = {0, 0, 0};    // of the centre of mass, m/s
+    Real angularVelocity[3] = {0, 0, 0};   // rad/s
+    Real deltaPosition[3] = {0, 0, 0};     // centre of mass moved since the frame began, m
+    Real deltaRotation[4] = {0, 0, 0, 1};  // x y z w: turned since the frame began
+};
+
+/// What the solve reads of a body once per frame or substep.
+struct SolverBodyInfo {
+    int bodyIndex = -1;                 // into World::bodies
+    Real inverseMass = 0;
+    Mat3 inverseInertia = Mat3::Zero(); // world axes at the frame's start (kept for the frame, as Box3D does)
+    Vec3 startCenter = Vec3::Zero();    // centre of mass when the frame began
+    Quat startRotation = Quat::Identity();
+    bool gyroscopic = false;            // inertia not a multiple of the identity: w x I w can be non-zero
+};
+
+/// The solver's bodies. Slot 0 is every static (and sleeping) body at once: zero velocity, zero
+/// inverse mass. Slots 1.. are the awake dynamic bodies.
+struct SolverBodies {
+    std::vector<SolverBodyState> states;
+    std::vector<SolverBodyInfo> info;
+    std::vector<int> slotOfBody;        // per World body; 0 when it does not move in this solve
+};
+
+/// One contact point of a manifold, per lane.
+template <int N>
+struct ManifoldPointPack {
+    PackVec3<N> armA, armB;          // contact point minus each centre of mass, at the frame's start, m
+    Pack<N> adjustedSeparation;      // separation at the frame's start minus normal . (armB - armA), m
+    Pack<N> normalMass, tangentMass1, tangentMass2;  // effective masses, kg; 0 for a missing point
+    Pack<N> normalImpulse, tangentImpulse1, tangentImpulse2;  // accumulated, N s
+    Pack<N> approachSpeed;           // normal velocity when the frame began (restitution), m/s
+    Pack<N> maxNormalImpulse;        // largest this frame: restitution only where the point pushed
+};
+
+/// Up to N manifolds solved side by side, one per lane.
+template <int N>
+struct ManifoldBlock {
+    int slotA[N] = {};               // SolverBodies slots (0: static, sleeping or an empty lane)
+    int slotB[N] = {};
+    int contactIndex[N] = {};        // into World::contacts; -1 for an empty lane
+    int pointCount[N] = {};
+    PackVec3<N> normal, tangent1, tangent2;
+    Pack<N> friction, restitution;
+    Pack<N> inverseMassA, inverseMassB;
+    PackSym3<N> inverseInertiaA, inverseInertiaB;
+    Pack<N> biasRate, massScale, impulseScale;  // position feedback of deep points (stabilisation)
+    ManifoldPointPack<N> point[4];
+};
+
+/// The solve's knobs for one frame, from Settings and the stabilisation.
+struct ContactSolveParams {
+    Real substep = 0;                // h, s
+    Real slop = 0;                   // m of penetration left alone
+    Real maxPushOutSpeed = 0;        // m/s
+    Real restitutionThreshold = 0;   // m/s
+    Real staticBiasRate = 0, staticMassScale = 1, staticImpulseScale = 0;    // against a body that cannot move
+    Real dynamicBiasRate = 0, dynamicMassScale = 1, dynamicImpulseScale = 0;
+};
+
+}  // namespace stepwise

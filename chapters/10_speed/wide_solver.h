@@ -1,0 +1,21 @@
+#pragma once
+// The wide path's three passes over the colour blocks. They live in their own file because it is
+// the one built with the SIMD instruction set (AVX2 and FMA where the compiler and the option
+// STEPWISE_WIDE_AVX2 allow, chapters/CMakeLists.txt): the same templates as the scalar path
+// (contact_kernels.h), compiled for 256-bit registers.
+
+#include "10_speed/solver_data.h"
+
+#include <vector>
+
+namespace stepwise {
+
+void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states);
+void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
+               bool useBias);
+void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold);
+
+/// The instruction set the wide file was built for: "avx2" or "portable".
+const char* wideInstructionSet();
+
+}  // namespace stepwise
