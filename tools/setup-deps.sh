@@ -3,8 +3,10 @@
 # Idempotent; needs root (or sudo). Nothing is fetched from outside Debian's archive.
 set -euo pipefail
 # clang and libclang-rt-dev: the sanitizer build and its libFuzzer targets (linux-asan preset).
+# libbullet-dev: the Bullet peer (bench/peers, docs/peers.md), a yardstick only; the build skips
+# the peer without it.
 packages=(cmake ninja-build g++ clang libclang-rt-dev libeigen3-dev nlohmann-json3-dev libcli11-dev catch2 doxygen
-          libjs-mathjax chromium)
+          libjs-mathjax chromium libbullet-dev)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

@@ -1,0 +1,441 @@
+// The Bullet peer (bullet_peer.h, docs/peers.md): a stepwise World handed to Bullet 3's
+// btDiscreteDynamicsWorld with the engine's own masses, inertias, materials and joints.
+
+#include "peers/bullet_peer.h"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+namespace stepwise::peers {
+namespace {
+
+/// A hull's collision margin, m. btConvexHullShape rounds its hull outward by the margin, so the
+/// default 0.04 would make every hull 4 cm fatter than the engine's; 1 mm keeps the geometry
+/// within a millimetre. Boxes keep Bullet's default: btBoxShape puts its margin inside the
+/// extents (the corners are rounded by 4 cm, the faces are where the engine has them).
+constexpr btScalar kHullMargin = btScalar(0.001);
+
+btVector3 btVec(const Vec3& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
+Vec3 vec(const btVector3& v) { return Vec3(Real(v.x()), Real(v.y()), Real(v.z())); }
+btMatrix3x3 btMat(const Mat3& m) {
+    return btMatrix3x3(btScalar(m(0, 0)), btScalar(m(0, 1)), btScalar(m(0, 2)), btScalar(m(1, 0)), btScalar(m(1, 1)),
+                       btScalar(m(1, 2)), btScalar(m(2, 0)), btScalar(m(2, 1)), btScalar(m(2, 2)));
+}
+Mat3 mat(const btMatrix3x3& m) {
+    Mat3 out;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) out(r, c) = Real(m[r][c]);
+    return out;
+}
+btTransform btPose(const Mat3& basis, const Vec3& origin) { return btTransform(btMat(basis), btVec(origin)); }
+
+/// Bullet's body frame in the shape's frame: the centre of mass, and the principal axes as the
+/// columns of a rotation. Bullet takes a diagonal inertia only, so its body frame must be the
+/// principal frame (the same choice Bullet's own btCompoundShape::calculatePrincipalAxisTransform
+/// makes).
+struct PrincipalFrame {
+    Vec3 center = Vec3::Zero();
+    Mat3 axes = Mat3::Identity();
+    Vec3 inertia = Vec3::Zero();
+    bool identity() const { return center.isZero(0) && axes.isIdentity(0); }
+};
+
+PrincipalFrame principalFrame(const Motion* motion) {
+    PrincipalFrame frame;
+    if (!motion) return frame;
+    frame.center = motion->localCenter;
+    if (motion->mass <= 0) return frame;
+    const Mat3 inertia = Real(0.5) * (motion->inertiaLocal + motion->inertiaLocal.transpose());
+    const Real offDiagonal = std::max({std::abs(inertia(0, 1)), std::abs(inertia(0, 2)), std::abs(inertia(1, 2))});
+    if (offDiagonal <= Real(1e-6) * inertia.trace()) {
+        frame.inertia = inertia.diagonal();
+        return frame;
+    }
+    // Eigen-decomposition in double: the principal moments and axes of a symmetric tensor.
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(inertia.cast<double>());
+    Eigen::Matrix3d axes = solver.eigenvectors();
+    if (axes.determinant() < 0) axes.col(2) = -axes.col(2);  // a rotation, not a reflection
+    frame.axes = axes.cast<Real>();
+    frame.inertia = solver.eigenvalues().cast<Real>();
+    return frame;
+}
+
+/// Shape pose -> Bullet body pose: T_body = T_shape * (center, axes).
+btTransform bulletPose(const Transform& pose, const PrincipalFrame& frame) {
+    const Mat3 rotation = pose.rotation.normalized().toRotationMatrix();
+    return btPose(rotation * frame.axes, pose.position + rotation * frame.center);
+}
+
+/// Bullet body pose -> shape pose (the inverse of bulletPose).
+Transform shapePose(const btTransform& body, const PrincipalFrame& frame) {
+    Transform pose;
+    pose.rotation = Quat(mat(body.getBasis()) * frame.axes.transpose()).normalized();
+    pose.position = vec(body.getOrigin()) - pose.rotation * frame.center;
+    return pose;
+}
+
+std::string bodyLabel(const World& world, int index) {
+    return "bodies[" + std::to_string(index) + "] (\"" + world.bodies[std::size_t(index)].name + "\")";
+}
+
+std::string jointLabel(const World& world, std::size_t index) {
+    const JointDesc& joint = world.joints[index];
+    return "joints[" + std::to_string(index) + "] (" + toString(joint.type) + ", \"" +
+           world.bodies[std::size_t(joint.bodyA)].name + "\" - \"" + world.bodies[std::size_t(joint.bodyB)].name + "\")";
+}
+
+/// The engine's combining rules (chapter 4, contact_constraints.cpp): friction is the geometric
+/// mean, restitution the larger of the two. Bullet's own rules multiply both.
+btScalar engineFriction(const btCollisionObject* a, const btCollisionObject* b) {
+    return std::sqrt(std::max(btScalar(0), a->getFriction()) * std::max(btScalar(0), b->getFriction()));
+}
+btScalar engineRestitution(const btCollisionObject* a, const btCollisionObject* b) {
+    return std::max(a->getRestitution(), b->getRestitution());
+}
+
+/// Bullet's combining callbacks are process-wide; this puts the engine's in for one run.
+struct CombineRules {
+    CalculateCombinedCallback friction = gCalculateCombinedFrictionCallback;
+    CalculateCombinedCallback restitution = gCalculateCombinedRestitutionCallback;
+    CombineRules() {
+        gCalculateCombinedFrictionCallback = engineFriction;
+        gCalculateCombinedRestitutionCallback = engineRestitution;
+    }
+    ~CombineRules() {
+        gCalculateCombinedFrictionCallback = friction;
+        gCalculateCombinedRestitutionCallback = restitution;
+    }
+    CombineRules(const CombineRules&) = delete;
+    CombineRules& operator=(const CombineRules&) = delete;
+};
+
+/// Refuses, before anything is built, what Bullet cannot do as the engine does.
+void checkSupported(const World& world) {
+    const Settings& settings = world.settings;
+    if (settings.integrator != IntegratorKind::SemiImplicitEuler)
+        throw BulletUnsupported(std::string("settings.integrator (") + toString(settings.integrator) +
+                                "): unsupported: Bullet integrates with semi-implicit Euler only");
+    if (settings.solver != SolverKind::GaussSeidel)
+        throw BulletUnsupported(std::string("settings.solver (") + toString(settings.solver) +
+                                "): unsupported: Bullet's btSequentialImpulseConstraintSolver is Gauss-Seidel only");
+    for (const Motion& motion : world.motions)
+        if (motion.integrator && *motion.integrator != IntegratorKind::SemiImplicitEuler)
+            throw BulletUnsupported(bodyLabel(world, motion.bodyIndex) + ".integrator (" + toString(*motion.integrator) +
+                                    "): unsupported: Bullet integrates with semi-implicit Euler only");
+    if (!world.springs.empty())
+        throw BulletUnsupported("springs[0] (\"" + world.bodies[std::size_t(world.springs[0].bodyA)].name +
+                                "\"): unsupported: Bullet has no damped spring between two anchors");
+    for (std::size_t i = 0; i < world.joints.size(); ++i) {
+        const JointDesc& joint = world.joints[i];
+        if (joint.type == JointType::Distance)
+            throw BulletUnsupported(jointLabel(world, i) +
+                                    ": unsupported: Bullet has no distance constraint (a rod or spring between two anchors)");
+        if (joint.type == JointType::ConeTwist && joint.frictionTorque > 0)
+            throw BulletUnsupported(jointLabel(world, i) +
+                                    ".friction_torque: unsupported: btConeTwistConstraint has no joint friction");
+    }
+}
+
+/// A unit joint axis as one column of a right-handed frame: column `column` is the axis.
+Mat3 axisFrame(const Vec3& axis, int column) {
+    const Vec3 u = axis.normalized();
+    const Vec3 v = anyPerpendicular(u);
+    const Vec3 w = u.cross(v);
+    Mat3 frame;
+    if (column == 0) frame << u, v, w;   // x = axis: slider, cone-twist
+    else frame << v, w, u;               // z = axis: hinge
+    return frame;
+}
+
+/// Everything Bullet needs, owned in one place and torn down in the order Bullet requires.
+struct BulletScene {
+    btDefaultCollisionConfiguration configuration;
+    btCollisionDispatcher dispatcher{&configuration};
+    btDbvtBroadphase broadphase;
+    btSequentialImpulseConstraintSolver solver;
+    btDiscreteDynamicsWorld dynamics{&dispatcher, &broadphase, &solver, &configuration};
+    std::vector<std::unique_ptr<btCollisionShape>> shapes;
+    std::vector<std::unique_ptr<btRigidBody>> bodies;       // one per World body
+    std::vector<std::unique_ptr<btTypedConstraint>> joints;
+    std::vector<PrincipalFrame> frames;                     // one per World body
+
+    BulletScene() = default;
+    BulletScene(const BulletScene&) = delete;
+    BulletScene& operator=(const BulletScene&) = delete;
+    ~BulletScene() {
+        for (auto& joint : joints) dynamics.removeConstraint(joint.get());
+        for (auto& body : bodies) dynamics.removeRigidBody(body.get());
+    }
+
+    /// The Bullet transform of a joint frame (origin `anchor`, axes `basis`, in the shape frame).
+    btTransform jointFrame(int body, const Vec3& anchor, const Mat3& basis) const {
+        const PrincipalFrame& frame = frames[std::size_t(body)];
+        return btPose(frame.axes.transpose() * basis, frame.axes.transpose() * (anchor - frame.center));
+    }
+};
+
+btCollisionShape* makeShape(BulletScene& scene, const Body& body, const PrincipalFrame& frame) {
+    const Shape& shape = body.shape;
+    std::unique_ptr<btCollisionShape> made;
+    switch (shape.type) {
+        case ShapeType::Box: made = std::make_unique<btBoxShape>(btVec(shape.halfExtents)); break;
+        case ShapeType::Sphere: made = std::make_unique<btSphereShape>(btScalar(shape.radius)); break;
+        // The engine's capsule runs along its +Y axis, as btCapsuleShape's does; Bullet's height
+        // is the segment's whole length.
+        case ShapeType::Capsule:
+            made = std::make_unique<btCapsuleShape>(btScalar(shape.radius), btScalar(2 * shape.halfHeight));
+            break;
+        case ShapeType::Convex: {
+            // Hull points straight into the principal frame: no compound shape needed.
+            auto hull = std::make_unique<btConvexHullShape>();
+            for (const Vec3& point : shape.hull->vertices)
+                hull->addPoint(btVec(frame.axes.transpose() * (point - frame.center)), false);
+            hull->recalcLocalAabb();
+            hull->setMargin(kHullMargin);
+            scene.shapes.push_back(std::move(hull));
+            return scene.shapes.back().get();
+        }
+    }
+    btCollisionShape* child = made.get();
+    scene.shapes.push_back(std::move(made));
+    if (frame.identity()) return child;
+    // The shape's origin seen from the principal frame.
+    auto compound = std::make_unique<btCompoundShape>();
+    compound->addChildShape(btPose(frame.axes.transpose(), -(frame.axes.transpose() * frame.center)), child);
+    scene.shapes.push_back(std::move(compound));
+    return scene.shapes.back().get();
+}
+
+/// Velocity-proportional drag (World::dampings, dv/dt = -rate v) as Bullet's per-step factor
+/// v *= (1 - d)^dt: d = 1 - exp(-rate) gives exactly v *= exp(-rate dt).
+btScalar bulletDamping(Real rate) { return btScalar(1 - std::exp(-double(rate))); }
+
+void addBodies(BulletScene& scene, const World& world) {
+    const Settings& settings = world.settings;
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        const Body& body = world.bodies[i];
+        const Motion* motion = world.motionOf(int(i));
+        const PrincipalFrame frame = principalFrame(motion);
+        scene.frames.push_back(frame);
+        const bool dynamic = body.type == BodyType::Dynamic;
+        const btScalar mass = dynamic ? btScalar(motion->mass) : btScalar(0);
+        btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, makeShape(scene, body, frame),
+                                                      dynamic ? btVec(frame.inertia) : btVector3(0, 0, 0));
+        info.m_startWorldTransform = bulletPose(body.transform, frame);
+        info.m_friction = btScalar(body.material.friction);
+        info.m_restitution = btScalar(body.material.restitution);
+        Real linearRate = 0, angularRate = 0;
+        for (const Damping& damping : world.dampings)
+            if (dynamic && (damping.body == int(i) || damping.body < 0)) linearRate += damping.linear, angularRate += damping.angular;
+        info.m_linearDamping = bulletDamping(linearRate);
+        info.m_angularDamping = bulletDamping(angularRate);
+        auto rigid = std::make_unique<btRigidBody>(info);
+        if (motion) {
+            rigid->setLinearVelocity(btVec(motion->linearVelocity));
+            rigid->setAngularVelocity(btVec(motion->angularVelocity));
+        }
+        if (body.type == BodyType::Kinematic)
+            rigid->setCollisionFlags(rigid->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+        if (body.type != BodyType::Static) rigid->setActivationState(DISABLE_DEACTIVATION);
+        if (dynamic) {
+            const int gyroscopic[] = {0, BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT, BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY};
+            rigid->setFlags(gyroscopic[int(settings.gyroscopic)]);
+            if (settings.ccd != CcdMode::Off) {
+                // Bullet's continuous collision: a swept sphere for bodies moving more than half
+                // their smallest extent in a step (the engine's auto rule, chapter 7).
+                const Aabb box = computeAabb(body.shape, Transform{});
+                const Real smallestHalf = box.extents().minCoeff();
+                rigid->setCcdMotionThreshold(btScalar(smallestHalf));
+                rigid->setCcdSweptSphereRadius(btScalar(Real(0.8) * smallestHalf));
+            }
+        }
+        scene.dynamics.addRigidBody(rigid.get());
+        scene.bodies.push_back(std::move(rigid));
+    }
+}
+
+void addJoints(BulletScene& scene, const World& world, btScalar subDt) {
+    for (const JointDesc& joint : world.joints) {
+        btRigidBody& a = *scene.bodies[std::size_t(joint.bodyA)];
+        btRigidBody& b = *scene.bodies[std::size_t(joint.bodyB)];
+        // At rest B's orientation in A is referenceRotation, so a frame with axes F in A has
+        // axes referenceRotation^-1 F in B.
+        const Mat3 toB = joint.referenceRotation.normalized().conjugate().toRotationMatrix();
+        auto frames = [&](const Mat3& basisA) {
+            return std::make_pair(scene.jointFrame(joint.bodyA, joint.localAnchorA, basisA),
+                                  scene.jointFrame(joint.bodyB, joint.localAnchorB, toB * basisA));
+        };
+        std::unique_ptr<btTypedConstraint> made;
+        switch (joint.type) {
+            case JointType::Distance: break;  // refused by checkSupported
+            case JointType::BallSocket: {
+                const auto [inA, inB] = frames(Mat3::Identity());
+                made = std::make_unique<btPoint2PointConstraint>(a, b, inA.getOrigin(), inB.getOrigin());
+                break;
+            }
+            case JointType::Hinge: {
+                const auto [inA, inB] = frames(axisFrame(joint.axis, 2));
+                auto hinge = std::make_unique<btHingeConstraint>(a, b, inA, inB, false);
+                // Bullet's hinge angle (and motor speed) count A turning against B: the engine's
+                // with the sign flipped.
+                if (joint.limits) hinge->setLimit(btScalar(-joint.limits->second), btScalar(-joint.limits->first));
+                if (joint.motor)
+                    hinge->enableAngularMotor(true, btScalar(-joint.motor->speed), btScalar(joint.motor->maxForce) * subDt);
+                else if (joint.frictionTorque > 0)  // joint friction: a motor of speed zero, as the engine does
+                    hinge->enableAngularMotor(true, 0, btScalar(joint.frictionTorque) * subDt);
+                made = std::move(hinge);
+                break;
+            }
+            case JointType::ConeTwist: {
+                // Bullet's twist limit is symmetric: turn A's frame to the middle of [lo, hi].
+                const Real lo = joint.twistLimits ? joint.twistLimits->first : -kPi;
+                const Real hi = joint.twistLimits ? joint.twistLimits->second : kPi;
+                const Mat3 basis = axisFrame(joint.axis, 0);
+                const Mat3 middle = basis * Eigen::AngleAxis<Real>(Real(0.5) * (lo + hi), Vec3::UnitX()).toRotationMatrix();
+                const btTransform inA = scene.jointFrame(joint.bodyA, joint.localAnchorA, middle);
+                const btTransform inB = scene.jointFrame(joint.bodyB, joint.localAnchorB, toB * basis);
+                auto cone = std::make_unique<btConeTwistConstraint>(a, b, inA, inB);
+                cone->setLimit(btScalar(joint.coneAngle), btScalar(joint.coneAngle), btScalar(Real(0.5) * (hi - lo)));
+                made = std::move(cone);
+                break;
+            }
+            case JointType::Slider: {
+                const auto [inA, inB] = frames(axisFrame(joint.axis, 0));
+                auto slider = std::make_unique<btSliderConstraint>(a, b, inA, inB, true);
+                if (joint.limits) {
+                    slider->setLowerLinLimit(btScalar(joint.limits->first));
+                    slider->setUpperLinLimit(btScalar(joint.limits->second));
+                } else {  // lower above upper: free (Bullet's convention)
+                    slider->setLowerLinLimit(1);
+                    slider->setUpperLinLimit(-1);
+                }
+                if (joint.motor) {
+                    slider->setPoweredLinMotor(true);
+                    slider->setTargetLinMotorVelocity(btScalar(joint.motor->speed));
+                    slider->setMaxLinMotorForce(btScalar(joint.motor->maxForce));
+                }
+                made = std::move(slider);
+                break;
+            }
+            case JointType::Fixed: {
+                const auto [inA, inB] = frames(Mat3::Identity());
+                made = std::make_unique<btFixedConstraint>(a, b, inA, inB);
+                break;
+            }
+        }
+        scene.dynamics.addConstraint(made.get(), !joint.collideConnected);
+        scene.joints.push_back(std::move(made));
+    }
+}
+
+/// Moves the kinematic bodies to where they are at time `t` (the end of the coming step); Bullet
+/// derives their velocities from the move (btRigidBody::saveKinematicState).
+void moveKinematic(BulletScene& scene, const World& world, std::vector<Transform>& poses, double t, Real h) {
+    for (const Motion& motion : world.motions) {
+        const std::size_t i = std::size_t(motion.bodyIndex);
+        if (world.bodies[i].type != BodyType::Kinematic) continue;
+        Transform& pose = poses[i];
+        const Vec3 center = pose.apply(motion.localCenter);
+        const Real turn = motion.angularVelocity.norm() * h;
+        if (turn > 0) pose.rotation = (Eigen::AngleAxis<Real>(turn, motion.angularVelocity.normalized()) * pose.rotation).normalized();
+        pose.position = center + motion.linearVelocity * h - pose.rotate(motion.localCenter);
+        for (const KinematicPath& path : world.kinematicPaths)
+            if (path.body == motion.bodyIndex)
+                pose.position = path.center + path.amplitude * Real(std::sin(2 * double(kPi) * t / double(path.period) + double(path.phase)));
+        scene.bodies[i]->setWorldTransform(bulletPose(pose, scene.frames[i]));
+    }
+}
+
+}  // namespace
+
+Mat3 BulletMass::inertiaInShapeAxes() const {
+    const Mat3 rotation = principalRotation.toRotationMatrix();
+    return rotation * principalInertia.asDiagonal() * rotation.transpose();
+}
+
+BulletRun runBullet(const World& world, long frames, const BulletOptions& options, const BulletFrameCallback& afterFrame) {
+    checkSupported(world);
+    const Settings& settings = world.settings;
+    BulletRun run;
+    run.solverIterations = options.solverIterations > 0 ? options.solverIterations : settings.solverIterations;
+    run.substeps = std::max(1, options.substeps > 0 ? options.substeps : settings.substeps);
+    const Real h = settings.dt / Real(run.substeps);
+
+    const CombineRules combineRules;
+    BulletScene scene;
+    scene.dynamics.setGravity(btVec(settings.gravity));
+    btContactSolverInfo& solverInfo = scene.dynamics.getSolverInfo();
+    solverInfo.m_numIterations = run.solverIterations;
+    solverInfo.m_splitImpulse = options.splitImpulse ? 1 : 0;
+    solverInfo.m_restitutionVelocityThreshold = btScalar(settings.restitutionThreshold);
+    if (!settings.warmStarting) solverInfo.m_solverMode &= ~SOLVER_USE_WARMSTARTING;
+    addBodies(scene, world);
+    addJoints(scene, world, btScalar(h));
+
+    std::vector<Transform> kinematicPoses;
+    for (const Body& body : world.bodies) kinematicPoses.push_back(body.transform);
+    auto poses = [&] {
+        std::vector<Transform> out;
+        for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+            out.push_back(shapePose(scene.bodies[i]->getWorldTransform(), scene.frames[i]));
+        return out;
+    };
+
+    // One stepSimulation call per substep, in Bullet's variable-step mode (maxSubSteps = 0):
+    // exactly one internal step of h each, where the fixed-step mode's accumulator could take
+    // S - 1 or S + 1 steps in a frame when dt / (dt / S) rounds.
+    run.stepMs.reserve(std::size_t(std::max(0L, frames)));
+    for (long frame = 0; frame < frames; ++frame) {
+        const auto start = std::chrono::steady_clock::now();
+        for (int s = 0; s < run.substeps; ++s) {
+            const double t = world.time + double(frame) * double(settings.dt) + double(s + 1) * double(h);
+            moveKinematic(scene, world, kinematicPoses, t, h);
+            scene.dynamics.stepSimulation(btScalar(h), 0, btScalar(h));
+        }
+        const auto end = std::chrono::steady_clock::now();
+        run.stepMs.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+        if (afterFrame) afterFrame(frame, poses());
+    }
+    run.frames = frames;
+
+    run.finalPoses = poses();
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const btRigidBody& body = *scene.bodies[i];
+        run.finalLinearVelocities.push_back(vec(body.getLinearVelocity()));
+        run.finalAngularVelocities.push_back(vec(body.getAngularVelocity()));
+        BulletMass mass;
+        mass.mass = body.getInvMass() > 0 ? Real(1 / body.getInvMass()) : Real(0);
+        mass.principalInertia = mass.mass > 0 ? vec(body.getLocalInertia()) : Vec3::Zero();
+        mass.localCenter = scene.frames[i].center;
+        mass.principalRotation = Quat(scene.frames[i].axes);
+        run.masses.push_back(mass);
+    }
+    return run;
+}
+
+World worldAfterRun(const World& world, const BulletRun& run) {
+    World after = world;
+    for (std::size_t i = 0; i < after.bodies.size() && i < run.finalPoses.size(); ++i) {
+        after.bodies[i].transform = run.finalPoses[i];
+        if (Motion* motion = after.motionOf(int(i))) {
+            motion->linearVelocity = run.finalLinearVelocities[i];
+            motion->angularVelocity = run.finalAngularVelocities[i];
+        }
+    }
+    after.frame = world.frame + run.frames;
+    after.time = world.time + double(run.frames) * double(world.settings.dt);
+    return after;
+}
+
+std::string bulletVersion() {
+    const int version = btGetVersion();  // 324 for 3.24
+    return "bullet " + std::to_string(version / 100) + "." + std::to_string(version % 100);
+}
+
+}  // namespace stepwise::peers
