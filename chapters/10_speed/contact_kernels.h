@@ -80,33 +80,59 @@ inline void transpose8(__m256 (&row)[8]) {
     row[7] = _mm256_permute2f128_ps(u3, u7, 0x31);
 }
 
-template <>
-inline BodyPack<8> gatherBodies<8>(const SolverBodyState* states, const int* slots) {
+/// Lanes [first, first + 8) of `body` from eight states.
+template <int N>
+inline void gatherEight(const SolverBodyState* states, const int* slots, int first, BodyPack<N>& body) {
     static_assert(sizeof(SolverBodyState) == 16 * sizeof(float), "two 8-float rows per body");
-    __m256 first[8], second[8];
+    __m256 low[8], high[8];
     for (int i = 0; i < 8; ++i) {
-        const float* state = states[slots[i]].linearVelocity;
-        first[i] = _mm256_load_ps(state);       // v.xyz w.xyz dp.xy
-        second[i] = _mm256_load_ps(state + 8);  // dp.z dq.xyzw (3 unused)
+        const float* state = states[slots[first + i]].linearVelocity;
+        low[i] = _mm256_load_ps(state);        // v.xyz w.xyz dp.xy
+        high[i] = _mm256_load_ps(state + 8);   // dp.z dq.xyzw (3 unused)
     }
-    transpose8(first);
-    transpose8(second);
-    BodyPack<8> body;
-    body.linearVelocity = {packOf(first[0]), packOf(first[1]), packOf(first[2])};
-    body.angularVelocity = {packOf(first[3]), packOf(first[4]), packOf(first[5])};
-    body.deltaPosition = {packOf(first[6]), packOf(first[7]), packOf(second[0])};
-    body.deltaRotation = {packOf(second[1]), packOf(second[2]), packOf(second[3]), packOf(second[4])};
-    return body;
+    transpose8(low);
+    transpose8(high);
+    Pack<N>* fields[13] = {&body.linearVelocity.x,  &body.linearVelocity.y,  &body.linearVelocity.z,
+                           &body.angularVelocity.x, &body.angularVelocity.y, &body.angularVelocity.z,
+                           &body.deltaPosition.x,   &body.deltaPosition.y,   &body.deltaPosition.z,
+                           &body.deltaRotation.x,   &body.deltaRotation.y,   &body.deltaRotation.z,
+                           &body.deltaRotation.w};
+    for (int k = 0; k < 8; ++k) _mm256_store_ps(fields[k]->data() + first, low[k]);
+    for (int k = 0; k < 5; ++k) _mm256_store_ps(fields[8 + k]->data() + first, high[k]);
+}
+
+template <int N>
+inline void scatterEight(SolverBodyState* states, const int* slots, int first, const BodyPack<N>& body) {
+    __m256 row[8] = {_mm256_load_ps(body.linearVelocity.x.data() + first),  _mm256_load_ps(body.linearVelocity.y.data() + first),
+                     _mm256_load_ps(body.linearVelocity.z.data() + first),  _mm256_load_ps(body.angularVelocity.x.data() + first),
+                     _mm256_load_ps(body.angularVelocity.y.data() + first), _mm256_load_ps(body.angularVelocity.z.data() + first),
+                     _mm256_load_ps(body.deltaPosition.x.data() + first),   _mm256_load_ps(body.deltaPosition.y.data() + first)};
+    transpose8(row);  // back to one row per lane; the delta position goes back as it was read
+    for (int i = 0; i < 8; ++i)
+        if (slots[first + i] != 0) _mm256_store_ps(states[slots[first + i]].linearVelocity, row[i]);
 }
 
 template <>
+inline BodyPack<8> gatherBodies<8>(const SolverBodyState* states, const int* slots) {
+    BodyPack<8> body;
+    gatherEight(states, slots, 0, body);
+    return body;
+}
+template <>
+inline BodyPack<16> gatherBodies<16>(const SolverBodyState* states, const int* slots) {
+    BodyPack<16> body;
+    gatherEight(states, slots, 0, body);
+    gatherEight(states, slots, 8, body);
+    return body;
+}
+template <>
 inline void scatterVelocities<8>(SolverBodyState* states, const int* slots, const BodyPack<8>& body) {
-    __m256 row[8] = {load(body.linearVelocity.x), load(body.linearVelocity.y), load(body.linearVelocity.z),
-                     load(body.angularVelocity.x), load(body.angularVelocity.y), load(body.angularVelocity.z),
-                     load(body.deltaPosition.x), load(body.deltaPosition.y)};
-    transpose8(row);  // back to one row per lane; the delta position goes back as it was read
-    for (int i = 0; i < 8; ++i)
-        if (slots[i] != 0) _mm256_store_ps(states[slots[i]].linearVelocity, row[i]);
+    scatterEight(states, slots, 0, body);
+}
+template <>
+inline void scatterVelocities<16>(SolverBodyState* states, const int* slots, const BodyPack<16>& body) {
+    scatterEight(states, slots, 0, body);
+    scatterEight(states, slots, 8, body);
 }
 // [ch10-avx2-gather]
 #endif

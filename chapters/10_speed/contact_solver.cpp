@@ -10,8 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace stepwise {
 
@@ -265,6 +263,14 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
     for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
         SolverBodyState& state = bodies.states[slot];
         const SolverBodyInfo& info = bodies.info[slot];
+        // Chapter 1's order: the gyroscopic step, then the torque.
+        if (info.gyroscopic && implicitGyroscopic) {
+            const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
+            const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+            const Motion& motion = *world.motionOf(info.bodyIndex);
+            const Vec3 turned = gyroscopicStepImplicit(angular, (delta * info.startRotation).normalized(), motion.inertiaLocal, h);
+            for (int k = 0; k < 3; ++k) state.angularVelocity[k] = turned[k];
+        }
         Vec3 acceleration = gravity;
         if (firstSubstep) {  // a user's push, held for the frame's first substep as chapter 6 does
             Motion& motion = *world.motionOf(info.bodyIndex);
@@ -274,13 +280,6 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
             motion.force = motion.torque = Vec3::Zero();
         }
         for (int k = 0; k < 3; ++k) state.linearVelocity[k] += h * acceleration[k];
-        if (info.gyroscopic && implicitGyroscopic) {
-            const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
-            const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
-            const Motion& motion = *world.motionOf(info.bodyIndex);
-            const Vec3 turned = gyroscopicStepImplicit(angular, (delta * info.startRotation).normalized(), motion.inertiaLocal, h);
-            for (int k = 0; k < 3; ++k) state.angularVelocity[k] = turned[k];
-        }
     }
 }
 
@@ -400,9 +399,6 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     prepareBodies(world, scratch.bodies);
     stats.bodies = static_cast<int>(scratch.bodies.states.size()) - 1;
 
-    const int substeps = std::max(1, world.settings.solverIterations);
-    const Real h = dt / static_cast<Real>(substeps);
-    const ContactSolveParams params = solveParams(world.settings, h);
 
     // The contacts that involve a moving body, in contact order (canonical: sorted by pair).
     scratch.contactOrder.clear();
@@ -423,6 +419,19 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         stats.points += contact.pointCount;
     }
     stats.manifolds = static_cast<int>(scratch.contactOrder.size());
+    // Nothing touches and nothing sleeps: chapter 1's semi-implicit Euler over the whole frame, as
+    // chapter 6's solve does, so that free bodies move exactly as they always did.
+    if (stats.manifolds == 0 && stats.bodies == static_cast<int>(world.motions.size())) {
+        applyForces(world);
+        stepwise::integrateVelocities(world, dt);
+        stepwise::integratePositions(world, dt);
+        world.step.solver = solverStats;
+        world.step.velocitiesBeforeForces.clear();
+        return;
+    }
+    const int substeps = stats.manifolds == 0 ? 1 : std::max(1, world.settings.solverIterations);
+    const Real h = dt / static_cast<Real>(substeps);
+    const ContactSolveParams params = solveParams(world.settings, h);
 
     if (path == SolverPath::Wide) {
         buildWideBlocks(world, scratch, params);
@@ -457,7 +466,6 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     for (const ManifoldBlock<kWideLanes>& block : scratch.wideBlocks) storeBlock(block, world);
     for (const ManifoldBlock<1>& block : scratch.scalarBlocks) storeBlock(block, world);
 
-    if (getenv("DEBUGFAST")) fprintf(stderr, "frame %ld contacts %zu manifolds %d points %d bodies %d colours %d overflow %d blocks %d\n", world.frame, world.contacts.size(), stats.manifolds, stats.points, stats.bodies, stats.colours, stats.overflow, stats.blocks);
     solverStats.contactPoints = stats.points;
     solverStats.rows = 3 * stats.points;
     world.step.solver = solverStats;

@@ -17,90 +17,95 @@
 
 namespace stepwise {
 
-/// Lanes of the wide solver: as many Reals as one 32-byte (AVX2) register holds.
+/// Lanes of the wide solver: as many Reals as two 32-byte (AVX2) registers hold.
 constexpr int kWideLanes = static_cast<int>(32 / sizeof(Real));
 
+// [ch10-pack]
+#if defined(__GNUC__)
+// GCC and Clang: the lanes are a vector-extension value, which the compiler keeps in registers and
+// maps to whatever the translation unit is built for (AVX2 in wide_solver.cpp, SSE2 elsewhere).
+#define STEPWISE_VECTOR_PACKS 1
+#endif
+
+// The alignment is spelled out: a vector type's natural alignment depends on the instruction set
+// a file is built for (16 bytes with SSE2, 32 with AVX2), and every file must agree on the layout.
 template <int N>
 struct alignas(N * sizeof(Real) >= 32 ? 32 : alignof(Real)) Pack {
-    Real lane[N];
-
+#if defined(STEPWISE_VECTOR_PACKS)
+    typedef Real Values __attribute__((vector_size(N * sizeof(Real))));
+    Values v;
+    Real& operator[](int i) { return reinterpret_cast<Real*>(&v)[i]; }
+    Real operator[](int i) const { return reinterpret_cast<const Real*>(&v)[i]; }
+    static Pack splat(Real value) { return Pack{value - Values{}}; }
+#else
+    // Elsewhere (MSVC): plain arrays and loops, the same arithmetic, the same results.
+    Real v[N];
+    Real& operator[](int i) { return v[i]; }
+    Real operator[](int i) const { return v[i]; }
     static Pack splat(Real value) {
         Pack result;
-        for (int i = 0; i < N; ++i) result.lane[i] = value;
+        for (int i = 0; i < N; ++i) result.v[i] = value;
         return result;
     }
-    Real& operator[](int i) { return lane[i]; }
-    Real operator[](int i) const { return lane[i]; }
+#endif
+    Real* data() { return reinterpret_cast<Real*>(&v); }
+    const Real* data() const { return reinterpret_cast<const Real*>(&v); }
 };
 
-#define STEPWISE_PACK_BINARY(op)                                           \
-    template <int N>                                                       \
-    inline Pack<N> operator op(const Pack<N>& a, const Pack<N>& b) {       \
-        Pack<N> r;                                                         \
-        for (int i = 0; i < N; ++i) r.lane[i] = a.lane[i] op b.lane[i];    \
-        return r;                                                          \
+#if defined(STEPWISE_VECTOR_PACKS)
+#define STEPWISE_PACK_BINARY(op) \
+    template <int N>             \
+    inline Pack<N> operator op(const Pack<N>& a, const Pack<N>& b) { return Pack<N>{a.v op b.v}; }
+#else
+#define STEPWISE_PACK_BINARY(op)                                        \
+    template <int N>                                                    \
+    inline Pack<N> operator op(const Pack<N>& a, const Pack<N>& b) {    \
+        Pack<N> r;                                                      \
+        for (int i = 0; i < N; ++i) r.v[i] = a.v[i] op b.v[i];          \
+        return r;                                                       \
     }
+#endif
 STEPWISE_PACK_BINARY(+)
 STEPWISE_PACK_BINARY(-)
 STEPWISE_PACK_BINARY(*)
 #undef STEPWISE_PACK_BINARY
 
 template <int N>
-inline Pack<N> operator-(const Pack<N>& a) {
-    Pack<N> r;
-    for (int i = 0; i < N; ++i) r.lane[i] = -a.lane[i];
-    return r;
-}
+inline Pack<N> operator-(const Pack<N>& a) { return Pack<N>::splat(0) - a; }
 template <int N>
-inline Pack<N> operator*(Real s, const Pack<N>& a) {
-    Pack<N> r;
-    for (int i = 0; i < N; ++i) r.lane[i] = s * a.lane[i];
-    return r;
+inline Pack<N> operator*(Real s, const Pack<N>& a) { return Pack<N>::splat(s) * a; }
+
+#if defined(STEPWISE_VECTOR_PACKS)
+template <int N>
+inline Pack<N> min(const Pack<N>& a, const Pack<N>& b) { return Pack<N>{a.v < b.v ? a.v : b.v}; }
+template <int N>
+inline Pack<N> max(const Pack<N>& a, const Pack<N>& b) { return Pack<N>{a.v > b.v ? a.v : b.v}; }
+/// Per lane: test > 0 ? ifPositive : otherwise (a blend, no branch).
+template <int N>
+inline Pack<N> selectPositive(const Pack<N>& test, const Pack<N>& ifPositive, const Pack<N>& otherwise) {
+    return Pack<N>{test.v > Pack<N>::splat(0).v ? ifPositive.v : otherwise.v};
 }
+#else
 template <int N>
 inline Pack<N> min(const Pack<N>& a, const Pack<N>& b) {
     Pack<N> r;
-    for (int i = 0; i < N; ++i) r.lane[i] = a.lane[i] < b.lane[i] ? a.lane[i] : b.lane[i];
+    for (int i = 0; i < N; ++i) r.v[i] = a.v[i] < b.v[i] ? a.v[i] : b.v[i];
     return r;
 }
 template <int N>
 inline Pack<N> max(const Pack<N>& a, const Pack<N>& b) {
     Pack<N> r;
-    for (int i = 0; i < N; ++i) r.lane[i] = a.lane[i] > b.lane[i] ? a.lane[i] : b.lane[i];
+    for (int i = 0; i < N; ++i) r.v[i] = a.v[i] > b.v[i] ? a.v[i] : b.v[i];
     return r;
 }
-/// Per lane: test > 0 ? ifPositive : otherwise (a blend, no branch).
 template <int N>
 inline Pack<N> selectPositive(const Pack<N>& test, const Pack<N>& ifPositive, const Pack<N>& otherwise) {
     Pack<N> r;
-    for (int i = 0; i < N; ++i) r.lane[i] = test.lane[i] > 0 ? ifPositive.lane[i] : otherwise.lane[i];
+    for (int i = 0; i < N; ++i) r.v[i] = test.v[i] > 0 ? ifPositive.v[i] : otherwise.v[i];
     return r;
 }
-
-#if defined(__AVX2__) && !defined(STEPWISE_DOUBLE)
-// [ch10-avx2-pack]
-// Where the file is built for AVX2 (wide_solver.cpp), the float packs of kWideLanes use the
-// 256-bit instructions directly: the loops above would be correct but compilers leave most of them
-// scalar. Overloads, not templates, so they win overload resolution for exactly Pack<8>.
-inline __m256 load(const Pack<8>& a) { return _mm256_load_ps(a.lane); }
-inline Pack<8> packOf(__m256 v) {
-    Pack<8> r;
-    _mm256_store_ps(r.lane, v);
-    return r;
-}
-inline Pack<8> operator+(const Pack<8>& a, const Pack<8>& b) { return packOf(_mm256_add_ps(load(a), load(b))); }
-inline Pack<8> operator-(const Pack<8>& a, const Pack<8>& b) { return packOf(_mm256_sub_ps(load(a), load(b))); }
-inline Pack<8> operator*(const Pack<8>& a, const Pack<8>& b) { return packOf(_mm256_mul_ps(load(a), load(b))); }
-inline Pack<8> operator-(const Pack<8>& a) { return packOf(_mm256_xor_ps(load(a), _mm256_set1_ps(-0.0f))); }
-inline Pack<8> operator*(Real s, const Pack<8>& a) { return packOf(_mm256_mul_ps(_mm256_set1_ps(s), load(a))); }
-inline Pack<8> min(const Pack<8>& a, const Pack<8>& b) { return packOf(_mm256_min_ps(load(a), load(b))); }
-inline Pack<8> max(const Pack<8>& a, const Pack<8>& b) { return packOf(_mm256_max_ps(load(a), load(b))); }
-inline Pack<8> selectPositive(const Pack<8>& test, const Pack<8>& ifPositive, const Pack<8>& otherwise) {
-    const __m256 positive = _mm256_cmp_ps(load(test), _mm256_setzero_ps(), _CMP_GT_OQ);
-    return packOf(_mm256_blendv_ps(load(otherwise), load(ifPositive), positive));
-}
-// [ch10-avx2-pack]
 #endif
+// [ch10-pack]
 
 /// A 3-vector per lane, stored as three packs (structure of arrays).
 template <int N>

@@ -1,7 +1,7 @@
 #include "10_speed/chapter.h"
 
+#include <algorithm>
 #include <memory>
-#include <cstdlib>
 
 namespace stepwise {
 
@@ -12,7 +12,7 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
     Pipeline pipeline = makeChapter08Pipeline(world);
     std::string why;
     if (!options.fastSolve) {
-        pipeline.setPlanNote(stage_group::kSolve, "chapter 8's solve: the fast solve is switched off");
+        pipeline.setPlanNote(stage_group::kSolve, "chapter 8's solve: the fast solve is not asked for (SpeedOptions::fastSolve)");
     } else if (!fastSolveApplies(world, &why)) {
         pipeline.setPlanNote(stage_group::kSolve, "chapter 8's solve: " + why);
     } else if (Stage* solve = pipeline.find(stage_group::kSolve)) {
@@ -21,12 +21,23 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
         // Scratch buffers only: rebuilt from the World every frame, they carry nothing between
         // frames (a copied World steps the same), and spare the allocation per step.
         auto scratch = std::make_shared<ContactSolverScratch>();
-        SolverPath debugPath = getenv("SCALAR") ? SolverPath::Scalar : options.solverPath;
-        solve->run = [scratch, path = debugPath](World& stepWorld, Real dt) {
+        solve->run = [scratch, path = options.solverPath](World& stepWorld, Real dt) {
             solveFast(stepWorld, dt, path, *scratch);
         };
         pipeline.setPlanNote(stage_group::kSolve, std::string(toString(options.solverPath)) +
                                                       ": no joints, springs, dampings or kinematic bodies");
+        if (Stage* narrowphase = pipeline.find(stage_group::kNarrowphase); narrowphase && options.contactCache.enabled) {
+            // The fast solve is a substepped one (relax or soft step), which moves the bodies
+            // through the whole frame on the contacts found here: chapter 6's look-ahead for it.
+            auto cache = std::make_shared<ContactCacheScratch>();
+            narrowphase->name = stageName(stage_group::kNarrowphase, "cached_manifold");
+            narrowphase->run = [cache, rule = options.contactCache](World& stepWorld, Real) {
+                ManifoldOptions manifold;
+                manifold.multiPoint = stepWorld.settings.manifoldContacts;
+                const Real lookAhead = static_cast<Real>(std::max(1, stepWorld.settings.substeps));
+                updateManifoldsCached(stepWorld, lookAhead, manifold, rule, *cache);
+            };
+        }
     }
     return pipeline;
 }

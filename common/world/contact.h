@@ -72,6 +72,12 @@ struct Contact {
                                        // enough; chapter 6 keeps a record a few searches more
     int referenceSide = 0;             // chapter 6: whose face the points were clipped against,
                                        // 1 A's, 2 B's, 0 neither (kept next step while nearly as good)
+    // Chapter 10's contact cache: where B was in A's frame, and the normal in A's frame, when the
+    // manifold was last built from the shapes. A pair that has barely moved since reuses it.
+    bool builtPoseKnown = false;
+    Vec3 builtRelativePosition = Vec3::Zero();
+    Quat builtRelativeRotation = Quat::Identity();
+    Vec3 builtLocalNormal = Vec3::UnitY();
 
     BodyPair pair() const { return BodyPair{bodyA, bodyB}; }
 };

@@ -56,6 +56,8 @@ struct StepState {
                                      // move their points with the bodies before solving
     SolverStats solver;          // of the last solve (the last substep of the last frame)
     int contactPointsDropped = 0;  // by the last cache upkeep: points that carried no load
+    int manifoldsReused = 0;     // by the last search: records carried without a shape query (chapter 10)
+    int manifoldsRebuilt = 0;    // by the last search: pairs the shapes were queried for (chapter 10)
     CcdState ccd;                // continuous collision (chapter 7)
 };
 

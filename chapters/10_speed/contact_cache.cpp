@@ -1,0 +1,119 @@
+#include "10_speed/contact_cache.h"
+
+#include "06_manifolds/persistence.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+namespace {
+
+bool restsWithoutMotion(const World& world, int bodyIndex) {
+    const Motion* motion = world.motionOf(bodyIndex);
+    return !motion || motion->asleep;
+}
+
+bool touching(const Contact& contact) {
+    for (int i = 0; i < contact.pointCount; ++i)
+        if (contact.points[i].depth > 0) return true;
+    return false;
+}
+
+}  // namespace
+
+// [ch10-cache-rule]
+bool manifoldStillValid(const Contact& contact, const Transform& transformA, const Transform& transformB,
+                        const ContactCacheRule& rule) {
+    if (!contact.builtPoseKnown) return false;
+    const Quat inverseA = transformA.rotation.conjugate();
+    const Vec3 relativePosition = inverseA * (transformB.position - transformA.position);
+    if ((relativePosition - contact.builtRelativePosition).squaredNorm() > rule.maxTranslation * rule.maxTranslation)
+        return false;
+    // The angle between two rotations q1 and q2 is 2 acos(|q1 . q2|).
+    const Quat relativeRotation = inverseA * transformB.rotation;
+    const Real cosHalfAngle = std::abs(relativeRotation.coeffs().dot(contact.builtRelativeRotation.coeffs()));
+    return cosHalfAngle >= std::cos(Real(0.5) * rule.maxRotation);
+}
+// [ch10-cache-rule]
+
+void markBuiltPose(Contact& contact, const Transform& transformA, const Transform& transformB) {
+    const Quat inverseA = transformA.rotation.conjugate();
+    contact.builtPoseKnown = contact.pointCount > 0 && contact.missedSteps == 0;
+    contact.builtRelativePosition = inverseA * (transformB.position - transformA.position);
+    contact.builtRelativeRotation = inverseA * transformB.rotation;
+    contact.builtLocalNormal = inverseA * contact.normal;
+}
+
+// [ch10-cached-narrowphase]
+ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const ManifoldOptions& options,
+                                        const ContactCacheRule& rule, ContactCacheScratch& scratch) {
+    ContactCacheStats stats;
+    std::vector<BodyPair>& candidates = scratch.candidates;
+    candidates = world.candidatePairs;
+    if (!std::is_sorted(candidates.begin(), candidates.end())) std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+
+    // Walk the candidates and last frame's records (both sorted by pair) side by side: a record
+    // that is still good is kept here, every other pair goes to chapter 6's narrowphase.
+    const std::vector<Contact>& previous = world.contacts;
+    scratch.kept.clear();
+    scratch.keptPairs.clear();
+    scratch.misses.clear();
+    std::size_t next = 0;
+    const int bodyCount = static_cast<int>(world.bodies.size());
+    for (const BodyPair& pair : candidates) {
+        while (next < previous.size() && previous[next].pair() < pair) ++next;
+        const Contact* old = next < previous.size() && previous[next].pair() == pair ? &previous[next] : nullptr;
+        const bool valid = pair.bodyA >= 0 && pair.bodyB < bodyCount && pair.bodyA < pair.bodyB;
+        if (!rule.enabled || !valid || !old || !old->builtPoseKnown || old->pointCount <= 0 || old->missedSteps > 0) {
+            scratch.misses.push_back(pair);
+            continue;
+        }
+        if (restsWithoutMotion(world, pair.bodyA) && restsWithoutMotion(world, pair.bodyB)) {
+            scratch.kept.push_back(*old);  // nothing moved: the record is exactly right
+            ++stats.asleep;
+        } else {
+            const Transform& transformA = world.bodies[static_cast<std::size_t>(pair.bodyA)].transform;
+            const Transform& transformB = world.bodies[static_cast<std::size_t>(pair.bodyB)].transform;
+            if (!manifoldStillValid(*old, transformA, transformB, rule)) {
+                scratch.misses.push_back(pair);
+                continue;
+            }
+            Contact carried = *old;
+            carried.normal = (transformA.rotation * old->builtLocalNormal).normalized();
+            refreshFromAnchors(carried, transformA, transformB);
+            for (int i = 0; i < carried.pointCount; ++i) carried.points[i].persisted = true;
+            scratch.kept.push_back(carried);
+            ++stats.reused;
+        }
+        if (touching(scratch.kept.back())) scratch.keptPairs.push_back(pair);
+    }
+    stats.rebuilt = static_cast<int>(scratch.misses.size());
+    world.step.manifoldsReused = stats.reused + stats.asleep;
+    world.step.manifoldsRebuilt = stats.rebuilt;
+
+    // Chapter 6 builds the rest (it reads last frame's records for matching, and rebuilds
+    // World::contacts and World::pairs from the pairs it is given).
+    world.candidatePairs.swap(scratch.misses);  // the full list waits in scratch.misses
+    updateManifolds(world, lookAhead, options);
+    world.candidatePairs.swap(scratch.misses);
+    for (Contact& contact : world.contacts)
+        markBuiltPose(contact, world.bodies[static_cast<std::size_t>(contact.bodyA)].transform,
+                      world.bodies[static_cast<std::size_t>(contact.bodyB)].transform);
+
+    // Both lists are sorted by pair: merge them.
+    scratch.merged.clear();
+    std::merge(world.contacts.begin(), world.contacts.end(), scratch.kept.begin(), scratch.kept.end(),
+               std::back_inserter(scratch.merged),
+               [](const Contact& a, const Contact& b) { return a.pair() < b.pair(); });
+    world.contacts.swap(scratch.merged);
+    scratch.mergedPairs.clear();
+    std::merge(world.pairs.begin(), world.pairs.end(), scratch.keptPairs.begin(), scratch.keptPairs.end(),
+               std::back_inserter(scratch.mergedPairs));
+    world.pairs.swap(scratch.mergedPairs);
+    return stats;
+}
+// [ch10-cached-narrowphase]
+
+}  // namespace stepwise

@@ -1,0 +1,47 @@
+#pragma once
+// Chapter 10's narrowphase: chapter 6's manifolds, built from the shapes only when a pair has
+// moved. A pair whose relative pose changed less than a small tolerance since its manifold was
+// built keeps the manifold: its points ride on their bodies (anchors), the normal turns with body
+// A, and no GJK, EPA or clipping runs (Jolt's body-pair cache: 1 mm and 2 degrees). A pair of two
+// sleeping (or static) bodies keeps its record untouched.
+
+#include "06_manifolds/manifold.h"
+#include "world/world.h"
+
+#include <vector>
+
+namespace stepwise {
+
+/// How far a pair may move relative to itself before its manifold is built again.
+struct ContactCacheRule {
+    bool enabled = true;
+    Real maxTranslation = Real(0.001);  // m, of B in A's frame
+    Real maxRotation = 2 * kDegree;     // rad, of B relative to A
+};
+
+struct ContactCacheStats {
+    int reused = 0;     // manifolds carried on their anchors
+    int rebuilt = 0;    // pairs sent to chapter 6's narrowphase
+    int asleep = 0;     // pairs of sleeping or static bodies, kept as they were
+};
+
+/// Buffers reused from frame to frame; nothing in them outlives a call.
+struct ContactCacheScratch {
+    std::vector<BodyPair> candidates, misses;
+    std::vector<Contact> previous, kept, merged;
+    std::vector<BodyPair> keptPairs, mergedPairs;
+};
+
+/// Whether B's pose in A's frame is within the rule of the pose the manifold was built at.
+bool manifoldStillValid(const Contact& contact, const Transform& transformA, const Transform& transformB,
+                        const ContactCacheRule& rule);
+
+/// Records where the manifold was built (the pose the rule compares against).
+void markBuiltPose(Contact& contact, const Transform& transformA, const Transform& transformB);
+
+/// The narrowphase stage: World::candidatePairs in, World::contacts and World::pairs out, as
+/// updateManifolds does, with the cache in front of it.
+ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const ManifoldOptions& options,
+                                        const ContactCacheRule& rule, ContactCacheScratch& scratch);
+
+}  // namespace stepwise

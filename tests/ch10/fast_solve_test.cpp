@@ -1,0 +1,183 @@
+// Chapter 10's solve: the wide and the scalar path agree; the colours never put two contacts of one
+// moving body side by side; stacks stand; the cache reuses a manifold only within its rule; a
+// copied world steps exactly as the original (the scratch buffers carry nothing).
+#include "06_manifolds/scenes.h"
+#include "10_speed/chapter.h"
+#include "10_speed/colouring.h"
+#include "world/state_hash.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+using namespace stepwise;
+
+namespace {
+
+Pipeline pipelineFor(const World& world, SolverPath path, bool cache = true) {
+    SpeedOptions options;
+    options.fastSolve = true;
+    options.solverPath = path;
+    options.contactCache.enabled = cache;
+    return makeChapter10Pipeline(world, options);
+}
+
+void stepFrames(World& world, Pipeline& pipeline, int frames) {
+    for (int frame = 0; frame < frames; ++frame) pipeline.step(world);
+}
+
+Real largestMove(const World& before, const World& after) {
+    Real largest = 0;
+    for (std::size_t i = 0; i < before.bodies.size(); ++i)
+        largest = std::max(largest, (after.bodies[i].transform.position - before.bodies[i].transform.position).norm());
+    return largest;
+}
+
+}  // namespace
+
+TEST_CASE("the fast solve says why it does not apply", "[ch10][solve]") {
+    World stack = buildBoxStack(4);
+    std::string why;
+    CHECK(fastSolveApplies(stack, &why));
+    World jacobi = stack;
+    jacobi.settings.solver = SolverKind::Jacobi;
+    CHECK_FALSE(fastSolveApplies(jacobi, &why));
+    CHECK(why == "the solver is Jacobi");
+    World baumgarte = stack;
+    baumgarte.settings.stabilisation = Stabilisation::Baumgarte;
+    CHECK_FALSE(fastSolveApplies(baumgarte, &why));
+    SpeedOptions fastOptions;
+    fastOptions.fastSolve = true;
+    const Pipeline pipeline = makeChapter10Pipeline(baumgarte, fastOptions);
+    CHECK(pipeline.planNotes().at(stage_group::kSolve) == "chapter 8's solve: the stabilisation is not relax or soft_step");
+    const Pipeline fast = makeChapter10Pipeline(stack, fastOptions);
+    CHECK(fast.find(stage_group::kSolve)->name == "solve:wide_relax");
+    CHECK(fast.find(stage_group::kNarrowphase)->name == "narrowphase:cached_manifold");
+    const Pipeline registered = makeChapter10Pipeline(stack);
+    CHECK(registered.find(stage_group::kSolve)->name == "solve:relax");
+}
+
+// Chapter 6 promises 1 cm for the stack of 16; the fast solve holds 3 cm today (its gap, on the
+// page). This pins where it stands so a change that loosens it fails.
+TEST_CASE("a stack of 16 and a pyramid of 20 rows stand on either path", "[ch10][solve]") {
+    for (SolverPath path : {SolverPath::Wide, SolverPath::Scalar}) {
+        INFO(toString(path));
+        for (World start : {buildBoxStack(16), buildPyramid(20)}) {
+            INFO(start.name);
+            World world = start;
+            Pipeline pipeline = pipelineFor(world, path);
+            stepFrames(world, pipeline, 300);
+            // Sideways drift of any box within 1 cm over 5 s (chapter 6's promise for the stack).
+            Real sideways = 0;
+            for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+                const Vec3 moved = world.bodies[i].transform.position - start.bodies[i].transform.position;
+                sideways = std::max(sideways, std::hypot(moved.x(), moved.z()));
+            }
+            CHECK(sideways < Real(0.03));
+            CHECK(largestMove(start, world) < Real(0.04));
+        }
+    }
+}
+
+TEST_CASE("the wide and the scalar path agree on a settled pyramid", "[ch10][solve]") {
+    const World start = buildPyramid(12);
+    World wide = start, scalar = start;
+    Pipeline widePipeline = pipelineFor(wide, SolverPath::Wide);
+    Pipeline scalarPipeline = pipelineFor(scalar, SolverPath::Scalar);
+    stepFrames(wide, widePipeline, 120);
+    stepFrames(scalar, scalarPipeline, 120);
+    Real apart = 0;
+    for (std::size_t i = 0; i < start.bodies.size(); ++i)
+        apart = std::max(apart, (wide.bodies[i].transform.position - scalar.bodies[i].transform.position).norm());
+    // The two sweep the contacts in different orders (colour order, contact order): the same
+    // solution to within the solver's tolerance, a few millimetres on 78 boxes after 2 s.
+    CHECK(apart < Real(0.005));
+}
+
+TEST_CASE("colours never hold two contacts of one moving body", "[ch10][colouring]") {
+    World world = buildPyramid(20);
+    Pipeline pipeline = pipelineFor(world, SolverPath::Wide);
+    stepFrames(world, pipeline, 2);
+    std::vector<int> slotA, slotB, colours;
+    std::vector<std::uint64_t> bits;
+    std::vector<int> slotOf(world.bodies.size(), 0);
+    int slots = 1;
+    for (const Motion& motion : world.motions) slotOf[static_cast<std::size_t>(motion.bodyIndex)] = slots++;
+    for (const Contact& contact : world.contacts) {
+        slotA.push_back(slotOf[static_cast<std::size_t>(contact.bodyA)]);
+        slotB.push_back(slotOf[static_cast<std::size_t>(contact.bodyB)]);
+    }
+    REQUIRE(slotA.size() > 300);
+    colourContacts(slotA, slotB, slots, colours, bits);
+    std::set<std::pair<int, int>> taken;  // (colour, slot)
+    int used = 0;
+    for (std::size_t i = 0; i < colours.size(); ++i) {
+        REQUIRE(colours[i] >= 0);  // a pyramid needs few colours: no overflow
+        used = std::max(used, colours[i] + 1);
+        for (int slot : {slotA[i], slotB[i]}) {
+            if (slot == 0) continue;
+            CHECK(taken.insert({colours[i], slot}).second);
+        }
+    }
+    CHECK(used <= 6);
+    std::vector<int> again;
+    colourContacts(slotA, slotB, slots, again, bits);
+    CHECK(again == colours);
+}
+
+TEST_CASE("the contact cache reuses a manifold only within its rule", "[ch10][cache]") {
+    World world = buildBoxStack(2);
+    REQUIRE(world.bodies.size() == 3);
+    Contact contact;
+    contact.bodyA = 1;
+    contact.bodyB = 2;
+    contact.pointCount = 1;
+    contact.normal = Vec3::UnitY();
+    Transform a = world.bodies[1].transform, b = world.bodies[2].transform;
+    markBuiltPose(contact, a, b);
+    const ContactCacheRule rule;
+    CHECK(manifoldStillValid(contact, a, b, rule));
+    Transform nudged = b;
+    nudged.position.x() += Real(0.0009);
+    CHECK(manifoldStillValid(contact, a, nudged, rule));
+    nudged.position.x() += Real(0.0002);
+    CHECK_FALSE(manifoldStillValid(contact, a, nudged, rule));
+    Transform turned = b;
+    turned.rotation = Quat(Eigen::AngleAxis<Real>(Real(1.9) * kDegree, Vec3::UnitY())) * b.rotation;
+    CHECK(manifoldStillValid(contact, a, turned, rule));
+    turned.rotation = Quat(Eigen::AngleAxis<Real>(Real(2.2) * kDegree, Vec3::UnitY())) * b.rotation;
+    CHECK_FALSE(manifoldStillValid(contact, a, turned, rule));
+    // Both moved together: the relative pose is the same, so the manifold holds.
+    Transform movedA = a, movedB = b;
+    movedA.position += Vec3(5, 0, 0);
+    movedB.position += Vec3(5, 0, 0);
+    CHECK(manifoldStillValid(contact, movedA, movedB, rule));
+}
+
+TEST_CASE("with the cache a resting pyramid queries almost no pair, and stands as without it", "[ch10][cache]") {
+    const World start = buildPyramid(10);
+    World cached = start, uncached = start;
+    Pipeline cachedPipeline = pipelineFor(cached, SolverPath::Wide, true);
+    Pipeline uncachedPipeline = pipelineFor(uncached, SolverPath::Wide, false);
+    stepFrames(cached, cachedPipeline, 120);
+    stepFrames(uncached, uncachedPipeline, 120);
+    CHECK(cached.step.manifoldsReused > 9 * cached.step.manifoldsRebuilt);
+    CHECK(uncached.step.manifoldsReused == 0);
+    Real apart = 0;
+    for (std::size_t i = 0; i < start.bodies.size(); ++i)
+        apart = std::max(apart, (cached.bodies[i].transform.position - uncached.bodies[i].transform.position).norm());
+    CHECK(apart < Real(0.002));
+}
+
+TEST_CASE("a world copied mid-run steps exactly as the original", "[ch10][solve]") {
+    World world = buildPyramid(8);
+    Pipeline pipeline = pipelineFor(world, SolverPath::Wide);
+    stepFrames(world, pipeline, 30);
+    World copy = world;
+    Pipeline copyPipeline = pipelineFor(copy, SolverPath::Wide);
+    stepFrames(world, pipeline, 30);
+    stepFrames(copy, copyPipeline, 30);
+    CHECK(stateHash(world) == stateHash(copy));
+}
