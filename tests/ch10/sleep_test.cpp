@@ -3,6 +3,7 @@
 // tests look at what the sleep stages decide (who sleeps, who wakes, and when), and at the
 // functions themselves on hand-made states.
 #include "08_joints/chapter.h"
+#include "10_speed/chapter.h"
 #include "10_speed/sleep.h"
 #include "support/scene_rejection.h"
 #include "world/report.h"
@@ -117,6 +118,21 @@ TEST_CASE("a box coming to rest on the ground sleeps time_to_sleep later, not be
         REQUIRE(world.motionOf(box)->linearVelocity == Vec3::Zero());
     }
     CHECK((world.bodies[std::size_t(box)].transform.position - position).norm() < Real(1e-3));
+}
+
+TEST_CASE("with chapter 10's fast solve a sleeper does not move at all", "[ch10][sleep]") {
+    World world = groundWorld();
+    const std::vector<int> stack = addStack(world, 0, 2, "box");
+    Pipeline pipeline = makeChapter10Pipeline(world);
+    addSleepStages(pipeline, world);
+    for (int frame = 0; frame < 60; ++frame) pipeline.step(world);
+    REQUIRE(allAsleep(world, stack));
+    const Transform before = world.bodies[std::size_t(stack[1])].transform;
+    for (int frame = 0; frame < 60; ++frame) pipeline.step(world);
+    CHECK(allAsleep(world, stack));
+    // Bit for bit: the fast solve treats sleepers as static and integrates nothing of them.
+    CHECK(world.bodies[std::size_t(stack[1])].transform.position == before.position);
+    CHECK(world.bodies[std::size_t(stack[1])].transform.rotation.coeffs() == before.rotation.coeffs());
 }
 
 TEST_CASE("a box still sliding never sleeps", "[ch10][sleep]") {
