@@ -26,6 +26,7 @@ constexpr const char* kContacts = "contacts";   // contact-cache upkeep after th
 constexpr const char* kCcd = "ccd";             // continuous collision: times of impact (chapter 7)
 constexpr const char* kJoints = "joints";       // joint upkeep: which jointed pairs collide (chapter 8)
 constexpr const char* kKinematic = "kinematic"; // kinematic bodies driven along paths (chapter 8)
+constexpr const char* kSleep = "sleep";         // islands at rest sleep, touched ones wake (chapter 10)
 }  // namespace stage_group
 
 /// "group:variant".

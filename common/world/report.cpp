@@ -154,6 +154,14 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
                          {"toi_events", ccd.totalToiEvents},
                          {"steps_event_bound_hit", ccd.stepsBoundHit}};
     }
+    // Extension: how many dynamic bodies sleep at the end, when the pipeline planned sleeping
+    // (chapter 10 on, whether the scene turns it on or off).
+    if (stats.planNotes.count(stage_group::kSleep) > 0) {
+        int sleeping = 0;
+        for (const Motion& motion : world.motions)
+            if (motion.asleep && world.bodies[std::size_t(motion.bodyIndex)].type == BodyType::Dynamic) ++sleeping;
+        report["sleeping_bodies"] = sleeping;
+    }
     report["energy"] = energyJson(stats.initialEnergy, stats.finalEnergy);
 
     std::vector<std::string> warnings = stats.warnings;

@@ -35,7 +35,8 @@ const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
 
 Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
-                         "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation", "contact_points"},
+                         "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation", "contact_points",
+                         "sleeping", "sleep_speed", "time_to_sleep"},
                         &errors);
     Settings settings;
     // Each key on its own: one bad value does not hide the next.
@@ -57,6 +58,9 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     read("solver", [&](const JsonCursor& v) { settings.solver = v.choice(kSolvers); });
     read("stabilisation", [&](const JsonCursor& v) { settings.stabilisation = v.choice(kStabilisations); });
     read("contact_points", [&](const JsonCursor& v) { settings.manifoldContacts = v.choice(kContactPoints); });
+    read("sleeping", [&](const JsonCursor& v) { settings.sleeping = v.boolean(); });
+    read("sleep_speed", [&](const JsonCursor& v) { settings.sleepSpeed = v.positive(); });
+    read("time_to_sleep", [&](const JsonCursor& v) { settings.timeToSleep = v.positive(); });
     return settings;
 }
 

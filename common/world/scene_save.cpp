@@ -47,7 +47,10 @@ std::string saveSceneToString(const World& world) {
                          {"solver", toString(s.solver)},
                          {"restitution_threshold", tidyNumber(s.restitutionThreshold)},
                          {"stabilisation", toString(s.stabilisation)},
-                         {"contact_points", s.manifoldContacts ? "manifold" : "one_point"}};
+                         {"contact_points", s.manifoldContacts ? "manifold" : "one_point"},
+                         {"sleeping", s.sleeping},
+                         {"sleep_speed", tidyNumber(s.sleepSpeed)},
+                         {"time_to_sleep", tidyNumber(s.timeToSleep)}};
     Json bodies = Json::array();
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const Body& body = world.bodies[i];

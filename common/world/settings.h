@@ -36,6 +36,11 @@ struct Settings {
     IntegratorKind integrator = IntegratorKind::SemiImplicitEuler;
     GyroscopicMode gyroscopic = GyroscopicMode::Implicit;
     SolverKind solver = SolverKind::GaussSeidel;
+    // Sleeping (chapter 10): islands whose bodies all stayed slow for timeToSleep stop being
+    // solved and integrated until something wakes them (Box2D v3 and Jolt use 0.05 m/s and 0.5 s).
+    bool sleeping = true;
+    Real sleepSpeed = Real(0.05);                     // m/s: slow below it, at the centre and at the bounding radius
+    Real timeToSleep = Real(0.5);                     // s every body of an island must stay slow
 };
 
 /// A setting and the chapter whose stage first reads it. A scene file may set any of them, but

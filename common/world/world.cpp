@@ -100,6 +100,41 @@ int addBody(World& world, const BodyDef& def) {
 }
 // [foundation-add-body]
 
+// A flood fill from the body through the sleeping bodies it touches or is tied to. Each woken
+// body scans the contacts, joints and springs once: O(island x links), fine for one edit; the
+// step's own wake-up (chapter 10, sleep.cpp) does the whole world at once with union-find.
+void wakeBody(World& world, int bodyIndex) {
+    const auto valid = [&](int index) { return index >= 0 && std::size_t(index) < world.bodies.size(); };
+    if (!valid(bodyIndex)) return;
+    Motion* motion = world.motionOf(bodyIndex);
+    if (!motion) return;
+    motion->sleepTime = 0;
+    if (!motion->asleep) return;
+    motion->asleep = false;
+    std::vector<int> stack{bodyIndex};
+    const auto wake = [&](int other) {
+        if (!valid(other)) return;
+        Motion* otherMotion = world.motionOf(other);
+        if (!otherMotion || !otherMotion->asleep) return;
+        otherMotion->asleep = false;
+        otherMotion->sleepTime = 0;
+        stack.push_back(other);
+    };
+    const auto visitLink = [&](int body, int a, int b) {
+        if (a == body) wake(b);
+        else if (b == body) wake(a);
+    };
+    while (!stack.empty()) {
+        const int body = stack.back();
+        stack.pop_back();
+        for (const Contact& contact : world.contacts)
+            if (contact.pointCount > 0) visitLink(body, contact.bodyA, contact.bodyB);
+        for (const JointDesc& joint : world.joints) visitLink(body, joint.bodyA, joint.bodyB);
+        for (const Spring& spring : world.springs)
+            if (spring.bodyB >= 0) visitLink(body, spring.bodyA, spring.bodyB);
+    }
+}
+
 Vec3 worldCenterOfMass(const World& world, int bodyIndex) {
     const Body& body = world.bodies[bodyIndex];
     const Motion* motion = world.motionOf(bodyIndex);

@@ -141,6 +141,12 @@ int addBody(World& world, const BodyDef& def);
 int addStaticBox(World& world, const std::string& name, const Vec3& position, const Vec3& halfExtents,
                  const Quat& rotation = Quat::Identity(), const Material& material = Material{});
 
+/// Wakes a body and, when it sleeps, its whole sleeping island: every sleeping body joined to it
+/// through touching contacts, joints or springs (chapter 10's sleeping; Box2D v3's b2Body_SetAwake
+/// wakes the body's solver set the same way). Restarts the timers, so what was edited (the demo's
+/// inspector, a recording's edit) gets time_to_sleep before it may sleep again. Static bodies: no-op.
+void wakeBody(World& world, int bodyIndex);
+
 /// Centre of mass of a body in world space.
 Vec3 worldCenterOfMass(const World& world, int bodyIndex);
 
