@@ -6,17 +6,17 @@
 #include "09_debug/chapter.h"
 #include "10_speed/contact_cache.h"
 #include "10_speed/contact_solver.h"
+#include "10_speed/sleep.h"
 #include "world/pipeline.h"
 
 namespace stepwise {
 
 /// What chapter 10 adds, each switchable for the bench's "one optimisation off at a time".
 struct SpeedOptions {
-    // Opt-in while it falls short of chapter 6's solve on tall stacks (the stack of 16 drifts 2 cm
-    // where chapter 6 promises 1 cm) and on restitution timing (see docs/ch10_speed.md).
-    bool fastSolve = false;            // false: chapter 8's solve (the reference)
+    bool fastSolve = true;             // false: chapter 8's solve (the reference)
     SolverPath solverPath = SolverPath::Wide;
     ContactCacheRule contactCache;     // enabled = false: every pair is queried every frame
+    bool sleeping = true;              // with Settings::sleeping; false: never (the bench's A/B)
 };
 
 Pipeline makeChapter10Pipeline(const World& world);

@@ -184,36 +184,47 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     const Pack<N> maxPush = Pack<N>::splat(-params.maxPushOutSpeed);
     const PackVec3<N> movedApart = b.deltaPosition - a.deltaPosition;
 
-    for (ManifoldPointPack<N>& p : c.point) {
-        // Where the two material points are now: the separation found at the frame's start plus
-        // how far the bodies have moved and turned since (the points ride on their bodies).
-        // (adjustedSeparation holds the start's normal . (armB - armA) taken out, so the arms as
-        // turned now go in whole.)
+    // Each point's target, from where its two material points are now: the separation found at
+    // the frame's start plus how far the bodies have moved and turned since (adjustedSeparation
+    // holds the start's normal . (armB - armA) taken out, so the arms as turned now go in whole).
+    // A gap may close by itself within the substep and no faster (speculative); a point deeper
+    // than the slop is pushed out (Baumgarte or a soft spring), at most maxPushOutSpeed.
+    Pack<N> bias[4], massScale[4], impulseScale[4];
+    for (int k = 0; k < 4; ++k) {
+        const ManifoldPointPack<N>& p = c.point[k];
         const PackVec3<N> armNowA = rotate(a.deltaRotation, p.armA);
         const PackVec3<N> armNowB = rotate(b.deltaRotation, p.armB);
         const Pack<N> separation = dot(c.normal, movedApart + armNowB - armNowA) + p.adjustedSeparation;
-
-        // A gap may close by itself within the substep and no faster (speculative); a point deeper
-        // than the slop is pushed out (Baumgarte or a soft spring), at most maxPushOutSpeed.
-        Pack<N> bias = separation * inverseH, massScale = one, impulseScale = zero;
+        bias[k] = separation * inverseH;
+        massScale[k] = one;
+        impulseScale[k] = zero;
         if (useBias) {
             const Pack<N> excess = separation + slop;  // < 0: deeper than the slop
             const Pack<N> push = max(c.biasRate * excess, maxPush);
             const Pack<N> deep = -excess;
-            bias = selectPositive(separation, bias, selectPositive(deep, push, zero));
-            massScale = selectPositive(deep, c.massScale, one);
-            impulseScale = selectPositive(deep, c.impulseScale, zero);
+            bias[k] = selectPositive(separation, bias[k], selectPositive(deep, push, zero));
+            massScale[k] = selectPositive(deep, c.massScale, one);
+            impulseScale[k] = selectPositive(deep, c.impulseScale, zero);
         } else {
-            bias = selectPositive(separation, bias, zero);
+            bias[k] = selectPositive(separation, bias[k], zero);
         }
+    }
 
-        const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
-        Pack<N> impulse = -(p.normalMass * massScale * (normalSpeed + bias)) - impulseScale * p.normalImpulse;
-        const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
-        impulse = accumulated - p.normalImpulse;
-        p.normalImpulse = accumulated;
-        p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
-        applyImpulse(c, p.armA, p.armB, impulse * c.normal, a, b);
+    // The normal rows, swept forwards and backwards: the four corners of a face share one load, and
+    // a single sweep in one order leaves the first corner pushing harder than the last, a torque that
+    // tilts a tall stack. Symmetric sweeps bring them to the same answer (chapter 6 sweeps 8 times).
+    for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
+        for (int k = 0; k < 4; ++k) {
+            const int i = sweep % 2 == 0 ? k : 3 - k;
+            ManifoldPointPack<N>& p = c.point[i];
+            const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
+            Pack<N> impulse = -(p.normalMass * massScale[i] * (normalSpeed + bias[i])) - impulseScale[i] * p.normalImpulse;
+            const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
+            impulse = accumulated - p.normalImpulse;
+            p.normalImpulse = accumulated;
+            p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
+            applyImpulse(c, p.armA, p.armB, impulse * c.normal, a, b);
+        }
     }
 
     for (ManifoldPointPack<N>& p : c.point) {

@@ -2,6 +2,7 @@
 
 #include "01_integrators/integrate.h"
 #include "01_integrators/rotation.h"
+#include "03_epa/chapter.h"
 #include "04_pgs/contact_constraints.h"
 #include "06_manifolds/stabilisation.h"
 #include "10_speed/colouring.h"
@@ -396,6 +397,9 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     if (!(dt > 0) || !std::isfinite(dt)) return;
     scratch.stats = FastSolveStats{};
     FastSolveStats& stats = scratch.stats;
+    // Contacts found at an earlier substep of the frame (Settings::substeps > 1, collision once per
+    // frame) are where their bodies were then: their points move with the bodies first.
+    if (world.step.substep > 0 && world.step.contactsFoundAtSubstep < world.step.substep) followContactAnchors(world);
     prepareBodies(world, scratch.bodies);
     stats.bodies = static_cast<int>(scratch.bodies.states.size()) - 1;
 

@@ -11,10 +11,14 @@ Pipeline makeChapter10Pipeline(const World& world) { return makeChapter10Pipelin
 Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) {
     Pipeline pipeline = makeChapter08Pipeline(world);
     std::string why;
+    // Sleepers are skipped by the fast solve only: chapter 8's would still integrate them.
+    const char* noSleep = "off: sleepers are skipped by the fast solve only, and chapter 8's solves this scene";
     if (!options.fastSolve) {
-        pipeline.setPlanNote(stage_group::kSolve, "chapter 8's solve: the fast solve is not asked for (SpeedOptions::fastSolve)");
+        pipeline.setPlanNote(stage_group::kSolve, "chapter 8's solve: the fast solve is switched off");
+        pipeline.setPlanNote(stage_group::kSleep, noSleep);
     } else if (!fastSolveApplies(world, &why)) {
         pipeline.setPlanNote(stage_group::kSolve, "chapter 8's solve: " + why);
+        pipeline.setPlanNote(stage_group::kSleep, noSleep);
     } else if (Stage* solve = pipeline.find(stage_group::kSolve)) {
         solve->name = stageName(stage_group::kSolve, std::string(toString(options.solverPath)) + "_" +
                                                          toString(world.settings.stabilisation));
@@ -38,6 +42,10 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
                 updateManifoldsCached(stepWorld, lookAhead, manifold, rule, *cache);
             };
         }
+        if (options.sleeping)
+            addSleepStages(pipeline, world);
+        else
+            pipeline.setPlanNote(stage_group::kSleep, "off: switched off for comparison");
     }
     return pipeline;
 }

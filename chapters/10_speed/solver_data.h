@@ -70,6 +70,11 @@ struct ManifoldBlock {
     ManifoldPointPack<N> point[4];
 };
 
+/// Sweeps of a manifold's normal rows per pass, forwards then backwards. The stack of 16 drifts
+/// sideways 3 cm with one (scalar order), 1.2 cm with two, 1.4 mm with four, at 25% more solve
+/// time than one (docs/ch10_speed.md); chapter 6 promises 1 cm.
+constexpr int kNormalSweeps = 4;
+
 /// The solve's knobs for one frame, from Settings and the stabilisation.
 struct ContactSolveParams {
     Real substep = 0;                // h, s
