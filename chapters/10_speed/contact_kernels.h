@@ -190,6 +190,9 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // A gap may close by itself within the substep and no faster (speculative); a point deeper
     // than the slop is pushed out (Baumgarte or a soft spring), at most maxPushOutSpeed.
     Pack<N> bias[4], massScale[4], impulseScale[4];
+    // The normal rows' angular parts, arm x normal and I^-1 (arm x normal) on each body: fixed for
+    // the pass, so the sweeps below only take dot products and scaled adds.
+    PackVec3<N> angularA[4], angularB[4], turnA[4], turnB[4];
     for (int k = 0; k < 4; ++k) {
         const ManifoldPointPack<N>& p = c.point[k];
         const PackVec3<N> armNowA = rotate(a.deltaRotation, p.armA);
@@ -208,6 +211,10 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
         } else {
             bias[k] = selectPositive(separation, bias[k], zero);
         }
+        angularA[k] = cross(p.armA, c.normal);
+        angularB[k] = cross(p.armB, c.normal);
+        turnA[k] = c.inverseInertiaA * angularA[k];
+        turnB[k] = c.inverseInertiaB * angularB[k];
     }
 
     // The normal rows, swept forwards and backwards: the four corners of a face share one load, and
@@ -217,13 +224,17 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
         for (int k = 0; k < 4; ++k) {
             const int i = sweep % 2 == 0 ? k : 3 - k;
             ManifoldPointPack<N>& p = c.point[i];
-            const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
+            const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
+                                        dot(b.angularVelocity, angularB[i]) - dot(a.angularVelocity, angularA[i]);
             Pack<N> impulse = -(p.normalMass * massScale[i] * (normalSpeed + bias[i])) - impulseScale[i] * p.normalImpulse;
             const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
             impulse = accumulated - p.normalImpulse;
             p.normalImpulse = accumulated;
             p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
-            applyImpulse(c, p.armA, p.armB, impulse * c.normal, a, b);
+            a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
+            a.angularVelocity = a.angularVelocity - impulse * turnA[i];
+            b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
+            b.angularVelocity = b.angularVelocity + impulse * turnB[i];
         }
     }
 

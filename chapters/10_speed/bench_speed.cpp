@@ -1,0 +1,238 @@
+// `stepwise bench speed`: what each of chapter 10's optimisations buys, and where the engine stands
+// beside Bullet (when the program was built with the peer), on the scenes of the chapter's targets.
+#include "10_speed/benches.h"
+
+#include "06_manifolds/scenes.h"
+#include "10_speed/chapter.h"
+#include "10_speed/scenes.h"
+#include "app/bench_util.h"
+#include "app/peer.h"
+#include "world/state_hash.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <ostream>
+
+namespace stepwise {
+
+namespace {
+
+/// One way to run a scene: the chapter's step with some optimisations off, or the peer.
+struct Configuration {
+    std::string name;
+    SpeedOptions options;
+    bool peer = false;
+};
+
+std::vector<Configuration> configurations(bool withPeer) {
+    std::vector<Configuration> list;
+    SpeedOptions all;
+    all.sleeping = false;  // the targets are timed awake; sleeping has its own measurement
+    list.push_back({"chapter 10", all, false});
+    SpeedOptions scalar = all;
+    scalar.solverPath = SolverPath::Scalar;
+    list.push_back({"scalar solve", scalar, false});
+    SpeedOptions noCache = all;
+    noCache.contactCache.enabled = false;
+    list.push_back({"no contact cache", noCache, false});
+    SpeedOptions reference = all;
+    reference.fastSolve = false;
+    list.push_back({"chapter 8's solve", reference, false});
+    if (withPeer) list.push_back({peerEngine().name, all, true});
+    return list;
+}
+
+/// What one run measured.
+struct Measurement {
+    Spread stepMs;
+    std::map<std::string, double> stageMs;   // mean per frame
+    long frames = 0;
+    Real maxSideways = 0;   // m, largest horizontal move of a dynamic body from its start
+    Real lowest = 0;        // m, lowest centre of a dynamic body (below the ground: tunnelled)
+    Real maxPenetration = 0;
+    int sleeping = 0;
+};
+
+Real horizontalMove(const Transform& from, const Transform& to) {
+    const Vec3 moved = to.position - from.position;
+    return std::hypot(moved.x(), moved.z());
+}
+
+void measurePoses(const World& start, const std::vector<Transform>& poses, Measurement& measured) {
+    measured.lowest = kRealMax;
+    for (std::size_t i = 0; i < start.bodies.size(); ++i) {
+        if (start.bodies[i].type != BodyType::Dynamic) continue;
+        measured.maxSideways = std::max(measured.maxSideways, horizontalMove(start.bodies[i].transform, poses[i]));
+        measured.lowest = std::min(measured.lowest, poses[i].position.y());
+    }
+}
+
+Measurement runEngine(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
+    World world = start;
+    Pipeline pipeline = makeChapter10Pipeline(world, options);
+    std::vector<double> stepMs;
+    Measurement measured;
+    for (long frame = 0; frame < frames; ++frame) {
+        pipeline.step(world);
+        if (frame < timedFrom) continue;
+        stepMs.push_back(pipeline.lastStepMs());
+        for (const Stage& stage : pipeline.stages()) measured.stageMs[stageGroup(stage.name)] += stage.lastMs;
+    }
+    for (auto& [group, ms] : measured.stageMs) ms /= static_cast<double>(std::max<std::size_t>(1, stepMs.size()));
+    measured.stepMs = spreadOf(stepMs);
+    measured.frames = frames;
+    std::vector<Transform> poses;
+    for (const Body& body : world.bodies) poses.push_back(body.transform);
+    measurePoses(start, poses, measured);
+    for (const Contact& contact : world.contacts)
+        for (int i = 0; i < contact.pointCount; ++i) measured.maxPenetration = std::max(measured.maxPenetration, contact.points[i].depth);
+    for (const Motion& motion : world.motions) measured.sleeping += motion.asleep ? 1 : 0;
+    return measured;
+}
+
+Measurement runPeer(const World& start, long frames, long timedFrom) {
+    const PeerRun run = peerEngine().run(start, frames);
+    Measurement measured;
+    std::vector<double> stepMs(run.stepMs.begin() + std::min<long>(timedFrom, static_cast<long>(run.stepMs.size())),
+                               run.stepMs.end());
+    measured.stepMs = spreadOf(stepMs);
+    measured.frames = frames;
+    measurePoses(start, run.finalPoses, measured);
+    return measured;
+}
+
+struct BenchScene {
+    std::string name;
+    World world;
+    long frames;
+    long timedFrom;     // frames before it are not timed (the pile's first contacts)
+};
+
+}  // namespace
+
+BenchEntry speedBench() {
+    BenchEntry entry;
+    entry.name = "speed";
+    entry.chapter = 10;
+    entry.description =
+        "ms per step and per stage on a 100-row pyramid, ten 20-row pyramids and a 2,000-body pile, each "
+        "optimisation off in turn, Bullet beside it; a settled pile asleep and awake; ms against body count";
+    entry.files = {{BenchFile::Kind::Csv, "", "per scene and configuration: ms per step, per stage, drift, penetration"},
+                   {BenchFile::Kind::Csv, "-scaling", "pyramids of growing size: ms per step against body count"},
+                   {BenchFile::Kind::Plot, "-scaling", "ms per step against body count, chapter 10, scalar, Bullet"},
+                   {BenchFile::Kind::Plot, "-tables", "the tables as a figure for the page"}};
+    entry.measure = [](BenchRun& bench) {
+        const bool quick = bench.quick();
+        const bool withPeer = static_cast<bool>(peerEngine().run);
+        std::ostream& out = bench.out();
+        if (!withPeer) out << "bench speed: no peer engine in this program (libbullet-dev not found): Bullet skipped\n";
+
+        // [ch10-bench-scenes]
+        std::vector<BenchScene> scenes;
+        scenes.push_back({"pyramid 100 rows", buildPyramid(quick ? 30 : 100), quick ? 60 : 600, 0});
+        scenes.push_back({"ten 20-row pyramids", buildPyramidRow(quick ? 3 : 10, 20), quick ? 60 : 600, 0});
+        scenes.push_back({"mixed pile", buildMixedPile(quick ? 300 : 2000), quick ? 120 : 600, 0});
+        for (BenchScene& scene : scenes) scene.world.settings.sleeping = false;
+        // [ch10-bench-scenes]
+
+        CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
+                        "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
+                        "x_faster_than_peer"});
+        const std::vector<Configuration> list = configurations(withPeer);
+        bench.progress().stage("scenes x configurations", static_cast<long>(scenes.size() * list.size()));
+        for (const BenchScene& scene : scenes) {
+            const int bodies = scene.world.dynamicBodyCount();
+            std::vector<std::pair<const Configuration*, Measurement>> results;
+            for (const Configuration& configuration : list) {
+                // Chapter 8's solve is slow on thousands of bodies: a second of simulated time measures it.
+                const long frames = configuration.options.fastSolve || configuration.peer ? scene.frames
+                                                                                         : std::min<long>(scene.frames, 60);
+                results.push_back({&configuration, configuration.peer ? runPeer(scene.world, frames, scene.timedFrom)
+                                                                      : runEngine(scene.world, configuration.options,
+                                                                                  frames, scene.timedFrom)});
+                bench.progress().advance();
+            }
+            const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
+            for (const auto& [configuration, m] : results) {
+                auto stage = [&](const char* group) {
+                    const auto found = m.stageMs.find(group);
+                    return found == m.stageMs.end() ? std::string("") : formatNumber(found->second);
+                };
+                table.addRow({scene.name, std::to_string(bodies), configuration->name, std::to_string(m.frames),
+                              formatNumber(m.stepMs.median), formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper),
+                              stage(stage_group::kBroadphase), stage(stage_group::kNarrowphase), stage(stage_group::kSolve),
+                              formatNumber(1e6 * m.stepMs.median / bodies), formatNumber(m.maxSideways),
+                              formatNumber(m.lowest), configuration->peer ? "" : formatNumber(m.maxPenetration),
+                              withPeer ? formatNumber(peerMs / m.stepMs.median, 3) : ""});
+            }
+        }
+        bench.progress().endStage();
+
+        // [ch10-bench-sleep]
+        // A pile that has settled: the step asleep against the same step awake.
+        CsvTable sleepTable({"scene", "bodies", "sleeping", "settle_frames", "bodies_asleep", "ms_median", "fraction_of_awake"});
+        {
+            World pile = buildMixedPile(quick ? 300 : 2000);
+            const long settle = quick ? 240 : 900;
+            bench.progress().stage("settled pile, asleep and awake", 2);
+            SpeedOptions asleep, awake;
+            awake.sleeping = false;
+            const Measurement sleeping = runEngine(pile, asleep, settle + 60, settle);
+            bench.progress().advance();
+            const Measurement notSleeping = runEngine(pile, awake, settle + 60, settle);
+            bench.progress().advance();
+            bench.progress().endStage();
+            const int bodies = pile.dynamicBodyCount();
+            sleepTable.addRow({pile.name, std::to_string(bodies), "on", std::to_string(settle), std::to_string(sleeping.sleeping),
+                               formatNumber(sleeping.stepMs.median),
+                               formatNumber(sleeping.stepMs.median / notSleeping.stepMs.median, 3)});
+            sleepTable.addRow({pile.name, std::to_string(bodies), "off", std::to_string(settle), "0",
+                               formatNumber(notSleeping.stepMs.median), "1"});
+        }
+        // [ch10-bench-sleep]
+
+        // Scaling: pyramids of growing size.
+        CsvTable scaling({"rows", "bodies", "configuration", "ms_median", "ms_q1", "ms_q3"});
+        PlotSpec plot("ms per step against body count (pyramids)", "boxes", "ms per step");
+        plot.integerX = true;
+        plot.caption = std::string("Median ms per step (quartiles as whiskers) of pyramids of 10 to ") + (quick ? "30" : "100") +
+                       " rows, 120 frames each, single thread, " + realTypeName() +
+                       " build; chapter 10 with sleeping off, its scalar solve, and the peer when the program has one.";
+        const std::vector<int> rowsList = quick ? std::vector<int>{10, 20, 30} : std::vector<int>{10, 20, 40, 60, 80, 100};
+        std::vector<Configuration> scalingList = {list[0], list[1]};
+        if (withPeer) scalingList.push_back(list.back());
+        bench.progress().stage("pyramids of growing size", static_cast<long>(rowsList.size() * scalingList.size()));
+        for (const Configuration& configuration : scalingList) {
+            PlotSeries series(configuration.name);
+            for (int rows : rowsList) {
+                const World pyramid = buildPyramid(rows);
+                const long frames = quick ? 30 : 120;
+                const Measurement m = configuration.peer ? runPeer(pyramid, frames, 0)
+                                                         : runEngine(pyramid, configuration.options, frames, 0);
+                const int bodies = pyramid.dynamicBodyCount();
+                scaling.addRow({std::to_string(rows), std::to_string(bodies), configuration.name, formatNumber(m.stepMs.median),
+                                formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper)});
+                series.x.push_back(bodies);
+                series.y.push_back(m.stepMs.median);
+                series.yLow.push_back(m.stepMs.lower);
+                series.yHigh.push_back(m.stepMs.upper);
+                bench.progress().advance();
+            }
+            plot.series.push_back(series);
+        }
+        bench.progress().endStage();
+
+        out << table.toText() << "\n" << sleepTable.toText() << "\n" << scaling.toText();
+        bench.writeCsv(table);
+        bench.writeCsv(scaling, "-scaling");
+        bench.writePlot(plot, "-scaling");
+        const std::vector<FigureTable> figures = {
+            {{"Ms per step and per stage, single thread, " + std::string(realTypeName()) + " build."}, &table},
+            {{"A settled pile: the step with sleeping on, as a fraction of the same step awake."}, &sleepTable}};
+        bench.writeTables(figures, "-tables");
+    };
+    return entry;
+}
+
+}  // namespace stepwise

@@ -1,0 +1,98 @@
+// Chapter 10's scenes.
+#include "10_speed/scenes.h"
+
+#include "04_pgs/scenes.h"
+#include "06_manifolds/scenes.h"
+#include "math/random.h"
+
+#include <cmath>
+#include <string>
+
+namespace stepwise {
+
+World buildPyramidRow(int count, int rows) {
+    World world;
+    world.name = "pyramids-" + std::to_string(count) + "x" + std::to_string(rows);
+    addGroundPlane(world);
+    const Real spacing = Real(1.05);
+    for (int pyramid = 0; pyramid < count; ++pyramid) {
+        const Real z = Real(3) * (static_cast<Real>(pyramid) - Real(0.5) * static_cast<Real>(count - 1));
+        for (int row = 0; row < rows; ++row) {
+            const int boxes = rows - row;
+            const Real left = -Real(0.5) * spacing * static_cast<Real>(boxes - 1);
+            for (int i = 0; i < boxes; ++i)
+                addCrate(world, "p" + std::to_string(pyramid) + "r" + std::to_string(row) + "b" + std::to_string(i),
+                         Vec3(left + spacing * static_cast<Real>(i), Real(0.5) + static_cast<Real>(row), z),
+                         Vec3::Constant(Real(0.5)), 1, Material{});
+        }
+    }
+    return world;
+}
+
+namespace {
+
+Shape pileShape(int index, Random& random) {
+    const Real size = random.uniformReal(Real(0.3), Real(0.6));
+    switch (index % 4) {
+        case 0: return Shape::box(Vec3(size, random.uniformReal(Real(0.3), Real(0.6)), random.uniformReal(Real(0.3), Real(0.6))));
+        case 1: return Shape::sphere(size);
+        case 2: {
+            // An irregular hull: the corners of a box, each pulled in or out a little.
+            std::vector<Vec3> points;
+            for (int corner = 0; corner < 8; ++corner)
+                points.push_back(Vec3(corner & 1 ? size : -size, corner & 2 ? size : -size, corner & 4 ? size : -size) *
+                                 random.uniformReal(Real(0.7), Real(1.1)));
+            points.push_back(Vec3(0, Real(1.4) * size, 0));
+            return Shape::convex(points);
+        }
+        default: return Shape::capsule(Real(0.6) * size, size);
+    }
+}
+
+}  // namespace
+
+World buildMixedPile(int count) {
+    World world;
+    world.name = "mixed-pile-" + std::to_string(count);
+    addGroundPlane(world);
+    const int side = 12;  // bodies per row and column of a layer
+    const Real spacing = Real(1.5);
+    const Real halfWidth = Real(0.5) * spacing * side;
+    const Real wallHeight = 6;
+    for (int wall = 0; wall < 4; ++wall) {
+        const bool alongX = wall < 2;
+        const Real offset = (wall % 2 == 0 ? -1 : 1) * (halfWidth + Real(0.25));
+        addStaticBox(world, "wall" + std::to_string(wall),
+                     alongX ? Vec3(offset, wallHeight / 2, 0) : Vec3(0, wallHeight / 2, offset),
+                     alongX ? Vec3(Real(0.25), wallHeight / 2, halfWidth + Real(0.5))
+                            : Vec3(halfWidth + Real(0.5), wallHeight / 2, Real(0.25)));
+    }
+    Random random(10);
+    for (int i = 0; i < count; ++i) {
+        const int layer = i / (side * side), cell = i % (side * side);
+        BodyDef def;
+        def.name = "body" + std::to_string(i);
+        def.shape = pileShape(i, random);
+        def.transform.position = Vec3(-halfWidth + spacing * (Real(0.5) + static_cast<Real>(cell % side)),
+                                      Real(1.5) + spacing * static_cast<Real>(layer),
+                                      -halfWidth + spacing * (Real(0.5) + static_cast<Real>(cell / side)));
+        def.transform.rotation = random.rotation();
+        def.density = 500;
+        addBody(world, def);
+    }
+    return world;
+}
+
+void addChapter10Scenes(Registry& registry) {
+    const char* category = "10 speed";
+    registry.addScene({"speed-pyramids", 10, category,
+                       "ten 20-row pyramids (2,100 boxes) stand; the panel shows ms per stage", [] {
+                           return buildPyramidRow(10, 20);
+                       },
+                       {}});
+    registry.addScene({"speed-pile", 10, category,
+                       "2,000 mixed bodies fall into a pit, settle and fall asleep (grey)",
+                       [] { return buildMixedPile(2000); }, {}});
+}
+
+}  // namespace stepwise

@@ -1,0 +1,20 @@
+#pragma once
+// Chapter 10's scenes: what the fast step is measured on (`stepwise bench speed`) and what its demo
+// shows. All are plain worlds: the same scene a scene file describes, so Bullet can run it too.
+
+#include "app/registry.h"
+#include "world/world.h"
+
+namespace stepwise {
+
+/// `count` pyramids of `rows` rows of unit boxes (1 kg, 1.05 m apart, as chapter 6's pyramid), side
+/// by side 3 m apart along z, on one static ground.
+World buildPyramidRow(int count, int rows);
+
+/// `count` bodies (boxes, spheres, irregular hulls and capsules in turn) dropped in a grid into a
+/// walled pit, from 1 m above its floor; mixed sizes 0.3 to 0.6 m, seeded.
+World buildMixedPile(int count);
+
+void addChapter10Scenes(Registry& registry);
+
+}  // namespace stepwise

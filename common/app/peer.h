@@ -1,0 +1,31 @@
+#pragma once
+// Another engine the benches can run beside this one, when the program was built with it (the
+// Bullet peer of bench/peers/, docs/peers.md). The engine's libraries never link a peer: the
+// program that does registers it here at start-up, and a bench asks for it by this plain
+// interface, skipping the comparison (and saying so) when there is none.
+
+#include "world/world.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace stepwise {
+
+struct PeerRun {
+    std::vector<double> stepMs;            // one per frame
+    std::vector<Transform> finalPoses;     // per World body
+};
+
+struct PeerEngine {
+    std::string name;                      // "bullet 3.24"
+    /// Steps a copy of `world` for `frames` frames at the world's settings; throws
+    /// std::runtime_error naming what it cannot map.
+    std::function<PeerRun(const World& world, long frames)> run;
+};
+
+void setPeerEngine(PeerEngine engine);
+/// The registered peer; its `run` is empty when the program has none.
+const PeerEngine& peerEngine();
+
+}  // namespace stepwise
