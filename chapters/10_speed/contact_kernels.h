@@ -171,6 +171,53 @@ inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
 }
 // [ch10-warm-start]
 
+// [ch10-normal-block]
+/// Once per frame: the inverse of the normal rows' 4x4 effective-mass matrix,
+/// K_ij = mA + mB + (rA_i x n) . IA^-1 (rA_j x n) + (rB_i x n) . IB^-1 (rB_j x n), with a missing point's
+/// row and column those of the identity. Gauss-Jordan without pivoting: K + eps diag K is
+/// symmetric positive definite.
+template <int N>
+inline void prepareNormalBlock(ManifoldBlock<N>& c) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    PackVec3<N> angularA[4], angularB[4], turnA[4], turnB[4];
+    for (int k = 0; k < 4; ++k) {
+        angularA[k] = cross(c.point[k].armA, c.normal);
+        angularB[k] = cross(c.point[k].armB, c.normal);
+        turnA[k] = c.inverseInertiaA * angularA[k];
+        turnB[k] = c.inverseInertiaB * angularB[k];
+    }
+    Pack<N> matrix[4][4], inverse[4][4];
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            const Pack<N> coupling = c.inverseMassA + c.inverseMassB + dot(angularA[i], turnA[j]) + dot(angularB[i], turnB[j]);
+            const Pack<N> identity = i == j ? one : zero;
+            const Pack<N> present = min(c.point[i].normalMass, c.point[j].normalMass);  // > 0: both points exist
+            matrix[i][j] = selectPositive(present, coupling, identity);
+            inverse[i][j] = identity;
+        }
+        matrix[i][i] = matrix[i][i] * Pack<N>::splat(1 + kNormalBlockRegularisation);
+    }
+    for (int column = 0; column < 4; ++column) {
+        const Pack<N> scale = one / matrix[column][column];
+        for (int j = 0; j < 4; ++j) {
+            matrix[column][j] = matrix[column][j] * scale;
+            inverse[column][j] = inverse[column][j] * scale;
+        }
+        for (int row = 0; row < 4; ++row) {
+            if (row == column) continue;
+            const Pack<N> factor = matrix[row][column];
+            for (int j = 0; j < 4; ++j) {
+                matrix[row][j] = matrix[row][j] - factor * matrix[column][j];
+                inverse[row][j] = inverse[row][j] - factor * inverse[column][j];
+            }
+        }
+    }
+    int entry = 0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i; j < 4; ++j) c.normalBlockInverse[entry++] = inverse[i][j];
+}
+// [ch10-normal-block]
+
 // [ch10-solve-block]
 /// One Gauss-Seidel sweep over the block's points: the normal rows first (with position feedback
 /// when `useBias`), then friction against the normal impulses just found.
@@ -217,24 +264,62 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
         turnB[k] = c.inverseInertiaB * angularB[k];
     }
 
-    // The normal rows, swept forwards and backwards: the four corners of a face share one load, and
-    // a single sweep in one order leaves the first corner pushing harder than the last, a torque that
-    // tilts a tall stack. Symmetric sweeps bring them to the same answer (chapter 6 sweeps 8 times).
-    for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
-        for (int k = 0; k < 4; ++k) {
-            const int i = sweep % 2 == 0 ? k : 3 - k;
-            ManifoldPointPack<N>& p = c.point[i];
-            const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
-                                        dot(b.angularVelocity, angularB[i]) - dot(a.angularVelocity, angularA[i]);
-            Pack<N> impulse = -(p.normalMass * massScale[i] * (normalSpeed + bias[i])) - impulseScale[i] * p.normalImpulse;
-            const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
-            impulse = accumulated - p.normalImpulse;
-            p.normalImpulse = accumulated;
-            p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
-            a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
-            a.angularVelocity = a.angularVelocity - impulse * turnA[i];
-            b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
-            b.angularVelocity = b.angularVelocity + impulse * turnB[i];
+    // The four normal rows at once (Box2D solves its two-point manifolds the same way, as a block):
+    // the increments d that make every row's speed its target, d = -K^-1 (J v + bias), kept where
+    // they leave every point pushing (lambda + d >= 0) and every row rigid.
+    Pack<N> target[4], increment[4];
+    for (int k = 0; k < 4; ++k) {
+        const Pack<N> speed = dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(b.angularVelocity, angularB[k]) -
+                              dot(a.angularVelocity, angularA[k]) + bias[k];
+        target[k] = selectPositive(c.point[k].normalMass, speed, zero);  // a missing point asks for nothing
+    }
+    static constexpr int kEntry[4][4] = {{0, 1, 2, 3}, {1, 4, 5, 6}, {2, 5, 7, 8}, {3, 6, 8, 9}};
+    Pack<N> leastLoad = Pack<N>::splat(0), softness = Pack<N>::splat(0);
+    for (int i = 0; i < 4; ++i) {
+        increment[i] = -(c.normalBlockInverse[kEntry[i][0]] * target[0] + c.normalBlockInverse[kEntry[i][1]] * target[1] +
+                         c.normalBlockInverse[kEntry[i][2]] * target[2] + c.normalBlockInverse[kEntry[i][3]] * target[3]);
+        leastLoad = min(leastLoad, c.point[i].normalImpulse + increment[i]);
+        softness = max(softness, impulseScale[i]);
+    }
+    // Lanes where the block does not apply take no increment here, and the sweeps below serve them.
+    const Pack<N> blockFails = selectNonNegative(leastLoad, selectPositive(softness, one, zero), one);
+    const Pack<N> useBlock = one - blockFails;
+    Pack<N> pushed = zero;
+    PackVec3<N> turnedA{zero, zero, zero}, turnedB{zero, zero, zero};
+    for (int i = 0; i < 4; ++i) {
+        ManifoldPointPack<N>& p = c.point[i];
+        const Pack<N> impulse = increment[i] * useBlock;
+        p.normalImpulse = p.normalImpulse + impulse;
+        p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
+        pushed = pushed + impulse;
+        turnedA = turnedA + impulse * turnA[i];
+        turnedB = turnedB + impulse * turnB[i];
+    }
+    a.linearVelocity = a.linearVelocity - (c.inverseMassA * pushed) * c.normal;
+    a.angularVelocity = a.angularVelocity - turnedA;
+    b.linearVelocity = b.linearVelocity + (c.inverseMassB * pushed) * c.normal;
+    b.angularVelocity = b.angularVelocity + turnedB;
+
+    // Otherwise the normal rows one at a time, swept forwards and backwards: a single sweep in one
+    // order leaves the first corner pushing harder than the last, a torque that tilts a tall stack;
+    // symmetric sweeps bring the corners to nearly the same answer (chapter 6 sweeps 8 times).
+    if (anyNegative(-blockFails)) {
+        for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
+            for (int k = 0; k < 4; ++k) {
+                const int i = sweep % 2 == 0 ? k : 3 - k;
+                ManifoldPointPack<N>& p = c.point[i];
+                const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
+                                            dot(b.angularVelocity, angularB[i]) - dot(a.angularVelocity, angularA[i]);
+                Pack<N> impulse = -(p.normalMass * massScale[i] * (normalSpeed + bias[i])) - impulseScale[i] * p.normalImpulse;
+                const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
+                impulse = accumulated - p.normalImpulse;
+                p.normalImpulse = accumulated;
+                p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
+                a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
+                a.angularVelocity = a.angularVelocity - impulse * turnA[i];
+                b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
+                b.angularVelocity = b.angularVelocity + impulse * turnB[i];
+            }
         }
     }
 

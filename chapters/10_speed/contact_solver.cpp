@@ -446,6 +446,9 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
             fillLane(scratch.scalarBlocks[i], 0, world, scratch.contactOrder[i], scratch.bodies, params);
     }
 
+    prepareWide(scratch.wideBlocks);
+    for (ManifoldBlock<1>& block : scratch.scalarBlocks) prepareNormalBlock(block);
+
     SolverBodyState* states = scratch.bodies.states.data();
     const bool warmStarting = world.settings.warmStarting;
     for (int substep = 0; substep < substeps; ++substep) {

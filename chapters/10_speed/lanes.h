@@ -68,6 +68,7 @@ struct alignas(N * sizeof(Real) >= 32 ? 32 : alignof(Real)) Pack {
 STEPWISE_PACK_BINARY(+)
 STEPWISE_PACK_BINARY(-)
 STEPWISE_PACK_BINARY(*)
+STEPWISE_PACK_BINARY(/)
 #undef STEPWISE_PACK_BINARY
 
 template <int N>
@@ -85,7 +86,18 @@ template <int N>
 inline Pack<N> selectPositive(const Pack<N>& test, const Pack<N>& ifPositive, const Pack<N>& otherwise) {
     return Pack<N>{test.v > Pack<N>::splat(0).v ? ifPositive.v : otherwise.v};
 }
+/// Per lane: test >= 0 ? ifNonNegative : otherwise.
+template <int N>
+inline Pack<N> selectNonNegative(const Pack<N>& test, const Pack<N>& ifNonNegative, const Pack<N>& otherwise) {
+    return Pack<N>{test.v >= Pack<N>::splat(0).v ? ifNonNegative.v : otherwise.v};
+}
 #else
+template <int N>
+inline Pack<N> selectNonNegative(const Pack<N>& test, const Pack<N>& ifNonNegative, const Pack<N>& otherwise) {
+    Pack<N> r;
+    for (int i = 0; i < N; ++i) r.v[i] = test.v[i] >= 0 ? ifNonNegative.v[i] : otherwise.v[i];
+    return r;
+}
 template <int N>
 inline Pack<N> min(const Pack<N>& a, const Pack<N>& b) {
     Pack<N> r;
@@ -105,6 +117,13 @@ inline Pack<N> selectPositive(const Pack<N>& test, const Pack<N>& ifPositive, co
     return r;
 }
 #endif
+/// Whether any lane holds a value below zero (a branch over the whole pack).
+template <int N>
+inline bool anyNegative(const Pack<N>& a) {
+    bool negative = false;
+    for (int i = 0; i < N; ++i) negative |= a[i] < 0;
+    return negative;
+}
 // [ch10-pack]
 
 /// A 3-vector per lane, stored as three packs (structure of arrays).

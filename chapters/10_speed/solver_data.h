@@ -68,7 +68,15 @@ struct ManifoldBlock {
     PackSym3<N> inverseInertiaA, inverseInertiaB;
     Pack<N> biasRate, massScale, impulseScale;  // position feedback of deep points (stabilisation)
     ManifoldPointPack<N> point[4];
+    /// The inverse of the four normal rows' effective-mass matrix K (upper triangle: 00 01 02 03 11
+    /// 12 13 22 23 33), K slightly regularised: a face's four corners make K singular (three
+    /// independent directions, four rows), and (K + eps diag K)^-1 picks the least change of load.
+    /// Constant over the frame (prepareNormalBlock).
+    Pack<N> normalBlockInverse[10];
 };
+
+/// The regularisation of the normal block: 0.1% of each row's own effective mass.
+constexpr Real kNormalBlockRegularisation = Real(1e-3);
 
 /// Sweeps of a manifold's normal rows per pass, forwards then backwards. The stack of 16 drifts
 /// sideways 3 cm with one (scalar order), 1.2 cm with two, 1.4 mm with four, at 25% more solve

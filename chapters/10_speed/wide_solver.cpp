@@ -4,6 +4,10 @@
 
 namespace stepwise {
 
+void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks) {
+    for (ManifoldBlock<kWideLanes>& block : blocks) prepareNormalBlock(block);
+}
+
 void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states) {
     for (ManifoldBlock<kWideLanes>& block : blocks) warmStartBlock(block, states);
 }
