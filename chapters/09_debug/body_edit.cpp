@@ -59,6 +59,8 @@ void applyEdit(World& world, const BodyEdit& edit) {
     body.transform.rotation = unit ? edit.transform.rotation : edit.transform.rotation.normalized();
     Motion* motion = world.motionOf(edit.body);
     if (!motion) return;
+    // An edited body is a moved body: a sleeping one (chapter 10) wakes with its island.
+    if (motion->asleep) wakeBody(world, edit.body);
     motion->linearVelocity = edit.linearVelocity;
     motion->angularVelocity = edit.angularVelocity;
     if (body.type != BodyType::Dynamic) return;

@@ -170,19 +170,20 @@ BenchEntry speedBench() {
         bench.progress().endStage();
 
         // [ch10-bench-sleep]
-        // A pile that has settled: the step asleep against the same step awake.
+        // Piles that have settled: the step with sleeping on against the same step awake. Spheres and
+        // capsules roll on with nothing to stop them (no rolling resistance), and one moving body
+        // keeps its whole island awake, so the pile of boxes and hulls is measured beside the mixed one.
         CsvTable sleepTable({"scene", "bodies", "sleeping", "settle_frames", "bodies_asleep", "ms_median", "fraction_of_awake"});
-        {
-            World pile = buildMixedPile(quick ? 300 : 2000);
+        bench.progress().stage("settled piles, asleep and awake", 4);
+        for (bool roundShapes : {true, false}) {
+            const World pile = buildMixedPile(quick ? 300 : 2000, roundShapes);
             const long settle = quick ? 240 : 900;
-            bench.progress().stage("settled pile, asleep and awake", 2);
             SpeedOptions asleep, awake;
             awake.sleeping = false;
             const Measurement sleeping = runEngine(pile, asleep, settle + 60, settle);
             bench.progress().advance();
             const Measurement notSleeping = runEngine(pile, awake, settle + 60, settle);
             bench.progress().advance();
-            bench.progress().endStage();
             const int bodies = pile.dynamicBodyCount();
             sleepTable.addRow({pile.name, std::to_string(bodies), "on", std::to_string(settle), std::to_string(sleeping.sleeping),
                                formatNumber(sleeping.stepMs.median),
@@ -190,6 +191,7 @@ BenchEntry speedBench() {
             sleepTable.addRow({pile.name, std::to_string(bodies), "off", std::to_string(settle), "0",
                                formatNumber(notSleeping.stepMs.median), "1"});
         }
+        bench.progress().endStage();
         // [ch10-bench-sleep]
 
         // Scaling: pyramids of growing size.

@@ -66,13 +66,15 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
         while (next < previous.size() && previous[next].pair() < pair) ++next;
         const Contact* old = next < previous.size() && previous[next].pair() == pair ? &previous[next] : nullptr;
         const bool valid = pair.bodyA >= 0 && pair.bodyB < bodyCount && pair.bodyA < pair.bodyB;
-        if (!rule.enabled || !valid || !old || !old->builtPoseKnown || old->pointCount <= 0 || old->missedSteps > 0) {
+        if (valid && restsWithoutMotion(world, pair.bodyA) && restsWithoutMotion(world, pair.bodyB)) {
+            // Neither body moved since the last search (both asleep, or asleep and static): whatever
+            // was found then is still exactly right, a record or no contact at all.
+            ++stats.asleep;
+            if (!old) continue;
+            scratch.kept.push_back(*old);
+        } else if (!rule.enabled || !valid || !old || !old->builtPoseKnown || old->pointCount <= 0 || old->missedSteps > 0) {
             scratch.misses.push_back(pair);
             continue;
-        }
-        if (restsWithoutMotion(world, pair.bodyA) && restsWithoutMotion(world, pair.bodyB)) {
-            scratch.kept.push_back(*old);  // nothing moved: the record is exactly right
-            ++stats.asleep;
         } else {
             const Transform& transformA = world.bodies[static_cast<std::size_t>(pair.bodyA)].transform;
             const Transform& transformB = world.bodies[static_cast<std::size_t>(pair.bodyB)].transform;

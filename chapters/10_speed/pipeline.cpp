@@ -42,8 +42,17 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
                 updateManifoldsCached(stepWorld, lookAhead, manifold, rule, *cache);
             };
         }
-        if (options.sleeping)
+        if (options.sleeping) {
             addSleepStages(pipeline, world);
+            // A world asleep throughout has the pairs and contacts it had: nothing moved.
+            for (const char* group : {stage_group::kBroadphase, stage_group::kNarrowphase}) {
+                Stage* stage = pipeline.find(group);
+                if (!stage) continue;
+                stage->run = [run = stage->run](World& stepWorld, Real dt) {
+                    if (!everyBodyAsleep(stepWorld)) run(stepWorld, dt);
+                };
+            }
+        }
         else
             pipeline.setPlanNote(stage_group::kSleep, "off: switched off for comparison");
     }

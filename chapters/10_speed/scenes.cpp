@@ -51,14 +51,14 @@ Shape pileShape(int index, Random& random) {
 
 }  // namespace
 
-World buildMixedPile(int count) {
+World buildMixedPile(int count, bool roundShapes) {
     World world;
-    world.name = "mixed-pile-" + std::to_string(count);
+    world.name = (roundShapes ? "mixed-pile-" : "angular-pile-") + std::to_string(count);
     addGroundPlane(world);
     const int side = 12;  // bodies per row and column of a layer
     const Real spacing = Real(1.5);
     const Real halfWidth = Real(0.5) * spacing * side;
-    const Real wallHeight = 6;
+    const Real wallHeight = Real(1.5) + spacing * static_cast<Real>((count + side * side - 1) / (side * side));
     for (int wall = 0; wall < 4; ++wall) {
         const bool alongX = wall < 2;
         const Real offset = (wall % 2 == 0 ? -1 : 1) * (halfWidth + Real(0.25));
@@ -72,7 +72,7 @@ World buildMixedPile(int count) {
         const int layer = i / (side * side), cell = i % (side * side);
         BodyDef def;
         def.name = "body" + std::to_string(i);
-        def.shape = pileShape(i, random);
+        def.shape = pileShape(roundShapes ? i : 2 * (i % 2), random);  // boxes and hulls only: 0 and 2
         def.transform.position = Vec3(-halfWidth + spacing * (Real(0.5) + static_cast<Real>(cell % side)),
                                       Real(1.5) + spacing * static_cast<Real>(layer),
                                       -halfWidth + spacing * (Real(0.5) + static_cast<Real>(cell / side)));

@@ -11,9 +11,10 @@ namespace stepwise {
 /// by side 3 m apart along z, on one static ground.
 World buildPyramidRow(int count, int rows);
 
-/// `count` bodies (boxes, spheres, irregular hulls and capsules in turn) dropped in a grid into a
-/// walled pit, from 1 m above its floor; mixed sizes 0.3 to 0.6 m, seeded.
-World buildMixedPile(int count);
+/// `count` bodies (boxes, spheres, irregular hulls and capsules in turn; without `roundShapes` only
+/// boxes and hulls) dropped in a grid into a walled pit, from 1 m above its floor; sizes 0.3 to
+/// 0.6 m, seeded. The walls stand higher than the highest body starts.
+World buildMixedPile(int count, bool roundShapes = true);
 
 void addChapter10Scenes(Registry& registry);
 

@@ -179,6 +179,12 @@ int wakeTouchedIslands(World& world, SleepScratch& scratch) {
 }
 // [ch10-wake]
 
+bool everyBodyAsleep(const World& world) {
+    for (const Motion& motion : world.motions)
+        if (!motion.asleep) return false;
+    return !world.motions.empty();
+}
+
 int countSleeping(const World& world) {
     int sleeping = 0;
     for (const Motion& motion : world.motions)

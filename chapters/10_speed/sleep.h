@@ -58,6 +58,9 @@ int wakeTouchedIslands(World& world, SleepScratch& scratch);
 /// Dynamic bodies asleep (reports and benches).
 int countSleeping(const World& world);
 
+/// True when the world has moving bodies and every one of them sleeps: nothing can change this frame.
+bool everyBodyAsleep(const World& world);
+
 /// Adds "sleep:wake" (frame start, right after the narrowphase) and "sleep:islands" (frame end,
 /// last) when Settings::sleeping; the plan note of group "sleep" says which and why.
 void addSleepStages(Pipeline& pipeline, const World& world);
