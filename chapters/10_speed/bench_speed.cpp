@@ -2,7 +2,6 @@
 // beside Bullet (when the program was built with the peer), on the scenes of the chapter's targets.
 #include "10_speed/benches.h"
 
-#include "06_manifolds/scenes.h"
 #include "10_speed/chapter.h"
 #include "10_speed/scenes.h"
 #include "app/bench_util.h"
@@ -130,7 +129,7 @@ BenchEntry speedBench() {
 
         // [ch10-bench-scenes]
         std::vector<BenchScene> scenes;
-        scenes.push_back({"pyramid 100 rows", buildPyramid(quick ? 30 : 100), quick ? 60 : 600, 0});
+        scenes.push_back({"pyramid 100 rows", buildPyramidRow(1, quick ? 30 : 100), quick ? 60 : 600, 0});
         scenes.push_back({"ten 20-row pyramids", buildPyramidRow(quick ? 3 : 10, 20), quick ? 60 : 600, 0});
         scenes.push_back({"mixed pile", buildMixedPile(quick ? 300 : 2000), quick ? 120 : 600, 0});
         for (BenchScene& scene : scenes) scene.world.settings.sleeping = false;
@@ -208,7 +207,7 @@ BenchEntry speedBench() {
         for (const Configuration& configuration : scalingList) {
             PlotSeries series(configuration.name);
             for (int rows : rowsList) {
-                const World pyramid = buildPyramid(rows);
+                const World pyramid = buildPyramidRow(1, rows);
                 const long frames = quick ? 30 : 120;
                 const Measurement m = configuration.peer ? runPeer(pyramid, frames, 0)
                                                          : runEngine(pyramid, configuration.options, frames, 0);

@@ -5,6 +5,7 @@
 #include "06_manifolds/scenes.h"
 #include "math/random.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -13,8 +14,13 @@ namespace stepwise {
 World buildPyramidRow(int count, int rows) {
     World world;
     world.name = "pyramids-" + std::to_string(count) + "x" + std::to_string(rows);
-    addGroundPlane(world);
     const Real spacing = Real(1.05);
+    // The ground reaches 5 m beyond the widest row and the outer pyramids (chapter 4's 40 m square
+    // ground is narrower than a 100-row pyramid's 105 m base).
+    const Real halfWidth = std::max(Real(20), Real(0.5) * spacing * static_cast<Real>(rows) + 5);
+    const Real halfDepth = std::max(Real(20), Real(1.5) * static_cast<Real>(count) + 5);
+    addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(halfWidth, Real(0.5), halfDepth), Quat::Identity(),
+                 Material{});
     for (int pyramid = 0; pyramid < count; ++pyramid) {
         const Real z = Real(3) * (static_cast<Real>(pyramid) - Real(0.5) * static_cast<Real>(count - 1));
         for (int row = 0; row < rows; ++row) {

@@ -7,8 +7,8 @@
 
 namespace stepwise {
 
-/// `count` pyramids of `rows` rows of unit boxes (1 kg, 1.05 m apart, as chapter 6's pyramid), side
-/// by side 3 m apart along z, on one static ground.
+/// `count` pyramids of `rows` rows of unit boxes (1 kg, 1.05 m apart, friction 0.6, as chapter 6's
+/// pyramid), side by side 3 m apart along z, on one static ground reaching 5 m beyond them.
 World buildPyramidRow(int count, int rows);
 
 /// `count` bodies (boxes, spheres, irregular hulls and capsules in turn; without `roundShapes` only
