@@ -119,13 +119,15 @@ BenchEntry speedBench() {
         "optimisation off in turn, Bullet beside it; a settled pile asleep and awake; ms against body count";
     entry.files = {{BenchFile::Kind::Csv, "", "per scene and configuration: ms per step, per stage, drift, penetration"},
                    {BenchFile::Kind::Csv, "-scaling", "pyramids of growing size: ms per step against body count"},
-                   {BenchFile::Kind::Plot, "-scaling", "ms per step against body count, chapter 10, scalar, Bullet"},
+                   {BenchFile::Kind::Plot, "", "ms per step against body count, chapter 10, scalar, Bullet"},
                    {BenchFile::Kind::Plot, "-tables", "the tables as a figure for the page"}};
     entry.measure = [](BenchRun& bench) {
         const bool quick = bench.quick();
         const bool withPeer = static_cast<bool>(peerEngine().run);
         std::ostream& out = bench.out();
-        if (!withPeer) out << "bench speed: no peer engine in this program (libbullet-dev not found): Bullet skipped\n";
+        if (!withPeer)
+            out << "bench speed: no peer engine in this program (the `stepwise` program links the Bullet peer where "
+                   "libbullet-dev is found): Bullet skipped\n";
 
         // [ch10-bench-scenes]
         std::vector<BenchScene> scenes;
@@ -153,7 +155,9 @@ BenchEntry speedBench() {
                 bench.progress().advance();
             }
             const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
-            for (const auto& [configuration, m] : results) {
+            for (const auto& result : results) {
+                const Configuration* configuration = result.first;
+                const Measurement& m = result.second;
                 auto stage = [&](const char* group) {
                     const auto found = m.stageMs.find(group);
                     return found == m.stageMs.end() ? std::string("") : formatNumber(found->second);
@@ -227,7 +231,7 @@ BenchEntry speedBench() {
         out << table.toText() << "\n" << sleepTable.toText() << "\n" << scaling.toText();
         bench.writeCsv(table);
         bench.writeCsv(scaling, "-scaling");
-        bench.writePlot(plot, "-scaling");
+        bench.writePlot(plot);
         const std::vector<FigureTable> figures = {
             {{"Ms per step and per stage, single thread, " + std::string(realTypeName()) + " build."}, &table},
             {{"A settled pile: the step with sleeping on, as a fraction of the same step awake."}, &sleepTable}};

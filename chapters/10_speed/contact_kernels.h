@@ -119,20 +119,8 @@ inline BodyPack<8> gatherBodies<8>(const SolverBodyState* states, const int* slo
     return body;
 }
 template <>
-inline BodyPack<16> gatherBodies<16>(const SolverBodyState* states, const int* slots) {
-    BodyPack<16> body;
-    gatherEight(states, slots, 0, body);
-    gatherEight(states, slots, 8, body);
-    return body;
-}
-template <>
 inline void scatterVelocities<8>(SolverBodyState* states, const int* slots, const BodyPack<8>& body) {
     scatterEight(states, slots, 0, body);
-}
-template <>
-inline void scatterVelocities<16>(SolverBodyState* states, const int* slots, const BodyPack<16>& body) {
-    scatterEight(states, slots, 0, body);
-    scatterEight(states, slots, 8, body);
 }
 // [ch10-avx2-gather]
 #endif

@@ -3,11 +3,11 @@
 //
 // The contact solver of this chapter is written once, over Pack<N>. With N = 1 it is a plain
 // scalar Gauss-Seidel solver; with N = kWideLanes (8 floats or 4 doubles: one 256-bit AVX2
-// register) every operation below is a fixed-length loop that the compiler turns into one SIMD
-// instruction when the file is built with AVX2 (chapters/10_speed/CMake flags; any other target
-// gets the same loops as scalar code, with the same results). Writing the lanes as loops instead
-// of intrinsics keeps the solver readable and portable (MSVC, GCC, Clang; x86 and ARM): Box3D
-// wraps SSE2/NEON intrinsics behind the same kind of small type (its b2FloatW).
+// register) every operation below is one SIMD instruction where the file is built for AVX2
+// (wide_solver.cpp, chapters/CMakeLists.txt), and the same arithmetic on narrower instructions
+// elsewhere, with the same results. Writing the lanes as plain operators instead of intrinsics
+// keeps the solver readable and portable (MSVC, GCC, Clang; x86 and ARM): Box3D wraps SSE2/NEON
+// intrinsics behind the same kind of small type (its b2FloatW).
 
 #include "math/math.h"
 
@@ -17,7 +17,7 @@
 
 namespace stepwise {
 
-/// Lanes of the wide solver: as many Reals as two 32-byte (AVX2) registers hold.
+/// Lanes of the wide solver: as many Reals as one 32-byte (AVX2) register holds.
 constexpr int kWideLanes = static_cast<int>(32 / sizeof(Real));
 
 // [ch10-pack]
@@ -27,10 +27,11 @@ constexpr int kWideLanes = static_cast<int>(32 / sizeof(Real));
 #define STEPWISE_VECTOR_PACKS 1
 #endif
 
-// The alignment is spelled out: a vector type's natural alignment depends on the instruction set
-// a file is built for (16 bytes with SSE2, 32 with AVX2), and every file must agree on the layout.
+// The alignment is spelled out: a vector type's natural alignment depends on the compiler and the
+// instruction set a file is built for (a 32-byte vector is aligned to 16 bytes with SSE2, to 32
+// with AVX2), and every file must agree on the layout.
 template <int N>
-struct alignas(N * sizeof(Real) >= 32 ? 32 : alignof(Real)) Pack {
+struct alignas(N * sizeof(Real) >= 64 ? 64 : N * sizeof(Real) >= 32 ? 32 : alignof(Real)) Pack {
 #if defined(STEPWISE_VECTOR_PACKS)
     typedef Real Values __attribute__((vector_size(N * sizeof(Real))));
     Values v;

@@ -97,7 +97,7 @@ void addChapter10Scenes(Registry& registry) {
                        },
                        {}});
     registry.addScene({"speed-pile", 10, category,
-                       "2,000 mixed bodies fall into a pit, settle and fall asleep (grey)",
+                       "2,000 mixed bodies fall into a pit and settle; the rolling ones keep the pile awake",
                        [] { return buildMixedPile(2000); }, {}});
 }
 
