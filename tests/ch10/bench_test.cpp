@@ -23,7 +23,9 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
         REQUIRE(cells.size() >= 14);  // the last column, times faster than the peer, is empty here
         ms[cells[0]][cells[2]] = std::stod(cells[4]);
         CHECK(std::stod(cells[12]) > 0);  // nothing fell through the ground
-        if (cells[0] != "mixed pile") CHECK(std::stod(cells[11]) < 0.03);  // the pyramids stand (the scalar order drifts most)
+        // The pyramids stand: no box 5 cm sideways (the issue's measure), 1 cm with chapter 10's step
+        // (the scalar order, bottom row first, drifts most: 2.4 cm in float, 3.4 cm in double).
+        if (cells[0] != "mixed pile") CHECK(std::stod(cells[11]) < (cells[2] == "chapter 10" ? 0.01 : 0.05));
     }
     for (const char* pyramid : {"pyramid 100 rows", "ten 20-row pyramids"}) {
         INFO(pyramid);
