@@ -207,8 +207,9 @@ inline void prepareNormalBlock(ManifoldBlock<N>& c) {
 // [ch10-normal-block]
 
 // [ch10-solve-block]
-/// One Gauss-Seidel sweep over the block's points: the normal rows first (with position feedback
-/// when `useBias`), then friction against the normal impulses just found.
+/// One sweep over the block's points: the four normal rows as one block (or one at a time where
+/// the block would pull, with position feedback when `useBias`), then friction against the normal
+/// impulses just found.
 template <int N>
 inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
     BodyPack<N> a = gatherBodies<N>(states, c.slotA);

@@ -336,7 +336,6 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
     const std::vector<int>& order = scratch.contactOrder;
     colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(scratch.bodies.states.size()), scratch.colours,
                    scratch.colourBits);
-    FastSolveStats& stats = scratch.stats;
     scratch.wideBlocks.clear();
     scratch.scalarBlocks.clear();
     for (int colour = 0; colour < kMaxColours; ++colour) {
@@ -347,21 +346,17 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
             if (lane == kWideLanes) {
                 scratch.wideBlocks.emplace_back();
                 lane = 0;
-                ++stats.blocks;
             }
             fillLane(scratch.wideBlocks.back(), lane++, world, order[i], scratch.bodies, params);
-            ++stats.lanesFilled;
             used = true;
         }
         if (!used) break;  // greedy colours are used in order: none after an empty one
         for (; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
-        stats.colours = colour + 1;
     }
     for (std::size_t i = 0; i < order.size(); ++i) {
         if (scratch.colours[i] >= 0) continue;
         scratch.scalarBlocks.emplace_back();
         fillLane(scratch.scalarBlocks.back(), 0, world, order[i], scratch.bodies, params);
-        ++stats.overflow;
     }
 }
 // [ch10-wide-blocks]
@@ -380,14 +375,10 @@ void restitutionAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* stat
     for (ManifoldBlock<N>& block : blocks) restitutionBlock(block, states, threshold);
 }
 
-void resetImpulses(std::vector<ManifoldBlock<1>>& blocks) {
-    for (ManifoldBlock<1>& block : blocks)
-        for (ManifoldPointPack<1>& p : block.point) p.normalImpulse = p.tangentImpulse1 = p.tangentImpulse2 = Pack<1>::splat(0);
-}
-void resetImpulses(std::vector<ManifoldBlock<kWideLanes>>& blocks) {
-    for (ManifoldBlock<kWideLanes>& block : blocks)
-        for (ManifoldPointPack<kWideLanes>& p : block.point)
-            p.normalImpulse = p.tangentImpulse1 = p.tangentImpulse2 = Pack<kWideLanes>::splat(0);
+template <int N>
+void resetImpulses(std::vector<ManifoldBlock<N>>& blocks) {
+    for (ManifoldBlock<N>& block : blocks)
+        for (ManifoldPointPack<N>& p : block.point) p.normalImpulse = p.tangentImpulse1 = p.tangentImpulse2 = Pack<N>::splat(0);
 }
 
 }  // namespace

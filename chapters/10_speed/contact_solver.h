@@ -20,10 +20,6 @@ struct FastSolveStats {
     int bodies = 0;          // moving bodies solved (awake dynamic)
     int manifolds = 0;       // contacts with at least one moving body
     int points = 0;
-    int colours = 0;         // used by the wide path
-    int overflow = 0;        // contacts left to the scalar overflow
-    int blocks = 0;          // wide blocks (kWideLanes lanes each)
-    int lanesFilled = 0;     // lanes of those blocks that hold a contact
 };
 
 /// The buffers a solve works in. Rebuilt from the World every frame and carrying nothing from one
@@ -38,7 +34,7 @@ struct ContactSolverScratch {
     FastSolveStats stats;
 };
 
-/// Whether the fast solve can run this world exactly as chapter 6/8's solve would: relax or soft
+/// Whether the fast solve can take this world, solving what chapter 6/8's solve would: relax or soft
 /// step with Gauss-Seidel, semi-implicit Euler everywhere, no springs, dampings, joints or kinematic
 /// bodies, gyroscopic off or implicit. Otherwise `why` says what stands in the way.
 bool fastSolveApplies(const World& world, std::string* why = nullptr);

@@ -78,9 +78,10 @@ struct ManifoldBlock {
 /// The regularisation of the normal block: 0.1% of each row's own effective mass.
 constexpr Real kNormalBlockRegularisation = Real(1e-3);
 
-/// Sweeps of a manifold's normal rows per pass, forwards then backwards. The stack of 16 drifts
-/// sideways 3 cm with one (scalar order), 1.2 cm with two, 1.4 mm with four, at 25% more solve
-/// time than one (docs/ch10_speed.md); chapter 6 promises 1 cm.
+/// Sweeps of a manifold's normal rows per pass, forwards then backwards, where the block solve
+/// does not apply (a corner lifting off, a soft row). Measured as the only normal solve, before the
+/// block: the stack of 16 drifted sideways 3 cm with one (scalar order), 1.2 cm with two, 1.4 mm
+/// with four (docs/ch10_speed.md); chapter 6 promises 1 cm.
 constexpr int kNormalSweeps = 4;
 
 /// The solve's knobs for one frame, from Settings and the stabilisation.
