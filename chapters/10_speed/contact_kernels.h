@@ -143,17 +143,29 @@ inline PackVec3<N> relativeVelocity(const BodyPack<N>& a, const BodyPack<N>& b, 
 }
 
 // [ch10-warm-start]
-/// Pushes the bodies by the impulses the points carry (from last frame, then from each substep):
-/// every substep starts from the whole accumulated impulse, as Box3D does.
+/// Pushes the bodies by the impulses the manifold carries (from last frame, then from each
+/// substep): every substep starts from the whole accumulated impulse, as Box3D does. The normal
+/// impulses all point along n, so their turning adds up as one cross product:
+/// sum(lambda_i r_i x n) = (sum(lambda_i r_i)) x n.
 template <int N>
 inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
     BodyPack<N> a = gatherBodies<N>(states, c.slotA);
     BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    const Pack<N> zero = Pack<N>::splat(0);
+    Pack<N> pushed = zero;
+    PackVec3<N> leverA{zero, zero, zero}, leverB{zero, zero, zero};
     for (const ManifoldPointPack<N>& p : c.point) {
-        const PackVec3<N> impulse =
-            p.normalImpulse * c.normal + p.tangentImpulse1 * c.tangent1 + p.tangentImpulse2 * c.tangent2;
-        applyImpulse(c, p.armA, p.armB, impulse, a, b);
+        pushed = pushed + p.normalImpulse;
+        leverA = leverA + p.normalImpulse * p.armA;
+        leverB = leverB + p.normalImpulse * p.armB;
     }
+    a.linearVelocity = a.linearVelocity - (c.inverseMassA * pushed) * c.normal;
+    a.angularVelocity = a.angularVelocity - c.inverseInertiaA * cross(leverA, c.normal);
+    b.linearVelocity = b.linearVelocity + (c.inverseMassB * pushed) * c.normal;
+    b.angularVelocity = b.angularVelocity + c.inverseInertiaB * cross(leverB, c.normal);
+    applyImpulse(c, c.centerArmA, c.centerArmB, c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2, a, b);
+    a.angularVelocity = a.angularVelocity - c.twistImpulse * (c.inverseInertiaA * c.normal);
+    b.angularVelocity = b.angularVelocity + c.twistImpulse * (c.inverseInertiaB * c.normal);
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
 }
@@ -205,6 +217,44 @@ inline void prepareNormalBlock(ManifoldBlock<N>& c) {
         for (int j = i; j < 4; ++j) c.normalBlockInverse[entry++] = inverse[i][j];
 }
 // [ch10-normal-block]
+
+// [ch10-friction]
+/// The manifold's friction at its centre, against the normal impulses just found: the two
+/// tangent rows as one 2x2 block clamped to the friction cone (a circle of radius mu sum(lambda)),
+/// then the twist about the normal, clamped to mu sum(lambda r). Three rows where a row per point
+/// and direction would be eight (PhysX's patch friction and Havok's manifold friction do the same).
+template <int N>
+inline void solveFriction(ManifoldBlock<N>& c, BodyPack<N>& a, BodyPack<N>& b) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    Pack<N> load = zero, twistLoad = zero;
+    for (const ManifoldPointPack<N>& p : c.point) {
+        load = load + p.normalImpulse;
+        twistLoad = twistLoad + p.normalImpulse * p.twistRadius;
+    }
+    const PackVec3<N> slide = relativeVelocity(a, b, c.centerArmA, c.centerArmB);
+    const Pack<N> slide1 = dot(c.tangent1, slide), slide2 = dot(c.tangent2, slide);
+    Pack<N> total1 = c.tangentImpulse1 - (c.tangentInverse11 * slide1 + c.tangentInverse12 * slide2);
+    Pack<N> total2 = c.tangentImpulse2 - (c.tangentInverse12 * slide1 + c.tangentInverse22 * slide2);
+    const Pack<N> limit = c.friction * load;
+    const Pack<N> lengthSquared = total1 * total1 + total2 * total2;
+    const Pack<N> scale =
+        selectPositive(lengthSquared - limit * limit, limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), one);
+    total1 = total1 * scale;
+    total2 = total2 * scale;
+    const PackVec3<N> impulse = (total1 - c.tangentImpulse1) * c.tangent1 + (total2 - c.tangentImpulse2) * c.tangent2;
+    c.tangentImpulse1 = total1;
+    c.tangentImpulse2 = total2;
+    applyImpulse(c, c.centerArmA, c.centerArmB, impulse, a, b);
+
+    const Pack<N> twistLimit = c.friction * twistLoad;
+    const Pack<N> spin = dot(c.normal, b.angularVelocity - a.angularVelocity);
+    const Pack<N> twist = max(min(c.twistImpulse - c.twistMass * spin, twistLimit), -twistLimit);
+    const Pack<N> twistChange = twist - c.twistImpulse;
+    c.twistImpulse = twist;
+    a.angularVelocity = a.angularVelocity - twistChange * (c.inverseInertiaA * c.normal);
+    b.angularVelocity = b.angularVelocity + twistChange * (c.inverseInertiaB * c.normal);
+}
+// [ch10-friction]
 
 // [ch10-solve-block]
 /// One sweep over the block's points: the four normal rows as one block (or one at a time where
@@ -312,24 +362,7 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
         }
     }
 
-    for (ManifoldPointPack<N>& p : c.point) {
-        const Pack<N> limit = c.friction * p.normalImpulse;
-        const PackVec3<N> slide = relativeVelocity(a, b, p.armA, p.armB);
-        // Each direction is clamped to +-mu lambda on its own: a box around the friction cone,
-        // as chapter 4's rows do.
-        Pack<N> impulse = -(p.tangentMass1 * dot(c.tangent1, slide));
-        Pack<N> accumulated = max(min(p.tangentImpulse1 + impulse, limit), -limit);
-        impulse = accumulated - p.tangentImpulse1;
-        p.tangentImpulse1 = accumulated;
-        applyImpulse(c, p.armA, p.armB, impulse * c.tangent1, a, b);
-
-        const PackVec3<N> slide2 = relativeVelocity(a, b, p.armA, p.armB);
-        impulse = -(p.tangentMass2 * dot(c.tangent2, slide2));
-        accumulated = max(min(p.tangentImpulse2 + impulse, limit), -limit);
-        impulse = accumulated - p.tangentImpulse2;
-        p.tangentImpulse2 = accumulated;
-        applyImpulse(c, p.armA, p.armB, impulse * c.tangent2, a, b);
-    }
+    solveFriction(c, a, b);
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
 }

@@ -98,6 +98,17 @@ Real inverseEffectiveMass(const SolverBodyInfo& a, const SolverBodyInfo& b, cons
            angularB.dot(b.inverseInertia * angularB);
 }
 
+/// The off-diagonal entry of two rows' effective-mass matrix at the same arms.
+Real crossCoupling(const SolverBodyInfo& a, const SolverBodyInfo& b, const Vec3& armA, const Vec3& armB,
+                   const Vec3& direction1, const Vec3& direction2) {
+    return (a.inverseMass + b.inverseMass) * direction1.dot(direction2) +
+           armA.cross(direction1).dot(a.inverseInertia * armA.cross(direction2)) +
+           armB.cross(direction1).dot(b.inverseInertia * armB.cross(direction2));
+}
+
+/// The part of `offset` in the contact plane.
+Vec3 inPlane(const Vec3& offset, const Vec3& normal) { return offset - normal * normal.dot(offset); }
+
 // [ch10-prepare-contact]
 /// Fills one lane of a block from a contact record: everything the substeps need, computed once.
 template <int N>
@@ -148,13 +159,30 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
     Vec3 basis1, basis2;
     tangentBasis(normal, basis1, basis2);
 
+    // The centre's friction rows: the tangents' 2x2 effective-mass matrix, inverted, and the twist's.
+    const Vec3 centerArmA = middle - centerA, centerArmB = middle - centerB;
+    setLane(block.centerArmA, lane, centerArmA);
+    setLane(block.centerArmB, lane, centerArmB);
+    const Real k11 = inverseEffectiveMass(infoA, infoB, centerArmA, centerArmB, tangent1);
+    const Real k22 = inverseEffectiveMass(infoA, infoB, centerArmA, centerArmB, tangent2);
+    const Real k12 = crossCoupling(infoA, infoB, centerArmA, centerArmB, tangent1, tangent2);
+    const Real determinant = k11 * k22 - k12 * k12;
+    const bool invertible = determinant > Real(1e-12) * std::max(Real(1), k11 * k22);
+    block.tangentInverse11[lane] = invertible ? k22 / determinant : 0;
+    block.tangentInverse12[lane] = invertible ? -k12 / determinant : 0;
+    block.tangentInverse22[lane] = invertible ? k11 / determinant : 0;
+    const Real twistInverse = normal.dot(infoA.inverseInertia * normal) + normal.dot(infoB.inverseInertia * normal);
+    block.twistMass[lane] = twistInverse > 0 ? 1 / twistInverse : 0;
+
+    const bool warm = world.settings.warmStarting;
+    Vec3 carriedFriction = Vec3::Zero();
+    Real carriedTwist = 0, carriedLoad = 0, carriedTwistLoad = 0;
     for (int i = 0; i < 4; ++i) {
         ManifoldPointPack<N>& p = block.point[i];
-        if (i >= contact.pointCount) {  // an empty point: zero masses give zero impulses
+        if (i >= contact.pointCount) {  // an empty point: a zero mass gives a zero impulse
             setLane(p.armA, lane, Vec3::Zero());
             setLane(p.armB, lane, Vec3::Zero());
-            p.adjustedSeparation[lane] = p.normalMass[lane] = p.tangentMass1[lane] = p.tangentMass2[lane] = 0;
-            p.normalImpulse[lane] = p.tangentImpulse1[lane] = p.tangentImpulse2[lane] = 0;
+            p.adjustedSeparation[lane] = p.normalMass[lane] = p.normalImpulse[lane] = p.twistRadius[lane] = 0;
             p.approachSpeed[lane] = p.maxNormalImpulse[lane] = 0;
             continue;
         }
@@ -165,24 +193,27 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
         setLane(p.armB, lane, armB);
         p.adjustedSeparation[lane] = -point.depth - normal.dot(armB - armA);
         const Real normalInverse = inverseEffectiveMass(infoA, infoB, armA, armB, normal);
-        const Real tangentInverse1 = inverseEffectiveMass(infoA, infoB, armA, armB, tangent1);
-        const Real tangentInverse2 = inverseEffectiveMass(infoA, infoB, armA, armB, tangent2);
         p.normalMass[lane] = normalInverse > 0 ? 1 / normalInverse : 0;
-        p.tangentMass1[lane] = tangentInverse1 > 0 ? 1 / tangentInverse1 : 0;
-        p.tangentMass2[lane] = tangentInverse2 > 0 ? 1 / tangentInverse2 : 0;
         p.approachSpeed[lane] = normal.dot(velocityAt(stateB, armB) - velocityAt(stateA, armA));
         p.maxNormalImpulse[lane] = 0;
-        // Last frame's impulses, the friction part re-expressed along this frame's directions and
-        // kept inside the friction cone of the carried normal impulse.
+        const Vec3 offset = inPlane(at - middle, normal);
+        p.twistRadius[lane] = offset.norm();
+        // Last frame's impulses: the points' friction summed into the centre's force and twist.
         const Real carriedNormal = std::max(Real(0), point.normalImpulse);
-        Vec3 carriedFriction = point.tangentImpulse[0] * basis1 + point.tangentImpulse[1] * basis2;
-        const Real limit = friction * carriedNormal, size = carriedFriction.norm();
-        if (size > limit) carriedFriction *= size > 0 ? limit / size : Real(0);
-        const bool warm = world.settings.warmStarting;
+        const Vec3 pointFriction = point.tangentImpulse[0] * basis1 + point.tangentImpulse[1] * basis2;
+        carriedFriction += pointFriction;
+        carriedTwist += normal.dot(offset.cross(pointFriction));
+        carriedLoad += carriedNormal;
+        carriedTwistLoad += carriedNormal * offset.norm();
         p.normalImpulse[lane] = warm ? carriedNormal : 0;
-        p.tangentImpulse1[lane] = warm ? carriedFriction.dot(tangent1) : 0;
-        p.tangentImpulse2[lane] = warm ? carriedFriction.dot(tangent2) : 0;
     }
+    // ...kept inside this frame's friction cone and twist limit of the carried normal impulses.
+    const Real limit = friction * carriedLoad, size = carriedFriction.norm();
+    if (size > limit) carriedFriction *= size > 0 ? limit / size : Real(0);
+    const Real twistLimit = friction * carriedTwistLoad;
+    block.tangentImpulse1[lane] = warm ? carriedFriction.dot(tangent1) : 0;
+    block.tangentImpulse2[lane] = warm ? carriedFriction.dot(tangent2) : 0;
+    block.twistImpulse[lane] = warm ? std::clamp(carriedTwist, -twistLimit, twistLimit) : 0;
 }
 // [ch10-prepare-contact]
 
@@ -200,16 +231,24 @@ void emptyLane(ManifoldBlock<N>& block, int lane) {
     setLane(block.normal, lane, Vec3::UnitY());
     setLane(block.tangent1, lane, Vec3::UnitX());
     setLane(block.tangent2, lane, Vec3::UnitZ());
+    setLane(block.centerArmA, lane, Vec3::Zero());
+    setLane(block.centerArmB, lane, Vec3::Zero());
+    block.tangentInverse11[lane] = block.tangentInverse12[lane] = block.tangentInverse22[lane] = 0;
+    block.twistMass[lane] = 0;
+    block.tangentImpulse1[lane] = block.tangentImpulse2[lane] = block.twistImpulse[lane] = 0;
     for (ManifoldPointPack<N>& p : block.point) {
         setLane(p.armA, lane, Vec3::Zero());
         setLane(p.armB, lane, Vec3::Zero());
-        p.adjustedSeparation[lane] = p.normalMass[lane] = p.tangentMass1[lane] = p.tangentMass2[lane] = 0;
-        p.normalImpulse[lane] = p.tangentImpulse1[lane] = p.tangentImpulse2[lane] = 0;
+        p.adjustedSeparation[lane] = p.normalMass[lane] = p.normalImpulse[lane] = p.twistRadius[lane] = 0;
         p.approachSpeed[lane] = p.maxNormalImpulse[lane] = 0;
     }
 }
 
 // [ch10-store]
+/// Writes the impulses back to the contact points, where every chapter keeps them (chapter 6
+/// carries them from point to point, chapter 9 shows them): the centre's friction force shared
+/// equally, plus the twist as forces around the centre, f_i = F / n + tau (n x d_i) / sum |d_i|^2,
+/// which add up to exactly F and tau again when fillLane reads them next frame.
 template <int N>
 void storeBlock(const ManifoldBlock<N>& block, World& world) {
     for (int lane = 0; lane < N; ++lane) {
@@ -220,12 +259,23 @@ void storeBlock(const ManifoldBlock<N>& block, World& world) {
         const Vec3 tangent2(block.tangent2.x[lane], block.tangent2.y[lane], block.tangent2.z[lane]);
         Vec3 basis1, basis2;
         tangentBasis(normal, basis1, basis2);
+        const Vec3 force = block.tangentImpulse1[lane] * tangent1 + block.tangentImpulse2[lane] * tangent2;
+        Vec3 middle = Vec3::Zero();
+        for (int i = 0; i < contact.pointCount; ++i)
+            middle += Real(0.5) * (contact.points[i].pointA + contact.points[i].pointB);
+        middle /= static_cast<Real>(std::max(1, contact.pointCount));
+        Real spread = 0;
+        Vec3 offsets[4];
         for (int i = 0; i < contact.pointCount; ++i) {
-            const ManifoldPointPack<N>& p = block.point[i];
+            offsets[i] = inPlane(Real(0.5) * (contact.points[i].pointA + contact.points[i].pointB) - middle, normal);
+            spread += offsets[i].squaredNorm();
+        }
+        const Real twist = spread > 0 ? block.twistImpulse[lane] / spread : 0;
+        for (int i = 0; i < contact.pointCount; ++i) {
             ContactPoint& point = contact.points[i];
-            point.normalImpulse = p.normalImpulse[lane];
-            point.normalMass = p.normalMass[lane];
-            const Vec3 friction = p.tangentImpulse1[lane] * tangent1 + p.tangentImpulse2[lane] * tangent2;
+            point.normalImpulse = block.point[i].normalImpulse[lane];
+            point.normalMass = block.point[i].normalMass[lane];
+            const Vec3 friction = force / static_cast<Real>(contact.pointCount) + twist * normal.cross(offsets[i]);
             point.tangentImpulse[0] = friction.dot(basis1);
             point.tangentImpulse[1] = friction.dot(basis2);
         }
@@ -377,8 +427,10 @@ void restitutionAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* stat
 
 template <int N>
 void resetImpulses(std::vector<ManifoldBlock<N>>& blocks) {
-    for (ManifoldBlock<N>& block : blocks)
-        for (ManifoldPointPack<N>& p : block.point) p.normalImpulse = p.tangentImpulse1 = p.tangentImpulse2 = Pack<N>::splat(0);
+    for (ManifoldBlock<N>& block : blocks) {
+        for (ManifoldPointPack<N>& p : block.point) p.normalImpulse = Pack<N>::splat(0);
+        block.tangentImpulse1 = block.tangentImpulse2 = block.twistImpulse = Pack<N>::splat(0);
+    }
 }
 
 }  // namespace
@@ -465,7 +517,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     for (const ManifoldBlock<1>& block : scratch.scalarBlocks) storeBlock(block, world);
 
     solverStats.contactPoints = stats.points;
-    solverStats.rows = 3 * stats.points;
+    solverStats.rows = stats.points + 3 * stats.manifolds;  // normal rows, and three friction rows per manifold
     world.step.solver = solverStats;
     world.step.velocitiesBeforeForces.clear();
 }

@@ -11,6 +11,8 @@
 
 #include "math/math.h"
 
+#include <cmath>
+
 #if defined(__AVX2__)
 #include <immintrin.h>
 #endif
@@ -118,6 +120,22 @@ inline Pack<N> selectPositive(const Pack<N>& test, const Pack<N>& ifPositive, co
     return r;
 }
 #endif
+/// Per lane square root (one instruction on AVX2; the friction cone's clamp needs a length).
+template <int N>
+inline Pack<N> sqrt(const Pack<N>& a) {
+#if defined(__AVX2__) && defined(STEPWISE_VECTOR_PACKS)
+    if constexpr (N * sizeof(Real) == 32) {
+        using Values = typename Pack<N>::Values;
+        if constexpr (sizeof(Real) == 4)
+            return Pack<N>{reinterpret_cast<Values>(_mm256_sqrt_ps(reinterpret_cast<__m256>(a.v)))};
+        else
+            return Pack<N>{reinterpret_cast<Values>(_mm256_sqrt_pd(reinterpret_cast<__m256d>(a.v)))};
+    }
+#endif
+    Pack<N> r;
+    for (int i = 0; i < N; ++i) r[i] = std::sqrt(a[i]);
+    return r;
+}
 /// Whether any lane holds a value below zero (a branch over the whole pack).
 template <int N>
 inline bool anyNegative(const Pack<N>& a) {

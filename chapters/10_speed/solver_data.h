@@ -49,8 +49,9 @@ template <int N>
 struct ManifoldPointPack {
     PackVec3<N> armA, armB;          // contact point minus each centre of mass, at the frame's start, m
     Pack<N> adjustedSeparation;      // separation at the frame's start minus normal . (armB - armA), m
-    Pack<N> normalMass, tangentMass1, tangentMass2;  // effective masses, kg; 0 for a missing point
-    Pack<N> normalImpulse, tangentImpulse1, tangentImpulse2;  // accumulated, N s
+    Pack<N> normalMass;              // effective mass of the normal row, kg; 0 for a missing point
+    Pack<N> normalImpulse;           // accumulated, N s
+    Pack<N> twistRadius;             // distance from the manifold's centre in the contact plane, m
     Pack<N> approachSpeed;           // normal velocity when the frame began (restitution), m/s
     Pack<N> maxNormalImpulse;        // largest this frame: restitution only where the point pushed
 };
@@ -68,6 +69,13 @@ struct ManifoldBlock {
     PackSym3<N> inverseInertiaA, inverseInertiaB;
     Pack<N> biasRate, massScale, impulseScale;  // position feedback of deep points (stabilisation)
     ManifoldPointPack<N> point[4];
+    // Friction for the whole manifold at its centre (the mean of its points): two tangent rows
+    // solved together, and a twist row about the normal. Coulomb's limits are those of the four
+    // points sliding together: |tangent impulse| <= mu sum(lambda), |twist| <= mu sum(lambda r).
+    PackVec3<N> centerArmA, centerArmB;         // centre minus each centre of mass, frame start, m
+    Pack<N> tangentInverse11, tangentInverse12, tangentInverse22;  // the 2x2 tangent block's K^-1, kg
+    Pack<N> twistMass;                          // 1 / (n . IA^-1 n + n . IB^-1 n), kg m^2
+    Pack<N> tangentImpulse1, tangentImpulse2, twistImpulse;      // accumulated, N s and N m s
     /// The inverse of the four normal rows' effective-mass matrix K (upper triangle: 00 01 02 03 11
     /// 12 13 22 23 33), K slightly regularised: a face's four corners make K singular (three
     /// independent directions, four rows), and (K + eps diag K)^-1 picks the least change of load.
