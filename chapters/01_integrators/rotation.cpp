@@ -16,29 +16,6 @@ bool solve3(const Mat3& m, const Vec3& b, Vec3& x) {
 
 }  // namespace
 
-Quat quaternionDerivative(const Quat& rotation, const Vec3& angularVelocity) {
-    const Quat spin(0, angularVelocity.x(), angularVelocity.y(), angularVelocity.z());
-    Quat derivative = spin * rotation;
-    derivative.coeffs() *= Real(0.5);
-    return derivative;
-}
-
-Quat addScaledDerivative(const Quat& rotation, const Quat& derivative, Real h) {
-    Quat result;
-    result.coeffs() = rotation.coeffs() + h * derivative.coeffs();
-    // A unit quaternion moved along its tangent leaves the unit sphere by O(h^2); projecting
-    // back keeps it a rotation. The norm is ~1, never 0, for any finite step.
-    result.normalize();
-    return result;
-}
-
-// [ch01-quaternion-update]
-Quat integrateRotation(const Quat& rotation, const Vec3& angularVelocity, Real h) {
-    // q1 = q0 + h dq/dt = q0 + h/2 (0, w) q0, then back onto the unit sphere. First order,
-    // as accurate as the Euler step around it, and cheap: no trigonometry.
-    return addScaledDerivative(rotation, quaternionDerivative(rotation, angularVelocity), h);
-}
-// [ch01-quaternion-update]
 
 // [ch01-exact-rotation]
 Quat rotateExactly(const Quat& rotation, const Vec3& angularVelocity, Real h) {

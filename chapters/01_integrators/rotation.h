@@ -8,17 +8,38 @@
 
 namespace stepwise {
 
-/// dq/dt = 1/2 (0, w) q, as quaternion coefficients (not a unit quaternion).
-Quat quaternionDerivative(const Quat& rotation, const Vec3& angularVelocity);
+// The three small steps below are defined here, inline, because chapter 10's solver calls the
+// rotation step for every body on every substep: a call across files would cost more than the step.
 
+/// dq/dt = 1/2 (0, w) q, as quaternion coefficients (not a unit quaternion).
+inline Quat quaternionDerivative(const Quat& rotation, const Vec3& angularVelocity) {
+    const Quat spin(0, angularVelocity.x(), angularVelocity.y(), angularVelocity.z());
+    Quat derivative = spin * rotation;
+    derivative.coeffs() *= Real(0.5);
+    return derivative;
+}
+
+/// q + h * derivative, renormalised.
+inline Quat addScaledDerivative(const Quat& rotation, const Quat& derivative, Real h) {
+    Quat result;
+    result.coeffs() = rotation.coeffs() + h * derivative.coeffs();
+    // A unit quaternion moved along its tangent leaves the unit sphere by O(h^2); projecting
+    // back keeps it a rotation. The norm is ~1, never 0, for any finite step.
+    result.normalize();
+    return result;
+}
+
+// [ch01-quaternion-update]
 /// One first-order step q + h/2 (0, w) q, renormalised. What semi-implicit Euler uses.
-Quat integrateRotation(const Quat& rotation, const Vec3& angularVelocity, Real h);
+inline Quat integrateRotation(const Quat& rotation, const Vec3& angularVelocity, Real h) {
+    // q1 = q0 + h dq/dt = q0 + h/2 (0, w) q0, then back onto the unit sphere. First order,
+    // as accurate as the Euler step around it, and cheap: no trigonometry.
+    return addScaledDerivative(rotation, quaternionDerivative(rotation, angularVelocity), h);
+}
+// [ch01-quaternion-update]
 
 /// The exact rotation for a constant angular velocity over h: exp(h w / 2) q.
 Quat rotateExactly(const Quat& rotation, const Vec3& angularVelocity, Real h);
-
-/// q + h * derivative, renormalised.
-Quat addScaledDerivative(const Quat& rotation, const Quat& derivative, Real h);
 
 /// Explicit gyroscopic step: w - h I^-1 (w x I w), with I and I^-1 in world axes.
 Vec3 gyroscopicStepExplicit(const Vec3& angularVelocity, const Mat3& worldInertia, const Mat3& worldInverseInertia,

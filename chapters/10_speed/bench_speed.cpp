@@ -51,6 +51,7 @@ struct Measurement {
     Real lowest = 0;        // m, lowest centre of a dynamic body (below the ground: tunnelled)
     Real maxPenetration = 0;
     int sleeping = 0;
+    FastSolveStats solvePhases;  // ms per timed frame in each phase of the fast solve
 };
 
 Real horizontalMove(const Transform& from, const Transform& to) {
@@ -67,18 +68,26 @@ void measurePoses(const World& start, const std::vector<Transform>& poses, Measu
     }
 }
 
-Measurement runEngine(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
+Measurement runEngine(const World& start, SpeedOptions options, long frames, long timedFrom) {
     World world = start;
+    options.profile = std::make_shared<FastSolveStats>();
     Pipeline pipeline = makeChapter10Pipeline(world, options);
     std::vector<double> stepMs;
     Measurement measured;
     for (long frame = 0; frame < frames; ++frame) {
+        if (frame == timedFrom) *options.profile = FastSolveStats{};
         pipeline.step(world);
         if (frame < timedFrom) continue;
         stepMs.push_back(pipeline.lastStepMs());
         for (const Stage& stage : pipeline.stages()) measured.stageMs[stageGroup(stage.name)] += stage.lastMs;
     }
-    for (auto& [group, ms] : measured.stageMs) ms /= static_cast<double>(std::max<std::size_t>(1, stepMs.size()));
+    const double timed = static_cast<double>(std::max<std::size_t>(1, stepMs.size()));
+    for (auto& [group, ms] : measured.stageMs) ms /= timed;
+    FastSolveStats& phases = measured.solvePhases;
+    phases = *options.profile;
+    for (double* ms : {&phases.prepareMs, &phases.integrateMs, &phases.warmStartMs, &phases.solveMs, &phases.relaxMs,
+                       &phases.storeMs})
+        *ms /= timed;
     measured.stepMs = spreadOf(stepMs);
     measured.frames = frames;
     std::vector<Transform> poses;
@@ -118,6 +127,7 @@ BenchEntry speedBench() {
         "ms per step and per stage on a 100-row pyramid, ten 20-row pyramids and a 2,000-body pile, each "
         "optimisation off in turn, Bullet beside it; a settled pile asleep and awake; ms against body count";
     entry.files = {{BenchFile::Kind::Csv, "", "per scene and configuration: ms per step, per stage, drift, penetration"},
+                   {BenchFile::Kind::Csv, "-profile", "chapter 10's solve phase by phase: ms per step in each"},
                    {BenchFile::Kind::Csv, "-scaling", "pyramids of growing size: ms per step against body count"},
                    {BenchFile::Kind::Plot, "", "ms per step against body count, chapter 10, scalar, Bullet"},
                    {BenchFile::Kind::Plot, "-tables", "the tables as a figure for the page"}};
@@ -140,6 +150,11 @@ BenchEntry speedBench() {
         CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
                         "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
                         "x_faster_than_peer"});
+        // [ch10-bench-profile]
+        // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
+        CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
+                          "relax_ms", "store_ms"});
+        // [ch10-bench-profile]
         const std::vector<Configuration> list = configurations(withPeer);
         bench.progress().stage("scenes x configurations", static_cast<long>(scenes.size() * list.size()));
         for (const BenchScene& scene : scenes) {
@@ -154,6 +169,10 @@ BenchEntry speedBench() {
                                                                                   frames, scene.timedFrom)});
                 bench.progress().advance();
             }
+            const FastSolveStats& phases = results.front().second.solvePhases;
+            profile.addRow({scene.name, std::to_string(phases.manifolds), std::to_string(phases.points), formatNumber(phases.prepareMs), formatNumber(phases.integrateMs),
+                            formatNumber(phases.warmStartMs), formatNumber(phases.solveMs), formatNumber(phases.relaxMs),
+                            formatNumber(phases.storeMs)});
             const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
             for (const auto& result : results) {
                 const Configuration* configuration = result.first;
@@ -228,12 +247,14 @@ BenchEntry speedBench() {
         }
         bench.progress().endStage();
 
-        out << table.toText() << "\n" << sleepTable.toText() << "\n" << scaling.toText();
+        out << table.toText() << "\n" << profile.toText() << "\n" << sleepTable.toText() << "\n" << scaling.toText();
         bench.writeCsv(table);
+        bench.writeCsv(profile, "-profile");
         bench.writeCsv(scaling, "-scaling");
         bench.writePlot(plot);
         const std::vector<FigureTable> figures = {
             {{"Ms per step and per stage, single thread, " + std::string(realTypeName()) + " build."}, &table},
+            {{"Where chapter 10's solve spends its time: ms per step in each phase."}, &profile},
             {{"A settled pile: the step with sleeping on, as a fraction of the same step awake."}, &sleepTable}};
         bench.writeTables(figures, "-tables");
     };

@@ -1,13 +1,15 @@
 #pragma once
 // Chapter 10's pipeline: chapter 9's step (chapter 8's stages), made fast where the scene allows
 // it. The solve runs on the data of solver_data.h, wide (SIMD, coloured) or scalar; the scene
-// planner (planner.h) decides per scene and the run report says why.
+// pipeline below decides per scene and the run report says why.
 
 #include "09_debug/chapter.h"
 #include "10_speed/contact_cache.h"
 #include "10_speed/contact_solver.h"
 #include "10_speed/sleep.h"
 #include "world/pipeline.h"
+
+#include <memory>
 
 namespace stepwise {
 
@@ -17,6 +19,7 @@ struct SpeedOptions {
     SolverPath solverPath = SolverPath::Wide;
     ContactCacheRule contactCache;     // enabled = false: every pair is queried every frame
     bool sleeping = true;              // with Settings::sleeping; false: never (the bench's A/B)
+    std::shared_ptr<FastSolveStats> profile;  // when set, every fast solve adds its phase times here
 };
 
 Pipeline makeChapter10Pipeline(const World& world);

@@ -172,29 +172,38 @@ inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
 // [ch10-warm-start]
 
 // [ch10-normal-block]
-/// Once per frame: the inverse of the normal rows' 4x4 effective-mass matrix,
-/// K_ij = mA + mB + (rA_i x n) . IA^-1 (rA_j x n) + (rB_i x n) . IB^-1 (rB_j x n), with a missing point's
-/// row and column those of the identity. Gauss-Jordan without pivoting: K + eps diag K is
-/// symmetric positive definite.
+/// Once per frame, after fillLane: everything about the rows that depends only on the frame's
+/// start, for all lanes at once. fillLane marks each point that exists with normalMass = 1; here
+/// it becomes the row's effective mass. The normal block is the inverse of the four normal rows'
+/// effective-mass matrix, K_ij = mA + mB + (rA_i x n) . IA^-1 (rA_j x n) + (rB_i x n) . IB^-1 (rB_j x n),
+/// with a missing point's row and column those of the identity; Gauss-Jordan without pivoting,
+/// since K + eps diag K is symmetric positive definite.
 template <int N>
-inline void prepareNormalBlock(ManifoldBlock<N>& c) {
+inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states) {
     const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
-    PackVec3<N> angularA[4], angularB[4], turnA[4], turnB[4];
-    for (int k = 0; k < 4; ++k) {
-        angularA[k] = cross(c.point[k].armA, c.normal);
-        angularB[k] = cross(c.point[k].armB, c.normal);
-        turnA[k] = c.inverseInertiaA * angularA[k];
-        turnB[k] = c.inverseInertiaB * angularB[k];
-    }
+    const BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+    const BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    const Pack<N> linearInverse = c.inverseMassA + c.inverseMassB;
     Pack<N> matrix[4][4], inverse[4][4];
+    for (int k = 0; k < 4; ++k) {
+        ManifoldPointPack<N>& p = c.point[k];
+        p.angularA = cross(p.armA, c.normal);
+        p.angularB = cross(p.armB, c.normal);
+        p.turnA = c.inverseInertiaA * p.angularA;
+        p.turnB = c.inverseInertiaB * p.angularB;
+        p.approachSpeed = selectPositive(p.normalMass, dot(c.normal, relativeVelocity(a, b, p.armA, p.armB)), zero);
+    }
     for (int i = 0; i < 4; ++i) {
         for (int j = 0; j < 4; ++j) {
-            const Pack<N> coupling = c.inverseMassA + c.inverseMassB + dot(angularA[i], turnA[j]) + dot(angularB[i], turnB[j]);
+            const ManifoldPointPack<N>& pi = c.point[i];
+            const ManifoldPointPack<N>& pj = c.point[j];
+            const Pack<N> coupling = linearInverse + dot(pi.angularA, pj.turnA) + dot(pi.angularB, pj.turnB);
             const Pack<N> identity = i == j ? one : zero;
-            const Pack<N> present = min(c.point[i].normalMass, c.point[j].normalMass);  // > 0: both points exist
+            const Pack<N> present = min(pi.normalMass, pj.normalMass);  // > 0: both points exist
             matrix[i][j] = selectPositive(present, coupling, identity);
             inverse[i][j] = identity;
         }
+        c.point[i].normalMass = selectPositive(c.point[i].normalMass, one / matrix[i][i], zero);
         matrix[i][i] = matrix[i][i] * Pack<N>::splat(1 + kNormalBlockRegularisation);
     }
     for (int column = 0; column < 4; ++column) {
@@ -215,6 +224,24 @@ inline void prepareNormalBlock(ManifoldBlock<N>& c) {
     int entry = 0;
     for (int i = 0; i < 4; ++i)
         for (int j = i; j < 4; ++j) c.normalBlockInverse[entry++] = inverse[i][j];
+
+    // The centre's two tangent rows (t1 . t2 = 0, so the linear parts do not couple) and the twist.
+    const PackVec3<N> tangentA1 = cross(c.centerArmA, c.tangent1), tangentA2 = cross(c.centerArmA, c.tangent2);
+    const PackVec3<N> tangentB1 = cross(c.centerArmB, c.tangent1), tangentB2 = cross(c.centerArmB, c.tangent2);
+    const PackVec3<N> turnA1 = c.inverseInertiaA * tangentA1, turnA2 = c.inverseInertiaA * tangentA2;
+    const PackVec3<N> turnB1 = c.inverseInertiaB * tangentB1, turnB2 = c.inverseInertiaB * tangentB2;
+    const Pack<N> k11 = linearInverse + dot(tangentA1, turnA1) + dot(tangentB1, turnB1);
+    const Pack<N> k22 = linearInverse + dot(tangentA2, turnA2) + dot(tangentB2, turnB2);
+    const Pack<N> k12 = dot(tangentA1, turnA2) + dot(tangentB1, turnB2);
+    const Pack<N> determinant = k11 * k22 - k12 * k12;
+    // A lane without a moving body (empty) has K = 0: no friction there.
+    const Pack<N> safe = selectPositive(determinant - Pack<N>::splat(Real(1e-12)) * max(one, k11 * k22), determinant, zero);
+    const Pack<N> inverseDeterminant = selectPositive(safe, one / max(safe, Pack<N>::splat(Real(1e-30))), zero);
+    c.tangentInverse11 = k22 * inverseDeterminant;
+    c.tangentInverse12 = -k12 * inverseDeterminant;
+    c.tangentInverse22 = k11 * inverseDeterminant;
+    const Pack<N> twistInverse = dot(c.normal, c.inverseInertiaA * c.normal) + dot(c.normal, c.inverseInertiaB * c.normal);
+    c.twistMass = selectPositive(twistInverse, one / max(twistInverse, Pack<N>::splat(Real(1e-30))), zero);
 }
 // [ch10-normal-block]
 
@@ -268,7 +295,10 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     const Pack<N> inverseH = Pack<N>::splat(1 / params.substep);
     const Pack<N> slop = Pack<N>::splat(params.slop);
     const Pack<N> maxPush = Pack<N>::splat(-params.maxPushOutSpeed);
-    const PackVec3<N> movedApart = b.deltaPosition - a.deltaPosition;
+    const Pack<N> movedApart = dot(c.normal, b.deltaPosition - a.deltaPosition);
+    // n . (R arm) = (R^T n) . arm: the normal turned back once per body serves all four points.
+    const PackVec3<N> normalSeenByA = rotate(conjugate(a.deltaRotation), c.normal);
+    const PackVec3<N> normalSeenByB = rotate(conjugate(b.deltaRotation), c.normal);
 
     // Each point's target, from where its two material points are now: the separation found at
     // the frame's start plus how far the bodies have moved and turned since (adjustedSeparation
@@ -276,14 +306,10 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // A gap may close by itself within the substep and no faster (speculative); a point deeper
     // than the slop is pushed out (Baumgarte or a soft spring), at most maxPushOutSpeed.
     Pack<N> bias[4], massScale[4], impulseScale[4];
-    // The normal rows' angular parts, arm x normal and I^-1 (arm x normal) on each body: fixed for
-    // the pass, so the sweeps below only take dot products and scaled adds.
-    PackVec3<N> angularA[4], angularB[4], turnA[4], turnB[4];
     for (int k = 0; k < 4; ++k) {
         const ManifoldPointPack<N>& p = c.point[k];
-        const PackVec3<N> armNowA = rotate(a.deltaRotation, p.armA);
-        const PackVec3<N> armNowB = rotate(b.deltaRotation, p.armB);
-        const Pack<N> separation = dot(c.normal, movedApart + armNowB - armNowA) + p.adjustedSeparation;
+        const Pack<N> separation =
+            movedApart + dot(normalSeenByB, p.armB) - dot(normalSeenByA, p.armA) + p.adjustedSeparation;
         bias[k] = separation * inverseH;
         massScale[k] = one;
         impulseScale[k] = zero;
@@ -297,10 +323,6 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
         } else {
             bias[k] = selectPositive(separation, bias[k], zero);
         }
-        angularA[k] = cross(p.armA, c.normal);
-        angularB[k] = cross(p.armB, c.normal);
-        turnA[k] = c.inverseInertiaA * angularA[k];
-        turnB[k] = c.inverseInertiaB * angularB[k];
     }
 
     // The four normal rows at once (Box2D solves its two-point manifolds the same way, as a block):
@@ -308,8 +330,8 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // they leave every point pushing (lambda + d >= 0) and every row rigid.
     Pack<N> target[4], increment[4];
     for (int k = 0; k < 4; ++k) {
-        const Pack<N> speed = dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(b.angularVelocity, angularB[k]) -
-                              dot(a.angularVelocity, angularA[k]) + bias[k];
+        const Pack<N> speed = dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(b.angularVelocity, c.point[k].angularB) -
+                              dot(a.angularVelocity, c.point[k].angularA) + bias[k];
         target[k] = selectPositive(c.point[k].normalMass, speed, zero);  // a missing point asks for nothing
     }
     static constexpr int kEntry[4][4] = {{0, 1, 2, 3}, {1, 4, 5, 6}, {2, 5, 7, 8}, {3, 6, 8, 9}};
@@ -331,8 +353,8 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
         p.normalImpulse = p.normalImpulse + impulse;
         p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
         pushed = pushed + impulse;
-        turnedA = turnedA + impulse * turnA[i];
-        turnedB = turnedB + impulse * turnB[i];
+        turnedA = turnedA + impulse * p.turnA;
+        turnedB = turnedB + impulse * p.turnB;
     }
     a.linearVelocity = a.linearVelocity - (c.inverseMassA * pushed) * c.normal;
     a.angularVelocity = a.angularVelocity - turnedA;
@@ -348,16 +370,16 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
                 const int i = sweep % 2 == 0 ? k : 3 - k;
                 ManifoldPointPack<N>& p = c.point[i];
                 const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
-                                            dot(b.angularVelocity, angularB[i]) - dot(a.angularVelocity, angularA[i]);
+                                            dot(b.angularVelocity, p.angularB) - dot(a.angularVelocity, p.angularA);
                 Pack<N> impulse = -(p.normalMass * massScale[i] * (normalSpeed + bias[i])) - impulseScale[i] * p.normalImpulse;
                 const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
                 impulse = accumulated - p.normalImpulse;
                 p.normalImpulse = accumulated;
                 p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
                 a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
-                a.angularVelocity = a.angularVelocity - impulse * turnA[i];
+                a.angularVelocity = a.angularVelocity - impulse * p.turnA;
                 b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
-                b.angularVelocity = b.angularVelocity + impulse * turnB[i];
+                b.angularVelocity = b.angularVelocity + impulse * p.turnB;
             }
         }
     }

@@ -10,6 +10,7 @@
 #include "10_speed/wide_solver.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace stepwise {
@@ -85,30 +86,6 @@ void setLane(PackSym3<N>& pack, int lane, const Mat3& m) {
     pack.yz[lane] = m(1, 2);
 }
 
-Vec3 velocityAt(const SolverBodyState& state, const Vec3& arm) {
-    const Vec3 linear(state.linearVelocity[0], state.linearVelocity[1], state.linearVelocity[2]);
-    const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
-    return linear + angular.cross(arm);
-}
-
-Real inverseEffectiveMass(const SolverBodyInfo& a, const SolverBodyInfo& b, const Vec3& armA, const Vec3& armB,
-                          const Vec3& direction) {
-    const Vec3 angularA = armA.cross(direction), angularB = armB.cross(direction);
-    return a.inverseMass + b.inverseMass + angularA.dot(a.inverseInertia * angularA) +
-           angularB.dot(b.inverseInertia * angularB);
-}
-
-/// The off-diagonal entry of two rows' effective-mass matrix at the same arms.
-Real crossCoupling(const SolverBodyInfo& a, const SolverBodyInfo& b, const Vec3& armA, const Vec3& armB,
-                   const Vec3& direction1, const Vec3& direction2) {
-    return (a.inverseMass + b.inverseMass) * direction1.dot(direction2) +
-           armA.cross(direction1).dot(a.inverseInertia * armA.cross(direction2)) +
-           armB.cross(direction1).dot(b.inverseInertia * armB.cross(direction2));
-}
-
-/// The part of `offset` in the contact plane.
-Vec3 inPlane(const Vec3& offset, const Vec3& normal) { return offset - normal * normal.dot(offset); }
-
 // [ch10-prepare-contact]
 /// Fills one lane of a block from a contact record: everything the substeps need, computed once.
 template <int N>
@@ -119,8 +96,6 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
     const int slotB = bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)];
     const SolverBodyInfo& infoA = bodies.info[static_cast<std::size_t>(slotA)];
     const SolverBodyInfo& infoB = bodies.info[static_cast<std::size_t>(slotB)];
-    const SolverBodyState& stateA = bodies.states[static_cast<std::size_t>(slotA)];
-    const SolverBodyState& stateB = bodies.states[static_cast<std::size_t>(slotB)];
     // A static body's centre is its origin (slot 0 has none): arms only matter for bodies that move.
     const Vec3 centerA = slotA ? infoA.startCenter : worldCenterOfMass(world, contact.bodyA);
     const Vec3 centerB = slotB ? infoB.startCenter : worldCenterOfMass(world, contact.bodyB);
@@ -144,46 +119,31 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
     block.massScale[lane] = againstStatic ? params.staticMassScale : params.dynamicMassScale;
     block.impulseScale[lane] = againstStatic ? params.staticImpulseScale : params.dynamicImpulseScale;
 
-    // One pair of friction directions for the manifold, along the sliding at its centre (chapter
-    // 4's rule, taken once per frame).
+    // The friction directions are the contact's fixed basis (tangentBasis), where every chapter
+    // stores friction impulses: the tangent rows are solved as one 2x2 block against a round cone,
+    // so no direction is special and none has to follow the sliding.
     Vec3 middle = Vec3::Zero();
     for (int i = 0; i < contact.pointCount; ++i)
         middle += Real(0.5) * (contact.points[i].pointA + contact.points[i].pointB);
     middle /= static_cast<Real>(std::max(1, contact.pointCount));
     Vec3 tangent1, tangent2;
-    frictionDirections(normal, velocityAt(stateB, middle - centerB) - velocityAt(stateA, middle - centerA), tangent1,
-                       tangent2);
+    tangentBasis(normal, tangent1, tangent2);
     setLane(block.normal, lane, normal);
     setLane(block.tangent1, lane, tangent1);
     setLane(block.tangent2, lane, tangent2);
-    Vec3 basis1, basis2;
-    tangentBasis(normal, basis1, basis2);
-
-    // The centre's friction rows: the tangents' 2x2 effective-mass matrix, inverted, and the twist's.
     const Vec3 centerArmA = middle - centerA, centerArmB = middle - centerB;
     setLane(block.centerArmA, lane, centerArmA);
     setLane(block.centerArmB, lane, centerArmB);
-    const Real k11 = inverseEffectiveMass(infoA, infoB, centerArmA, centerArmB, tangent1);
-    const Real k22 = inverseEffectiveMass(infoA, infoB, centerArmA, centerArmB, tangent2);
-    const Real k12 = crossCoupling(infoA, infoB, centerArmA, centerArmB, tangent1, tangent2);
-    const Real determinant = k11 * k22 - k12 * k12;
-    const bool invertible = determinant > Real(1e-12) * std::max(Real(1), k11 * k22);
-    block.tangentInverse11[lane] = invertible ? k22 / determinant : 0;
-    block.tangentInverse12[lane] = invertible ? -k12 / determinant : 0;
-    block.tangentInverse22[lane] = invertible ? k11 / determinant : 0;
-    const Real twistInverse = normal.dot(infoA.inverseInertia * normal) + normal.dot(infoB.inverseInertia * normal);
-    block.twistMass[lane] = twistInverse > 0 ? 1 / twistInverse : 0;
 
     const bool warm = world.settings.warmStarting;
-    Vec3 carriedFriction = Vec3::Zero();
-    Real carriedTwist = 0, carriedLoad = 0, carriedTwistLoad = 0;
+    Real carried1 = 0, carried2 = 0, carriedTwist = 0, carriedLoad = 0, carriedTwistLoad = 0;
     for (int i = 0; i < 4; ++i) {
         ManifoldPointPack<N>& p = block.point[i];
         if (i >= contact.pointCount) {  // an empty point: a zero mass gives a zero impulse
             setLane(p.armA, lane, Vec3::Zero());
             setLane(p.armB, lane, Vec3::Zero());
             p.adjustedSeparation[lane] = p.normalMass[lane] = p.normalImpulse[lane] = p.twistRadius[lane] = 0;
-            p.approachSpeed[lane] = p.maxNormalImpulse[lane] = 0;
+            p.maxNormalImpulse[lane] = p.offset1[lane] = p.offset2[lane] = 0;
             continue;
         }
         const ContactPoint& point = contact.points[i];
@@ -192,27 +152,28 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
         setLane(p.armA, lane, armA);
         setLane(p.armB, lane, armB);
         p.adjustedSeparation[lane] = -point.depth - normal.dot(armB - armA);
-        const Real normalInverse = inverseEffectiveMass(infoA, infoB, armA, armB, normal);
-        p.normalMass[lane] = normalInverse > 0 ? 1 / normalInverse : 0;
-        p.approachSpeed[lane] = normal.dot(velocityAt(stateB, armB) - velocityAt(stateA, armA));
+        p.normalMass[lane] = 1;  // a point here; prepareBlock puts the effective mass in its place
         p.maxNormalImpulse[lane] = 0;
-        const Vec3 offset = inPlane(at - middle, normal);
-        p.twistRadius[lane] = offset.norm();
+        const Real offset1 = tangent1.dot(at - middle), offset2 = tangent2.dot(at - middle);
+        const Real radius = std::sqrt(offset1 * offset1 + offset2 * offset2);
+        p.offset1[lane] = offset1;
+        p.offset2[lane] = offset2;
+        p.twistRadius[lane] = radius;
         // Last frame's impulses: the points' friction summed into the centre's force and twist.
         const Real carriedNormal = std::max(Real(0), point.normalImpulse);
-        const Vec3 pointFriction = point.tangentImpulse[0] * basis1 + point.tangentImpulse[1] * basis2;
-        carriedFriction += pointFriction;
-        carriedTwist += normal.dot(offset.cross(pointFriction));
+        carried1 += point.tangentImpulse[0];
+        carried2 += point.tangentImpulse[1];
+        carriedTwist += offset1 * point.tangentImpulse[1] - offset2 * point.tangentImpulse[0];
         carriedLoad += carriedNormal;
-        carriedTwistLoad += carriedNormal * offset.norm();
+        carriedTwistLoad += carriedNormal * radius;
         p.normalImpulse[lane] = warm ? carriedNormal : 0;
     }
     // ...kept inside this frame's friction cone and twist limit of the carried normal impulses.
-    const Real limit = friction * carriedLoad, size = carriedFriction.norm();
-    if (size > limit) carriedFriction *= size > 0 ? limit / size : Real(0);
+    const Real limit = friction * carriedLoad, size = std::sqrt(carried1 * carried1 + carried2 * carried2);
+    const Real shrink = size > limit ? (size > 0 ? limit / size : Real(0)) : Real(1);
     const Real twistLimit = friction * carriedTwistLoad;
-    block.tangentImpulse1[lane] = warm ? carriedFriction.dot(tangent1) : 0;
-    block.tangentImpulse2[lane] = warm ? carriedFriction.dot(tangent2) : 0;
+    block.tangentImpulse1[lane] = warm ? shrink * carried1 : 0;
+    block.tangentImpulse2[lane] = warm ? shrink * carried2 : 0;
     block.twistImpulse[lane] = warm ? std::clamp(carriedTwist, -twistLimit, twistLimit) : 0;
 }
 // [ch10-prepare-contact]
@@ -240,44 +201,36 @@ void emptyLane(ManifoldBlock<N>& block, int lane) {
         setLane(p.armA, lane, Vec3::Zero());
         setLane(p.armB, lane, Vec3::Zero());
         p.adjustedSeparation[lane] = p.normalMass[lane] = p.normalImpulse[lane] = p.twistRadius[lane] = 0;
-        p.approachSpeed[lane] = p.maxNormalImpulse[lane] = 0;
+        p.approachSpeed[lane] = p.maxNormalImpulse[lane] = p.offset1[lane] = p.offset2[lane] = 0;
     }
 }
 
 // [ch10-store]
 /// Writes the impulses back to the contact points, where every chapter keeps them (chapter 6
-/// carries them from point to point, chapter 9 shows them): the centre's friction force shared
-/// equally, plus the twist as forces around the centre, f_i = F / n + tau (n x d_i) / sum |d_i|^2,
-/// which add up to exactly F and tau again when fillLane reads them next frame.
+/// carries them from point to point, chapter 9 shows them): the centre's friction force F shared
+/// equally, plus the twist tau as forces around the centre, f_i = F / n + tau (n x d_i) / sum |d_i|^2
+/// with d_i the point's offset from the centre, which add up to exactly F and tau again when
+/// fillLane reads them next frame. In the tangent basis, n x d = (-d2, d1).
 template <int N>
 void storeBlock(const ManifoldBlock<N>& block, World& world) {
     for (int lane = 0; lane < N; ++lane) {
         if (block.contactIndex[lane] < 0) continue;
         Contact& contact = world.contacts[static_cast<std::size_t>(block.contactIndex[lane])];
-        const Vec3 normal = contact.normal;
-        const Vec3 tangent1(block.tangent1.x[lane], block.tangent1.y[lane], block.tangent1.z[lane]);
-        const Vec3 tangent2(block.tangent2.x[lane], block.tangent2.y[lane], block.tangent2.z[lane]);
-        Vec3 basis1, basis2;
-        tangentBasis(normal, basis1, basis2);
-        const Vec3 force = block.tangentImpulse1[lane] * tangent1 + block.tangentImpulse2[lane] * tangent2;
-        Vec3 middle = Vec3::Zero();
-        for (int i = 0; i < contact.pointCount; ++i)
-            middle += Real(0.5) * (contact.points[i].pointA + contact.points[i].pointB);
-        middle /= static_cast<Real>(std::max(1, contact.pointCount));
+        const int count = contact.pointCount;
         Real spread = 0;
-        Vec3 offsets[4];
-        for (int i = 0; i < contact.pointCount; ++i) {
-            offsets[i] = inPlane(Real(0.5) * (contact.points[i].pointA + contact.points[i].pointB) - middle, normal);
-            spread += offsets[i].squaredNorm();
-        }
+        for (int i = 0; i < count; ++i)
+            spread += block.point[i].offset1[lane] * block.point[i].offset1[lane] +
+                      block.point[i].offset2[lane] * block.point[i].offset2[lane];
         const Real twist = spread > 0 ? block.twistImpulse[lane] / spread : 0;
-        for (int i = 0; i < contact.pointCount; ++i) {
+        const Real share1 = block.tangentImpulse1[lane] / static_cast<Real>(count);
+        const Real share2 = block.tangentImpulse2[lane] / static_cast<Real>(count);
+        for (int i = 0; i < count; ++i) {
             ContactPoint& point = contact.points[i];
-            point.normalImpulse = block.point[i].normalImpulse[lane];
-            point.normalMass = block.point[i].normalMass[lane];
-            const Vec3 friction = force / static_cast<Real>(contact.pointCount) + twist * normal.cross(offsets[i]);
-            point.tangentImpulse[0] = friction.dot(basis1);
-            point.tangentImpulse[1] = friction.dot(basis2);
+            const ManifoldPointPack<N>& p = block.point[i];
+            point.normalImpulse = p.normalImpulse[lane];
+            point.normalMass = p.normalMass[lane];
+            point.tangentImpulse[0] = share1 - twist * p.offset2[lane];
+            point.tangentImpulse[1] = share2 + twist * p.offset1[lane];
         }
     }
 }
@@ -433,13 +386,34 @@ void resetImpulses(std::vector<ManifoldBlock<N>>& blocks) {
     }
 }
 
+/// Milliseconds since `start`, and `start` moved to now: one clock read per phase.
+double lap(std::chrono::steady_clock::time_point& start) {
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+    start = now;
+    return ms;
+}
+
 }  // namespace
+
+void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame) {
+    total.bodies = frame.bodies;
+    total.manifolds = frame.manifolds;
+    total.points = frame.points;
+    total.prepareMs += frame.prepareMs;
+    total.integrateMs += frame.integrateMs;
+    total.warmStartMs += frame.warmStartMs;
+    total.solveMs += frame.solveMs;
+    total.relaxMs += frame.relaxMs;
+    total.storeMs += frame.storeMs;
+}
 
 // [ch10-solve-fast]
 void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scratch) {
     if (!(dt > 0) || !std::isfinite(dt)) return;
     scratch.stats = FastSolveStats{};
     FastSolveStats& stats = scratch.stats;
+    auto clock = std::chrono::steady_clock::now();
     // Contacts found at an earlier substep of the frame (Settings::substeps > 1, collision once per
     // frame) are where their bodies were then: their points move with the bodies first.
     if (world.step.substep > 0 && world.step.contactsFoundAtSubstep < world.step.substep) followContactAnchors(world);
@@ -489,13 +463,15 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
             fillLane(scratch.scalarBlocks[i], 0, world, scratch.contactOrder[i], scratch.bodies, params);
     }
 
-    prepareWide(scratch.wideBlocks);
-    for (ManifoldBlock<1>& block : scratch.scalarBlocks) prepareNormalBlock(block);
-
     SolverBodyState* states = scratch.bodies.states.data();
+    prepareWide(scratch.wideBlocks, states);
+    for (ManifoldBlock<1>& block : scratch.scalarBlocks) prepareBlock(block, states);
+    stats.prepareMs += lap(clock);
+
     const bool warmStarting = world.settings.warmStarting;
     for (int substep = 0; substep < substeps; ++substep) {
         integrateVelocities(world, scratch.bodies, h, substep == 0);
+        stats.integrateMs += lap(clock);
         if (!warmStarting) {
             resetImpulses(scratch.wideBlocks);
             resetImpulses(scratch.scalarBlocks);
@@ -503,11 +479,15 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
             warmStartWide(scratch.wideBlocks, states);
             warmStartAll(scratch.scalarBlocks, states);
         }
+        stats.warmStartMs += lap(clock);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
         solveAll(scratch.scalarBlocks, states, params, true);
+        stats.solveMs += lap(clock);
         integratePositions(scratch.bodies, h);
+        stats.integrateMs += lap(clock);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
         solveAll(scratch.scalarBlocks, states, params, false);
+        stats.relaxMs += lap(clock);
     }
     restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
     restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
@@ -516,6 +496,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     for (const ManifoldBlock<kWideLanes>& block : scratch.wideBlocks) storeBlock(block, world);
     for (const ManifoldBlock<1>& block : scratch.scalarBlocks) storeBlock(block, world);
 
+    stats.storeMs += lap(clock);
     solverStats.contactPoints = stats.points;
     solverStats.rows = stats.points + 3 * stats.manifolds;  // normal rows, and three friction rows per manifold
     world.step.solver = solverStats;

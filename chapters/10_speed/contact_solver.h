@@ -20,7 +20,17 @@ struct FastSolveStats {
     int bodies = 0;          // moving bodies solved (awake dynamic)
     int manifolds = 0;       // contacts with at least one moving body
     int points = 0;
+    // Where the solve's time went, ms (the bench's profile of the solve stage).
+    double prepareMs = 0;    // bodies, colours, blocks and their effective masses, once per frame
+    double integrateMs = 0;  // velocities and positions, every substep
+    double warmStartMs = 0;
+    double solveMs = 0;      // the biased sweeps
+    double relaxMs = 0;      // the relax sweeps
+    double storeMs = 0;      // restitution, poses, velocities and impulses back into the World
 };
+
+/// total's phase times += frame's; the counts become frame's.
+void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame);
 
 /// The buffers a solve works in. Rebuilt from the World every frame and carrying nothing from one
 /// frame to the next (all state stays in the World); kept only so that a steady scene allocates

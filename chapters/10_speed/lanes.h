@@ -180,6 +180,11 @@ template <int N>
 struct PackQuat {
     Pack<N> x, y, z, w;
 };
+/// The inverse rotation of a unit quaternion.
+template <int N>
+inline PackQuat<N> conjugate(const PackQuat<N>& q) {
+    return {-q.x, -q.y, -q.z, q.w};
+}
 /// q v q*, as v + 2 w (u x v) + 2 u x (u x v) with u the vector part.
 template <int N>
 inline PackVec3<N> rotate(const PackQuat<N>& q, const PackVec3<N>& v) {

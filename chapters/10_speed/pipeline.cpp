@@ -25,8 +25,9 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
         // Scratch buffers only: rebuilt from the World every frame, they carry nothing between
         // frames (a copied World steps the same), and spare the allocation per step.
         auto scratch = std::make_shared<ContactSolverScratch>();
-        solve->run = [scratch, path = options.solverPath](World& stepWorld, Real dt) {
+        solve->run = [scratch, path = options.solverPath, profile = options.profile](World& stepWorld, Real dt) {
             solveFast(stepWorld, dt, path, *scratch);
+            if (profile) addPhaseTimes(*profile, scratch->stats);
         };
         pipeline.setPlanNote(stage_group::kSolve, std::string(toString(options.solverPath)) +
                                                       ": no joints, springs, dampings or kinematic bodies");

@@ -48,9 +48,12 @@ struct SolverBodies {
 template <int N>
 struct ManifoldPointPack {
     PackVec3<N> armA, armB;          // contact point minus each centre of mass, at the frame's start, m
+    PackVec3<N> angularA, angularB;  // the normal row's angular parts, arm x normal (prepareNormalBlock)
+    PackVec3<N> turnA, turnB;        // what a unit normal impulse does to each angular velocity, I^-1 (arm x n)
     Pack<N> adjustedSeparation;      // separation at the frame's start minus normal . (armB - armA), m
     Pack<N> normalMass;              // effective mass of the normal row, kg; 0 for a missing point
     Pack<N> normalImpulse;           // accumulated, N s
+    Pack<N> offset1, offset2;        // from the manifold's centre along tangent1 and tangent2, m
     Pack<N> twistRadius;             // distance from the manifold's centre in the contact plane, m
     Pack<N> approachSpeed;           // normal velocity when the frame began (restitution), m/s
     Pack<N> maxNormalImpulse;        // largest this frame: restitution only where the point pushed

@@ -4,8 +4,8 @@
 
 namespace stepwise {
 
-void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks) {
-    for (ManifoldBlock<kWideLanes>& block : blocks) prepareNormalBlock(block);
+void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states) {
+    for (ManifoldBlock<kWideLanes>& block : blocks) prepareBlock(block, states);
 }
 
 void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states) {

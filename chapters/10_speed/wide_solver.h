@@ -10,8 +10,8 @@
 
 namespace stepwise {
 
-/// Once per frame, after the blocks are filled: each block's normal-row inverse.
-void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks);
+/// Once per frame, after the blocks are filled: each block's effective masses (prepareBlock).
+void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states);
 void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states);
 void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
                bool useBias);
