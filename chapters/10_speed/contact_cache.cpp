@@ -55,11 +55,13 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
 
     // Walk the candidates and last frame's records (both sorted by pair) side by side: a record
-    // that is still good is kept here, every other pair goes to chapter 6's narrowphase.
-    const std::vector<Contact>& previous = world.contacts;
+    // that is still good is kept (refreshed where it lies), every other pair goes to chapter 6's
+    // narrowphase.
+    std::vector<Contact>& previous = world.contacts;
     scratch.kept.clear();
     scratch.keptPairs.clear();
     scratch.misses.clear();
+    scratch.missedRecords.clear();
     std::size_t next = 0;
     const int bodyCount = static_cast<int>(world.bodies.size());
     for (const BodyPair& pair : candidates) {
@@ -71,32 +73,38 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
             // was found then is still exactly right, a record or no contact at all.
             ++stats.asleep;
             if (!old) continue;
-            scratch.kept.push_back(*old);
+            scratch.kept.push_back(static_cast<int>(next));
         } else if (!rule.enabled || !valid || !old || !old->builtPoseKnown || old->pointCount <= 0 || old->missedSteps > 0) {
             scratch.misses.push_back(pair);
+            if (old) scratch.missedRecords.push_back(*old);
             continue;
         } else {
             const Transform& transformA = world.bodies[static_cast<std::size_t>(pair.bodyA)].transform;
             const Transform& transformB = world.bodies[static_cast<std::size_t>(pair.bodyB)].transform;
             if (!manifoldStillValid(*old, transformA, transformB, rule)) {
                 scratch.misses.push_back(pair);
+                scratch.missedRecords.push_back(*old);
                 continue;
             }
-            Contact carried = *old;
-            carried.normal = (transformA.rotation * old->builtLocalNormal).normalized();
+            Contact& carried = previous[next];
+            carried.normal = (transformA.rotation * carried.builtLocalNormal).normalized();
             refreshFromAnchors(carried, transformA, transformB);
             for (int i = 0; i < carried.pointCount; ++i) carried.points[i].persisted = true;
-            scratch.kept.push_back(carried);
+            scratch.kept.push_back(static_cast<int>(next));
             ++stats.reused;
         }
-        if (touching(scratch.kept.back())) scratch.keptPairs.push_back(pair);
+        if (touching(previous[next])) scratch.keptPairs.push_back(pair);
     }
     stats.rebuilt = static_cast<int>(scratch.misses.size());
     world.step.manifoldsReused = stats.reused + stats.asleep;
     world.step.manifoldsRebuilt = stats.rebuilt;
 
-    // Chapter 6 builds the rest (it reads last frame's records for matching, and rebuilds
-    // World::contacts and World::pairs from the pairs it is given).
+    // Chapter 6 builds the rest. It reads last frame's records of the pairs it is given (for
+    // matching points), so it gets only those: the full list's buffer stays here, to take the merge
+    // below, and a steady scene moves no large buffer in or out of the allocator.
+    scratch.previous.swap(world.contacts);
+    scratch.merged.swap(world.contacts);  // the buffer of the frame before last takes the result
+    world.contacts.swap(scratch.missedRecords);
     world.candidatePairs.swap(scratch.misses);  // the full list waits in scratch.misses
     updateManifolds(world, lookAhead, options);
     world.candidatePairs.swap(scratch.misses);
@@ -106,9 +114,16 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
 
     // Both lists are sorted by pair: merge them.
     scratch.merged.clear();
-    std::merge(world.contacts.begin(), world.contacts.end(), scratch.kept.begin(), scratch.kept.end(),
-               std::back_inserter(scratch.merged),
-               [](const Contact& a, const Contact& b) { return a.pair() < b.pair(); });
+    scratch.merged.reserve(world.contacts.size() + scratch.kept.size());
+    std::size_t rebuilt = 0;
+    for (const int index : scratch.kept) {
+        const Contact& carried = scratch.previous[static_cast<std::size_t>(index)];
+        while (rebuilt < world.contacts.size() && world.contacts[rebuilt].pair() < carried.pair())
+            scratch.merged.push_back(world.contacts[rebuilt++]);
+        scratch.merged.push_back(carried);
+    }
+    scratch.merged.insert(scratch.merged.end(), world.contacts.begin() + static_cast<std::ptrdiff_t>(rebuilt),
+                          world.contacts.end());
     world.contacts.swap(scratch.merged);
     scratch.mergedPairs.clear();
     std::merge(world.pairs.begin(), world.pairs.end(), scratch.keptPairs.begin(), scratch.keptPairs.end(),

@@ -28,7 +28,8 @@ struct ContactCacheStats {
 /// Buffers reused from frame to frame; nothing in them outlives a call.
 struct ContactCacheScratch {
     std::vector<BodyPair> candidates, misses;
-    std::vector<Contact> previous, kept, merged;
+    std::vector<int> kept;                        // indices into last frame's records
+    std::vector<Contact> previous, missedRecords, merged;
     std::vector<BodyPair> keptPairs, mergedPairs;
 };
 
