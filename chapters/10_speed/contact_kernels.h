@@ -55,6 +55,23 @@ inline void scatterVelocities(SolverBodyState* states, const int* slots, const B
         s.angularVelocity[2] = body.angularVelocity.z[i];
     }
 }
+
+/// Writes every field back (the integration's scatter); slot 0 is skipped as above.
+template <int N>
+inline void scatterBodies(SolverBodyState* states, const int* slots, const BodyPack<N>& body) {
+    scatterVelocities(states, slots, body);
+    for (int i = 0; i < N; ++i) {
+        if (slots[i] == 0) continue;
+        SolverBodyState& s = states[slots[i]];
+        s.deltaPosition[0] = body.deltaPosition.x[i];
+        s.deltaPosition[1] = body.deltaPosition.y[i];
+        s.deltaPosition[2] = body.deltaPosition.z[i];
+        s.deltaRotation[0] = body.deltaRotation.x[i];
+        s.deltaRotation[1] = body.deltaRotation.y[i];
+        s.deltaRotation[2] = body.deltaRotation.z[i];
+        s.deltaRotation[3] = body.deltaRotation.w[i];
+    }
+}
 // [ch10-body-pack]
 
 #if defined(__AVX2__) && !defined(STEPWISE_DOUBLE)
@@ -113,6 +130,25 @@ inline void scatterEight(SolverBodyState* states, const int* slots, int first, c
 }
 
 template <>
+inline void scatterBodies<8>(SolverBodyState* states, const int* slots, const BodyPack<8>& body) {
+    const __m256 zero = _mm256_setzero_ps();
+    __m256 low[8] = {_mm256_load_ps(body.linearVelocity.x.data()),  _mm256_load_ps(body.linearVelocity.y.data()),
+                     _mm256_load_ps(body.linearVelocity.z.data()),  _mm256_load_ps(body.angularVelocity.x.data()),
+                     _mm256_load_ps(body.angularVelocity.y.data()), _mm256_load_ps(body.angularVelocity.z.data()),
+                     _mm256_load_ps(body.deltaPosition.x.data()),   _mm256_load_ps(body.deltaPosition.y.data())};
+    __m256 high[8] = {_mm256_load_ps(body.deltaPosition.z.data()), _mm256_load_ps(body.deltaRotation.x.data()),
+                      _mm256_load_ps(body.deltaRotation.y.data()), _mm256_load_ps(body.deltaRotation.z.data()),
+                      _mm256_load_ps(body.deltaRotation.w.data()), zero, zero, zero};
+    transpose8(low);
+    transpose8(high);
+    for (int i = 0; i < 8; ++i) {
+        if (slots[i] == 0) continue;
+        _mm256_store_ps(states[slots[i]].linearVelocity, low[i]);
+        _mm256_store_ps(states[slots[i]].linearVelocity + 8, high[i]);
+    }
+}
+
+template <>
 inline BodyPack<8> gatherBodies<8>(const SolverBodyState* states, const int* slots) {
     BodyPack<8> body;
     gatherEight(states, slots, 0, body);
@@ -141,6 +177,31 @@ inline PackVec3<N> relativeVelocity(const BodyPack<N>& a, const BodyPack<N>& b, 
                                     const PackVec3<N>& armB) {
     return (b.linearVelocity + cross(b.angularVelocity, armB)) - (a.linearVelocity + cross(a.angularVelocity, armA));
 }
+
+// [ch10-integrate-positions]
+/// Chapter 1's position step for N bodies at once: the centre moves by h v, the rotation since
+/// the frame began by q + h/2 (0, w) q, renormalised (integrateRotation, lane by lane).
+template <int N>
+inline void integratePositionsPack(SolverBodyState* states, const int* slots, Real h) {
+    BodyPack<N> body = gatherBodies<N>(states, slots);
+    const Pack<N> step = Pack<N>::splat(h), half = Pack<N>::splat(Real(0.5));
+    body.deltaPosition = body.deltaPosition + step * body.linearVelocity;
+    PackQuat<N>& q = body.deltaRotation;
+    const PackVec3<N>& w = body.angularVelocity;
+    const PackVec3<N> turning = half * (q.w * w + cross(w, PackVec3<N>{q.x, q.y, q.z}));
+    const Pack<N> turningW = half * -dot(w, PackVec3<N>{q.x, q.y, q.z});
+    q.x = q.x + step * turning.x;
+    q.y = q.y + step * turning.y;
+    q.z = q.z + step * turning.z;
+    q.w = q.w + step * turningW;
+    const Pack<N> length = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    q.x = q.x / length;
+    q.y = q.y / length;
+    q.z = q.z / length;
+    q.w = q.w / length;
+    scatterBodies(states, slots, body);
+}
+// [ch10-integrate-positions]
 
 // [ch10-warm-start]
 /// Pushes the bodies by the impulses the manifold carries (from last frame, then from each

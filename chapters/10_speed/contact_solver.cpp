@@ -287,20 +287,10 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
     }
 }
 
-void integratePositions(SolverBodies& bodies, Real h) {
-    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
-        SolverBodyState& state = bodies.states[slot];
-        for (int k = 0; k < 3; ++k) state.deltaPosition[k] += h * state.linearVelocity[k];
-        const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
-        const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
-        // Chapter 1's rotation step on the rotation since the frame began: q = dq q0 changes by
-        // h/2 (0, w) dq q0, so integrating dq is integrating q.
-        const Quat turned = integrateRotation(delta, angular, h);
-        state.deltaRotation[0] = turned.x();
-        state.deltaRotation[1] = turned.y();
-        state.deltaRotation[2] = turned.z();
-        state.deltaRotation[3] = turned.w();
-    }
+void integratePositions(SolverBodies& bodies, Real h, SolverPath path) {
+    const int count = static_cast<int>(bodies.states.size());
+    if (path == SolverPath::Wide) return integratePositionsWide(bodies.states.data(), count, h);
+    for (int slot = 1; slot < count; ++slot) integratePositionsPack<1>(bodies.states.data(), &slot, h);
 }
 
 void writeBodiesBack(World& world, const SolverBodies& bodies) {
@@ -483,7 +473,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
         solveAll(scratch.scalarBlocks, states, params, true);
         stats.solveMs += lap(clock);
-        integratePositions(scratch.bodies, h);
+        integratePositions(scratch.bodies, h, path);
         stats.integrateMs += lap(clock);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
         solveAll(scratch.scalarBlocks, states, params, false);

@@ -21,6 +21,16 @@ void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyS
     for (ManifoldBlock<kWideLanes>& block : blocks) restitutionBlock(block, states, threshold);
 }
 
+void integratePositionsWide(SolverBodyState* states, int count, Real h) {
+    int slot = 1;  // slot 0 never moves
+    int slots[kWideLanes];
+    for (; slot + kWideLanes <= count; slot += kWideLanes) {
+        for (int lane = 0; lane < kWideLanes; ++lane) slots[lane] = slot + lane;
+        integratePositionsPack<kWideLanes>(states, slots, h);
+    }
+    for (; slot < count; ++slot) integratePositionsPack<1>(states, &slot, h);
+}
+
 const char* wideInstructionSet() {
 #if defined(__AVX2__)
     return "avx2";

@@ -17,6 +17,9 @@ void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* 
                bool useBias);
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold);
 
+/// Chapter 1's position step for slots 1 to count - 1, kWideLanes bodies at a time.
+void integratePositionsWide(SolverBodyState* states, int count, Real h);
+
 /// The instruction set the wide file was built for: "avx2" or "portable".
 const char* wideInstructionSet();
 
