@@ -23,8 +23,12 @@ std::string broadphaseReason(const World& world) {
 
 // [ch05-sweep-and-prune]
 void sweepAndPrune(World& world, SortMode sortMode) {
+    computeBroadphaseBounds(world, world.broadphase.bounds, world.broadphase.dynamic);
+    sweepBounds(world, sortMode);
+}
+
+void sweepBounds(World& world, SortMode sortMode) {
     BroadphaseState& state = world.broadphase;
-    computeBroadphaseBounds(world, state.bounds, state.dynamic);
     state.centreVariance = centreVariance(state.bounds);
     const int axis = chooseSweepAxis(state.centreVariance, state.axis);
 

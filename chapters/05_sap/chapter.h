@@ -33,6 +33,10 @@ std::string broadphaseReason(const World& world);
 /// world.candidatePairs (canonical order).
 void sweepAndPrune(World& world, SortMode sortMode = SortMode::Incremental);
 
+/// The sweep alone, on the boxes already in world.broadphase.bounds and .dynamic (chapter 10 sweeps
+/// boxes it has grown).
+void sweepBounds(World& world, SortMode sortMode = SortMode::Incremental);
+
 /// All pairs, against the same bounds: the same candidate pairs, at O(n^2).
 void bruteForceBroadphase(World& world);
 

@@ -6,6 +6,7 @@
 #include "09_debug/chapter.h"
 #include "10_speed/contact_cache.h"
 #include "10_speed/contact_solver.h"
+#include "10_speed/enlarged_bounds.h"
 #include "10_speed/sleep.h"
 #include "world/pipeline.h"
 
@@ -19,6 +20,7 @@ struct SpeedOptions {
     SolverPath solverPath = SolverPath::Wide;
     ContactCacheRule contactCache;     // enabled = false: every pair is queried every frame
     bool sleeping = true;              // with Settings::sleeping; false: never (the bench's A/B)
+    bool enlargedBounds = true;        // sweep only when a body leaves its grown box; false: every step
     std::shared_ptr<FastSolveStats> profile;  // when set, every fast solve adds its phase times here
 };
 

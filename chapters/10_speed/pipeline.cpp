@@ -10,6 +10,15 @@ Pipeline makeChapter10Pipeline(const World& world) { return makeChapter10Pipelin
 // [ch10-pipeline]
 Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) {
     Pipeline pipeline = makeChapter08Pipeline(world);
+    if (Stage* broadphase = pipeline.find(stage_group::kBroadphase); broadphase && options.enlargedBounds) {
+        // Same pairs as chapter 5's sweep, which runs only when a body has left its grown box.
+        broadphase->run = [sweep = broadphase->run](World& stepWorld, Real dt) {
+            if (chooseBroadphase(stepWorld) == BroadphaseMode::Sap)
+                sweepAndPruneEnlarged(stepWorld);
+            else
+                sweep(stepWorld, dt);
+        };
+    }
     std::string why;
     // Sleepers are skipped by the fast solve only: chapter 8's would still integrate them.
     const char* noSleep = "off: sleepers are skipped by the fast solve only, and chapter 8's solves this scene";

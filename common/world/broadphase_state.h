@@ -47,6 +47,12 @@ struct BroadphaseState {
     std::vector<Aabb> bounds;               // this step's bounds, one per body, grown by the motion
     std::vector<char> dynamic;              // this step's body types, one per body: 1 for dynamic
     BroadphaseBuffers buffers;              // working memory, no state (see BroadphaseBuffers)
+    // Chapter 10: the boxes of the last sweep, each grown by a margin, and the pairs the sweep found
+    // among them. While every body's box stays inside its grown one, those pairs, kept where this
+    // step's boxes overlap, are exactly the pairs a new sweep would find.
+    std::vector<Aabb> enlargedBounds;
+    std::vector<char> enlargedDynamic;
+    std::vector<BodyPair> enlargedPairs;
 
     // What the last run did: for tests, the demo panel and the run report.
     BroadphaseMode used = BroadphaseMode::Auto;  // Sap or Brute once a broadphase ran; Auto: none ran
@@ -55,6 +61,7 @@ struct BroadphaseState {
     bool fullSort = false;                  // the last sweep sorted from scratch
     long sortMoves = 0;                     // endpoints the insertion sort moved past another
     long axisOverlaps = 0;                  // pairs whose intervals overlap on the sweep axis
+    bool sweepSkipped = false;              // chapter 10: no box left its grown box, no sweep ran
 };
 
 }  // namespace stepwise
