@@ -45,7 +45,7 @@ std::size_t worldBytes(const World& world) {
     bytes += vectorBytes(world.bodies) + vectorBytes(world.motions) + vectorBytes(world.springs) +
              vectorBytes(world.dampings) + vectorBytes(world.joints) + vectorBytes(world.jointImpulses) +
              vectorBytes(world.kinematicPaths) + vectorBytes(world.candidatePairs) + vectorBytes(world.pairs) +
-             vectorBytes(world.contacts);
+             vectorBytes(world.contacts) + vectorBytes(world.pairGaps);
     const StepState& step = world.step;
     bytes += vectorBytes(step.velocitiesBeforeForces) + vectorBytes(step.ccd.sweepStart) +
              vectorBytes(step.ccd.ghostBodies) + vectorBytes(step.ccd.ghostPoses) + vectorBytes(step.ccd.sweptBounds);
@@ -55,7 +55,8 @@ std::size_t worldBytes(const World& world) {
              vectorBytes(columns.low) + vectorBytes(columns.high) + vectorBytes(columns.lowA) +
              vectorBytes(columns.highA) + vectorBytes(columns.lowB) + vectorBytes(columns.highB) +
              vectorBytes(columns.body) + vectorBytes(columns.dynamic) + vectorBytes(broadphase.buffers.pairs) +
-             vectorBytes(broadphase.buffers.pairStarts);
+             vectorBytes(broadphase.buffers.pairStarts) + vectorBytes(broadphase.enlargedBounds) +
+             vectorBytes(broadphase.enlargedDynamic) + vectorBytes(broadphase.enlargedPairs);
     return bytes;
 }
 

@@ -1,5 +1,7 @@
 #include "10_speed/contact_cache.h"
 
+#include "03_epa/chapter.h"
+#include "03_epa/narrowphase.h"
 #include "06_manifolds/persistence.h"
 
 #include <algorithm>
@@ -37,6 +39,19 @@ bool manifoldStillValid(const Contact& contact, const Transform& transformA, con
 }
 // [ch10-cache-rule]
 
+// [ch10-pair-gap]
+bool stillApart(const PairGap& gap, const Transform& transformA, const Transform& transformB, Real keepDistance) {
+    const Quat inverseA = transformA.rotation.conjugate();
+    const Vec3 relativePosition = inverseA * (transformB.position - transformA.position);
+    const Quat relativeRotation = inverseA * transformB.rotation;
+    const Real cosHalfAngle = std::min(Real(1), std::abs(relativeRotation.coeffs().dot(gap.builtRelativeRotation.coeffs())));
+    const Real turned = 2 * std::acos(cosHalfAngle);
+    const Real closing = (relativePosition - gap.builtRelativePosition).norm() + turned * gap.radiusB;
+    const Real gjkAllowance = Real(0.001);
+    return gap.gap - closing - gjkAllowance >= keepDistance;
+}
+// [ch10-pair-gap]
+
 void markBuiltPose(Contact& contact, const Transform& transformA, const Transform& transformB) {
     const Quat inverseA = transformA.rotation.conjugate();
     contact.builtPoseKnown = contact.pointCount > 0 && contact.missedSteps == 0;
@@ -62,7 +77,8 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
     scratch.keptPairs.clear();
     scratch.misses.clear();
     scratch.missedRecords.clear();
-    std::size_t next = 0;
+    scratch.gaps.clear();
+    std::size_t next = 0, nextGap = 0;
     const int bodyCount = static_cast<int>(world.bodies.size());
     for (const BodyPair& pair : candidates) {
         while (next < previous.size() && previous[next].pair() < pair) ++next;
@@ -74,6 +90,39 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
             ++stats.asleep;
             if (!old) continue;
             scratch.kept.push_back(static_cast<int>(next));
+        } else if (rule.enabled && valid && !old) {
+            // No record: the pair was apart (or is new). Known apart and unable to have closed the
+            // gap: nothing to do. Otherwise measure the distance as chapter 6 would, and keep the
+            // pair for chapter 6 only if it is close enough for a contact.
+            const Body& bodyA = world.bodies[static_cast<std::size_t>(pair.bodyA)];
+            const Body& bodyB = world.bodies[static_cast<std::size_t>(pair.bodyB)];
+            if (!canCollide(bodyA, bodyB)) continue;
+            while (nextGap < world.pairGaps.size() && world.pairGaps[nextGap].pair < pair) ++nextGap;
+            const PairGap* known =
+                nextGap < world.pairGaps.size() && world.pairGaps[nextGap].pair == pair ? &world.pairGaps[nextGap] : nullptr;
+            const Real keepDistance = manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead) + pointSlack(world);
+            if (known && stillApart(*known, bodyA.transform, bodyB.transform, keepDistance)) {
+                scratch.gaps.push_back(*known);
+                ++stats.apart;
+                continue;
+            }
+            CollideOptions collide;
+            collide.separationDistance = true;
+            const ContactQuery query = collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide);
+            ++stats.measured;
+            if (query.routine != std::string("invalid") && !query.intersect && -query.depth >= keepDistance) {
+                const Quat inverseA = bodyA.transform.rotation.conjugate();
+                PairGap gap;
+                gap.pair = pair;
+                gap.gap = -query.depth;
+                gap.radiusB = boundingRadius(bodyB.shape);
+                gap.builtRelativePosition = inverseA * (bodyB.transform.position - bodyA.transform.position);
+                gap.builtRelativeRotation = inverseA * bodyB.transform.rotation;
+                scratch.gaps.push_back(gap);
+                continue;
+            }
+            scratch.misses.push_back(pair);
+            continue;
         } else if (!rule.enabled || !valid || !old || !old->builtPoseKnown || old->pointCount <= 0 || old->missedSteps > 0) {
             scratch.misses.push_back(pair);
             if (old) scratch.missedRecords.push_back(*old);
@@ -95,6 +144,7 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
         }
         if (touching(previous[next])) scratch.keptPairs.push_back(pair);
     }
+    world.pairGaps.swap(scratch.gaps);
     stats.rebuilt = static_cast<int>(scratch.misses.size());
     world.step.manifoldsReused = stats.reused + stats.asleep;
     world.step.manifoldsRebuilt = stats.rebuilt;

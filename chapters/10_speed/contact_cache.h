@@ -3,7 +3,8 @@
 // moved. A pair whose relative pose changed less than a small tolerance since its manifold was
 // built keeps the manifold: its points ride on their bodies (anchors), the normal turns with body
 // A, and no GJK, EPA or clipping runs (Jolt's body-pair cache: 1 mm and 2 degrees). A pair of two
-// sleeping (or static) bodies keeps its record untouched.
+// sleeping (or static) bodies keeps its record untouched. A pair without a record is asked for
+// its distance once, and not again while it cannot have closed it (PairGap).
 
 #include "06_manifolds/manifold.h"
 #include "world/world.h"
@@ -23,13 +24,21 @@ struct ContactCacheStats {
     int reused = 0;     // manifolds carried on their anchors
     int rebuilt = 0;    // pairs sent to chapter 6's narrowphase
     int asleep = 0;     // pairs of sleeping or static bodies, kept as they were
+    int apart = 0;      // pairs known apart (World::pairGaps), not queried
+    int measured = 0;   // pairs without a record whose distance was measured here
 };
+
+/// Whether a pair found `gap.gap` apart is still farther apart than `keepDistance`: B's points
+/// have moved in A's frame by at most |change of B's origin| + (angle turned) x radiusB, and the
+/// gap shrinks by no more than that (less a 1 mm allowance for GJK's tolerance).
+bool stillApart(const PairGap& gap, const Transform& transformA, const Transform& transformB, Real keepDistance);
 
 /// Buffers reused from frame to frame; nothing in them outlives a call.
 struct ContactCacheScratch {
     std::vector<BodyPair> candidates, misses;
     std::vector<int> kept;                        // indices into last frame's records
     std::vector<Contact> previous, missedRecords, merged;
+    std::vector<PairGap> gaps;
     std::vector<BodyPair> keptPairs, mergedPairs;
 };
 

@@ -82,6 +82,17 @@ struct Contact {
     BodyPair pair() const { return BodyPair{bodyA, bodyB}; }
 };
 
+/// Chapter 10: a candidate pair found apart (no record in World::contacts), and where B stood in
+/// A's frame then. Until B has moved, in A's frame, by more than the gap minus what the pair may
+/// close this frame, the shapes cannot be close enough for a contact and are not queried again.
+struct PairGap {
+    BodyPair pair;
+    Real gap = 0;                                  // distance between the shapes, m
+    Real radiusB = 0;                              // B's bounding radius about its origin, m
+    Vec3 builtRelativePosition = Vec3::Zero();     // B's origin in A's frame
+    Quat builtRelativeRotation = Quat::Identity(); // B's rotation in A's frame
+};
+
 /// The two friction directions of a contact, from its normal alone: t1 = anyPerpendicular(n),
 /// t2 = n x t1. The same normal always gives the same basis, so a friction impulse stored in it
 /// means the same thing next step.

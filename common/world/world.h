@@ -120,6 +120,7 @@ struct World {
     std::vector<BodyPair> candidatePairs;
     std::vector<BodyPair> pairs;
     std::vector<Contact> contacts;
+    std::vector<PairGap> pairGaps;       // chapter 10: candidate pairs known apart, sorted by pair
     BroadphaseState broadphase;          // what the broadphase keeps between steps (chapter 5)
 
     StepState step;                      // what stages hand each other, and what they measured
