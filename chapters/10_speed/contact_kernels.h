@@ -389,28 +389,57 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // The four normal rows at once (Box2D solves its two-point manifolds the same way, as a block):
     // the increments d that make every row's speed its target, d = -K^-1 (J v + bias), kept where
     // they leave every point pushing (lambda + d >= 0) and every row rigid.
-    Pack<N> target[4], increment[4];
+    Pack<N> target[4], increment[4];  // target: each row's speed plus bias; increment: the block's change
     for (int k = 0; k < 4; ++k) {
         const Pack<N> speed = dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(b.angularVelocity, c.point[k].angularB) -
                               dot(a.angularVelocity, c.point[k].angularA) + bias[k];
         target[k] = selectPositive(c.point[k].normalMass, speed, zero);  // a missing point asks for nothing
     }
     static constexpr int kEntry[4][4] = {{0, 1, 2, 3}, {1, 4, 5, 6}, {2, 5, 7, 8}, {3, 6, 8, 9}};
-    Pack<N> leastLoad = Pack<N>::splat(0), softness = Pack<N>::splat(0);
+    Pack<N> total[4], leastLoad = zero, softness = zero;
     for (int i = 0; i < 4; ++i) {
         increment[i] = -(c.normalBlockInverse[kEntry[i][0]] * target[0] + c.normalBlockInverse[kEntry[i][1]] * target[1] +
                          c.normalBlockInverse[kEntry[i][2]] * target[2] + c.normalBlockInverse[kEntry[i][3]] * target[3]);
-        leastLoad = min(leastLoad, c.point[i].normalImpulse + increment[i]);
+        total[i] = c.point[i].normalImpulse + increment[i];
+        leastLoad = min(leastLoad, total[i]);
         softness = max(softness, impulseScale[i]);
     }
-    // Lanes where the block does not apply take no increment here, and the sweeps below serve them.
-    const Pack<N> blockFails = selectNonNegative(leastLoad, selectPositive(softness, one, zero), one);
-    const Pack<N> useBlock = one - blockFails;
+    const Pack<N> rigid = selectPositive(softness, zero, one);
+    const Pack<N> useBlock = selectNonNegative(leastLoad, rigid, zero);
+
+    // Where one corner would pull, let it go: its impulse becomes zero and the other rows still
+    // meet their targets. With M = K^-1 that is d + s M e_j, s = -(lambda_j + d_j) / M_jj, exact
+    // when s >= 0 (the corner then separates) and the others still push. j is the corner that
+    // pulls hardest.
+    Pack<N> worst = total[0], column[4], chosen[4];
+    for (int i = 0; i < 4; ++i) {
+        column[i] = c.normalBlockInverse[kEntry[i][0]];
+        chosen[i] = i == 0 ? one : zero;
+    }
+    for (int j = 1; j < 4; ++j) {
+        const Pack<N> worse = worst - total[j];  // > 0: corner j pulls harder
+        for (int i = 0; i < 4; ++i) {
+            column[i] = selectPositive(worse, c.normalBlockInverse[kEntry[i][j]], column[i]);
+            chosen[i] = selectPositive(worse, i == j ? one : zero, chosen[i]);
+        }
+        worst = min(worst, total[j]);
+    }
+    Pack<N> pivot = zero;  // M_jj
+    for (int i = 0; i < 4; ++i) pivot = pivot + chosen[i] * column[i];
+    const Pack<N> release = -worst / max(pivot, Pack<N>::splat(Real(1e-30)));
+    Pack<N> dropped[4], leastDropped = zero;
+    for (int i = 0; i < 4; ++i) {
+        dropped[i] = selectPositive(chosen[i], -c.point[i].normalImpulse, increment[i] + release * column[i]);
+        leastDropped = min(leastDropped, selectPositive(chosen[i], zero, c.point[i].normalImpulse + dropped[i]));
+    }
+    const Pack<N> useDropped = (one - useBlock) * selectNonNegative(leastDropped, selectNonNegative(release, rigid, zero), zero);
+    const Pack<N> blockFails = one - useBlock - useDropped;
+
     Pack<N> pushed = zero;
     PackVec3<N> turnedA{zero, zero, zero}, turnedB{zero, zero, zero};
     for (int i = 0; i < 4; ++i) {
         ManifoldPointPack<N>& p = c.point[i];
-        const Pack<N> impulse = increment[i] * useBlock;
+        const Pack<N> impulse = increment[i] * useBlock + dropped[i] * useDropped;
         p.normalImpulse = p.normalImpulse + impulse;
         p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
         pushed = pushed + impulse;
