@@ -203,6 +203,17 @@ inline void integratePositionsPack(SolverBodyState* states, const int* slots, Re
 }
 // [ch10-integrate-positions]
 
+/// The centre's tangent impulses on both bodies, through the angular parts prepareBlock computed.
+template <int N>
+inline void applyFriction(const ManifoldBlock<N>& c, const Pack<N>& impulse1, const Pack<N>& impulse2, BodyPack<N>& a,
+                          BodyPack<N>& b) {
+    const PackVec3<N> impulse = impulse1 * c.tangent1 + impulse2 * c.tangent2;
+    a.linearVelocity = a.linearVelocity - c.inverseMassA * impulse;
+    b.linearVelocity = b.linearVelocity + c.inverseMassB * impulse;
+    a.angularVelocity = a.angularVelocity - (impulse1 * c.frictionTurnA[0] + impulse2 * c.frictionTurnA[1]);
+    b.angularVelocity = b.angularVelocity + (impulse1 * c.frictionTurnB[0] + impulse2 * c.frictionTurnB[1]);
+}
+
 // [ch10-warm-start]
 /// Pushes the bodies by the impulses the manifold carries (from last frame, then from each
 /// substep): every substep starts from the whole accumulated impulse, as Box3D does. The normal
@@ -224,9 +235,9 @@ inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
     a.angularVelocity = a.angularVelocity - c.inverseInertiaA * cross(leverA, c.normal);
     b.linearVelocity = b.linearVelocity + (c.inverseMassB * pushed) * c.normal;
     b.angularVelocity = b.angularVelocity + c.inverseInertiaB * cross(leverB, c.normal);
-    applyImpulse(c, c.centerArmA, c.centerArmB, c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2, a, b);
-    a.angularVelocity = a.angularVelocity - c.twistImpulse * (c.inverseInertiaA * c.normal);
-    b.angularVelocity = b.angularVelocity + c.twistImpulse * (c.inverseInertiaB * c.normal);
+    applyFriction(c, c.tangentImpulse1, c.tangentImpulse2, a, b);
+    a.angularVelocity = a.angularVelocity - c.twistImpulse * c.twistTurnA;
+    b.angularVelocity = b.angularVelocity + c.twistImpulse * c.twistTurnB;
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
 }
@@ -287,10 +298,14 @@ inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states) {
         for (int j = i; j < 4; ++j) c.normalBlockInverse[entry++] = inverse[i][j];
 
     // The centre's two tangent rows (t1 . t2 = 0, so the linear parts do not couple) and the twist.
-    const PackVec3<N> tangentA1 = cross(c.centerArmA, c.tangent1), tangentA2 = cross(c.centerArmA, c.tangent2);
-    const PackVec3<N> tangentB1 = cross(c.centerArmB, c.tangent1), tangentB2 = cross(c.centerArmB, c.tangent2);
-    const PackVec3<N> turnA1 = c.inverseInertiaA * tangentA1, turnA2 = c.inverseInertiaA * tangentA2;
-    const PackVec3<N> turnB1 = c.inverseInertiaB * tangentB1, turnB2 = c.inverseInertiaB * tangentB2;
+    const PackVec3<N> tangentA1 = c.frictionAngularA[0] = cross(c.centerArmA, c.tangent1);
+    const PackVec3<N> tangentA2 = c.frictionAngularA[1] = cross(c.centerArmA, c.tangent2);
+    const PackVec3<N> tangentB1 = c.frictionAngularB[0] = cross(c.centerArmB, c.tangent1);
+    const PackVec3<N> tangentB2 = c.frictionAngularB[1] = cross(c.centerArmB, c.tangent2);
+    const PackVec3<N> turnA1 = c.frictionTurnA[0] = c.inverseInertiaA * tangentA1;
+    const PackVec3<N> turnA2 = c.frictionTurnA[1] = c.inverseInertiaA * tangentA2;
+    const PackVec3<N> turnB1 = c.frictionTurnB[0] = c.inverseInertiaB * tangentB1;
+    const PackVec3<N> turnB2 = c.frictionTurnB[1] = c.inverseInertiaB * tangentB2;
     const Pack<N> k11 = linearInverse + dot(tangentA1, turnA1) + dot(tangentB1, turnB1);
     const Pack<N> k22 = linearInverse + dot(tangentA2, turnA2) + dot(tangentB2, turnB2);
     const Pack<N> k12 = dot(tangentA1, turnA2) + dot(tangentB1, turnB2);
@@ -301,7 +316,9 @@ inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states) {
     c.tangentInverse11 = k22 * inverseDeterminant;
     c.tangentInverse12 = -k12 * inverseDeterminant;
     c.tangentInverse22 = k11 * inverseDeterminant;
-    const Pack<N> twistInverse = dot(c.normal, c.inverseInertiaA * c.normal) + dot(c.normal, c.inverseInertiaB * c.normal);
+    c.twistTurnA = c.inverseInertiaA * c.normal;
+    c.twistTurnB = c.inverseInertiaB * c.normal;
+    const Pack<N> twistInverse = dot(c.normal, c.twistTurnA) + dot(c.normal, c.twistTurnB);
     c.twistMass = selectPositive(twistInverse, one / max(twistInverse, Pack<N>::splat(Real(1e-30))), zero);
 }
 // [ch10-normal-block]
@@ -319,8 +336,11 @@ inline void solveFriction(ManifoldBlock<N>& c, BodyPack<N>& a, BodyPack<N>& b) {
         load = load + p.normalImpulse;
         twistLoad = twistLoad + p.normalImpulse * p.twistRadius;
     }
-    const PackVec3<N> slide = relativeVelocity(a, b, c.centerArmA, c.centerArmB);
-    const Pack<N> slide1 = dot(c.tangent1, slide), slide2 = dot(c.tangent2, slide);
+    const PackVec3<N> apart = b.linearVelocity - a.linearVelocity;
+    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, c.frictionAngularB[0]) -
+                           dot(a.angularVelocity, c.frictionAngularA[0]);
+    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, c.frictionAngularB[1]) -
+                           dot(a.angularVelocity, c.frictionAngularA[1]);
     Pack<N> total1 = c.tangentImpulse1 - (c.tangentInverse11 * slide1 + c.tangentInverse12 * slide2);
     Pack<N> total2 = c.tangentImpulse2 - (c.tangentInverse12 * slide1 + c.tangentInverse22 * slide2);
     const Pack<N> limit = c.friction * load;
@@ -329,18 +349,18 @@ inline void solveFriction(ManifoldBlock<N>& c, BodyPack<N>& a, BodyPack<N>& b) {
         selectPositive(lengthSquared - limit * limit, limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), one);
     total1 = total1 * scale;
     total2 = total2 * scale;
-    const PackVec3<N> impulse = (total1 - c.tangentImpulse1) * c.tangent1 + (total2 - c.tangentImpulse2) * c.tangent2;
+    const Pack<N> change1 = total1 - c.tangentImpulse1, change2 = total2 - c.tangentImpulse2;
     c.tangentImpulse1 = total1;
     c.tangentImpulse2 = total2;
-    applyImpulse(c, c.centerArmA, c.centerArmB, impulse, a, b);
+    applyFriction(c, change1, change2, a, b);
 
     const Pack<N> twistLimit = c.friction * twistLoad;
     const Pack<N> spin = dot(c.normal, b.angularVelocity - a.angularVelocity);
     const Pack<N> twist = max(min(c.twistImpulse - c.twistMass * spin, twistLimit), -twistLimit);
     const Pack<N> twistChange = twist - c.twistImpulse;
     c.twistImpulse = twist;
-    a.angularVelocity = a.angularVelocity - twistChange * (c.inverseInertiaA * c.normal);
-    b.angularVelocity = b.angularVelocity + twistChange * (c.inverseInertiaB * c.normal);
+    a.angularVelocity = a.angularVelocity - twistChange * c.twistTurnA;
+    b.angularVelocity = b.angularVelocity + twistChange * c.twistTurnB;
 }
 // [ch10-friction]
 
@@ -390,8 +410,9 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // the increments d that make every row's speed its target, d = -K^-1 (J v + bias), kept where
     // they leave every point pushing (lambda + d >= 0) and every row rigid.
     Pack<N> target[4], increment[4];  // target: each row's speed plus bias; increment: the block's change
+    const Pack<N> approach = dot(c.normal, b.linearVelocity - a.linearVelocity);
     for (int k = 0; k < 4; ++k) {
-        const Pack<N> speed = dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(b.angularVelocity, c.point[k].angularB) -
+        const Pack<N> speed = approach + dot(b.angularVelocity, c.point[k].angularB) -
                               dot(a.angularVelocity, c.point[k].angularA) + bias[k];
         target[k] = selectPositive(c.point[k].normalMass, speed, zero);  // a missing point asks for nothing
     }

@@ -390,6 +390,8 @@ void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame) {
     total.bodies = frame.bodies;
     total.manifolds = frame.manifolds;
     total.points = frame.points;
+    total.wideBlocks = frame.wideBlocks;
+    total.overflow = frame.overflow;
     total.prepareMs += frame.prepareMs;
     total.integrateMs += frame.integrateMs;
     total.warmStartMs += frame.warmStartMs;
@@ -453,6 +455,8 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
             fillLane(scratch.scalarBlocks[i], 0, world, scratch.contactOrder[i], scratch.bodies, params);
     }
 
+    stats.wideBlocks = static_cast<int>(scratch.wideBlocks.size());
+    stats.overflow = path == SolverPath::Wide ? static_cast<int>(scratch.scalarBlocks.size()) : 0;
     SolverBodyState* states = scratch.bodies.states.data();
     prepareWide(scratch.wideBlocks, states);
     for (ManifoldBlock<1>& block : scratch.scalarBlocks) prepareBlock(block, states);

@@ -20,6 +20,8 @@ struct FastSolveStats {
     int bodies = 0;          // moving bodies solved (awake dynamic)
     int manifolds = 0;       // contacts with at least one moving body
     int points = 0;
+    int wideBlocks = 0;      // blocks of kWideLanes lanes (their fill: manifolds in them / lanes)
+    int overflow = 0;        // manifolds past the last colour, solved one at a time
     // Where the solve's time went, ms (the bench's profile of the solve stage).
     double prepareMs = 0;    // bodies, colours, blocks and their effective masses, once per frame
     double integrateMs = 0;  // velocities and positions, every substep

@@ -76,6 +76,9 @@ struct ManifoldBlock {
     // solved together, and a twist row about the normal. Coulomb's limits are those of the four
     // points sliding together: |tangent impulse| <= mu sum(lambda), |twist| <= mu sum(lambda r).
     PackVec3<N> centerArmA, centerArmB;         // centre minus each centre of mass, frame start, m
+    PackVec3<N> frictionAngularA[2], frictionAngularB[2];  // centre arm x tangent k (prepareBlock)
+    PackVec3<N> frictionTurnA[2], frictionTurnB[2];        // I^-1 (centre arm x tangent k)
+    PackVec3<N> twistTurnA, twistTurnB;                    // I^-1 n: what a unit twist does to each body
     Pack<N> tangentInverse11, tangentInverse12, tangentInverse22;  // the 2x2 tangent block's K^-1, kg
     Pack<N> twistMass;                          // 1 / (n . IA^-1 n + n . IB^-1 n), kg m^2
     Pack<N> tangentImpulse1, tangentImpulse2, twistImpulse;      // accumulated, N s and N m s
