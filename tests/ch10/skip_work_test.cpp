@@ -1,0 +1,180 @@
+// Chapter 10's shortcuts change the cost, not the answer: the sweep on grown boxes returns the pairs
+// chapter 5's sweep returns, a pair kept apart is one chapter 6 would not make a contact of, the
+// position step eight at a time is chapter 1's, and the manifold's friction at its centre holds a
+// box on a gentle ramp, lets it slide on a steep one and stops a spinning box by its twist.
+#include "01_integrators/rotation.h"
+#include "04_pgs/scenes.h"
+#include "05_sap/chapter.h"
+#include "06_manifolds/manifold.h"
+#include "10_speed/chapter.h"
+#include "10_speed/contact_kernels.h"
+#include "10_speed/scenes.h"
+#include "math/random.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace stepwise;
+
+namespace {
+
+Pipeline fastPipeline(const World& world) {
+    SpeedOptions options;
+    options.sleeping = false;
+    return makeChapter10Pipeline(world, options);
+}
+
+}  // namespace
+
+TEST_CASE("the sweep on grown boxes finds chapter 5's pairs, and skips the sweep when nothing left its box",
+          "[ch10][broadphase]") {
+    World world = buildMixedPile(300);
+    world.settings.sleeping = false;
+    Pipeline pipeline = fastPipeline(world);
+    int skipped = 0;
+    for (int frame = 0; frame < 240; ++frame) {
+        World fresh = world;
+        sweepAndPrune(fresh);
+        sweepAndPruneEnlarged(world);
+        REQUIRE(world.candidatePairs == fresh.candidatePairs);
+        skipped += world.broadphase.sweepSkipped ? 1 : 0;
+        pipeline.step(world);
+    }
+    CHECK(skipped > 0);  // the pile settles inside its grown boxes before the end
+
+    World pyramid = buildPyramidRow(1, 10);
+    sweepAndPruneEnlarged(pyramid);
+    CHECK_FALSE(pyramid.broadphase.sweepSkipped);
+    sweepAndPruneEnlarged(pyramid);
+    CHECK(pyramid.broadphase.sweepSkipped);
+    // A body moved past the margin: a sweep again, and the moved box's pairs follow it.
+    pyramid.bodies[1].transform.position.x() += 2 * kEnlargedBoundsMargin;
+    sweepAndPruneEnlarged(pyramid);
+    CHECK_FALSE(pyramid.broadphase.sweepSkipped);
+    World fresh = pyramid;
+    sweepAndPrune(fresh);
+    CHECK(pyramid.candidatePairs == fresh.candidatePairs);
+}
+
+TEST_CASE("no pair kept apart by the gap cache is one chapter 6 would make a contact of", "[ch10][cache]") {
+    World world = buildMixedPile(300);
+    world.settings.sleeping = false;
+    Pipeline pipeline = fastPipeline(world);
+    long keptApart = 0;
+    for (int frame = 0; frame < 300; ++frame) {
+        pipeline.step(world);
+        keptApart += static_cast<long>(world.pairGaps.size());
+        if (frame % 20 != 19) continue;
+        // The same pairs through the cache and through chapter 6 alone (which asks every pair): each
+        // record chapter 6 makes must be in the cached list.
+        World cached = world;
+        sweepAndPrune(cached);
+        World fresh = cached;
+        ContactCacheScratch scratch;
+        updateManifoldsCached(cached, 1, ManifoldOptions{}, ContactCacheRule{}, scratch);
+        updateManifolds(fresh, 1, ManifoldOptions{});
+        for (const Contact& contact : fresh.contacts) {
+            if (contact.missedSteps > 0) continue;  // kept from the record alone, not found now
+            INFO("frame " << frame << ", pair " << contact.bodyA << "-" << contact.bodyB);
+            CHECK(findContact(cached.contacts, contact.pair()) != nullptr);
+        }
+    }
+    CHECK(keptApart > 0);
+}
+
+TEST_CASE("a gap shrinks by at most what B moved in A's frame", "[ch10][cache]") {
+    PairGap gap;
+    gap.gap = Real(0.5);
+    gap.radiusB = 1;
+    const Transform a{Vec3::Zero(), Quat::Identity()};
+    Transform b{Vec3(2, 0, 0), Quat::Identity()};
+    gap.builtRelativePosition = b.position;
+    CHECK(stillApart(gap, a, b, Real(0.1)));
+    b.position.x() -= Real(0.3);  // 0.5 - 0.3 - 1 mm allowance = 0.199 left
+    CHECK(stillApart(gap, a, b, Real(0.19)));
+    CHECK_FALSE(stillApart(gap, a, b, Real(0.2)));
+    b.position.x() += Real(0.3);
+    b.rotation = Quat(Eigen::AngleAxis<Real>(Real(0.3), Vec3::UnitZ()));  // 0.3 rad at radius 1
+    CHECK_FALSE(stillApart(gap, a, b, Real(0.2)));
+    CHECK(stillApart(gap, a, b, Real(0.19)));
+    // Moving A with B changes nothing: only the pose of B in A's frame counts.
+    const Transform movedA{Vec3(5, 5, 5), Quat(Eigen::AngleAxis<Real>(1, Vec3::UnitY()))};
+    const Transform movedB{movedA.apply(Vec3(2, 0, 0)), movedA.rotation};
+    CHECK(stillApart(gap, movedA, movedB, Real(0.49)));
+}
+
+TEST_CASE("the position step eight at a time is chapter 1's rotation step", "[ch10][solve]") {
+    Random random(7);
+    std::vector<SolverBodyState> states(1 + 19);  // slot 0 and 19 bodies: two packs and a remainder
+    std::vector<Quat> expected(states.size());
+    for (std::size_t slot = 1; slot < states.size(); ++slot) {
+        SolverBodyState& state = states[slot];
+        const Quat start = random.rotation();
+        for (int k = 0; k < 3; ++k) {
+            state.linearVelocity[k] = random.uniformReal(-3, 3);
+            state.angularVelocity[k] = random.uniformReal(-20, 20);
+        }
+        state.deltaRotation[0] = start.x();
+        state.deltaRotation[1] = start.y();
+        state.deltaRotation[2] = start.z();
+        state.deltaRotation[3] = start.w();
+        const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+        expected[slot] = integrateRotation(start, angular, Real(1.0 / 600));
+    }
+    for (int slot = 1; slot < static_cast<int>(states.size()); ++slot)
+        integratePositionsPack<1>(states.data(), &slot, Real(1.0 / 600));
+    for (std::size_t slot = 1; slot < states.size(); ++slot) {
+        const SolverBodyState& state = states[slot];
+        const Quat turned(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
+        CHECK(std::abs(std::abs(turned.coeffs().dot(expected[slot].coeffs())) - 1) < 1e-6);
+        CHECK(std::abs(turned.norm() - 1) < 1e-6);
+        CHECK(state.deltaPosition[0] == Approx(state.linearVelocity[0] / 600).margin(1e-7));
+    }
+    CHECK(states[0].deltaRotation[3] == 1);  // slot 0 is never moved
+}
+
+TEST_CASE("friction at the manifold's centre: a box sticks below atan(mu), slides above, and a spin stops by its twist",
+          "[ch10][friction]") {
+    const Real mu = Real(0.5);
+    for (const Real tilt : {std::atan(mu) - Real(0.1), std::atan(mu) + Real(0.1)}) {
+        World world;
+        world.settings.sleeping = false;
+        const Quat slope(Eigen::AngleAxis<Real>(tilt, Vec3::UnitZ()));
+        Material ramp;
+        ramp.friction = mu;
+        addStaticBox(world, "ramp", Vec3::Zero(), Vec3(10, Real(0.5), 10), slope, ramp);
+        Material crate;
+        crate.friction = mu;
+        const int box = addCrate(world, "box", slope * Vec3(0, 1, 0), Vec3::Constant(Real(0.5)), 1, crate, slope);
+        Pipeline pipeline = fastPipeline(world);
+        for (int frame = 0; frame < 120; ++frame) pipeline.step(world);
+        const Real moved = (world.bodies[static_cast<std::size_t>(box)].transform.position - slope * Vec3(0, 1, 0)).norm();
+        INFO("tilt " << tilt << " rad, moved " << moved << " m in 2 s");
+        if (tilt < std::atan(mu))
+            CHECK(moved < Real(0.01));
+        else  // slides from rest: g (sin - mu cos) t^2 / 2 in 2 s
+            CHECK(moved == Approx(Real(9.81) * (std::sin(tilt) - mu * std::cos(tilt)) * 2).epsilon(0.05));
+    }
+
+    // A unit box spinning on its face: four corners 0.71 m out, mu m g each quarter: the twist
+    // decelerates it at mu m g 0.71 / I = 20.8 rad/s^2 (I = m / 6), so 5 rad/s stops in 0.24 s.
+    World world;
+    world.settings.sleeping = false;
+    addGroundPlane(world, mu);
+    Material crate;
+    crate.friction = mu;
+    const int box = addCrate(world, "spinner", Vec3(0, Real(0.5), 0), Vec3::Constant(Real(0.5)), 1, crate);
+    Pipeline pipeline = fastPipeline(world);
+    for (int frame = 0; frame < 10; ++frame) pipeline.step(world);
+    world.motionOf(box)->angularVelocity = Vec3(0, 5, 0);
+    int framesToStop = 0;
+    while (world.motionOf(box)->angularVelocity.norm() > Real(0.05) && framesToStop < 120) {
+        pipeline.step(world);
+        ++framesToStop;
+    }
+    INFO("stopped after " << framesToStop << " frames");
+    CHECK(framesToStop >= 11);  // 0.18 s
+    CHECK(framesToStop <= 18);  // 0.30 s
+    CHECK(world.bodies[static_cast<std::size_t>(box)].transform.position.head<2>().norm() < Real(0.52));
+}
