@@ -112,20 +112,22 @@ write("ramp", f"Two blocks on 30 degree ramps (atan mu against 30 degrees): with
         "why": "a friction coefficient known to 0.01 moves the distance by g cos(30) t^2 / 2 x 0.01 = 4 cm"}],
       t_ramp, "contact")
 
-# Newton's cradle, in free space: five touching balls, the first arriving at 1 m/s.
+# Newton's cradle, in free space: five touching balls, the first arriving at 2 m/s (above the
+# default restitution threshold of 1 m/s, so every collision of the row is meant to bounce).
 m_ball = 1000 * 4 / 3 * math.pi * 0.1 ** 3
-balls = [sphere("ball0", [-0.3, 0, 0], 0.1, velocity=[1, 0, 0], restitution=1, friction=0)]
+v_in = 2.0
+balls = [sphere("ball0", [-0.3, 0, 0], 0.1, velocity=[v_in, 0, 0], restitution=1, friction=0)]
 balls += [sphere(f"ball{i}", [0.2 * i, 0, 0], 0.1, restitution=1, friction=0) for i in range(1, 5)]
-write("newtons-cradle", "Five steel-like balls in a row, no gravity, restitution 1, the first arriving at 1 m/s: the last leaves at 1 m/s and the others stay still; momentum and energy are kept.",
+write("newtons-cradle", f"Five balls in a row, no gravity, restitution 1, the first arriving at {v_in:g} m/s: the last leaves at {v_in:g} m/s and the others stay still; momentum and energy are kept.",
       balls,
-      [{"metric": "final_speed", "body": "ball4", "expected": 1.0, "tolerance": 0.05,
+      [{"metric": "final_speed", "body": "ball4", "expected": v_in, "tolerance": r(0.05 * v_in),
         "why": "5%: a real cradle's steel balls (e about 0.95) send the last ball off at about 95% of the first's speed"},
-       {"metric": "final_speed", "body": "ball0", "expected": 0.0, "tolerance": 0.05,
+       {"metric": "final_speed", "body": "ball0", "expected": 0.0, "tolerance": r(0.05 * v_in),
         "why": "the same 5%: the first ball stops; a solver that spreads the momentum over all five moves it on"},
-       {"metric": "momentum", "tolerance": r(0.01 * m_ball),
+       {"metric": "momentum", "tolerance": r(0.01 * m_ball * v_in),
         "why": "1% of the momentum brought in (kg m/s): nothing outside the balls pushes them"},
-       {"metric": "energy_change", "tolerance": 0.05,
-        "why": "5% of the energy, the same allowance as the speeds (energy goes with their squares)"}],
+       {"metric": "energy_change", "tolerance": 0.1,
+        "why": "10% of the energy, what the 5% on the speeds allows (energy goes with their squares)"}],
       1.0, "contact", settings={"gravity": [0, 0, 0]})
 
 # Hinge pendulum: a ball on a massless rod, released from 10 degrees.
@@ -195,8 +197,13 @@ write("bullet-wall", "A 5 cm ball at 200 m/s (3.3 m a frame) at a 2 cm thick wal
         "why": "1 cm into a 2 cm wall: deeper and the ball is through it (tunnelled)"}],
       0.5, "contact", settings={"gravity": [0, 0, 0]})
 
-write("settling-pile", "1,000 mixed bodies (spheres, hulls, boxes) dropped in a block onto the ground: they settle without overlapping or gaining energy.",
-      [], [{"metric": "penetration", "tolerance": 0.01,
+# The stress generator's ground (chapter 5) is open at the sides, and spheres roll on without
+# rolling resistance until they fall off its edge: four walls make a pit 16 m wide around it.
+walls = [box(f"wall_{side}", pos, half, type="static") for side, pos, half in (
+    ("east", [8.5, 2, 0], [0.5, 2, 9]), ("west", [-8.5, 2, 0], [0.5, 2, 9]),
+    ("north", [0, 2, 8.5], [8, 2, 0.5]), ("south", [0, 2, -8.5], [8, 2, 0.5]))]
+write("settling-pile", "1,000 mixed bodies (spheres, hulls, boxes) dropped in a 10 x 10 x 10 block into a walled pit: they settle without overlapping or gaining energy.",
+      walls, [{"metric": "penetration", "tolerance": 0.01,
             "why": "1 cm of overlap at rest, 1-2% of a body: where bodies still look like they touch"},
            {"metric": "energy_gain", "tolerance": 0.01,
             "why": "1% of the starting energy: contacts and friction only take energy; a gain is the solver's"},

@@ -108,6 +108,7 @@ public:
     BenchRun(const BenchEntry& entry, const BenchOptions& options);
     std::ostream& out() const;
     bool quick() const { return options_.quick; }
+    const BenchOptions& options() const { return options_; }
     BenchProgress& progress() { return progress_; }
 
     /// Each writes the declared file with this suffix when its option (--csv, --plot) was given.
