@@ -149,57 +149,70 @@ CsvTable checksTable(const std::vector<SceneResults>& all, bool withPeer) {
     return table;
 }
 
+constexpr double kFloor = 1e-3, kCeiling = 1e3;  // scores drawn within these: zeros and blow-ups stay on the plot
+
+double drawn(double score) { return std::clamp(score, kFloor, kCeiling); }
+
+PlotSeries toleranceLine(double lowest, double highest) {
+    PlotSeries line("tolerance (score 1)");
+    line.dashed = line.lineOnly = true;
+    line.x = {lowest, highest};
+    line.y = {1, 1};
+    return line;
+}
+
 // [engine-bench-plot]
-/// Work precision of a group of scenes: for each configuration the summed cost over the group
-/// against the worst score in it, one curve per family. A configuration the peer refused on a
-/// scene of the group has no point (its cost would leave that scene out).
-PlotSpec groupPlot(const std::vector<SceneResults>& all, const std::vector<Configuration>& list, const std::string& group) {
-    constexpr double kFloor = 1e-3, kCeiling = 1e3;  // scores drawn within these, so zeros and blow-ups stay on the plot
-    PlotSpec plot("work precision: " + (group.empty() ? std::string("all scenes") : group + " scenes"),
-                  "ms per 1/60 s simulated (summed over the scenes)", "worst error / tolerance");
-    std::map<std::string, PlotSeries> families;
-    std::vector<std::string> order;
-    for (std::size_t c = 0; c < list.size(); ++c) {
-        double cost = 0, worst = 0;
-        bool complete = true, any = false;
-        for (const SceneResults& results : all) {
-            if (!group.empty() && results.scene->sidecar.group != group) continue;
-            const Outcome& o = results.outcomes[c];
-            if (o.refused()) complete = false;
-            cost += o.cost;
-            worst = std::max(worst, o.score.worst);
-            any = true;
-        }
-        if (!complete || !any) continue;
-        const std::string& family = list[c].family;
-        if (!families.count(family)) {
-            order.push_back(family);
-            const bool single = family.find("default") != std::string::npos || family == "solver" || family == "stabilisation" ||
-                                family == "ccd";
-            families[family] = PlotSeries(family, single);
-        }
-        families[family].x.push_back(cost);
-        families[family].y.push_back(std::clamp(worst, kFloor, kCeiling));
-    }
+/// Work precision of one scene: each configuration's cost against its score, one curve per
+/// family (the points of a knob turned from cheap to dear), a marker for each default.
+PlotSpec scenePlot(const SceneResults& results) {
+    PlotSpec plot("work precision: " + results.scene->name, "ms per 1/60 s simulated", "error / tolerance (worst check)");
+    std::vector<PlotSeries> families;
     double lowest = std::numeric_limits<double>::max(), highest = 0;
-    for (const std::string& family : order) {
-        plot.series.push_back(families[family]);
-        for (double x : families[family].x) lowest = std::min(lowest, x), highest = std::max(highest, x);
+    for (const Outcome& o : results.outcomes) {
+        if (o.refused()) continue;
+        const std::string& family = o.configuration->family;
+        if (families.empty() || families.back().title != family) {
+            const bool curve = family == "dt" || family == "substeps" || family == "iterations" ||
+                               family == "bullet iterations" || family == "bullet substeps";
+            families.emplace_back(family, !curve);
+        }
+        families.back().x.push_back(o.cost);
+        families.back().y.push_back(drawn(o.score.worst));
+        lowest = std::min(lowest, o.cost);
+        highest = std::max(highest, o.cost);
     }
-    if (highest > 0) {
-        PlotSeries tolerance("tolerance (score 1)");
-        tolerance.dashed = tolerance.lineOnly = true;
-        tolerance.x = {lowest, highest};
-        tolerance.y = {1, 1};
-        plot.series.push_back(tolerance);
-    }
-    plot.caption = "Each point is one configuration run on every " + (group.empty() ? std::string("reference") : group) +
-                   " scene: x the summed median ms per 1/60 s of simulated time, y the worst error / tolerance over "
-                   "the scenes' checks (below 1 meets every tolerance; drawn within 0.001 and 1000, a blow-up at "
-                   "1000). Down and left is better. Single thread, " + realTypeName() + " build.";
+    plot.series = families;
+    if (highest > 0) plot.series.push_back(toleranceLine(lowest, highest));
+    plot.caption = results.scene->name + ": each point one configuration, x its median ms per 1/60 s of simulated time "
+                   "(ms per step at the default dt), y the worst error / tolerance over the scene's checks (at most 1 "
+                   "meets every tolerance; drawn within 0.001 and 1000, a blow-up at 1000). Down and left is better. "
+                   "Single thread, " + std::string(realTypeName()) + " build.";
     return plot;
 }
 // [engine-bench-plot]
+
+/// Where each engine's defaults land on every scene: one marker per scene and engine.
+PlotSpec defaultsPlot(const std::vector<SceneResults>& all, bool withPeer) {
+    PlotSpec plot("the defaults on every reference scene", "ms per 1/60 s simulated", "error / tolerance (worst check)");
+    PlotSeries engine("stepwise defaults", true), peer(peerName() + " defaults", true);
+    double lowest = std::numeric_limits<double>::max(), highest = 0;
+    for (const SceneResults& results : all)
+        for (bool isPeer : {false, true}) {
+            const Outcome* o = isPeer && !withPeer ? nullptr : findDefault(results, isPeer);
+            if (!o || o->refused()) continue;
+            (isPeer ? peer : engine).x.push_back(o->cost);
+            (isPeer ? peer : engine).y.push_back(drawn(o->score.worst));
+            lowest = std::min(lowest, o->cost);
+            highest = std::max(highest, o->cost);
+        }
+    plot.series.push_back(engine);
+    if (withPeer) plot.series.push_back(peer);
+    if (highest > 0) plot.series.push_back(toleranceLine(lowest, highest));
+    plot.caption = "One marker per reference scene and engine at its default settings: x the median ms per 1/60 s of "
+                   "simulated time, y the worst error / tolerance (at most 1 meets the reference; drawn within 0.001 and "
+                   "1000). The summary table names the scenes. Single thread, " + std::string(realTypeName()) + " build.";
+    return plot;
+}
 
 }  // namespace
 
@@ -212,10 +225,9 @@ BenchEntry engineBench() {
     entry.files = {{BenchFile::Kind::Csv, "", "every run: scene, configuration, ms per step, score, each check's error"},
                    {BenchFile::Kind::Csv, "-summary", "per scene: the defaults, the cheapest passing configuration, Bullet's"},
                    {BenchFile::Kind::Csv, "-checks", "each check at the defaults: error, tolerance, score"},
-                   {BenchFile::Kind::Plot, "", "work precision over all scenes, one curve per family of configurations"},
-                   {BenchFile::Kind::Plot, "-tables", "the summary and the checks as a figure for the page"}};
-    for (const std::string& group : groupNames())
-        entry.files.push_back({BenchFile::Kind::Plot, "-" + group, "work precision of the " + group + " scenes"});
+                   {BenchFile::Kind::Plot, "", "every scene's error against ms at each engine's defaults"},
+                   {BenchFile::Kind::Plot, "-tables", "the summary and the checks as a figure for the page"},
+                   {BenchFile::Kind::Plot, "-scene", "work precision of one scene, one curve per family of configurations", true}};
     entry.measure = [](BenchRun& bench) {
         const BenchOptions& options = bench.options();
         if (!options.peer.empty() && options.peer != "bullet")
@@ -254,8 +266,8 @@ BenchEntry engineBench() {
         bench.writeCsv(runs);
         bench.writeCsv(summary, "-summary");
         bench.writeCsv(checks, "-checks");
-        bench.writePlot(groupPlot(all, list, ""));
-        for (const std::string& group : groupNames()) bench.writePlot(groupPlot(all, list, group), "-" + group);
+        bench.writePlot(defaultsPlot(all, withPeer));
+        for (const SceneResults& results : all) bench.writePlotFor(scenePlot(results), "-scene", results.scene->name);
         const std::vector<FigureTable> figures = {
             {{"Per scene: score (worst error / tolerance) and ms per 1/60 s at the defaults, the cheapest configuration "
               "that meets every tolerance, and Bullet's."}, &summary},

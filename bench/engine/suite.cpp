@@ -48,6 +48,11 @@ std::vector<ReferenceScene> loadReferenceScenes(const std::string& directory) {
         checkBodiesExist(scene.sidecar, scene.world, sidecarPath);
         list.push_back(std::move(scene));
     }
+    // Closed forms first, the pile last: the tables read from the simplest answer to the hardest.
+    const auto rank = [](const ReferenceScene& scene) {
+        return std::find(groupNames().begin(), groupNames().end(), scene.sidecar.group) - groupNames().begin();
+    };
+    std::stable_sort(list.begin(), list.end(), [&](const ReferenceScene& a, const ReferenceScene& b) { return rank(a) < rank(b); });
     return list;
 }
 

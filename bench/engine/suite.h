@@ -17,7 +17,7 @@ struct ReferenceScene {
     Sidecar sidecar;
 };
 
-/// Every NAME.json of `directory` with its NAME.expect.json, sorted by name. Throws SidecarError
+/// Every NAME.json of `directory` with its NAME.expect.json, by group (groupNames()), then name. Throws SidecarError
 /// naming the file for a missing directory or sidecar, a bad scene or a bad sidecar.
 std::vector<ReferenceScene> loadReferenceScenes(const std::string& directory);
 

@@ -86,6 +86,9 @@ struct BenchFile {
     Kind kind = Kind::Csv;
     std::string suffix;
     std::string what;          // one line for `--help` and the list printed at the end
+    /// One file per item of the run (a scene, ...): the suffix is followed by "-ITEM", so the
+    /// files are known only once the suite runs (`--plot out/x.svg`, "-scene": out/x-scene-ramp.svg).
+    bool oneEach = false;
 };
 
 struct BenchEntry {
