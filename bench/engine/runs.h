@@ -29,7 +29,7 @@ struct PeerKnobs {
 
 struct RunResult {
     Trajectory trajectory;
-    double msPerStep = 0;        // median over the frames
+    double msPerStep = 0;        // mean over the run's frames (the median of repeated runs for small scenes)
     long frames = 0;
     std::string failure;         // non-empty: the run could not be scored (a refusal, a blow-up)
 };
