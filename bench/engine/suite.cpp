@@ -89,14 +89,14 @@ std::vector<Configuration> sweep(bool quick, bool withPeer) {
         EngineKnobs jacobi, cold;
         jacobi.solver = SolverKind::Jacobi;
         cold.warmStarting = false;
-        add("solver", "jacobi", jacobi);
-        add("solver", "no warm start", cold);
+        add("other", "jacobi", jacobi);
+        add("other", "no warm start", cold);
     }
     if (!quick)
         for (CcdMode ccd : {CcdMode::Off, CcdMode::On}) {
             EngineKnobs knobs;
             knobs.ccd = ccd;
-            add("ccd", std::string("ccd ") + toString(ccd), knobs);
+            add("other", std::string("ccd ") + toString(ccd), knobs);
         }
     if (withPeer) {
         list.push_back({"bullet default", "bullet default", true, {}, {}});

@@ -23,7 +23,7 @@ std::vector<ReferenceScene> loadReferenceScenes(const std::string& directory);
 
 /// One way to run a scene: the engine with some knobs turned, or the peer with its own.
 struct Configuration {
-    std::string family;     // one curve of the plots: "iterations", "bullet substeps", ...
+    std::string family;     // one curve of the plots: "iterations", "bullet substeps", ... ("other": single points)
     std::string name;       // "iterations 20"; "default" and "bullet default" are the defaults
     bool peer = false;
     EngineKnobs knobs;
