@@ -261,7 +261,8 @@ BenchEntry engineBench() {
         bench.progress().endStage();
 
         const CsvTable runs = runsTable(all), summary = summaryTable(all, withPeer), checks = checksTable(all, withPeer);
-        out << "bench engine: " << scenes.size() << " reference scenes from " << directory << ", " << list.size()
+        out << "bench engine: " << scenes.size() << (scenes.size() == 1 ? " reference scene" : " reference scenes")
+            << " from " << directory << ", " << list.size()
             << " configurations" << (withPeer ? " (Bullet: " + peerName() + ")" : "") << ", " << realTypeName() << " build\n\n"
             << "score = error / tolerance, worst check; <= 1 meets the reference. ms: per 1/60 s simulated.\n"
             << summary.toText() << "\neach check at the defaults:\n" << checks.toText();
