@@ -46,7 +46,7 @@ std::string joinedQuoted(const std::vector<std::string>& names) {
     return text;
 }
 
-/// Reads one sidecar, collecting the first problem as "SOURCE: PATH: message".
+/// Reads one sidecar; the first problem throws SidecarError as "SOURCE: PATH: message".
 class Reader {
 public:
     explicit Reader(std::string source) : source_(std::move(source)) {}
