@@ -76,6 +76,14 @@ const Outcome* findDefault(const SceneResults& results, bool peer) {
     return nullptr;
 }
 
+/// The CSV writer does not quote: a peer's refusal ("joints[0] (distance, ...") keeps its words
+/// with its commas turned into semicolons, so the row keeps its columns.
+std::string withoutCommas(std::string text) {
+    std::replace(text.begin(), text.end(), ',', ';');
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
+}
+
 CsvTable runsTable(const std::vector<SceneResults>& all) {
     CsvTable table({"scene", "group", "bodies", "engine", "family", "configuration", "dt", "substeps", "iterations", "frames",
                     "ms_per_step", "ms_per_60th_s", "score", "meets", "worst_check", "errors", "note"});
@@ -96,7 +104,7 @@ CsvTable runsTable(const std::vector<SceneResults>& all) {
                           std::to_string(o.run.frames), o.refused() ? "" : formatNumber(o.run.msPerStep),
                           o.refused() ? "" : formatNumber(o.cost), scoreText(o), o.meets() ? "yes" : "no",
                           o.run.failure.empty() ? scene.sidecar.checks[o.score.worstCheck].metric : "", errors,
-                          o.run.failure});
+                          withoutCommas(o.run.failure)});
         }
     }
     return table;
