@@ -148,6 +148,15 @@ void BenchRun::writePlot(const PlotSpec& plot, const std::string& suffix) {
     record(file, path);
 }
 
+void BenchRun::writePlotFor(const PlotSpec& plot, const std::string& suffix, const std::string& item) {
+    const BenchFile& file = declared(BenchFile::Kind::Plot, suffix);
+    if (!file.oneEach) throw std::logic_error("bench " + entry_.name + ": \"" + suffix + "\" is not a file per item");
+    if (options_.plotPath.empty()) return;
+    const std::string path = withSuffix(options_.plotPath, suffix + "-" + item, ".svg");
+    writeSvgPlot(path, plot);
+    record(file, path);
+}
+
 void BenchRun::writeTables(const std::vector<FigureTable>& figures, const std::string& suffix) {
     const BenchFile& file = declared(BenchFile::Kind::Plot, suffix);
     const std::string path = pathOf(file);
@@ -162,6 +171,7 @@ int runBench(const BenchEntry& entry, const BenchOptions& options) {
     // a missing file and leaves an existing one as it is until the suite overwrites it.
     for (const BenchFile& file : entry.files) {
         const std::string path = run.pathOf(file);
+        if (file.oneEach) continue;  // named only while the suite runs; their folder is the plot's
         if (!path.empty() && !std::ofstream(path, std::ios::binary | std::ios::app)) {
             std::cerr << "error: bench " << entry.name << ": cannot write '" << path << "'\n";
             return 2;
@@ -177,6 +187,7 @@ int runBench(const BenchEntry& entry, const BenchOptions& options) {
     run.progress().endStage();
     // A declared file the suite did not write would make --help lie.
     for (const BenchFile& file : entry.files) {
+        if (file.oneEach) continue;  // as many as the run has items, possibly none
         const std::string path = run.pathOf(file);
         const auto isPath = [&](const auto& item) { return item.first == path; };
         if (!path.empty() && std::none_of(run.written().begin(), run.written().end(), isPath))
@@ -199,7 +210,7 @@ std::string benchFilesHelp(const std::vector<BenchEntry>& benches) {
         text << "  " << entry.name << "\n";
         for (const BenchFile& file : entry.files) {
             const bool csv = file.kind == BenchFile::Kind::Csv;
-            const std::string path = "out/" + entry.name + file.suffix + (csv ? ".csv" : ".svg");
+            const std::string path = "out/" + entry.name + file.suffix + (file.oneEach ? "-NAME" : "") + (csv ? ".csv" : ".svg");
             text << "    " << path << std::string(path.size() < 32 ? 32 - path.size() : 1, ' ') << file.what << "\n";
         }
     }

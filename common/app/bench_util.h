@@ -108,12 +108,15 @@ public:
     BenchRun(const BenchEntry& entry, const BenchOptions& options);
     std::ostream& out() const;
     bool quick() const { return options_.quick; }
+    const BenchOptions& options() const { return options_; }
     BenchProgress& progress() { return progress_; }
 
     /// Each writes the declared file with this suffix when its option (--csv, --plot) was given.
     /// Throws std::runtime_error naming the path when the file cannot be written.
     void writeCsv(const CsvTable& table, const std::string& suffix = "");
     void writePlot(const PlotSpec& plot, const std::string& suffix = "");
+    /// Writes one of the files of a oneEach entry: suffix "-scene", item "ramp" -> x-scene-ramp.svg.
+    void writePlotFor(const PlotSpec& plot, const std::string& suffix, const std::string& item);
     void writeTables(const std::vector<FigureTable>& figures, const std::string& suffix);
 
     /// The file `file` goes to with these options, or "" when its option was not given.

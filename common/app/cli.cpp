@@ -103,6 +103,8 @@ int runCli(int argc, char** argv, const Registry& registry) {
     bench->add_flag("--quick", benchOptions.quick, "Smaller sizes (docs build, smoke tests)");
     bench->add_flag("--quiet", benchOptions.quiet, "No progress bar and no list of the files written");
     bench->add_flag("--list", listBenches, "List the suites");
+    bench->add_option("--scenes", benchOptions.scenesDir, "bench engine: the reference scenes' folder (default scenes/reference)");
+    bench->add_option("--peer", benchOptions.peer, "bench engine: run this peer too (bullet)");
     bench->footer(benchFilesHelp(registry.benches()));
 
     for (const CommandEntry& command : registry.commands()) command.install(app, exitCode);

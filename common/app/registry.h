@@ -75,6 +75,8 @@ struct BenchOptions {
     bool quick = false;        // smaller sizes, for the docs build and smoke tests
     bool quiet = false;        // no progress and no list of files written
     std::ostream* out = nullptr;  // the results; standard output when null
+    std::string scenesDir;     // `bench engine --scenes DIR`; empty: the suite's own scenes
+    std::string peer;          // `bench engine --peer bullet`; empty: no peer run
 };
 
 /// One file a bench writes: the --csv or --plot path itself (suffix ""), or a file next to it
@@ -84,6 +86,9 @@ struct BenchFile {
     Kind kind = Kind::Csv;
     std::string suffix;
     std::string what;          // one line for `--help` and the list printed at the end
+    /// One file per item of the run (a scene, ...): the suffix is followed by "-ITEM", so the
+    /// files are known only once the suite runs (`--plot out/x.svg`, "-scene": out/x-scene-ramp.svg).
+    bool oneEach = false;
 };
 
 struct BenchEntry {

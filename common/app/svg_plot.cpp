@@ -127,7 +127,8 @@ void writeFile(const std::string& path, const std::string& text) {
     if (!file) throw std::runtime_error("cannot write '" + path + "'");
 }
 
-const char* kSeriesColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+const char* kSeriesColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf",
+                               "#7f7f7f", "#bcbd22"};
 
 }  // namespace
 

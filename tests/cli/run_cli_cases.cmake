@@ -231,7 +231,7 @@ expect_failure("collide: a scene file" 2
 # --help names the files each suite writes.
 run_stepwise(bench --help)
 foreach(file out/integrators-dt.svg out/gjk-table.svg out/gjk-classification.csv out/epa.svg out/solver.csv
-             out/resting.svg)
+             out/resting.svg out/engine-scene-NAME.svg)
   string(FIND "${run_out}" "${file}" found_at)
   expect("bench --help names ${file}" "not in:\n${run_out}" NOT found_at EQUAL -1)
 endforeach()
@@ -247,6 +247,11 @@ string(FIND "${run_out}" "files written:" listed_at)
 expect("bench --quiet: no list" "stdout:\n${run_out}" run_code EQUAL 0 AND listed_at EQUAL -1)
 run_stepwise(bench resting --quick --csv "${OUT}/no/such/dir/resting.csv")
 expect_failure("bench: unwritable output" 2 "error: bench resting: cannot write")
+# bench engine: a scenes folder that is not there, an unknown peer (docs/engine_bench.md).
+run_stepwise(bench engine --quick --scenes "${OUT}/no-such-folder")
+expect_failure("bench engine: no scenes folder" 2 "no-such-folder: no such directory of reference scenes")
+run_stepwise(bench engine --quick --peer havok)
+expect_failure("bench engine: unknown peer" 2 "error: bench engine: --peer: unknown peer \"havok\" (known: bullet)")
 
 # --- record and replay (chapter 9) ---------------------------------------------------------
 run_stepwise(record debug-drop --frames 30 --output "${OUT}/drop-recording.json")

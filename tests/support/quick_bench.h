@@ -59,7 +59,7 @@ inline QuickBench runQuickBench(const BenchEntry& entry, const std::string& stem
     options.quiet = true;
     options.out = &out;
     for (const BenchFile& file : entry.files) {
-        if (!file.suffix.empty()) continue;
+        if (!file.suffix.empty() || file.oneEach) continue;
         (file.kind == BenchFile::Kind::Csv ? options.csvPath : options.plotPath) = pathOf(file);
     }
     QuickBench run;
@@ -73,10 +73,13 @@ inline QuickBench runQuickBench(const BenchEntry& entry, const std::string& stem
     }
     if (!options.plotPath.empty()) run.plotText = readWholeFile(options.plotPath);
     for (const BenchFile& file : entry.files) {
+        if (file.oneEach) continue;  // removed below, from the list of files written
         const std::string path = pathOf(file);
         if (!std::ifstream(path).good()) run.missingFiles.push_back(path);
         std::remove(path.c_str());
     }
+    for (const std::filesystem::directory_entry& written : std::filesystem::directory_iterator(directory))
+        if (written.path().filename().string().rfind(stem + "-", 0) == 0) std::filesystem::remove(written.path());
     INFO("bench " << entry.name << " printed:\n" << run.printed);
     REQUIRE(run.exitCode == 0);
     CHECK(run.missingFiles.empty());

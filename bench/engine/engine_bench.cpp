@@ -1,0 +1,296 @@
+// `stepwise bench engine`: every reference scene over the sweep (suite.h), scored (reference.h);
+// the CSV of every run, the summary (per scene: the defaults, the cheapest configuration that
+// meets the tolerance, Bullet's), the error of each check at the defaults, and work-precision
+// plots per group of scenes.
+#include "engine/engine_bench.h"
+
+#include "app/bench_util.h"
+#include "engine/suite.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <ostream>
+
+namespace stepwise::engine_bench {
+
+namespace {
+
+/// One scene run with one configuration, scored.
+struct Outcome {
+    const Configuration* configuration = nullptr;
+    RunResult run;
+    Score score;
+    double cost = 0;   // ms per 1/60 s of simulated time: ms per step at the default dt
+    bool scored() const { return run.failure.empty() || run.failure.rfind("blew up", 0) == 0; }
+    bool refused() const { return run.failure.rfind("refused", 0) == 0; }
+    bool meets() const { return run.failure.empty() && score.meets(); }
+};
+
+struct SceneResults {
+    const ReferenceScene* scene = nullptr;
+    std::vector<Outcome> outcomes;   // in sweep order
+};
+
+Outcome runOne(const ReferenceScene& scene, const Configuration& configuration) {
+    Outcome outcome;
+    outcome.configuration = &configuration;
+    const World world = withKnobs(scene.world, configuration.knobs);
+    outcome.run = configuration.peer ? runPeer(world, scene.sidecar.seconds, configuration.peerKnobs)
+                                     : runEngine(world, scene.sidecar.seconds);
+    outcome.cost = outcome.run.msPerStep / (60.0 * double(world.settings.dt));
+    if (!outcome.run.failure.empty()) {
+        outcome.score.worst = std::numeric_limits<double>::infinity();
+        return outcome;
+    }
+    outcome.score = scoreRun(scene.sidecar, outcome.run.trajectory);
+    return outcome;
+}
+
+std::string scoreText(const Outcome& outcome) {
+    if (outcome.refused()) return "refused";
+    if (!outcome.run.failure.empty()) return "blew up";
+    return std::isinf(outcome.score.worst) ? "unmeasured" : formatNumber(outcome.score.worst, 3);
+}
+
+const Outcome* findDefault(const SceneResults& results, bool peer);
+
+/// The cheapest outcome of the engine (or of the peer) that meets every check; null when none.
+/// Timings of repeated runs scatter by a few per cent: a passing default is kept unless another
+/// configuration is at least kCheaperBy cheaper.
+const Outcome* cheapestPassing(const SceneResults& results, bool peer) {
+    constexpr double kCheaperBy = 0.1;
+    const Outcome* best = nullptr;
+    for (const Outcome& outcome : results.outcomes)
+        if (outcome.configuration->peer == peer && outcome.meets() && (!best || outcome.cost < best->cost)) best = &outcome;
+    const Outcome* defaults = findDefault(results, peer);
+    if (best && defaults && defaults->meets() && best->cost > (1 - kCheaperBy) * defaults->cost) return defaults;
+    return best;
+}
+
+const Outcome* findDefault(const SceneResults& results, bool peer) {
+    for (const Outcome& outcome : results.outcomes)
+        if (outcome.configuration->peer == peer && outcome.configuration->family.find("default") != std::string::npos)
+            return &outcome;
+    return nullptr;
+}
+
+/// The CSV writer does not quote: a peer's refusal ("joints[0] (distance, ...") keeps its words
+/// with its commas turned into semicolons, so the row keeps its columns.
+std::string withoutCommas(std::string text) {
+    std::replace(text.begin(), text.end(), ',', ';');
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
+}
+
+CsvTable runsTable(const std::vector<SceneResults>& all) {
+    CsvTable table({"scene", "group", "bodies", "engine", "family", "configuration", "dt", "substeps", "iterations", "frames",
+                    "ms_per_step", "ms_per_60th_s", "score", "meets", "worst_check", "errors", "note"});
+    for (const SceneResults& results : all) {
+        const ReferenceScene& scene = *results.scene;
+        for (const Outcome& o : results.outcomes) {
+            const Settings& s = withKnobs(scene.world, o.configuration->knobs).settings;
+            std::string errors;
+            for (std::size_t i = 0; i < o.score.errors.size(); ++i)
+                errors += (i ? "; " : "") + scene.sidecar.checks[i].metric + " " + formatNumber(o.score.errors[i], 3);
+            const bool peer = o.configuration->peer;
+            table.addRow({scene.name, scene.sidecar.group, std::to_string(scene.world.dynamicBodyCount()),
+                          peer ? peerName() : "stepwise", o.configuration->family, o.configuration->name,
+                          formatNumber(double(s.dt), 4),
+                          std::to_string(peer && o.configuration->peerKnobs.substeps ? o.configuration->peerKnobs.substeps : s.substeps),
+                          std::to_string(peer && o.configuration->peerKnobs.iterations ? o.configuration->peerKnobs.iterations
+                                                                                       : s.solverIterations),
+                          std::to_string(o.run.frames), o.refused() ? "" : formatNumber(o.run.msPerStep),
+                          o.refused() ? "" : formatNumber(o.cost), scoreText(o), o.meets() ? "yes" : "no",
+                          o.run.failure.empty() ? scene.sidecar.checks[o.score.worstCheck].metric : "", errors,
+                          withoutCommas(o.run.failure)});
+        }
+    }
+    return table;
+}
+
+CsvTable summaryTable(const std::vector<SceneResults>& all, bool withPeer) {
+    CsvTable table({"scene", "bodies", "default_score", "default_ms", "cheapest_passing", "cheapest_ms", "default_over_cheapest",
+                    "bullet_default_score", "bullet_default_ms", "bullet_cheapest_passing", "bullet_cheapest_ms",
+                    "bullet_over_default"});
+    for (const SceneResults& results : all) {
+        const Outcome* engine = findDefault(results, false);
+        const Outcome* cheapest = cheapestPassing(results, false);
+        std::vector<std::string> row = {results.scene->name, std::to_string(results.scene->world.dynamicBodyCount()),
+                                        scoreText(*engine), formatNumber(engine->cost, 3),
+                                        cheapest ? cheapest->configuration->name : "none",
+                                        cheapest ? formatNumber(cheapest->cost, 3) : "",
+                                        cheapest ? formatNumber(engine->cost / cheapest->cost, 3) : ""};
+        const Outcome* peer = withPeer ? findDefault(results, true) : nullptr;
+        if (!peer) {
+            row.insert(row.end(), {"", "", "", "", ""});
+        } else if (peer->refused()) {
+            row.insert(row.end(), {"refused", "", "", "", ""});
+        } else {
+            const Outcome* peerCheapest = cheapestPassing(results, true);
+            row.insert(row.end(), {scoreText(*peer), formatNumber(peer->cost, 3),
+                                   peerCheapest ? peerCheapest->configuration->name : "none",
+                                   peerCheapest ? formatNumber(peerCheapest->cost, 3) : "",
+                                   formatNumber(peer->cost / engine->cost, 3)});
+        }
+        table.addRow(row);
+    }
+    return table;
+}
+
+/// Each check at the defaults: the error, the tolerance, and the reason for it.
+CsvTable checksTable(const std::vector<SceneResults>& all, bool withPeer) {
+    CsvTable table({"scene", "metric", "body", "tolerance", "stepwise_error", "stepwise_score", "bullet_error", "bullet_score"});
+    for (const SceneResults& results : all) {
+        const Outcome* engine = findDefault(results, false);
+        const Outcome* peer = withPeer ? findDefault(results, true) : nullptr;
+        const Sidecar& sidecar = results.scene->sidecar;
+        for (std::size_t i = 0; i < sidecar.checks.size(); ++i) {
+            const Check& check = sidecar.checks[i];
+            const auto cells = [&](const Outcome* o) -> std::vector<std::string> {
+                if (!o) return {"", ""};
+                if (!o->run.failure.empty()) return {scoreText(*o), ""};
+                return {formatNumber(o->score.errors[i], 3), formatNumber(o->score.errors[i] / check.tolerance, 3)};
+            };
+            std::vector<std::string> row = {results.scene->name, check.metric, check.body, formatNumber(check.tolerance, 3)};
+            for (const Outcome* o : {engine, peer}) {
+                const std::vector<std::string> pair = cells(o);
+                row.insert(row.end(), pair.begin(), pair.end());
+            }
+            table.addRow(row);
+        }
+    }
+    return table;
+}
+
+constexpr double kFloor = 1e-3, kCeiling = 1e3;  // scores drawn within these: zeros and blow-ups stay on the plot
+
+double drawn(double score) { return std::clamp(score, kFloor, kCeiling); }
+
+PlotSeries toleranceLine(double lowest, double highest) {
+    PlotSeries line("tolerance (score 1)");
+    line.dashed = line.lineOnly = true;
+    line.x = {lowest, highest};
+    line.y = {1, 1};
+    return line;
+}
+
+// [engine-bench-plot]
+/// Work precision of one scene: each configuration's cost against its score, one curve per
+/// family (the points of a knob turned from cheap to dear), a marker for each default.
+PlotSpec scenePlot(const SceneResults& results) {
+    PlotSpec plot("work precision: " + results.scene->name, "ms per 1/60 s simulated", "error / tolerance (worst check)");
+    std::vector<PlotSeries> families;
+    double lowest = std::numeric_limits<double>::max(), highest = 0;
+    for (const Outcome& o : results.outcomes) {
+        if (o.refused()) continue;
+        const std::string& family = o.configuration->family;
+        if (families.empty() || families.back().title != family) {
+            const bool curve = family == "dt" || family == "substeps" || family == "iterations" ||
+                               family == "bullet iterations" || family == "bullet substeps";
+            families.emplace_back(family, !curve);
+        }
+        families.back().x.push_back(o.cost);
+        families.back().y.push_back(drawn(o.score.worst));
+        lowest = std::min(lowest, o.cost);
+        highest = std::max(highest, o.cost);
+    }
+    plot.series = families;
+    if (highest > 0) plot.series.push_back(toleranceLine(lowest, highest));
+    plot.caption = results.scene->name + ": each point one configuration, x its median ms per 1/60 s of simulated time "
+                   "(ms per step at the default dt), y the worst error / tolerance over the scene's checks (at most 1 "
+                   "meets every tolerance; drawn within 0.001 and 1000, a blow-up at 1000). Down and left is better. "
+                   "Single thread, " + std::string(realTypeName()) + " build.";
+    return plot;
+}
+// [engine-bench-plot]
+
+/// Where each engine's defaults land on every scene: one marker per scene and engine.
+PlotSpec defaultsPlot(const std::vector<SceneResults>& all, bool withPeer) {
+    PlotSpec plot("the defaults on every reference scene", "ms per 1/60 s simulated", "error / tolerance (worst check)");
+    PlotSeries engine("stepwise defaults", true), peer(peerName() + " defaults", true);
+    double lowest = std::numeric_limits<double>::max(), highest = 0;
+    for (const SceneResults& results : all)
+        for (bool isPeer : {false, true}) {
+            const Outcome* o = isPeer && !withPeer ? nullptr : findDefault(results, isPeer);
+            if (!o || o->refused()) continue;
+            (isPeer ? peer : engine).x.push_back(o->cost);
+            (isPeer ? peer : engine).y.push_back(drawn(o->score.worst));
+            lowest = std::min(lowest, o->cost);
+            highest = std::max(highest, o->cost);
+        }
+    plot.series.push_back(engine);
+    if (withPeer) plot.series.push_back(peer);
+    if (highest > 0) plot.series.push_back(toleranceLine(lowest, highest));
+    plot.caption = "One marker per reference scene and engine at its default settings: x the median ms per 1/60 s of "
+                   "simulated time, y the worst error / tolerance (at most 1 meets the reference; drawn within 0.001 and "
+                   "1000). The summary table names the scenes. Single thread, " + std::string(realTypeName()) + " build.";
+    return plot;
+}
+
+}  // namespace
+
+BenchEntry engineBench() {
+    BenchEntry entry;
+    entry.name = "engine";
+    entry.chapter = 10;
+    entry.description = "the whole engine on the reference suite (scenes/reference): error against the known answer and "
+                        "ms per step over a sweep of its knobs, Bullet beside it with --peer bullet";
+    entry.files = {{BenchFile::Kind::Csv, "", "every run: scene, configuration, ms per step, score, each check's error"},
+                   {BenchFile::Kind::Csv, "-summary", "per scene: the defaults, the cheapest passing configuration, Bullet's"},
+                   {BenchFile::Kind::Csv, "-checks", "each check at the defaults: error, tolerance, score"},
+                   {BenchFile::Kind::Plot, "", "every scene's error against ms at each engine's defaults"},
+                   {BenchFile::Kind::Plot, "-tables", "the summary and the checks as a figure for the page"},
+                   {BenchFile::Kind::Plot, "-scene", "work precision of one scene, one curve per family of configurations", true}};
+    entry.measure = [](BenchRun& bench) {
+        const BenchOptions& options = bench.options();
+        if (!options.peer.empty() && options.peer != "bullet")
+            throw std::runtime_error("--peer: unknown peer \"" + options.peer + "\" (known: bullet)");
+        const bool withPeer = options.peer == "bullet" && havePeer();
+        std::ostream& out = bench.out();
+        if (options.peer == "bullet" && !withPeer)
+            out << "bench engine: this program was built without the Bullet peer (libbullet-dev not found): Bullet skipped\n";
+        const std::string directory = options.scenesDir.empty() ? std::string(STEPWISE_REFERENCE_SCENES) : options.scenesDir;
+        const std::vector<ReferenceScene> scenes = loadReferenceScenes(directory);
+        const std::vector<Configuration> list = sweep(bench.quick(), withPeer);
+
+        std::vector<SceneResults> all;
+        for (const ReferenceScene& scene : scenes) {
+            bench.progress().stage(scene.name, static_cast<long>(list.size()));
+            SceneResults results;
+            results.scene = &scene;
+            for (const Configuration& configuration : list) {
+                results.outcomes.push_back(runOne(scene, configuration));
+                bench.progress().advance();
+            }
+            all.push_back(std::move(results));
+        }
+        bench.progress().endStage();
+
+        const CsvTable runs = runsTable(all), summary = summaryTable(all, withPeer), checks = checksTable(all, withPeer);
+        out << "bench engine: " << scenes.size() << (scenes.size() == 1 ? " reference scene" : " reference scenes")
+            << " from " << directory << ", " << list.size()
+            << " configurations" << (withPeer ? " (Bullet: " + peerName() + ")" : "") << ", " << realTypeName() << " build\n\n"
+            << "score = error / tolerance, worst check; <= 1 meets the reference. ms: per 1/60 s simulated.\n"
+            << summary.toText() << "\neach check at the defaults:\n" << checks.toText();
+        for (const SceneResults& results : all)
+            for (const Outcome& o : results.outcomes)
+                if (o.refused() && o.configuration->family == "bullet default")
+                    out << "\n" << results.scene->name << ": Bullet " << o.run.failure;
+        out << "\n";
+        bench.writeCsv(runs);
+        bench.writeCsv(summary, "-summary");
+        bench.writeCsv(checks, "-checks");
+        bench.writePlot(defaultsPlot(all, withPeer));
+        for (const SceneResults& results : all) bench.writePlotFor(scenePlot(results), "-scene", results.scene->name);
+        const std::vector<FigureTable> figures = {
+            {{"Per scene: score (worst error / tolerance) and ms per 1/60 s at the defaults, the cheapest configuration "
+              "that meets every tolerance, and Bullet's."}, &summary},
+            {{"Each check at the defaults: error (in the check's units), tolerance, score."}, &checks}};
+        bench.writeTables(figures, "-tables");
+    };
+    return entry;
+}
+
+}  // namespace stepwise::engine_bench

@@ -1,0 +1,57 @@
+// `stepwise bench engine --quick`, the CI guard of the reference suite: at the engine's defaults
+// every reference scene stays within the tolerances of its sidecar. The scenes the engine fails
+// today (docs/engine_bench.md says why) are held to no worse than their measured score with a
+// margin, so a regression fails there too; one that starts passing is reported, to be moved out.
+#include "engine/engine_bench.h"
+#include "support/quick_bench.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+using namespace stepwise;
+
+namespace {
+
+// [engine-bench-known-failures]
+// Scene -> the largest score (worst error / tolerance) allowed at the defaults: about twice the
+// float build's score, so the double build's other round-off passes and a real regression does not
+// (four times for the pile, whose overlap at the end is chaotic: 0.5 to 6.6 cm across the sweep).
+const std::map<std::string, double> kKnownFailures = {
+    {"free-spin", 6},          // 2.6: first-order quaternion update loses (w dt)^3 / 12 a step
+    {"bouncing-ball", 5},      // 2.4: restitution of the speed at the step's start, before gravity's last push
+    {"newtons-cradle", 25},    // 12: a sequential solve spreads the impulse over the row
+    {"pyramid-40", 5},         // 2.1: 2 cm drift, above the 1 cm target
+    {"mass-ratio-tower", 1000},  // 700: 1:1000 on 10 iterations falls
+    {"settling-pile", 10},     // 2.3: 2.3 cm overlap left in a 1,000-body pile
+};
+// [engine-bench-known-failures]
+
+}  // namespace
+
+TEST_CASE("bench engine --quick: the defaults meet every reference tolerance (known failures no worse)", "[engine-bench][bench]") {
+    const test::QuickBench run = test::runQuickBench(
+        engine_bench::engineBench(), "engine_bench_quick",
+        "scene,group,bodies,engine,family,configuration,dt,substeps,iterations,frames,ms_per_step,ms_per_60th_s,score,"
+        "meets,worst_check,errors,note");
+    int defaults = 0;
+    for (const std::vector<std::string>& cells : run.rows) {
+        REQUIRE(cells.size() >= 16);
+        if (cells[5] != "default") continue;
+        ++defaults;
+        const std::string& scene = cells[0];
+        INFO(scene << ": score " << cells[12] << ", worst check " << cells[14] << " (" << cells[15] << ")");
+        const double score = cells[12] == "blew up" || cells[12] == "unmeasured" ? INFINITY : std::stod(cells[12]);
+        const auto known = kKnownFailures.find(scene);
+        if (known == kKnownFailures.end()) {
+            CHECK(score <= 1);
+        } else {
+            CHECK(score <= known->second);
+            if (score <= 1) WARN(scene << " now meets its tolerances: take it off the known failures");
+        }
+    }
+    CHECK(defaults == 14);  // every scene of scenes/reference
+    CHECK(run.printed.find("each check at the defaults") != std::string::npos);
+}
