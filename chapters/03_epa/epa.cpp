@@ -183,11 +183,14 @@ void contactFromFace(const EpaPolytope& polytope, const EpaFace& face, EpaResult
 /// simplex and the centres suggest, and keep the one along which A - B reaches least far past
 /// the origin (the same min-over-axes idea as SAT, over a handful of candidate axes).
 EpaResult fallbackContact(const ConvexProxy& a, const ConvexProxy& b, const Simplex& simplex) {
-    Vec3 candidates[16];
+    Vec3 candidates[20];
+    // Where a candidate knows the touching points themselves (a round shape's core), they are kept.
+    bool knownPoints[20] = {};
+    Vec3 knownA[20], knownB[20];
     int count = 0;
     const auto add = [&](const Vec3& direction) {
         const Real length = direction.norm();
-        if (count + 2 <= 16 && length > 0 && isFinite(length)) {
+        if (count + 2 <= 20 && length > 0 && isFinite(length)) {
             candidates[count++] = direction / length;
             candidates[count++] = -direction / length;
         }
@@ -202,6 +205,32 @@ EpaResult fallbackContact(const ConvexProxy& a, const ConvexProxy& b, const Simp
         add(edge.cross(Vec3::UnitY()));
     }
     add(b.center() - a.center());
+    // A round shape (sphere, capsule) touches along the line from the other shape to its core
+    // (centre or segment), which lies a radius inside its surface: GJK's distance to the core names
+    // the normal that none of the directions above may come near. Without it a sphere just touching
+    // a hull read 7.8 cm deep (tests/ch03: a sphere grazing a hull).
+    const auto addCoreDirection = [&](const ConvexProxy& round, const ConvexProxy& other, Real sign) {
+        const Shape& shape = *round.shape;
+        if (shape.type != ShapeType::Sphere && shape.type != ShapeType::Capsule) return;
+        const Real coreRadius = shape.radius * Real(1e-3);
+        const Shape core = shape.type == ShapeType::Sphere ? Shape::sphere(coreRadius)
+                                                           : Shape::capsule(coreRadius, shape.halfHeight);
+        const ConvexProxy coreProxy{&core, round.transform, round.mode};
+        const GjkDistanceResult distance = gjkDistance(other, coreProxy);
+        if (!distance.separated) return;
+        const int first = count;
+        add(sign * (distance.pointB - distance.pointA));
+        if (count == first) return;
+        // The other shape's closest point, and the round shape's surface point a radius from its core.
+        const Vec3 towardCore = (distance.pointB - distance.pointA).normalized();
+        const Vec3 onOther = distance.pointA;
+        const Vec3 onRound = distance.pointB - (shape.radius - coreRadius) * towardCore;
+        knownPoints[first] = true;
+        knownA[first] = sign > 0 ? onOther : onRound;
+        knownB[first] = sign > 0 ? onRound : onOther;
+    };
+    addCoreDirection(b, a, 1);
+    addCoreDirection(a, b, -1);
     add(Vec3::UnitX());
     add(Vec3::UnitY());
     add(Vec3::UnitZ());
@@ -217,8 +246,8 @@ EpaResult fallbackContact(const ConvexProxy& a, const ConvexProxy& b, const Simp
         result.normal = candidates[i];
         // Each shape's own extreme point: on its surface, apart only across the contact plane
         // and, where the touching features are wide, along it.
-        result.pointA = support.onA;
-        result.pointB = support.onB;
+        result.pointA = knownPoints[i] ? knownA[i] : support.onA;
+        result.pointB = knownPoints[i] ? knownB[i] : support.onB;
         for (SupportPoint& corner : result.closestFace) corner = support;
     }
     result.depth = best < kRealMax ? std::max(best, Real(0)) : Real(0);

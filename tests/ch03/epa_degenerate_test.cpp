@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 using namespace stepwise;
 using stepwise::test::finiteQuery;
@@ -182,4 +183,24 @@ TEST_CASE("Random nasty poses: right-angle turns, flush offsets, mixed sizes", "
         ++checked;
     }
     CHECK(checked > 500);
+}
+
+TEST_CASE("a sphere grazing a hull reads as touching, with the points where they touch", "[ch03][epa]") {
+    // Found in the settling pile of the engine bench: GJK sees the pair touch, no tetrahedron can
+    // be built around the origin, and the fallback's directions missed the true normal: 7.8 cm deep.
+    const std::vector<Vec3> corners = {Vec3(0, Real(0.5), 0),     Vec3(0, 0, Real(0.35)),  Vec3(Real(0.35), 0, 0),
+                                       Vec3(0, 0, Real(-0.35)),   Vec3(0, Real(-0.5), 0),  Vec3(Real(-0.35), 0, 0)};
+    const Shape hull = Shape::convex(corners);
+    const Transform hullPose{Vec3(Real(5.39495707), Real(1.1857748), Real(0.235774994)),
+                             Quat(Real(-0.549575627), Real(0.541845202), Real(0.210488096), Real(-0.600054264)).normalized()};
+    const Transform spherePose{Vec3(Real(5.93552208), Real(1.72309566), Real(0.564188659)), Quat::Identity()};
+    const ContactQuery query = collideShapes(hull, hullPose, Shape::sphere(Real(0.5)), spherePose);
+    REQUIRE(finiteQuery(query));
+    // The sphere's centre is its radius from the hull (to the float's precision of GJK's distance).
+    const ContactQuery centre = collideShapes(hull, hullPose, Shape::sphere(Real(1e-3)), spherePose);
+    const Real trueDepth = Real(0.5) - (-centre.depth + Real(1e-3));
+    INFO("depth " << query.depth << ", the centre says " << trueDepth);
+    CHECK(std::abs(query.depth - std::max(trueDepth, Real(0))) < Real(1e-3));
+    CHECK((query.pointA - query.pointB).norm() < Real(1e-3));
+    CHECK(std::abs((query.pointB - spherePose.position).norm() - Real(0.5)) < Real(1e-3));
 }
