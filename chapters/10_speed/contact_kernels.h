@@ -103,7 +103,7 @@ inline void gatherEight(const SolverBodyState* states, const int* slots, int fir
     static_assert(sizeof(SolverBodyState) == 16 * sizeof(float), "two 8-float rows per body");
     __m256 low[8], high[8];
     for (int i = 0; i < 8; ++i) {
-        const float* state = states[slots[first + i]].linearVelocity;
+        const float* state = reinterpret_cast<const float*>(&states[slots[first + i]]);
         low[i] = _mm256_load_ps(state);        // v.xyz w.xyz dp.xy
         high[i] = _mm256_load_ps(state + 8);   // dp.z dq.xyzw (3 unused)
     }
@@ -126,7 +126,7 @@ inline void scatterEight(SolverBodyState* states, const int* slots, int first, c
                      _mm256_load_ps(body.deltaPosition.x.data() + first),   _mm256_load_ps(body.deltaPosition.y.data() + first)};
     transpose8(row);  // back to one row per lane; the delta position goes back as it was read
     for (int i = 0; i < 8; ++i)
-        if (slots[first + i] != 0) _mm256_store_ps(states[slots[first + i]].linearVelocity, row[i]);
+        if (slots[first + i] != 0) _mm256_store_ps(reinterpret_cast<float*>(&states[slots[first + i]]), row[i]);
 }
 
 template <>
@@ -143,8 +143,9 @@ inline void scatterBodies<8>(SolverBodyState* states, const int* slots, const Bo
     transpose8(high);
     for (int i = 0; i < 8; ++i) {
         if (slots[i] == 0) continue;
-        _mm256_store_ps(states[slots[i]].linearVelocity, low[i]);
-        _mm256_store_ps(states[slots[i]].linearVelocity + 8, high[i]);
+        float* state = reinterpret_cast<float*>(&states[slots[i]]);  // the 16 floats of one cache line
+        _mm256_store_ps(state, low[i]);
+        _mm256_store_ps(state + 8, high[i]);
     }
 }
 
