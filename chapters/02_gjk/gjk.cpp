@@ -7,6 +7,7 @@
 
 #include "02_gjk/gjk_walk.h"
 #include "02_gjk/tolerances.h"
+#include "world/enum_names.h"
 
 #include <cmath>
 
@@ -15,15 +16,13 @@ namespace stepwise {
 using namespace gjk_detail;
 
 const char* toString(GjkExit exit) {
-    switch (exit) {
-        case GjkExit::Intersect: return "intersect";
-        case GjkExit::Separated: return "separated";
-        case GjkExit::NoProgress: return "no-progress";
-        case GjkExit::RepeatedSupport: return "repeated-support";
-        case GjkExit::Degenerate: return "degenerate";
-        case GjkExit::IterationCap: return "iteration-cap";
-    }
-    return "?";
+    static const Names<GjkExit> names = {{"intersect", GjkExit::Intersect},
+                                         {"separated", GjkExit::Separated},
+                                         {"no-progress", GjkExit::NoProgress},
+                                         {"repeated-support", GjkExit::RepeatedSupport},
+                                         {"degenerate", GjkExit::Degenerate},
+                                         {"iteration-cap", GjkExit::IterationCap}};
+    return nameOf(names, exit);
 }
 
 // [ch02-tolerances]

@@ -6,6 +6,7 @@
 #include "03_epa/epa.h"
 
 #include "03_epa/polytope.h"
+#include "world/enum_names.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,14 +14,12 @@
 namespace stepwise {
 
 const char* toString(EpaExit exit) {
-    switch (exit) {
-        case EpaExit::Converged: return "converged";
-        case EpaExit::IterationCap: return "iteration_cap";
-        case EpaExit::StepLimit: return "step_limit";
-        case EpaExit::NoProgress: return "no_progress";
-        case EpaExit::Degenerate: return "degenerate";
-    }
-    return "unknown";
+    static const Names<EpaExit> names = {{"converged", EpaExit::Converged},
+                                         {"iteration_cap", EpaExit::IterationCap},
+                                         {"step_limit", EpaExit::StepLimit},
+                                         {"no_progress", EpaExit::NoProgress},
+                                         {"degenerate", EpaExit::Degenerate}};
+    return nameOf(names, exit, "unknown");
 }
 
 namespace {

@@ -61,13 +61,9 @@ Grid layoutFor(const StressParams& params) {
 
 }  // namespace
 
-const char* toString(StressDensity density) { return density == StressDensity::Dense ? "dense" : "sparse"; }
+const char* toString(StressDensity density) { return nameOf(kDensities, density); }
 
-const char* toString(StressShape shape) {
-    for (const auto& [name, value] : kShapes)
-        if (value == shape) return name;
-    return "?";
-}
+const char* toString(StressShape shape) { return nameOf(kShapes, shape); }
 
 Real stressSpacing(StressDensity density) { return density == StressDensity::Dense ? Real(1) : Real(4); }
 

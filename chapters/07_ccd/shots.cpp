@@ -1,16 +1,14 @@
 #include "07_ccd/shots.h"
 
+#include "world/enum_names.h"
+
 #include <cmath>
 
 namespace stepwise {
 
 const char* toString(ShotShape shape) {
-    switch (shape) {
-        case ShotShape::Sphere: return "sphere";
-        case ShotShape::Box: return "box";
-        case ShotShape::Hull: return "hull";
-    }
-    return "?";
+    static const Names<ShotShape> names = {{"sphere", ShotShape::Sphere}, {"box", ShotShape::Box}, {"hull", ShotShape::Hull}};
+    return nameOf(names, shape);
 }
 
 Shot randomShot(Random& random, Real speed) {

@@ -1,6 +1,7 @@
 #include "07_ccd/time_of_impact.h"
 
 #include "02_gjk/gjk.h"
+#include "world/enum_names.h"
 
 #include <algorithm>
 
@@ -16,13 +17,9 @@ ToiOptions toiOptionsFor(const Settings& settings) {
 }
 
 const char* toString(ToiState state) {
-    switch (state) {
-        case ToiState::Separated: return "separated";
-        case ToiState::Hit: return "hit";
-        case ToiState::Touching: return "touching";
-        case ToiState::Stalled: return "stalled";
-    }
-    return "?";
+    static const Names<ToiState> names = {
+        {"separated", ToiState::Separated}, {"hit", ToiState::Hit}, {"touching", ToiState::Touching}, {"stalled", ToiState::Stalled}};
+    return nameOf(names, state);
 }
 
 // [ch07-motion-bound]

@@ -1,6 +1,7 @@
 #include "08_joints/joint_solver.h"
 
 #include "06_manifolds/chapter.h"
+#include "world/enum_names.h"
 
 #include <algorithm>
 #include <deque>
@@ -8,12 +9,9 @@
 namespace stepwise {
 
 const char* toString(JointOrder order) {
-    switch (order) {
-        case JointOrder::AsListed: return "as_listed";
-        case JointOrder::LeavesFirst: return "leaves_first";
-        case JointOrder::GroundFirst: return "ground_first";
-    }
-    return "?";
+    static const Names<JointOrder> names = {
+        {"as_listed", JointOrder::AsListed}, {"leaves_first", JointOrder::LeavesFirst}, {"ground_first", JointOrder::GroundFirst}};
+    return nameOf(names, order);
 }
 
 // [ch08-depth]

@@ -1,5 +1,6 @@
 #include "09_debug/debug_session.h"
 
+#include "world/enum_names.h"
 #include "world/state_hash.h"
 
 #include <algorithm>
@@ -8,12 +9,9 @@
 namespace stepwise {
 
 const char* toString(StopReason reason) {
-    switch (reason) {
-        case StopReason::None: return "none";
-        case StopReason::NewContact: return "new contact";
-        case StopReason::Disabled: return "simulation disabled";
-    }
-    return "?";
+    static const Names<StopReason> names = {
+        {"none", StopReason::None}, {"new contact", StopReason::NewContact}, {"simulation disabled", StopReason::Disabled}};
+    return nameOf(names, reason);
 }
 
 std::vector<BodyPair> pairsInContact(const World& world) {

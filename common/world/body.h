@@ -12,6 +12,8 @@
 namespace stepwise {
 
 enum class BodyType { Static, Kinematic, Dynamic };
+/// The scene-format spelling: "static", "kinematic", "dynamic".
+extern const Names<BodyType> kBodyTypeNames;
 const char* toString(BodyType type);
 
 struct Material {

@@ -166,16 +166,7 @@ Json parseStrictJson(const std::string& text, const std::string& source) {
     return Json::parse(text);  // well-formed, no duplicate keys, bounded: the checker saw to it
 }
 
-const Names<IntegratorKind>& integratorNames() {
-    static const Names<IntegratorKind> names = {{"semi_implicit_euler", IntegratorKind::SemiImplicitEuler},
-                                                {"rk4", IntegratorKind::Rk4},
-                                                {"verlet", IntegratorKind::Verlet}};
-    return names;
-}
-
 BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors) {
-    static const Names<BodyType> kBodyTypes = {
-        {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}, {"dynamic", BodyType::Dynamic}};
     cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
                          "density", "friction", "restitution", "bullet", "integrator", "path"},
                         &errors);
@@ -185,7 +176,7 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
         if (auto v = cursor.optional("name")) def.name = v->nonEmptyString();
     });
     errors.attempt([&] {
-        if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypes);
+        if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypeNames);
     });
     // A placeholder keeps the body, so joints and forces that name it can still be checked.
     if (!errors.attempt([&] { def.shape = readShape(cursor.child("shape")); })) def.shape = Shape::sphere(1);
@@ -236,7 +227,7 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
     });
     if (def.type != BodyType::Static)
         errors.attempt([&] {
-            if (auto v = cursor.optional("integrator")) def.integrator = v->choice(integratorNames());
+            if (auto v = cursor.optional("integrator")) def.integrator = v->choice(kIntegratorNames);
         });
     errors.attempt([&] {
         if (auto v = cursor.optional("path")) {

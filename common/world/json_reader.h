@@ -7,6 +7,7 @@
 // its errors at once. Shared by the scene loader and by chapters that read JSON (chapter 3's
 // `collide`).
 
+#include "world/enum_names.h"
 #include "world/scene.h"
 #include "world/scene_limits.h"
 #include "world/shape.h"
@@ -23,9 +24,6 @@
 namespace stepwise {
 
 using Json = nlohmann::ordered_json;  // keeps the author's key order for messages and saving
-
-template <class E>
-using Names = std::vector<std::pair<const char*, E>>;
 
 /// "%g" for numbers inside messages.
 std::string formatForMessage(double value);
@@ -219,9 +217,6 @@ std::string readInputFile(const std::string& path, const char* what);
 /// tracks the current path and rejects duplicates; the same path names a number that overflows.
 /// Malformed text is rejected naming `source`, the line and the column.
 Json parseStrictJson(const std::string& text, const std::string& source);
-
-/// The names of the integrators, as scene files spell them.
-const Names<IntegratorKind>& integratorNames();
 
 /// Reads a body object of a scene (collide queries share it): every key, checked, with the
 /// rules of its type (no mass on a static body, ...). Errors go to `errors`; a shape that cannot

@@ -15,23 +15,7 @@
 namespace stepwise {
 namespace {
 
-const Names<GyroscopicMode> kGyroscopic = {
-    {"off", GyroscopicMode::Off}, {"explicit", GyroscopicMode::Explicit}, {"implicit", GyroscopicMode::Implicit}};
-const Names<BroadphaseMode> kBroadphase = {
-    {"auto", BroadphaseMode::Auto}, {"sap", BroadphaseMode::Sap}, {"brute", BroadphaseMode::Brute}};
-const Names<CcdMode> kCcd = {{"auto", CcdMode::Auto}, {"on", CcdMode::On}, {"off", CcdMode::Off}};
-const Names<SolverKind> kSolvers = {{"gauss_seidel", SolverKind::GaussSeidel}, {"jacobi", SolverKind::Jacobi}};
-const Names<Stabilisation> kStabilisations = {{"baumgarte", Stabilisation::Baumgarte},
-                                              {"relax", Stabilisation::Relax},
-                                              {"split_impulse", Stabilisation::SplitImpulse},
-                                              {"soft_step", Stabilisation::SoftStep}};
 const Names<bool> kContactPoints = {{"manifold", true}, {"one_point", false}};
-const Names<JointType> kJointTypes = {{"distance", JointType::Distance},
-                                      {"ball_socket", JointType::BallSocket},
-                                      {"hinge", JointType::Hinge},
-                                      {"cone_twist", JointType::ConeTwist},
-                                      {"slider", JointType::Slider},
-                                      {"fixed", JointType::Fixed}};
 
 Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
@@ -51,12 +35,12 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     read("slop", [&](const JsonCursor& v) { settings.slop = v.nonNegative(); });
     read("restitution_threshold", [&](const JsonCursor& v) { settings.restitutionThreshold = v.nonNegative(); });
     read("warm_starting", [&](const JsonCursor& v) { settings.warmStarting = v.boolean(); });
-    read("broadphase", [&](const JsonCursor& v) { settings.broadphase = v.choice(kBroadphase); });
-    read("ccd", [&](const JsonCursor& v) { settings.ccd = v.choice(kCcd); });
-    read("integrator", [&](const JsonCursor& v) { settings.integrator = v.choice(integratorNames()); });
-    read("gyroscopic", [&](const JsonCursor& v) { settings.gyroscopic = v.choice(kGyroscopic); });
-    read("solver", [&](const JsonCursor& v) { settings.solver = v.choice(kSolvers); });
-    read("stabilisation", [&](const JsonCursor& v) { settings.stabilisation = v.choice(kStabilisations); });
+    read("broadphase", [&](const JsonCursor& v) { settings.broadphase = v.choice(kBroadphaseNames); });
+    read("ccd", [&](const JsonCursor& v) { settings.ccd = v.choice(kCcdNames); });
+    read("integrator", [&](const JsonCursor& v) { settings.integrator = v.choice(kIntegratorNames); });
+    read("gyroscopic", [&](const JsonCursor& v) { settings.gyroscopic = v.choice(kGyroscopicNames); });
+    read("solver", [&](const JsonCursor& v) { settings.solver = v.choice(kSolverNames); });
+    read("stabilisation", [&](const JsonCursor& v) { settings.stabilisation = v.choice(kStabilisationNames); });
     read("contact_points", [&](const JsonCursor& v) { settings.manifoldContacts = v.choice(kContactPoints); });
     read("sleeping", [&](const JsonCursor& v) { settings.sleeping = v.boolean(); });
     read("sleep_speed", [&](const JsonCursor& v) { settings.sleepSpeed = v.positive(); });
@@ -119,7 +103,7 @@ void completeJointFromPoses(JointDesc& joint, const World& world, bool hasRefere
 JointDesc readJoint(const JsonCursor& cursor, const World& world, ErrorList& errors) {
     if (!cursor.json().is_object()) cursor.fail("must be an object");
     JointDesc joint;
-    joint.type = cursor.child("type").choice(kJointTypes);
+    joint.type = cursor.child("type").choice(kJointTypeNames);
     std::vector<const char*> keys = {"type", "a", "b", "anchor_a", "anchor_b", "collide_connected"};
     for (const char* key : jointKeys(joint.type)) keys.push_back(key);
     cursor.expectObject(keys, &errors);

@@ -20,58 +20,24 @@ int chapterReading(const std::string& key) {
 }
 
 // The spellings match the scene format (docs/scene-format.md).
-const char* toString(IntegratorKind kind) {
-    switch (kind) {
-        case IntegratorKind::SemiImplicitEuler: return "semi_implicit_euler";
-        case IntegratorKind::Rk4: return "rk4";
-        case IntegratorKind::Verlet: return "verlet";
-    }
-    return "?";
-}
+const Names<IntegratorKind> kIntegratorNames = {
+    {"semi_implicit_euler", IntegratorKind::SemiImplicitEuler}, {"rk4", IntegratorKind::Rk4}, {"verlet", IntegratorKind::Verlet}};
+const Names<GyroscopicMode> kGyroscopicNames = {
+    {"off", GyroscopicMode::Off}, {"explicit", GyroscopicMode::Explicit}, {"implicit", GyroscopicMode::Implicit}};
+const Names<BroadphaseMode> kBroadphaseNames = {
+    {"auto", BroadphaseMode::Auto}, {"sap", BroadphaseMode::Sap}, {"brute", BroadphaseMode::Brute}};
+const Names<CcdMode> kCcdNames = {{"auto", CcdMode::Auto}, {"on", CcdMode::On}, {"off", CcdMode::Off}};
+const Names<SolverKind> kSolverNames = {{"gauss_seidel", SolverKind::GaussSeidel}, {"jacobi", SolverKind::Jacobi}};
+const Names<Stabilisation> kStabilisationNames = {{"baumgarte", Stabilisation::Baumgarte},
+                                                  {"relax", Stabilisation::Relax},
+                                                  {"split_impulse", Stabilisation::SplitImpulse},
+                                                  {"soft_step", Stabilisation::SoftStep}};
 
-const char* toString(GyroscopicMode mode) {
-    switch (mode) {
-        case GyroscopicMode::Off: return "off";
-        case GyroscopicMode::Explicit: return "explicit";
-        case GyroscopicMode::Implicit: return "implicit";
-    }
-    return "?";
-}
-
-const char* toString(BroadphaseMode mode) {
-    switch (mode) {
-        case BroadphaseMode::Auto: return "auto";
-        case BroadphaseMode::Sap: return "sap";
-        case BroadphaseMode::Brute: return "brute";
-    }
-    return "?";
-}
-
-const char* toString(CcdMode mode) {
-    switch (mode) {
-        case CcdMode::Auto: return "auto";
-        case CcdMode::On: return "on";
-        case CcdMode::Off: return "off";
-    }
-    return "?";
-}
-
-const char* toString(SolverKind kind) {
-    switch (kind) {
-        case SolverKind::GaussSeidel: return "gauss_seidel";
-        case SolverKind::Jacobi: return "jacobi";
-    }
-    return "?";
-}
-
-const char* toString(Stabilisation stabilisation) {
-    switch (stabilisation) {
-        case Stabilisation::Baumgarte: return "baumgarte";
-        case Stabilisation::Relax: return "relax";
-        case Stabilisation::SplitImpulse: return "split_impulse";
-        case Stabilisation::SoftStep: return "soft_step";
-    }
-    return "?";
-}
+const char* toString(IntegratorKind kind) { return nameOf(kIntegratorNames, kind); }
+const char* toString(GyroscopicMode mode) { return nameOf(kGyroscopicNames, mode); }
+const char* toString(BroadphaseMode mode) { return nameOf(kBroadphaseNames, mode); }
+const char* toString(CcdMode mode) { return nameOf(kCcdNames, mode); }
+const char* toString(SolverKind kind) { return nameOf(kSolverNames, kind); }
+const char* toString(Stabilisation stabilisation) { return nameOf(kStabilisationNames, stabilisation); }
 
 }  // namespace stepwise

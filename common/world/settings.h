@@ -3,6 +3,7 @@
 // the "settings" object (see docs/scene-format.md); the defaults follow the scene contract.
 
 #include "math/math.h"
+#include "world/enum_names.h"
 
 #include <string>
 #include <vector>
@@ -55,6 +56,15 @@ struct SettingUse {
 const std::vector<SettingUse>& settingUses();
 /// The chapter that first reads `key` (0 for an unknown key).
 int chapterReading(const std::string& key);
+
+/// The names scene files give each choice (docs/scene-format.md): the loader reads them, toString
+/// writes them.
+extern const Names<IntegratorKind> kIntegratorNames;
+extern const Names<GyroscopicMode> kGyroscopicNames;
+extern const Names<BroadphaseMode> kBroadphaseNames;
+extern const Names<CcdMode> kCcdNames;
+extern const Names<SolverKind> kSolverNames;
+extern const Names<Stabilisation> kStabilisationNames;
 
 const char* toString(IntegratorKind kind);
 const char* toString(GyroscopicMode mode);

@@ -1,5 +1,7 @@
 #include "world/shape.h"
 
+#include "world/enum_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -146,13 +148,9 @@ Shape Shape::convex(const std::vector<Vec3>& points) {
 }
 
 const char* toString(ShapeType type) {
-    switch (type) {
-        case ShapeType::Box: return "box";
-        case ShapeType::Sphere: return "sphere";
-        case ShapeType::Capsule: return "capsule";
-        case ShapeType::Convex: return "convex";
-    }
-    return "?";
+    static const Names<ShapeType> names = {
+        {"box", ShapeType::Box}, {"sphere", ShapeType::Sphere}, {"capsule", ShapeType::Capsule}, {"convex", ShapeType::Convex}};
+    return nameOf(names, type);
 }
 
 namespace {

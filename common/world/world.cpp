@@ -6,14 +6,10 @@
 
 namespace stepwise {
 
-const char* toString(BodyType type) {
-    switch (type) {
-        case BodyType::Static: return "static";
-        case BodyType::Kinematic: return "kinematic";
-        case BodyType::Dynamic: return "dynamic";
-    }
-    return "?";
-}
+const Names<BodyType> kBodyTypeNames = {
+    {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}, {"dynamic", BodyType::Dynamic}};
+
+const char* toString(BodyType type) { return nameOf(kBodyTypeNames, type); }
 
 const Contact* findContact(const std::vector<Contact>& contacts, const BodyPair& pair) {
     const auto at = std::lower_bound(contacts.begin(), contacts.end(), pair,
@@ -146,17 +142,11 @@ Mat3 worldInverseInertia(const Body& body, const Motion& motion) {
     return rotation * motion.inverseInertiaLocal * rotation.transpose();
 }
 
-const char* toString(JointType type) {
-    switch (type) {
-        case JointType::Distance: return "distance";
-        case JointType::BallSocket: return "ball_socket";
-        case JointType::Hinge: return "hinge";
-        case JointType::ConeTwist: return "cone_twist";
-        case JointType::Slider: return "slider";
-        case JointType::Fixed: return "fixed";
-    }
-    return "?";
-}
+const Names<JointType> kJointTypeNames = {{"distance", JointType::Distance},   {"ball_socket", JointType::BallSocket},
+                                          {"hinge", JointType::Hinge},         {"cone_twist", JointType::ConeTwist},
+                                          {"slider", JointType::Slider},       {"fixed", JointType::Fixed}};
+
+const char* toString(JointType type) { return nameOf(kJointTypeNames, type); }
 
 Energy computeEnergy(const World& world, const std::function<bool(int bodyIndex)>& countsBody) {
     const auto counts = [&](int bodyIndex) { return !countsBody || countsBody(bodyIndex); };

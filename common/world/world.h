@@ -36,6 +36,7 @@ struct Damping {
 enum class JointType { Distance, BallSocket, Hinge, ConeTwist, Slider, Fixed };
 
 /// The scene-format spelling: "distance", "ball_socket", "hinge", "cone_twist", "slider", "fixed".
+extern const Names<JointType> kJointTypeNames;
 const char* toString(JointType type);
 
 /// A hinge's or slider's motor: drives the joint's speed along its axis towards `speed` (rad/s or
