@@ -117,9 +117,7 @@ World buildIntegratorsSideBySide() {
 }
 
 World buildTHandle(GyroscopicMode gyroscopic) {
-    World world;
-    world.name = "t-handle";
-    world.settings.gravity = Vec3::Zero();
+    World world = emptyWorld("t-handle", Vec3::Zero());
     world.settings.gyroscopic = gyroscopic;
     BodyDef def;
     def.name = "handle";

@@ -14,9 +14,7 @@
 namespace stepwise {
 
 World buildGjkTwoBoxes() {
-    World world;
-    world.name = "gjk-two-boxes";
-    world.settings.gravity = Vec3::Zero();
+    World world = emptyWorld("gjk-two-boxes", Vec3::Zero());
     BodyDef cube;
     cube.name = "cube";
     cube.type = BodyType::Kinematic;
@@ -34,9 +32,7 @@ World buildGjkTwoBoxes() {
 }
 
 World buildGjkSphereDiamond() {
-    World world;
-    world.name = "gjk-sphere-diamond";
-    world.settings.gravity = Vec3::Zero();
+    World world = emptyWorld("gjk-sphere-diamond", Vec3::Zero());
     BodyDef ball;
     ball.name = "sphere";
     ball.type = BodyType::Static;

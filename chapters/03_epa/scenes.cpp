@@ -63,9 +63,7 @@ private:
 }  // namespace
 
 World buildEpaStepper() {
-    World world;
-    world.name = "epa-step-by-step";
-    world.settings.gravity = Vec3::Zero();
+    World world = emptyWorld("epa-step-by-step", Vec3::Zero());
     addPairBody(world, "a", Shape::box(Vec3(Real(0.8), Real(0.5), Real(0.6))), Vec3(0, 1, 0), tilt(0, Real(0.3), 0),
                  Vec3::Zero());
     addPairBody(world, "b", Shape::box(Vec3(Real(0.5), Real(0.4), Real(0.5))), Vec3(Real(0.7), Real(1.6), Real(0.2)),
@@ -74,9 +72,7 @@ World buildEpaStepper() {
 }
 
 World buildContactGallery() {
-    World world;
-    world.name = "epa-contact-gallery";
-    world.settings.gravity = Vec3::Zero();
+    World world = emptyWorld("epa-contact-gallery", Vec3::Zero());
     const Shape box = Shape::box(Vec3(Real(0.5), Real(0.35), Real(0.4)));
     const Shape sphere = Shape::sphere(Real(0.45));
     const Shape capsule = Shape::capsule(Real(0.25), Real(0.45));

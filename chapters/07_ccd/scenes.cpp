@@ -15,11 +15,9 @@ constexpr Real kTargetZ[2] = {Real(-2), Real(2)};  // the wall's and the stack's
 constexpr Real kTargetX = 0;
 
 /// A world of the chapter's scenes: its name, its CCD setting, and gravity or none.
-World emptyWorld(const char* name, CcdMode ccd, bool gravity) {
-    World world;
-    world.name = name;
+World ccdWorld(const char* name, CcdMode ccd, bool gravity) {
+    World world = emptyWorld(name, gravity ? Settings{}.gravity : Vec3::Zero());
     world.settings.ccd = ccd;
-    if (!gravity) world.settings.gravity = Vec3::Zero();
     return world;
 }
 
@@ -54,7 +52,7 @@ int fireBullet(World& world, int target, Real height, Real speed) {
 }
 
 World buildGunRange(Real speed, CcdMode ccd) {
-    World world = emptyWorld("ccd-gun", ccd, true);
+    World world = ccdWorld("ccd-gun", ccd, true);
     addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(30, Real(0.5), 10));
     addStaticBox(world, "wall", Vec3(kTargetX, Real(1.5), kTargetZ[0]), Vec3(kWallHalfThickness, Real(1.5), Real(1.5)));
     for (int level = 0; level < 5; ++level) {
@@ -70,7 +68,7 @@ World buildGunRange(Real speed, CcdMode ccd) {
 }
 
 World buildSpinningRod(CcdMode ccd) {
-    World world = emptyWorld("ccd-spinning-rod", ccd, false);
+    World world = ccdWorld("ccd-spinning-rod", ccd, false);
     addStaticBox(world, "wall", Vec3::Zero(), Vec3(kWallHalfThickness, 3, 3));
     BodyDef rod = flyingBody("rod", Shape::box(Vec3(Real(0.01), Real(0.5), Real(0.01))), Vec3(-2, 0, 0), Vec3(50, 0, 0));
     rod.angularVelocity = Vec3(0, 0, 100);  // about z: the rod's ends sweep through the x-y plane
@@ -79,7 +77,7 @@ World buildSpinningRod(CcdMode ccd) {
 }
 
 World buildHeadOnBullets() {
-    World world = emptyWorld("ccd-head-on", CcdMode::Auto, false);
+    World world = ccdWorld("ccd-head-on", CcdMode::Auto, false);
     // 10 g from the left, 30 g from the right, 12.6 m apart: they meet in the second step.
     for (const auto& [name, side, mass] : {std::tuple{"left", Real(-1), Real(0.01)}, std::tuple{"right", Real(1), Real(0.03)}}) {
         BodyDef bullet = flyingBody(name, Shape::sphere(Real(0.01)), Vec3(side * Real(6.3), 0, 0), Vec3(-side * 300, 0, 0));

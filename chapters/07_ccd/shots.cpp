@@ -41,9 +41,7 @@ static Shape shotShape(const Shot& shot) {
 }
 
 World buildShot(const Shot& shot, CcdMode ccd) {
-    World world;
-    world.name = std::string("shot-") + toString(shot.shape);
-    world.settings.gravity = Vec3::Zero();
+    World world = emptyWorld(std::string("shot-") + toString(shot.shape), Vec3::Zero());
     world.settings.ccd = ccd;
     BodyDef wall;
     wall.name = "wall";

@@ -43,9 +43,7 @@ World buildDebugHullOnBox() {
 }
 
 World buildDebugTunnel() {
-    World world;
-    world.name = "debug-tunnel";
-    world.settings.gravity = Vec3::Zero();
+    World world = emptyWorld("debug-tunnel", Vec3::Zero());
     world.settings.ccd = CcdMode::Off;   // the bug to find; `ccd: on` is the fix the page shows
     // Chapter 4's solve: chapter 6's relax and soft step search contacts a whole frame ahead (a
     // speculative margin of v dt), which alone would catch this bullet; Baumgarte looks no further

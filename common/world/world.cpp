@@ -17,6 +17,13 @@ const Contact* findContact(const std::vector<Contact>& contacts, const BodyPair&
     return at != contacts.end() && at->pair() == pair ? &*at : nullptr;
 }
 
+World emptyWorld(const std::string& name, const Vec3& gravity) {
+    World world;
+    world.name = name;
+    world.settings.gravity = gravity;
+    return world;
+}
+
 int World::findBody(const std::string& bodyName) const {
     for (size_t i = 0; i < bodies.size(); ++i)
         if (bodies[i].name == bodyName) return static_cast<int>(i);

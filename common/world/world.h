@@ -135,6 +135,10 @@ struct World {
     int dynamicBodyCount() const;
 };
 
+/// An empty world named `name`: where a scene builder starts. The collision chapters' scenes pass
+/// zero gravity, so their bodies stay where the scene puts them and only the queries move.
+World emptyWorld(const std::string& name, const Vec3& gravity = Settings{}.gravity);
+
 /// Adds a body and, for moving bodies, its Motion with mass properties from the shape.
 /// Returns the body index. Static bodies get no Motion.
 int addBody(World& world, const BodyDef& def);
