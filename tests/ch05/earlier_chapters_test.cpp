@@ -11,13 +11,12 @@ using namespace stepwise;
 namespace {
 
 std::vector<test::PipelineVariant> throughChapter5() {
-    std::vector<test::PipelineVariant> variants;
-    for (BroadphaseMode mode : {BroadphaseMode::Brute, BroadphaseMode::Sap})
-        variants.push_back({std::string("broadphase ") + toString(mode), [mode](World& world, ContactSearch search) {
-                                world.settings.broadphase = mode;
-                                return makeChapter05Pipeline(world, chooseStepOrder(world), search);
-                            }});
-    return variants;
+    return test::variantsOver(
+        {BroadphaseMode::Brute, BroadphaseMode::Sap}, [](BroadphaseMode mode) { return std::string("broadphase ") + toString(mode); },
+        [](BroadphaseMode mode, World& world, ContactSearch search) {
+            world.settings.broadphase = mode;
+            return makeChapter05Pipeline(world, chooseStepOrder(world), search);
+        });
 }
 
 }  // namespace

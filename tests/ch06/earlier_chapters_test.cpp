@@ -14,15 +14,14 @@ using namespace stepwise;
 namespace {
 
 std::vector<test::PipelineVariant> throughChapter6() {
-    std::vector<test::PipelineVariant> variants;
-    for (bool multiPoint : {true, false})
-        variants.push_back({multiPoint ? "manifold" : "one point", [multiPoint](World& world, ContactSearch search) {
-                                if (!multiPoint) world.settings.stabilisation = Stabilisation::Baumgarte;
-                                ManifoldOptions options;
-                                options.multiPoint = multiPoint;
-                                return makeChapter06Pipeline(world, options, chooseStepOrder(world), search);
-                            }});
-    return variants;
+    return test::variantsOver(
+        {true, false}, [](bool multiPoint) { return multiPoint ? "manifold" : "one point"; },
+        [](bool multiPoint, World& world, ContactSearch search) {
+            if (!multiPoint) world.settings.stabilisation = Stabilisation::Baumgarte;
+            ManifoldOptions options;
+            options.multiPoint = multiPoint;
+            return makeChapter06Pipeline(world, options, chooseStepOrder(world), search);
+        });
 }
 
 }  // namespace

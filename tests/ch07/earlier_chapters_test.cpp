@@ -12,14 +12,13 @@ using namespace stepwise;
 namespace {
 
 std::vector<test::PipelineVariant> throughChapter7() {
-    std::vector<test::PipelineVariant> variants;
-    for (bool forced : {false, true})
-        variants.push_back({forced ? "ccd on" : "ccd auto", [forced](World& world, ContactSearch search) {
-                                if (forced) world.settings.ccd = CcdMode::On;
-                                return makeChapter07Pipeline(
-                                    world, makeChapter06Pipeline(world, ManifoldOptions{}, chooseStepOrder(world), search));
-                            }});
-    return variants;
+    return test::variantsOver(
+        {false, true}, [](bool forced) { return forced ? "ccd on" : "ccd auto"; },
+        [](bool forced, World& world, ContactSearch search) {
+            if (forced) world.settings.ccd = CcdMode::On;
+            return makeChapter07Pipeline(world,
+                                         makeChapter06Pipeline(world, ManifoldOptions{}, chooseStepOrder(world), search));
+        });
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "app/registry.h"
 #include "app/runner.h"
 #include "support/report_compare.h"
+#include "support/registry_fixture.h"
 #include "world/report.h"
 
 #include <catch2/catch.hpp>
@@ -79,24 +80,20 @@ TEST_CASE("the run report says whether CCD ran, why, and how many impacts it res
 
 TEST_CASE("scenes without fast bodies: the same reports with and without chapter 7", "[ch07][pipeline]") {
     const Registry& registry = chapterRegistry();
-    int compared = 0;
-    for (const SceneEntry& scene : registry.scenes()) {
-        if (scene.chapter > 6) continue;
-        World world6 = scene.build();
-        if (world6.bodies.size() > 60) continue;  // the big stress and pyramid scenes: the goldens cover them
+    const int compared = test::forEachSmallScene(6, [&](const SceneEntry&, World world6) {
         World world7 = world6;
         Pipeline pipeline6 = registry.makePipeline(world6, 6);
         Pipeline pipeline7 = makeChapter07Pipeline(world7, registry.makePipeline(world7, 6));
-        INFO(scene.name << ": " << ccdNote(pipeline7));
-        if (hasStage(pipeline7, "ccd:toi")) continue;
+        INFO(ccdNote(pipeline7));
+        if (hasStage(pipeline7, "ccd:toi")) return false;
         REQUIRE(pipeline7.enabledStageNames() == pipeline6.enabledStageNames());
         RunOptions options;
         options.frames = 120;
         const RunStats stats6 = runHeadless(world6, pipeline6, registry, options);
         const RunStats stats7 = runHeadless(world7, pipeline7, registry, options);
         CHECK(reportWithoutCcd(world7, stats7) == reportWithoutCcd(world6, stats6));
-        ++compared;
-    }
+        return true;
+    });
     CHECK(compared >= 15);
 }
 

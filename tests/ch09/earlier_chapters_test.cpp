@@ -7,6 +7,7 @@
 #include "app/registry.h"
 #include "app/runner.h"
 #include "support/report_compare.h"
+#include "support/registry_fixture.h"
 #include "world/state_hash.h"
 
 #include <catch2/catch.hpp>
@@ -15,12 +16,7 @@ using namespace stepwise;
 
 TEST_CASE("scenes of chapters 1 to 8: a session that rewinds and resumes ends where a plain run does", "[ch09][earlier]") {
     const Registry& registry = chapterRegistry();
-    int compared = 0;
-    for (const SceneEntry& scene : registry.scenes()) {
-        if (scene.chapter > 8) continue;
-        World plain = scene.build();
-        if (plain.bodies.size() > 60) continue;  // the big stress and pyramid scenes: the goldens cover them
-        INFO(scene.name);
+    const int compared = test::forEachSmallScene(8, [&](const SceneEntry&, World plain) {
         DebugSession session(plain, registry.makePipeline(plain));
         for (int frame = 0; frame < 60; ++frame) session.step();
         REQUIRE(session.rewindBy(30));
@@ -35,7 +31,7 @@ TEST_CASE("scenes of chapters 1 to 8: a session that rewinds and resumes ends wh
         CHECK(stateHash(session.world()) == stateHash(plain));
         // The report's state part (bodies, energies) from the session's world with the plain run's statistics.
         CHECK(test::reportWithoutTimingsAndNotes(session.world(), stats) == test::reportWithoutTimingsAndNotes(plain, stats));
-        ++compared;
-    }
+        return true;
+    });
     CHECK(compared >= 20);
 }

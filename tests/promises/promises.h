@@ -10,6 +10,7 @@
 #include "04_pgs/chapter.h"
 
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,16 @@ struct PipelineVariant {
     std::string name;
     PipelineMaker make;
 };
+
+/// One variant per value of a switch of the pipeline under test (a setting, an option): named
+/// `nameOf(value)`, made by `make(value, world, search)`.
+template <class Value, class NameOf, class Make>
+std::vector<PipelineVariant> variantsOver(std::initializer_list<Value> values, NameOf nameOf, Make make) {
+    std::vector<PipelineVariant> variants;
+    for (Value value : values)
+        variants.push_back({nameOf(value), [value, make](World& world, ContactSearch search) { return make(value, world, search); }});
+    return variants;
+}
 
 /// Checks every promise of `chapter` through each variant: what a later chapter's
 /// earlier_chapters_test runs, one TEST_CASE per earlier chapter.
