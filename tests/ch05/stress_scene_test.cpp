@@ -5,6 +5,7 @@
 #include "05_sap/stress_command.h"
 #include "05_sap/stress_scene.h"
 #include "app/runner.h"
+#include "support/scene_rejection.h"
 #include "world/scene.h"
 
 #include <catch2/catch.hpp>
@@ -28,12 +29,7 @@ World loadWithGenerators(const std::string& text) {
 }
 
 std::string sceneError(const std::string& text) {
-    try {
-        loadWithGenerators(text);
-    } catch (const SceneError& error) {
-        return error.what();
-    }
-    return "no error";
+    return test::rejectionMessage([&] { loadWithGenerators(text); }, "no error");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "09_debug/debug_session.h"
 #include "app/registry.h"
 #include "support/registry_fixture.h"
+#include "support/scene_rejection.h"
 #include "world/json_reader.h"
 #include "world/scene.h"
 
@@ -77,12 +78,7 @@ namespace {
 
 /// What reading the recording text is rejected with: the SceneError's lines, "" when it is read.
 std::string rejectionOf(const std::string& text) {
-    try {
-        recordingFromJson(text);
-    } catch (const SceneError& error) {
-        return error.what();
-    }
-    return "";
+    return test::rejectionMessage([&] { recordingFromJson(text); });
 }
 
 }  // namespace

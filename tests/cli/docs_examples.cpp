@@ -17,6 +17,8 @@
 //   of the bad files the CLI test runs (tests/cli/cases.txt).
 // Prints one line per failed check; exits 1 when any failed.
 
+#include "support/json_keys.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -38,6 +40,7 @@
 namespace {
 
 using Json = nlohmann::ordered_json;
+using stepwise::test::keysOf;
 namespace fs = std::filesystem;
 
 int failures = 0;
@@ -82,12 +85,6 @@ Run runProgram(const std::string& program, const std::string& arguments, const f
     run.out = readText(out);
     run.err = readText(err);
     return run;
-}
-
-std::vector<std::string> keysOf(const Json& object) {
-    std::vector<std::string> keys;
-    for (const auto& item : object.items()) keys.push_back(item.key());
-    return keys;
 }
 
 // Every key the documented value shows matches the actual one (numbers to `tolerance`).

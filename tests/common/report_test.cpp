@@ -1,6 +1,7 @@
 // Run reports: valid JSON, the contract's keys in the contract's order, and the same bytes for
 // the same run (outside timing_ms), so reports can be diffed and hashed.
 
+#include "support/json_keys.h"
 #include "world/report.h"
 #include "world/scene.h"
 
@@ -17,6 +18,7 @@
 
 using namespace stepwise;
 using Json = nlohmann::ordered_json;
+using test::keysOf;
 
 namespace {
 
@@ -35,12 +37,6 @@ RunStats sampleStats(const World& world) {
     stats.initialEnergy = computeEnergy(world);
     stats.finalEnergy = computeEnergy(world);
     return stats;
-}
-
-std::vector<std::string> keysOf(const Json& object) {
-    std::vector<std::string> keys;
-    for (const auto& item : object.items()) keys.push_back(item.key());
-    return keys;
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// The error a scene is rejected with, for the tests of bad input (tests/common, tests/ch08).
+// The error a scene (or a recording) is rejected with, for the tests of bad input.
 
 #include "world/scene.h"
 
@@ -18,6 +18,17 @@ inline SceneError rejectionOf(const std::string& text) {
     }
     FAIL("the scene loaded: " << text);
     return SceneError("", "");
+}
+
+/// What reading with `read` is rejected with: the SceneError's lines, `whenRead` when it reads.
+template <class Read>
+std::string rejectionMessage(Read read, const std::string& whenRead = "") {
+    try {
+        read();
+    } catch (const SceneError& error) {
+        return error.what();
+    }
+    return whenRead;
 }
 
 }  // namespace stepwise::test
