@@ -1,6 +1,7 @@
 #include "09_debug/commands.h"
 
 #include "09_debug/recording.h"
+#include "app/cli.h"
 #include "app/registry.h"
 #include "world/report.h"
 #include "world/scene.h"
@@ -29,21 +30,17 @@ struct ReplayArgs {
 };
 
 int runRecord(const RecordArgs& args) {
-    try {
-        const Registry& registry = chapterRegistry();
-        const int chapter = std::min(args.chapter, registry.lastChapter());
-        const Recording recording = recordRun(registry, args.scene, chapter, args.frames);
-        writeRecordingFile(args.output, recording);
-        std::cout << "recorded " << recording.frameHashes.size() << " frames of '" << args.scene << "' (chapter "
-                  << chapter << ") to " << args.output << "\n";
-        return 0;
-    } catch (const SceneError& error) {
-        printSceneError(std::cerr, error);
-        return 2;
-    } catch (const std::exception& error) {
-        std::cerr << "error: " << error.what() << "\n";
-        return 2;
-    }
+    return runReportingErrors(
+        [&] {
+            const Registry& registry = chapterRegistry();
+            const int chapter = std::min(args.chapter, registry.lastChapter());
+            const Recording recording = recordRun(registry, args.scene, chapter, args.frames);
+            writeRecordingFile(args.output, recording);
+            std::cout << "recorded " << recording.frameHashes.size() << " frames of '" << args.scene << "' (chapter "
+                      << chapter << ") to " << args.output << "\n";
+            return 0;
+        },
+        kExitBadInput);
 }
 
 int runReplay(const ReplayArgs& args) {

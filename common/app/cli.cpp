@@ -15,7 +15,6 @@ namespace {
 
 // Exit codes (docs/scene-format.md, "Exit codes"): 0 done, 1 an internal error, 2 bad input
 // (the message names the JSON path), 3 a run stopped because the step became unstable.
-constexpr int kExitBadInput = 2;
 constexpr int kExitUnstable = 3;
 
 struct RunArgs {
@@ -76,6 +75,18 @@ int commandBench(const Registry& registry, const std::string& suite, BenchOption
 }
 
 }  // namespace
+
+int runReportingErrors(const std::function<int()>& command, int otherErrorExit) {
+    try {
+        return command();
+    } catch (const SceneError& error) {
+        printSceneError(std::cerr, error);
+        return kExitBadInput;
+    } catch (const std::exception& error) {
+        std::cerr << "error: " << error.what() << "\n";
+        return otherErrorExit;
+    }
+}
 
 int runCli(int argc, char** argv, const Registry& registry) {
     CLI::App app{"Stepwise: a rigid-body physics engine built one chapter at a time", "stepwise"};

@@ -1,5 +1,6 @@
 // A chapter's demo without a window: runs one of the chapter's scenes headless, prints the
 // summary and writes the report. The DirectX 12 build of the same demo lives in renderer_dx12.
+#include "app/cli.h"
 #include "app/runner.h"
 #include "world/scene.h"
 
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         if (error.get_exit_code() == 0) return app.exit(error);
         std::cerr << "error: " << error.what() << "\n\n" << app.help();
-        return 2;
+        return kExitBadInput;
     }
 
     std::vector<const SceneEntry*> chapterScenes;
@@ -42,27 +43,23 @@ int main(int argc, char** argv) {
         return chapterScenes.empty() ? 1 : 0;
     }
     if (sceneName.empty()) sceneName = chapterScenes.front()->name;
-    try {
-        const SceneEntry* entry = registry.findScene(sceneName);
-        World world = loadSceneOrBuiltin(registry, sceneName);
-        Pipeline pipeline = registry.makePipeline(world, chapter);
-        RunOptions options;
-        options.frames = frames;
-        options.maxChapter = chapter;
-        options.progress = true;
-        std::cout << program << ": no display on this build, running headless\n";
-        if (entry) std::cout << "observe    " << entry->observe << "\n";
-        const RunStats stats = runHeadless(world, pipeline, registry, options);
-        printSummary(std::cout, world, stats);
-        if (reportPath.empty()) reportPath = program + "-" + world.name + ".json";
-        writeReport(reportPath, world, stats, engineVersion());
-        std::cout << "report     " << reportPath << "\n";
-        return stats.frames == frames ? 0 : 1;
-    } catch (const SceneError& error) {
-        printSceneError(std::cerr, error);
-        return 2;
-    } catch (const std::exception& error) {
-        std::cerr << "error: " << error.what() << "\n";
-        return 1;
-    }
+    return runReportingErrors(
+        [&] {
+            const SceneEntry* entry = registry.findScene(sceneName);
+            World world = loadSceneOrBuiltin(registry, sceneName);
+            Pipeline pipeline = registry.makePipeline(world, chapter);
+            RunOptions options;
+            options.frames = frames;
+            options.maxChapter = chapter;
+            options.progress = true;
+            std::cout << program << ": no display on this build, running headless\n";
+            if (entry) std::cout << "observe    " << entry->observe << "\n";
+            const RunStats stats = runHeadless(world, pipeline, registry, options);
+            printSummary(std::cout, world, stats);
+            if (reportPath.empty()) reportPath = program + "-" + world.name + ".json";
+            writeReport(reportPath, world, stats, engineVersion());
+            std::cout << "report     " << reportPath << "\n";
+            return stats.frames == frames ? 0 : 1;
+        },
+        1);
 }
