@@ -85,9 +85,7 @@ Measurement runEngine(const World& start, SpeedOptions options, long frames, lon
     for (auto& [group, ms] : measured.stageMs) ms /= timed;
     FastSolveStats& phases = measured.solvePhases;
     phases = *options.profile;
-    for (double* ms : {&phases.prepareMs, &phases.integrateMs, &phases.warmStartMs, &phases.solveMs, &phases.relaxMs,
-                       &phases.storeMs})
-        *ms /= timed;
+    for (double& ms : phases.phaseMs) ms /= timed;
     measured.stepMs = spreadOf(stepMs);
     measured.frames = frames;
     std::vector<Transform> poses;
@@ -170,9 +168,9 @@ BenchEntry speedBench() {
                 bench.progress().advance();
             }
             const FastSolveStats& phases = results.front().second.solvePhases;
-            profile.addRow({scene.name, std::to_string(phases.manifolds), std::to_string(phases.points), formatNumber(phases.prepareMs), formatNumber(phases.integrateMs),
-                            formatNumber(phases.warmStartMs), formatNumber(phases.solveMs), formatNumber(phases.relaxMs),
-                            formatNumber(phases.storeMs)});
+            std::vector<std::string> row = {scene.name, std::to_string(phases.manifolds), std::to_string(phases.points)};
+            for (double ms : phases.phaseMs) row.push_back(formatNumber(ms));
+            profile.addRow(std::move(row));
             const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
             for (const auto& result : results) {
                 const Configuration* configuration = result.first;

@@ -392,12 +392,7 @@ void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame) {
     total.points = frame.points;
     total.wideBlocks = frame.wideBlocks;
     total.overflow = frame.overflow;
-    total.prepareMs += frame.prepareMs;
-    total.integrateMs += frame.integrateMs;
-    total.warmStartMs += frame.warmStartMs;
-    total.solveMs += frame.solveMs;
-    total.relaxMs += frame.relaxMs;
-    total.storeMs += frame.storeMs;
+    for (std::size_t phase = 0; phase < kSolvePhaseCount; ++phase) total.phaseMs[phase] += frame.phaseMs[phase];
 }
 
 // [ch10-solve-fast]
@@ -460,12 +455,12 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     SolverBodyState* states = scratch.bodies.states.data();
     prepareWide(scratch.wideBlocks, states);
     for (ManifoldBlock<1>& block : scratch.scalarBlocks) prepareBlock(block, states);
-    stats.prepareMs += lap(clock);
+    stats.ms(SolvePhase::Prepare) += lap(clock);
 
     const bool warmStarting = world.settings.warmStarting;
     for (int substep = 0; substep < substeps; ++substep) {
         integrateVelocities(world, scratch.bodies, h, substep == 0);
-        stats.integrateMs += lap(clock);
+        stats.ms(SolvePhase::Integrate) += lap(clock);
         if (!warmStarting) {
             resetImpulses(scratch.wideBlocks);
             resetImpulses(scratch.scalarBlocks);
@@ -473,15 +468,15 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
             warmStartWide(scratch.wideBlocks, states);
             warmStartAll(scratch.scalarBlocks, states);
         }
-        stats.warmStartMs += lap(clock);
+        stats.ms(SolvePhase::WarmStart) += lap(clock);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
         solveAll(scratch.scalarBlocks, states, params, true);
-        stats.solveMs += lap(clock);
+        stats.ms(SolvePhase::Solve) += lap(clock);
         integratePositions(scratch.bodies, h, path);
-        stats.integrateMs += lap(clock);
+        stats.ms(SolvePhase::Integrate) += lap(clock);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
         solveAll(scratch.scalarBlocks, states, params, false);
-        stats.relaxMs += lap(clock);
+        stats.ms(SolvePhase::Relax) += lap(clock);
     }
     restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
     restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
@@ -490,7 +485,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     for (const ManifoldBlock<kWideLanes>& block : scratch.wideBlocks) storeBlock(block, world);
     for (const ManifoldBlock<1>& block : scratch.scalarBlocks) storeBlock(block, world);
 
-    stats.storeMs += lap(clock);
+    stats.ms(SolvePhase::Store) += lap(clock);
     solverStats.contactPoints = stats.points;
     solverStats.rows = stats.points + 3 * stats.manifolds;  // normal rows, and three friction rows per manifold
     world.step.solver = solverStats;

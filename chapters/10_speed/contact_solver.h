@@ -7,6 +7,8 @@
 #include "10_speed/solver_data.h"
 #include "world/world.h"
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -16,19 +18,27 @@ enum class SolverPath { Scalar, Wide };
 const char* toString(SolverPath path);
 
 /// What one fast solve did (World::step.solver carries the engine-wide figures).
+/// The phases of a solve, in the order a frame runs them (Box3D's solver stages).
+enum class SolvePhase {
+    Prepare,    // bodies, colours, blocks and their effective masses, once per frame
+    Integrate,  // velocities and positions, every substep
+    WarmStart,
+    Solve,      // the biased sweeps
+    Relax,      // the relax sweeps
+    Store,      // restitution, poses, velocities and impulses back into the World
+};
+constexpr std::size_t kSolvePhaseCount = 6;
+
 struct FastSolveStats {
     int bodies = 0;          // moving bodies solved (awake dynamic)
     int manifolds = 0;       // contacts with at least one moving body
     int points = 0;
     int wideBlocks = 0;      // blocks of kWideLanes lanes (their fill: manifolds in them / lanes)
     int overflow = 0;        // manifolds past the last colour, solved one at a time
-    // Where the solve's time went, ms (the bench's profile of the solve stage).
-    double prepareMs = 0;    // bodies, colours, blocks and their effective masses, once per frame
-    double integrateMs = 0;  // velocities and positions, every substep
-    double warmStartMs = 0;
-    double solveMs = 0;      // the biased sweeps
-    double relaxMs = 0;      // the relax sweeps
-    double storeMs = 0;      // restitution, poses, velocities and impulses back into the World
+    // Where the solve's time went, ms per phase (the bench's profile of the solve stage).
+    std::array<double, kSolvePhaseCount> phaseMs{};
+    double& ms(SolvePhase phase) { return phaseMs[static_cast<std::size_t>(phase)]; }
+    double ms(SolvePhase phase) const { return phaseMs[static_cast<std::size_t>(phase)]; }
 };
 
 /// total's phase times += frame's; the counts become frame's.
