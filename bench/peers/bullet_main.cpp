@@ -3,6 +3,7 @@
 //
 //   stepwise_bullet run scenes/ball-on-box.json --frames 600 --report out/bullet.json
 
+#include "app/cli.h"
 #include "app/registry.h"
 #include "app/runner.h"
 #include "peers/bullet_peer.h"
@@ -19,10 +20,9 @@ namespace {
 
 using namespace stepwise;
 
-// The exit codes of `stepwise` (docs/scene-format.md, "Exit codes"): 2 is bad input, which here
-// includes a scene feature Bullet cannot take.
+// The exit codes of `stepwise` (docs/scene-format.md, "Exit codes"): kExitBadInput (app/cli.h) is
+// bad input, which here includes a scene feature Bullet cannot take.
 constexpr int kExitInternal = 1;
-constexpr int kExitBadInput = 2;
 
 struct Args {
     std::string scene;
@@ -87,17 +87,17 @@ int main(int argc, char** argv) {
     runCommand->add_flag("--quiet", args.quiet, "Print nothing but errors");
     try {
         app.parse(argc, argv);
-        return run(args);
     } catch (const CLI::ParseError& error) {
         return app.exit(error) == 0 ? 0 : kExitBadInput;
-    } catch (const SceneError& error) {
-        printSceneError(std::cerr, error);
-        return kExitBadInput;
-    } catch (const peers::BulletUnsupported& error) {
-        std::cerr << "error: " << error.what() << "\n";
-        return kExitBadInput;
-    } catch (const std::exception& error) {
-        std::cerr << "error: " << error.what() << "\n";
-        return kExitInternal;
     }
+    return runReportingErrors(
+        [&] {
+            try {
+                return run(args);
+            } catch (const peers::BulletUnsupported& error) {
+                std::cerr << "error: " << error.what() << "\n";
+                return kExitBadInput;
+            }
+        },
+        kExitInternal);
 }
