@@ -1,7 +1,6 @@
 #include "demo_state.h"
 
 #include "app/runner.h"
-#include "bounds_draw.h"
 #include "world/contact_draw.h"
 #include "world/shape.h"
 
@@ -206,15 +205,22 @@ Framing DemoState::framing() const {
     result = bodyBounds();
     // The scene's overlay counts as content: chapter 2 draws A - B above its bodies, chapter 3
     // the EPA polytope beside them. Drawing changes neither world nor view, so measuring is harmless.
+    // Labels count by their anchors; their on-screen width is only known to the shell
+    // (ui_shell.cpp, frameScene), so they go along.
+    const auto measured = [&](const RecordingDraw& measure) {
+        if (!measure.empty()) result.grow(measure.bounds());
+        for (const RecordingDraw::Command& command : measure.commands())
+            if (command.kind == RecordingDraw::Kind::Text && command.a.allFinite())
+                framing.labels.push_back({command.a, command.message, command.color});
+    };
     if (view_) {
-        BoundsDraw measure;
+        RecordingDraw measure;
         try {
             view_->draw(world, measure);
         } catch (const std::exception&) {
-            // A hook that throws draws nothing here either; the bodies alone are framed.
+            // A hook that throws stops drawing here too; what it drew before still counts.
         }
-        if (!measure.empty()) result.grow(measure.bounds());
-        framing.labels = std::move(measure.labels);
+        measured(measure);
     }
     // So is the debugger's A - B overlay beside the bodies; only the overlays are measured (the
     // views that draw the bodies would bring in the whole ground).
@@ -223,10 +229,9 @@ Framing DemoState::framing() const {
         overlays.colliders = overlays.wireframeSelection = overlays.contactPoints = overlays.contactNormals = false;
         overlays.gjkSimplex = views.gjkSimplex;
         overlays.minkowski = views.minkowski;
-        BoundsDraw measure;
+        RecordingDraw measure;
         drawDebugViews(measure, world, overlays, selectedBody, hitTree(), hitSelection());
-        if (!measure.empty()) result.grow(measure.bounds());
-        for (TextLabel& label : measure.labels) framing.labels.push_back(std::move(label));
+        measured(measure);
     }
     // Keep the ground (a static slab, or the grid at groundLevel()) in the picture: always when
     // there is a static body; for bodies in free space only when the ground is near them, so a

@@ -46,31 +46,58 @@ void drawWorld(DebugDraw& draw, const World& world) {
         drawBody(draw, world.bodies[i], bodyTypeColor(world, static_cast<int>(i)));
 }
 
+void RecordingDraw::grow(const Vec3& point) {
+    if (point.allFinite()) bounds_.grow(point);
+}
+
 void RecordingDraw::line(const Vec3& from, const Vec3& to, Color color) {
     commands_.push_back({Kind::Line, from, to, color, {}});
+    grow(from);
+    grow(to);
 }
-void RecordingDraw::point(const Vec3& at, float, Color color) { commands_.push_back({Kind::Point, at, at, color, {}}); }
+void RecordingDraw::point(const Vec3& at, float, Color color) {
+    commands_.push_back({Kind::Point, at, at, color, {}});
+    grow(at);
+}
 void RecordingDraw::arrow(const Vec3& from, const Vec3& to, Color color) {
     commands_.push_back({Kind::Arrow, from, to, color, {}});
+    grow(from);
+    grow(to);
 }
 void RecordingDraw::box(const Transform& pose, const Vec3& halfExtents, Color color, Fill fill) {
     commands_.push_back({Kind::Box, pose.position, halfExtents, color, {}, fill});
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 sign((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1);
+        grow(pose.apply(sign.cwiseProduct(halfExtents)));
+    }
 }
 void RecordingDraw::sphere(const Vec3& center, Real radius, Color color, Fill fill) {
     commands_.push_back({Kind::Sphere, center, Vec3::Constant(radius), color, {}, fill});
+    grow(center - Vec3::Constant(radius));
+    grow(center + Vec3::Constant(radius));
 }
 void RecordingDraw::capsule(const Transform& pose, Real radius, Real halfHeight, Color color, Fill fill) {
     commands_.push_back({Kind::Capsule, pose.position, Vec3(radius, halfHeight, 0), color, {}, fill});
+    // The capsule's axis is its local +Y (world/shape.h): the balls at both ends.
+    for (Real end : {-halfHeight, halfHeight}) {
+        const Vec3 center = pose.apply(Vec3(0, end, 0));
+        grow(center - Vec3::Constant(radius));
+        grow(center + Vec3::Constant(radius));
+    }
 }
-void RecordingDraw::hull(const Transform& pose, const ConvexHull&, Color color, Fill fill) {
+void RecordingDraw::hull(const Transform& pose, const ConvexHull& hull, Color color, Fill fill) {
     commands_.push_back({Kind::Hull, pose.position, pose.position, color, {}, fill});
+    for (const Vec3& vertex : hull.vertices) grow(pose.apply(vertex));
 }
 void RecordingDraw::triangle(const Vec3& a, const Vec3& b, const Vec3& c, Color color) {
     commands_.push_back({Kind::Triangle, a, b, color, {}});
-    (void)c;
+    grow(a);
+    grow(b);
+    grow(c);
 }
 void RecordingDraw::text(const Vec3& at, const std::string& message, Color color) {
     commands_.push_back({Kind::Text, at, at, color, message});
+    grow(at);
 }
 
 int RecordingDraw::count(Kind kind) const {

@@ -57,7 +57,10 @@ Color bodyColor(int bodyIndex);
 /// How every demo colours a body: statics grey, kinematics blue, dynamics bodyColor(index).
 Color bodyTypeColor(const World& world, int bodyIndex);
 
-/// Keeps every call as a record: the drawer for tests and headless runs.
+/// Keeps every call as a record: the drawer for tests and headless runs. It also measures: the box
+/// around everything drawn is how the demo frames a scene from what its draw hook puts around the
+/// bodies (chapter 2 draws the Minkowski difference metres above them), so the hook is run once
+/// into a recorder.
 class RecordingDraw final : public DebugDraw {
 public:
     enum class Kind { Line, Point, Arrow, Box, Sphere, Capsule, Hull, Triangle, Text };
@@ -82,10 +85,22 @@ public:
 
     int count(Kind kind) const;
     const std::vector<Command>& commands() const { return commands_; }
-    void clear() { commands_.clear(); }
+    void clear() {
+        commands_.clear();
+        bounds_ = Aabb{};
+    }
+
+    /// Every point drawn so far: the ends of lines, the corners of boxes, the vertices of hulls, the
+    /// balls of spheres and capsules, the anchors of labels (their width is only known on screen).
+    /// Non-finite points (a scene drawing a NaN) are left out instead of poisoning the box; empty
+    /// (min > max) when nothing finite was drawn.
+    const Aabb& bounds() const { return bounds_; }
+    bool empty() const { return (bounds_.min.array() > bounds_.max.array()).any(); }
 
 private:
+    void grow(const Vec3& point);
     std::vector<Command> commands_;
+    Aabb bounds_;
 };
 
 }  // namespace stepwise
