@@ -89,8 +89,7 @@ const Vec3 kHandleHalfExtents(Real(0.05), Real(0.4), Real(0.15));
 }  // namespace
 
 World buildIntegratorsSideBySide() {
-    World world;
-    world.name = "integrators-side-by-side";
+    World world = emptyWorld("integrators-side-by-side");
     for (int slot = 0; slot < 3; ++slot) {
         const IntegratorKind method = kMethods[slot];
         const Real x = (slot - 1) * kChainSpacing;
@@ -132,8 +131,7 @@ World buildTHandle(GyroscopicMode gyroscopic) {
 }
 
 World buildProjectile() {
-    World world;
-    world.name = "projectile";
+    World world = emptyWorld("projectile");
     world.settings.dt = kProjectileDt;
     for (int slot = 0; slot < 3; ++slot) {
         const Vec3 lane(0, 0, (slot - 1) * Real(0.6));

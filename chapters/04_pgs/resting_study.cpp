@@ -18,8 +18,7 @@ double RestingRun::drift(int fromFrame) const {
 }
 
 RestingRun runRestingStudy(const RestingSetup& setup, int frames) {
-    World world;
-    world.name = "resting";
+    World world = emptyWorld("resting");
     world.settings.substeps = setup.substeps;
     addGroundPlane(world);
     int body = -1;   // the body whose overlap with `below` is recorded

@@ -7,16 +7,6 @@
 
 namespace stepwise {
 
-namespace {
-
-World namedWorld(const std::string& name) {
-    World world;
-    world.name = name;
-    return world;
-}
-
-}  // namespace
-
 int addGroundPlane(World& world, Real friction, Real restitution) {
     return addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(20, Real(0.5), 20), Quat::Identity(),
                         Material{friction, restitution});
@@ -46,7 +36,7 @@ int addCrate(World& world, const std::string& name, const Vec3& position, const 
 }
 
 World buildDropScene() {
-    World world = namedWorld("pgs-drop");
+    World world = emptyWorld("pgs-drop");
     addGroundPlane(world);
     Random random(4);
     for (int i = 0; i < 8; ++i) {
@@ -72,7 +62,7 @@ World buildDropScene() {
 }
 
 World buildBounceScene(Real height) {
-    World world = namedWorld("pgs-bounce");
+    World world = emptyWorld("pgs-bounce");
     addGroundPlane(world);
     const Real restitutions[] = {Real(0.3), Real(0.6), Real(0.9), Real(1.0)};
     const Real radius = Real(0.25);
@@ -85,7 +75,7 @@ World buildBounceScene(Real height) {
 }
 
 World buildRestingScene() {
-    World world = namedWorld("pgs-resting");
+    World world = emptyWorld("pgs-resting");
     addGroundPlane(world);
     const Real slop = world.settings.slop;
     addCrate(world, "box", Vec3(-1, Real(0.5) - slop, 0), Vec3(Real(0.5), Real(0.5), Real(0.5)), 1, Material{});
@@ -98,7 +88,7 @@ World buildRestingScene() {
 }
 
 World buildRampScene(Real angle, Real friction, int* box) {
-    World world = namedWorld("pgs-ramp");
+    World world = emptyWorld("pgs-ramp");
     const Quat tilt(Eigen::AngleAxis<Real>(angle, Vec3::UnitZ()));
     const Vec3 rampHalf(4, Real(0.25), 2);
     const Vec3 rampCenter(0, 0, 0);
@@ -112,7 +102,7 @@ World buildRampScene(Real angle, Real friction, int* box) {
 }
 
 World buildFrictionScene(Real friction) {
-    World world = namedWorld("pgs-friction");
+    World world = emptyWorld("pgs-friction");
     // One contact point per box rocks it from corner to corner; at 60 Hz that rocking walks a box
     // down even a gentle ramp. 8 substeps make it small enough to show Coulomb's law.
     world.settings.substeps = 8;
@@ -137,7 +127,7 @@ World buildFrictionScene(Real friction) {
 }
 
 World buildSpherePitScene(int count) {
-    World world = namedWorld("pgs-sphere-pit");
+    World world = emptyWorld("pgs-sphere-pit");
     addGroundPlane(world);
     const Real inner = Real(1.0);       // half width of the pit, m
     const Real wall = Real(0.2);        // half thickness

@@ -197,7 +197,9 @@ struct AxisComparison {
     double sweepMs[3] = {0, 0, 0};
 };
 
-AxisComparison compareAxes(StressDensity density, int count) {
+/// A stress scene of `count` bodies dropped from no height, after five frames of sweep and prune:
+/// the broadphase state (bounds, kept order, axis) of a scene that has landed, for timing its parts.
+World landedStressScene(StressDensity density, int count) {
     StressParams params;
     params.count = count;
     params.density = density;
@@ -206,6 +208,11 @@ AxisComparison compareAxes(StressDensity density, int count) {
     world.settings.broadphase = BroadphaseMode::Sap;
     Pipeline pipeline = makeChapter05Pipeline(world);
     for (int frame = 0; frame < 5; ++frame) pipeline.step(world);
+    return world;
+}
+
+AxisComparison compareAxes(StressDensity density, int count) {
+    World world = landedStressScene(density, count);
     AxisComparison comparison;
     comparison.chosen = world.broadphase.axis;
     std::vector<SweepEndpoint> ends;
@@ -228,13 +235,7 @@ struct PhaseCosts {
 };
 
 PhaseCosts measurePhases(int count, int repetitions) {
-    StressParams params;
-    params.count = count;
-    params.dropHeight = 0;
-    World world = buildStressScene(params);
-    world.settings.broadphase = BroadphaseMode::Sap;
-    Pipeline pipeline = makeChapter05Pipeline(world);
-    for (int frame = 0; frame < 5; ++frame) pipeline.step(world);
+    World world = landedStressScene(StressParams{}.density, count);
     std::vector<double> bounds, variance, sort, sweep, pairSort;
     for (int repetition = 0; repetition < repetitions; ++repetition) {
         BroadphaseState state = world.broadphase;

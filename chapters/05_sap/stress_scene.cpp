@@ -105,8 +105,7 @@ void addStressBodies(World& world, const StressParams& params) {
 // [ch05-stress-scene]
 
 World buildStressScene(const StressParams& params, const std::string& name) {
-    World world;
-    world.name = name;
+    World world = emptyWorld(name);
     addStressBodies(world, params);
     return world;
 }
@@ -123,8 +122,7 @@ StressParams readStressParams(const JsonCursor& cursor) {
 }
 
 std::string stressSceneFile(const StressParams& params, const Settings& settings, const std::string& name) {
-    World empty;
-    empty.name = name;
+    World empty = emptyWorld(name);
     empty.settings = settings;
     Json scene = parseStrictJson(saveSceneToString(empty), name);
     scene.erase("bodies");

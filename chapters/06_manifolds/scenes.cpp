@@ -21,8 +21,7 @@ namespace {
 const Vec3 kUnitHalf(Real(0.5), Real(0.5), Real(0.5));
 
 World stackingWorld(const std::string& name) {
-    World world;
-    world.name = name;
+    World world = emptyWorld(name);
     addGroundPlane(world, kStackFriction);
     return world;
 }

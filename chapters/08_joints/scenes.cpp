@@ -117,8 +117,7 @@ int addRotator(World& world, const RotatorSpec& spec) {
 }
 
 World buildJointsSandbox() {
-    World world;
-    world.name = "joints-sandbox";
+    World world = emptyWorld("joints-sandbox");
     addGround(world);
     // Facing the view (facingView): the tall pieces stand at the back, the low ones in front, and
     // the chain swings across the screen, not towards it.
@@ -145,8 +144,7 @@ World buildJointsSandbox() {
 
 // [ch08-gallery]
 World buildJointGallery() {
-    World world;
-    world.name = "joints-gallery";
+    World world = emptyWorld("joints-gallery");
     addGround(world);
     // Posts in a row across the view, turned with it: "across" and "front" are the view's x and z.
     int slot = 0;
@@ -223,24 +221,21 @@ World buildJointGallery() {
 // [ch08-gallery]
 
 World buildPlatformScene() {
-    World world;
-    world.name = "joints-platform";
+    World world = emptyWorld("joints-platform");
     addGround(world);
     addMovingPlatform(world, PlatformSpec{});
     return world;
 }
 
 World buildRotatorScene() {
-    World world;
-    world.name = "joints-rotator";
+    World world = emptyWorld("joints-rotator");
     addGround(world);
     addRotator(world, RotatorSpec{});
     return world;
 }
 
 World buildRagdollPile(int ragdolls, unsigned seed) {
-    World world;
-    world.name = "joints-ragdoll-pile";
+    World world = emptyWorld("joints-ragdoll-pile");
     addGround(world);
     Random random(seed);
     for (int i = 0; i < ragdolls; ++i) {

@@ -8,8 +8,7 @@
 namespace stepwise {
 
 World buildDebugDrop() {
-    World world;
-    world.name = "debug-drop";
+    World world = emptyWorld("debug-drop");
     addGroundPlane(world);
     const Quat tilt(Eigen::AngleAxis<Real>(Real(0.5), Vec3(1, 0, 1).normalized()));
     addCrate(world, "box", Vec3(0, Real(1.2), 0), Vec3(Real(0.3), Real(0.2), Real(0.25)), 2, Material{}, tilt);
@@ -28,8 +27,7 @@ std::vector<Vec3> gemPoints() {
 }
 
 World buildDebugHullOnBox() {
-    World world;
-    world.name = "debug-hull-on-box";
+    World world = emptyWorld("debug-hull-on-box");
     addGroundPlane(world);
     addCrate(world, "crate", Vec3(0, Real(0.3), 0), Vec3(Real(0.6), Real(0.3), Real(0.6)), 20, Material{});
     // The gem tilted so it lands on an edge and rolls onto a face.
@@ -62,8 +60,7 @@ World buildDebugTunnel() {
 }
 
 World buildDebugJitter() {
-    World world;
-    world.name = "debug-jitter";
+    World world = emptyWorld("debug-jitter");
     world.settings.warmStarting = false;   // what makes it jitter; the page turns it back on
     addGroundPlane(world);
     for (int level = 0; level < 5; ++level)

@@ -12,8 +12,7 @@
 namespace stepwise {
 
 World buildPyramidRow(int count, int rows) {
-    World world;
-    world.name = "pyramids-" + std::to_string(count) + "x" + std::to_string(rows);
+    World world = emptyWorld("pyramids-" + std::to_string(count) + "x" + std::to_string(rows));
     const Real spacing = Real(1.05);
     // The ground reaches 5 m beyond the widest row and the outer pyramids (chapter 4's 40 m square
     // ground is narrower than a 100-row pyramid's 105 m base).
@@ -58,8 +57,7 @@ Shape pileShape(int index, Random& random) {
 }  // namespace
 
 World buildMixedPile(int count, bool roundShapes) {
-    World world;
-    world.name = (roundShapes ? "mixed-pile-" : "angular-pile-") + std::to_string(count);
+    World world = emptyWorld((roundShapes ? "mixed-pile-" : "angular-pile-") + std::to_string(count));
     addGroundPlane(world);
     const int side = 12;  // bodies per row and column of a layer
     const Real spacing = Real(1.5);
