@@ -54,14 +54,10 @@ PlacedShape placeShape(const Shape& shape, const Transform& pose) {
             // The box of the turned vertices, then moved: rounding keeps the order of sums, so
             // position + the least turned vertex is the least of the moved ones, to the bit.
             Aabb turned;
-            Real radiusSquared = 0;
-            for (const Vec3& vertex : shape.hull->vertices) {
-                turned.grow(rotation * vertex);
-                radiusSquared = std::max(radiusSquared, vertex.squaredNorm());
-            }
+            for (const Vec3& vertex : shape.hull->vertices) turned.grow(rotation * vertex);
             placed.box.min = pose.position + turned.min;
             placed.box.max = pose.position + turned.max;
-            placed.radius = std::sqrt(radiusSquared);
+            placed.radius = shape.hull->vertexRadius;
             return placed;
         }
     }

@@ -115,6 +115,7 @@ ConvexHull buildConvexHull(const std::vector<Vec3>& inputPoints) {
         face.offset = static_cast<Real>(plane.offset);
         hull.faces.push_back(std::move(face));
     }
+    for (const Vec3& vertex : hull.vertices) hull.vertexRadius = std::max(hull.vertexRadius, vertex.norm());
     return hull;
 }
 
@@ -280,11 +281,7 @@ Real boundingRadius(const Shape& shape) {
         case ShapeType::Box: return shape.halfExtents.norm();
         case ShapeType::Sphere: return shape.radius;
         case ShapeType::Capsule: return shape.halfHeight + shape.radius;
-        case ShapeType::Convex: {
-            Real radius = 0;
-            for (const Vec3& vertex : shape.hull->vertices) radius = std::max(radius, vertex.norm());
-            return radius;
-        }
+        case ShapeType::Convex: return shape.hull ? shape.hull->vertexRadius : 0;
     }
     return 0;
 }

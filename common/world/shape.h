@@ -24,6 +24,9 @@ struct HullFace {
 struct ConvexHull {
     std::vector<Vec3> vertices;
     std::vector<HullFace> faces;
+    /// The largest distance of a vertex from the origin, m: buildConvexHull sets it once, because
+    /// the broadphase and the speculative margin ask for it every step.
+    Real vertexRadius = 0;
 };
 
 constexpr int kMaxHullPoints = 128;
