@@ -71,14 +71,16 @@ ToiResult timeOfImpact(const Shape& shapeA, const Sweep& a, const Shape& shapeB,
         result.time = t;
         result.pointA = gap.pointA;
         result.pointB = gap.pointB;
-        // A GJK that stopped early (a degenerate simplex, the iteration cap) reports more than the
-        // true distance, and advancing by it once carried a hull through the wall. Then the
-        // advance trusts a separating plane's gap instead, a lower bound of the distance for any
-        // direction: GJK's, or the centres' when that one is poor.
+        // A GJK that stopped early (a degenerate simplex, the iteration cap, or no progress at
+        // the rounding floor) reports more than the true distance, and advancing by it once
+        // carried a hull through the wall; a 3.5 cm box shot at 500 m/s at a 50 m wall read 11 mm
+        // where 0.6 mm was left, along a normal the shot barely closed on, and the advance jumped
+        // the rest of the step. Then the advance trusts a separating plane's gap instead, a lower
+        // bound of the distance for any direction: GJK's, or the centres' when that one is poor.
         Real distance = gap.separated ? gap.distance : 0;
         if (gap.separated && gap.distance > 0) {
             result.normal = (gap.pointB - gap.pointA).normalized();
-            if (gap.exit == GjkExit::Degenerate || gap.exit == GjkExit::IterationCap)
+            if (gap.exit == GjkExit::Degenerate || gap.exit == GjkExit::IterationCap || gap.exit == GjkExit::NoProgress)
                 distance = std::min(distance, guaranteedGap(proxyA, proxyB, result.normal));
         }
         result.distance = std::max(Real(0), distance);
