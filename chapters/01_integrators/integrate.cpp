@@ -68,7 +68,7 @@ void eulerPositionStep(Real h, MotionState& state) {
     // The positions move with the NEW velocities: x1 = x0 + h v1. This one choice (instead of
     // x1 = x0 + h v0) makes the method symplectic.
     state.center += h * state.linearVelocity;
-    state.rotation = integrateRotation(state.rotation, state.angularVelocity, h);
+    state.rotation = turnRotation(state.rotation, state.angularVelocity, h);
 }
 // [ch01-semi-implicit-euler]
 

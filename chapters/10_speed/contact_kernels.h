@@ -4,6 +4,7 @@
 // solver runs it with N = 1 in contact order; the wide solver with N = kWideLanes over the
 // colours. The arithmetic is the same, so the two agree to the Gauss-Seidel ordering.
 
+#include "01_integrators/rotation.h"
 #include "10_speed/solver_data.h"
 
 #include <algorithm>
@@ -181,7 +182,8 @@ inline PackVec3<N> relativeVelocity(const BodyPack<N>& a, const BodyPack<N>& b, 
 
 // [ch10-integrate-positions]
 /// Chapter 1's position step for N bodies at once: the centre moves by h v, the rotation since
-/// the frame began by q + h/2 (0, w) q, renormalised (integrateRotation, lane by lane).
+/// the frame began turns by h |w| about w (turnRotation, the same series on every lane; a lane
+/// spinning too fast for the series takes chapter 1's own step).
 template <int N>
 inline void integratePositionsPack(SolverBodyState* states, const int* slots, Real h) {
     BodyPack<N> body = gatherBodies<N>(states, slots);
@@ -189,12 +191,29 @@ inline void integratePositionsPack(SolverBodyState* states, const int* slots, Re
     body.deltaPosition = body.deltaPosition + step * body.linearVelocity;
     PackQuat<N>& q = body.deltaRotation;
     const PackVec3<N>& w = body.angularVelocity;
+    const Pack<N> halfStep = half * step;
+    const Pack<N> y = halfStep * halfStep * dot(w, w);
+    bool seriesHolds = true;
+    for (int lane = 0; lane < N; ++lane) seriesHolds &= y[lane] <= kTurnSeriesLimit;
+    if (!seriesHolds) {
+        for (int lane = 0; lane < N; ++lane) {
+            const Quat turned = turnRotation(Quat(q.w[lane], q.x[lane], q.y[lane], q.z[lane]),
+                                             Vec3(w.x[lane], w.y[lane], w.z[lane]), h);
+            q.x[lane] = turned.x(), q.y[lane] = turned.y(), q.z[lane] = turned.z(), q.w[lane] = turned.w();
+        }
+        scatterBodies(states, slots, body);
+        return;
+    }
+    Pack<N> cosine, sineRatio;
+    turnSeries(y, [](Real value) { return Pack<N>::splat(value); }, cosine, sineRatio);
+    // 1/2 (0, w) q, as quaternionDerivative.
     const PackVec3<N> turning = half * (q.w * w + cross(w, PackVec3<N>{q.x, q.y, q.z}));
     const Pack<N> turningW = half * -dot(w, PackVec3<N>{q.x, q.y, q.z});
-    q.x = q.x + step * turning.x;
-    q.y = q.y + step * turning.y;
-    q.z = q.z + step * turning.z;
-    q.w = q.w + step * turningW;
+    const Pack<N> along = step * sineRatio;
+    q.x = cosine * q.x + along * turning.x;
+    q.y = cosine * q.y + along * turning.y;
+    q.z = cosine * q.z + along * turning.z;
+    q.w = cosine * q.w + along * turningW;
     const Pack<N> length = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
     q.x = q.x / length;
     q.y = q.y / length;
