@@ -2,7 +2,10 @@
 // The wide path's three passes over the colour blocks. They live in their own file because it is
 // the one built with the SIMD instruction set (AVX2 and FMA where the compiler and the option
 // STEPWISE_WIDE_AVX2 allow, chapters/CMakeLists.txt): the same templates as the scalar path
-// (contact_kernels.h), compiled for 256-bit registers.
+// (contact_kernels.h), compiled for 256-bit registers. Call the wide kernels through these
+// functions only: a kernel over kWideLanes instantiated in another file would be built for SSE2
+// there, a second definition of the same template with another calling convention, and the
+// linker may hand either to both files (the sanitizer build crashed on it once).
 
 #include "10_speed/solver_data.h"
 
