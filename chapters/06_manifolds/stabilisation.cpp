@@ -250,16 +250,21 @@ void relaxContacts(World& world, Real dt, int iterations, ExtraConstraints* extr
 
 // [ch06-substepped]
 void substeppedSolve(World& world, Real dt, ExtraConstraints* extra) {
-    // Nothing touches: chapter 4's split step, so that free bodies move exactly as in chapter 1.
+    const int substeps = std::max(1, world.settings.solverIterations);
+    const Real h = dt / static_cast<Real>(substeps);
+    // Nothing touches: chapter 4's split step, substep by substep, so that free bodies move
+    // exactly as chapter 1 moves them at the substep. Every body moves in the same substeps
+    // whether or not anything touches: a ball's flight must not depend on another body's contact
+    // (a frame at a time, Euler's g h t / 2 took 7% off a dropped ball's bounce).
     if (world.contacts.empty() && !(extra && extra->active(world))) {
-        applyForces(world);
-        integrateVelocities(world, dt);
-        integratePositions(world, dt);
+        for (int substep = 0; substep < substeps; ++substep) {
+            applyForces(world);
+            integrateVelocities(world, h);
+            integratePositions(world, h);
+        }
         world.step.velocitiesBeforeForces.clear();
         return;
     }
-    const int substeps = std::max(1, world.settings.solverIterations);
-    const Real h = dt / static_cast<Real>(substeps);
     for (int substep = 0; substep < substeps; ++substep) {
         // Restitution reverses the approach speed from before this substep's forces.
         world.step.velocitiesBeforeForces.resize(world.bodies.size());

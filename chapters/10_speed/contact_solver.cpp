@@ -427,18 +427,21 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         stats.points += contact.pointCount;
     }
     stats.manifolds = static_cast<int>(scratch.contactOrder.size());
-    // Nothing touches and nothing sleeps: chapter 1's semi-implicit Euler over the whole frame, as
-    // chapter 6's solve does, so that free bodies move exactly as they always did.
+    // Every body moves in the substeps, touching or not (chapter 6's solve says why).
+    const int substeps = std::max(1, world.settings.solverIterations);
+    const Real h = dt / static_cast<Real>(substeps);
+    // Nothing touches and nothing sleeps: chapter 1's semi-implicit Euler at the substep, as
+    // chapter 6's solve does, so that free bodies move exactly as chapter 1 moves them.
     if (stats.manifolds == 0 && stats.bodies == static_cast<int>(world.motions.size())) {
-        applyForces(world);
-        stepwise::integrateVelocities(world, dt);
-        stepwise::integratePositions(world, dt);
+        for (int substep = 0; substep < substeps; ++substep) {
+            applyForces(world);
+            stepwise::integrateVelocities(world, h);
+            stepwise::integratePositions(world, h);
+        }
         world.step.solver = solverStats;
         world.step.velocitiesBeforeForces.clear();
         return;
     }
-    const int substeps = stats.manifolds == 0 ? 1 : std::max(1, world.settings.solverIterations);
-    const Real h = dt / static_cast<Real>(substeps);
     const ContactSolveParams params = solveParams(world.settings, h);
 
     if (path == SolverPath::Wide) {

@@ -55,7 +55,7 @@ struct ManifoldPointPack {
     Pack<N> normalImpulse;           // accumulated, N s
     Pack<N> offset1, offset2;        // from the manifold's centre along tangent1 and tangent2, m
     Pack<N> twistRadius;             // distance from the manifold's centre in the contact plane, m
-    Pack<N> approachSpeed;           // normal velocity when the frame began (restitution), m/s
+    Pack<N> approachSpeed;           // normal velocity when the frame began, or when its gap closed (restitution), m/s
     Pack<N> maxNormalImpulse;        // largest this frame: restitution only where the point pushed
 };
 

@@ -72,8 +72,14 @@ TEST_CASE("debug-drop: contact debug mode stops twice, box first", "[ch09][scene
     DebugSession session(world, chapterRegistry().makePipeline(world));
     session.rules.stopOnNewContact = true;
     std::vector<BodyPair> stoppedBy;
-    for (int frame = 0; frame < 180; ++frame)
-        if (session.step() == StopReason::NewContact) stoppedBy.push_back(session.newContacts().front());
+    std::string stops;
+    for (int frame = 0; frame < 180; ++frame) {
+        if (session.step() != StopReason::NewContact) continue;
+        stoppedBy.push_back(session.newContacts().front());
+        stops += " frame " + std::to_string(frame) + ": " + world.bodies[std::size_t(stoppedBy.back().bodyA)].name + "-" +
+                 world.bodies[std::size_t(stoppedBy.back().bodyB)].name;
+    }
+    INFO("stops:" << stops);
     REQUIRE(stoppedBy.size() == 2);
     CHECK(stoppedBy[0].bodyB == world.findBody("box"));
     CHECK(stoppedBy[1].bodyB == world.findBody("ball"));

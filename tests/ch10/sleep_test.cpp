@@ -220,7 +220,9 @@ TEST_CASE("a ball dropped on a sleeping stack wakes that stack whole, not the ot
     CHECK(world.bodies[std::size_t(dropped)].transform.position.y() > Real(2.5));  // woken as it reached the top box
     CHECK(noneAsleep(world, hit));     // the whole island, the bottom box included
     CHECK(allAsleep(world, other));    // a separate island: untouched
-    for (int body : hit) CHECK(world.motionOf(body)->sleepTime == 0);
+    // Every timer restarted: the ball's contact may wake the stack a frame before it lands (a
+    // speculative contact), and a box that has not moved yet then counts that one frame again.
+    for (int body : hit) CHECK(world.motionOf(body)->sleepTime <= world.settings.dt);
 }
 
 TEST_CASE("waking: what wakes a sleeping island, and what does not", "[ch10][sleep]") {
