@@ -54,6 +54,7 @@ struct ContactSolverScratch {
     std::vector<int> contactOrder, slotA, slotB, colours;
     std::vector<std::uint64_t> colourBits;
     FastSolveStats stats;
+    bool timePhases = false;  // fill stats.phaseMs (the bench's profile); off, the solve reads no clock
 };
 
 /// Whether the fast solve can take this world, solving what chapter 6/8's solve would: relax or soft

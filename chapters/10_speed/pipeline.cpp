@@ -34,6 +34,7 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
         // Scratch buffers only: rebuilt from the World every frame, they carry nothing between
         // frames (a copied World steps the same), and spare the allocation per step.
         auto scratch = std::make_shared<ContactSolverScratch>();
+        scratch->timePhases = options.profile != nullptr;
         solve->run = [scratch, path = options.solverPath, profile = options.profile](World& stepWorld, Real dt) {
             solveFast(stepWorld, dt, path, *scratch);
             if (profile) addPhaseTimes(*profile, scratch->stats);
