@@ -371,6 +371,23 @@ void restitutionAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* stat
 }
 
 template <int N>
+bool collideAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, const ContactSolveParams& params) {
+    bool struck = false;
+    for (ManifoldBlock<N>& block : blocks) struck = collideBlock(block, states, params) || struck;
+    return struck;
+}
+template <int N>
+bool anyRestitution(const std::vector<ManifoldBlock<N>>& blocks) {
+    for (const ManifoldBlock<N>& block : blocks)
+        for (int lane = 0; lane < N; ++lane)
+            if (block.restitution[lane] > 0) return true;
+    return false;
+}
+
+/// Collision sweeps a substep at most: a row of this many touching balls passes an impact on.
+constexpr int kCollisionSweeps = 16;
+
+template <int N>
 void resetImpulses(std::vector<ManifoldBlock<N>>& blocks) {
     for (ManifoldBlock<N>& block : blocks) {
         for (ManifoldPointPack<N>& p : block.point) p.normalImpulse = Pack<N>::splat(0);
@@ -509,8 +526,18 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     stats.ms(SolvePhase::Prepare) += clock.lap();
 
     const bool warmStarting = world.settings.warmStarting;
+    // Scenes without restitution (most) have no collisions to sweep.
+    const bool collisions = anyRestitution(scratch.wideBlocks) || anyRestitution(scratch.scalarBlocks);
     for (int substep = 0; substep < substeps; ++substep) {
         integrateVelocities(world, scratch.bodies, h, substep == 0);
+        // [ch10-collisions-first]
+        // Collisions first, on the speeds before the warm start adds last substep's pushes.
+        for (int sweep = 0; collisions && sweep < kCollisionSweeps; ++sweep) {
+            const bool struckWide = collideWide(scratch.wideBlocks, states, params);
+            const bool struckScalar = collideAll(scratch.scalarBlocks, states, params);
+            if (!struckWide && !struckScalar) break;
+        }
+        // [ch10-collisions-first]
         stats.ms(SolvePhase::Integrate) += clock.lap();
         if (!warmStarting) {
             resetImpulses(scratch.wideBlocks);

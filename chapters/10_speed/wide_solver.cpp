@@ -21,6 +21,12 @@ void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyS
     for (ManifoldBlock<kWideLanes>& block : blocks) restitutionBlock(block, states, threshold);
 }
 
+bool collideWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params) {
+    bool struck = false;
+    for (ManifoldBlock<kWideLanes>& block : blocks) struck = collideBlock(block, states, params) || struck;
+    return struck;
+}
+
 void integratePositionsWide(SolverBodyState* states, int count, Real h) {
     int slot = 1;  // slot 0 never moves
     int slots[kWideLanes];

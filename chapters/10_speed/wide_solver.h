@@ -19,6 +19,8 @@ void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodySta
 void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
                bool useBias);
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold);
+/// One sweep of collideBlock over the blocks; whether any point was struck.
+bool collideWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params);
 
 /// Chapter 1's position step for slots 1 to count - 1, kWideLanes bodies at a time.
 void integratePositionsWide(SolverBodyState* states, int count, Real h);
