@@ -384,6 +384,21 @@ inline void solveFriction(ManifoldBlock<N>& c, BodyPack<N>& a, BodyPack<N>& b) {
 }
 // [ch10-friction]
 
+/// Each point's separation from where its two material points are now: the separation found at
+/// the frame's start plus how far the bodies have moved and turned since (adjustedSeparation holds
+/// the start's normal . (armB - armA) taken out, so the arms as turned now go in whole).
+template <int N>
+inline void pointSeparations(const ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b, Pack<N> separations[4]) {
+    const Pack<N> movedApart = dot(c.normal, b.deltaPosition - a.deltaPosition);
+    // n . (R arm) = (R^T n) . arm: the normal turned back once per body serves all four points.
+    const PackVec3<N> normalSeenByA = rotate(conjugate(a.deltaRotation), c.normal);
+    const PackVec3<N> normalSeenByB = rotate(conjugate(b.deltaRotation), c.normal);
+    for (int k = 0; k < 4; ++k) {
+        const ManifoldPointPack<N>& p = c.point[k];
+        separations[k] = movedApart + dot(normalSeenByB, p.armB) - dot(normalSeenByA, p.armA) + p.adjustedSeparation;
+    }
+}
+
 // [ch10-solve-block]
 /// One sweep over the block's points: the four normal rows as one block (or one at a time where
 /// the block would pull, with position feedback when `useBias`), then friction against the normal
@@ -396,22 +411,14 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     const Pack<N> inverseH = Pack<N>::splat(1 / params.substep);
     const Pack<N> slop = Pack<N>::splat(params.slop);
     const Pack<N> maxPush = Pack<N>::splat(-params.maxPushOutSpeed);
-    const Pack<N> movedApart = dot(c.normal, b.deltaPosition - a.deltaPosition);
-    // n . (R arm) = (R^T n) . arm: the normal turned back once per body serves all four points.
-    const PackVec3<N> normalSeenByA = rotate(conjugate(a.deltaRotation), c.normal);
-    const PackVec3<N> normalSeenByB = rotate(conjugate(b.deltaRotation), c.normal);
 
-    // Each point's target, from where its two material points are now: the separation found at
-    // the frame's start plus how far the bodies have moved and turned since (adjustedSeparation
-    // holds the start's normal . (armB - armA) taken out, so the arms as turned now go in whole).
-    // A gap may close by itself within the substep and no faster (speculative); a point deeper
-    // than the slop is pushed out (Baumgarte or a soft spring), at most maxPushOutSpeed.
+    // Each point's target, from where its two material points are now (pointSeparations). A gap
+    // may close by itself within the substep and no faster (speculative); a point deeper than the
+    // slop is pushed out (Baumgarte or a soft spring), at most maxPushOutSpeed.
     Pack<N> bias[4], massScale[4], impulseScale[4], separations[4];
+    pointSeparations(c, a, b, separations);
     for (int k = 0; k < 4; ++k) {
-        const ManifoldPointPack<N>& p = c.point[k];
-        const Pack<N> separation =
-            movedApart + dot(normalSeenByB, p.armB) - dot(normalSeenByA, p.armA) + p.adjustedSeparation;
-        separations[k] = separation;
+        const Pack<N> separation = separations[k];
         bias[k] = separation * inverseH;
         massScale[k] = one;
         impulseScale[k] = zero;
@@ -547,13 +554,12 @@ inline bool collideBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Con
     const Pack<N> fastApproach = Pack<N>::splat(-params.restitutionThreshold);
     const Pack<N> h = Pack<N>::splat(params.substep);
     const Pack<N> margin = Pack<N>::splat(Real(1e-4));
-    const Pack<N> movedApart = dot(c.normal, b.deltaPosition - a.deltaPosition);
-    const PackVec3<N> normalSeenByA = rotate(conjugate(a.deltaRotation), c.normal);
-    const PackVec3<N> normalSeenByB = rotate(conjugate(b.deltaRotation), c.normal);
+    Pack<N> separations[4];
+    pointSeparations(c, a, b, separations);
     Pack<N> struck = zero;
-    for (ManifoldPointPack<N>& p : c.point) {
-        const Pack<N> separation =
-            movedApart + dot(normalSeenByB, p.armB) - dot(normalSeenByA, p.armA) + p.adjustedSeparation;
+    for (int k = 0; k < 4; ++k) {
+        ManifoldPointPack<N>& p = c.point[k];
+        const Pack<N> separation = separations[k];
         const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
         // > 0 where all three hold: faster than the threshold, restitution, a real point.
         const Pack<N> fast = min(min(fastApproach - normalSpeed, c.restitution), p.normalMass);
