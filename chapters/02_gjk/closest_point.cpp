@@ -6,6 +6,7 @@
 
 #include "02_gjk/tolerances.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace stepwise {
@@ -89,13 +90,16 @@ SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Rea
     // sin^2 of the angle at a against the square of the fraction (as for the segment's length
     // above): a sliver is a triangle thinner than 256 rounding errors, not thinner than 0.3
     // degrees, which the Minkowski difference of a 100:1 needle and a small box routinely is.
-    const Real denominator = va + vb + vc;
-    if (!(denominator > kDegenerateFraction * kDegenerateFraction * ab.squaredNorm() * ac.squaredNorm())) {
+    const auto nearestEdge = [&](bool degenerate) {
         SimplexClosest best = closestOnSegment(points, ia, ib, scale);
         for (const SimplexClosest& edge : {closestOnSegment(points, ia, ic, scale), closestOnSegment(points, ib, ic, scale)})
             if (edge.point.squaredNorm() < best.point.squaredNorm()) best = edge;
-        best.degenerate = true;
+        best.degenerate = best.degenerate || degenerate;
         return best;
+    };
+    const Real denominator = va + vb + vc;
+    if (!(denominator > kDegenerateFraction * kDegenerateFraction * ab.squaredNorm() * ac.squaredNorm())) {
+        return nearestEdge(true);
     }
     // The weights from cross products, not from va, vb, vc: those are differences of products
     // of dot products, which cancel on a long thin triangle (a 9 m plate against a 5 mm box)
@@ -105,6 +109,11 @@ SimplexClosest closestOnTriangle(const Vec3* points, int ia, int ib, int ic, Rea
     const Real normalSquared = normal.squaredNorm();
     const Real v = normal.dot(ac.cross(a)) / normalSquared;   // n . ((o - a) x ac) / |n|^2
     const Real w = normal.dot(a.cross(ab)) / normalSquared;   // n . (ab x (o - a)) / |n|^2
+    // The same cancellation can put a 28 m by 14 cm triangle's origin in the face region when
+    // it projects well beyond an edge: weights of -0.5 gave a closest point on a box 6 cm
+    // outside the box (found by fuzz_narrowphase). The accurate weights decide: clearly outside
+    // the triangle, the nearest edge holds the closest point.
+    if (std::min({v, w, 1 - v - w}) < -kDegenerateFraction) return nearestEdge(false);
     SimplexClosest result;
     // The point itself as the projection onto the plane, not as a + v ab + w ac: that sum
     // carries an absolute rounding error of eps |a|, which near contact (|point| << |a|) turns

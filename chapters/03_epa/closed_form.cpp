@@ -17,13 +17,16 @@ namespace {
 /// Coincide means closer than the cores' own round-off: two capsule axes that cross are computed
 /// a few rounding errors apart, and the direction of that rounding noise is no normal (found by
 /// fuzz_narrowphase: it left the contact point inside the capsule by a third of its radius).
-ContactQuery inflateCores(const Vec3& coreA, Real radiusA, const Vec3& coreB, Real radiusB,
+/// The round-off is that of the numbers the cores were computed from, `coreSpan` (the largest
+/// coordinate among centres and segment ends): the closest point of a 47 m capsule's axis to a
+/// crossing axis at its centre is off by millionths of 47 m, not of its small coordinates.
+ContactQuery inflateCores(const Vec3& coreA, Real radiusA, const Vec3& coreB, Real radiusB, Real coreSpan,
                           const Vec3& fallbackNormal, const char* routine) {
     ContactQuery query;
     query.routine = routine;
     const Vec3 between = coreB - coreA;
     const Real distance = between.norm();
-    const Real roundOff = tolerance::kTouching * (coreA.cwiseAbs().maxCoeff() + coreB.cwiseAbs().maxCoeff() + radiusA + radiusB);
+    const Real roundOff = tolerance::kTouching * (coreSpan + radiusA + radiusB);
     query.normal = distance > roundOff ? Vec3(between / distance) : fallbackNormal;
     if (!isFinite(query.normal)) query.normal = fallbackNormal;
     query.depth = radiusA + radiusB - distance;
@@ -81,7 +84,8 @@ std::uint32_t boxRegionFeature(const Vec3& local, const Vec3& clamped) {
 }  // namespace
 
 ContactQuery collideSpheres(const Vec3& centerA, Real radiusA, const Vec3& centerB, Real radiusB) {
-    ContactQuery query = inflateCores(centerA, radiusA, centerB, radiusB, Vec3::UnitY(), "sphere_sphere");
+    const Real span = centerA.cwiseAbs().maxCoeff() + centerB.cwiseAbs().maxCoeff();
+    ContactQuery query = inflateCores(centerA, radiusA, centerB, radiusB, span, Vec3::UnitY(), "sphere_sphere");
     query.featureId = makeFeatureId(kSphereCore, kSphereCore);
     return query;
 }
@@ -131,7 +135,8 @@ ContactQuery collideCapsuleSphere(Real capsuleRadius, Real halfHeight, const Tra
     closestPointsOfSegments(bottom, top, center, center, onSegment, onCenter);
     // A centre on the axis: any direction across the axis is as deep; lean away from the centre.
     const Vec3 fallback = perpendicularTowards(axis, center - capsule.position);
-    ContactQuery query = inflateCores(onSegment, capsuleRadius, center, radius, fallback, "capsule_sphere");
+    const Real span = capsule.position.cwiseAbs().maxCoeff() + halfHeight + center.cwiseAbs().maxCoeff();
+    ContactQuery query = inflateCores(onSegment, capsuleRadius, center, radius, span, fallback, "capsule_sphere");
     query.featureId = makeFeatureId(segmentFeature(onSegment, bottom, top), kSphereCore);
     return query;
 }
@@ -154,7 +159,9 @@ ContactQuery collideCapsules(Real radiusA, Real halfHeightA, const Transform& ca
     } else {
         fallback = perpendicularTowards(axisA, centres);
     }
-    ContactQuery query = inflateCores(onA, radiusA, onB, radiusB, fallback, "capsule_capsule");
+    const Real span = capsuleA.position.cwiseAbs().maxCoeff() + halfHeightA + capsuleB.position.cwiseAbs().maxCoeff() +
+                      halfHeightB;
+    ContactQuery query = inflateCores(onA, radiusA, onB, radiusB, span, fallback, "capsule_capsule");
     query.featureId = makeFeatureId(segmentFeature(onA, bottomA, topA), segmentFeature(onB, bottomB, topB));
     return query;
 }

@@ -34,6 +34,16 @@ constexpr Real kTouching = tolerance::kSeedContainment;
 // must not turn it into thousands of queries (a normal seed needs none, a shallow one a few).
 constexpr int kSeedBudget = 64;
 
+/// A stop by round-off counts as converged within this many tolerances of the boundary.
+constexpr Real kUnconverged = 16;
+
+/// A direction and how far A - B reaches along it: the depth is at most `reach`.
+struct UpperBound {
+    Real reach = kRealMax;
+    Vec3 normal = Vec3::UnitY();
+    SupportPoint support;
+};
+
 struct EpaContext {
     const ConvexProxy& a;
     const ConvexProxy& b;
@@ -254,6 +264,51 @@ EpaResult fallbackContact(const ConvexProxy& a, const ConvexProxy& b, const Simp
     return result;
 }
 
+/// True when a world point lies inside the shape, or within `slack` of it.
+bool holds(const ConvexProxy& proxy, const Vec3& worldPoint, Real slack) {
+    const Shape& shape = *proxy.shape;
+    const Vec3 local = proxy.transform.applyInverse(worldPoint);
+    switch (shape.type) {
+        case ShapeType::Box: return (local.cwiseAbs() - shape.halfExtents).maxCoeff() <= slack;
+        case ShapeType::Sphere: return local.norm() <= shape.radius + slack;
+        case ShapeType::Capsule: {
+            const Real along = std::clamp(local.y(), -shape.halfHeight, shape.halfHeight);
+            return (local - Vec3(0, along, 0)).norm() <= shape.radius + slack;
+        }
+        case ShapeType::Convex:
+            for (const HullFace& face : shape.hull->faces)
+                if (face.normal.dot(local) - face.offset > slack) return false;
+            return true;
+    }
+    return false;
+}
+
+/// The contact along an upper bound's normal, `reach` deep. Each shape's own extreme point lies
+/// on its surface, but where the touching features are wide the two can be far apart (a plate's
+/// far corner 4 m from the box inside it). So one shape's extreme point is kept and the other
+/// point put `reach` from it along the normal, on the other shape's support plane, when it lies
+/// on that shape too: the smaller shape's first, which lies within its own size of the overlap.
+void answerWithBound(const ConvexProxy& a, const ConvexProxy& b, const UpperBound& bound, Real slack,
+                     EpaResult& result) {
+    result.depth = std::max(bound.reach, Real(0));
+    result.normal = bound.normal;
+    const Vec3 fromA = bound.support.onA - result.depth * result.normal;
+    const Vec3 fromB = bound.support.onB + result.depth * result.normal;
+    const bool aFirst = shapeScale(*a.shape) <= shapeScale(*b.shape);
+    const bool keepA = holds(b, fromA, slack), keepB = holds(a, fromB, slack);
+    if (keepA && (aFirst || !keepB)) {
+        result.pointA = bound.support.onA;
+        result.pointB = fromA;
+    } else if (keepB) {
+        result.pointA = fromB;
+        result.pointB = bound.support.onB;
+    } else {
+        result.pointA = bound.support.onA;
+        result.pointB = bound.support.onB;
+    }
+    for (SupportPoint& corner : result.closestFace) corner = bound.support;
+}
+
 }  // namespace
 
 // [ch03-loop]
@@ -283,6 +338,11 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
     ExpansionScratch scratch;
 
     EpaResult result;
+    // The closest face's distance bounds the depth from below, the reach of A - B along any
+    // normal (its support) from above: moving B that far along it separates the shapes. The
+    // tightest upper bound seen is kept for a polytope that stops growing far from converged.
+    UpperBound best;
+    Real lastGap = 0;
     int closest = closestFace(polytope);
     for (;;) {
         // Ask A - B for its furthest point along the closest face's normal. If it is no further
@@ -293,7 +353,10 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
             result.exit = EpaExit::NoProgress;
             break;
         }
-        if (face.normal.dot(support.w) - face.distance <= tolerance) {
+        const Real reach = face.normal.dot(support.w);
+        if (reach < best.reach) best = {reach, face.normal, support};
+        lastGap = reach - face.distance;
+        if (lastGap <= tolerance) {
             result.exit = EpaExit::Converged;
             break;
         }
@@ -316,7 +379,25 @@ EpaResult epaPenetration(const ConvexProxy& a, const ConvexProxy& b, const Simpl
         closest = closestFace(polytope);
     }
 
-    contactFromFace(polytope, polytope.faces[contactFace(polytope, closest, tolerance)], result);
+    if (result.exit == EpaExit::NoProgress && lastGap > kUnconverged * tolerance) {
+        // Stopped by round-off far from the boundary (a plate 1/1600 of its width thick around
+        // a small box: the closest face passed through the origin, 3.8 mm inside the boundary):
+        // the face's points would lie that far inside the shapes. Any direction's reach is a
+        // true way out instead, so the answer is the shortest found among the normals EPA tried,
+        // every face of its polytope and the candidates of fallbackContact (a separating-axis
+        // search over the directions at hand).
+        for (const EpaFace& face : polytope.faces) {
+            if (face.removed) continue;
+            const SupportPoint support = minkowskiSupport(a, b, face.normal);
+            const Real reach = face.normal.dot(support.w);
+            if (isFinite(reach) && reach < best.reach) best = {reach, face.normal, support};
+        }
+        const EpaResult candidates = fallbackContact(a, b, simplex);
+        if (candidates.depth < best.reach) best = {candidates.depth, candidates.normal, candidates.closestFace[0]};
+        answerWithBound(a, b, best, kUnconverged * tolerance, result);
+    } else {
+        contactFromFace(polytope, polytope.faces[contactFace(polytope, closest, tolerance)], result);
+    }
     if (settings.keepPolytope) result.polytope = std::move(polytope);
     return result;
 }

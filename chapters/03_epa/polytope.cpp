@@ -80,7 +80,9 @@ static void walkHorizon(EpaPolytope& polytope, int faceIndex, int edge, const Ve
                         ExpansionScratch& scratch) {
     EpaFace& face = polytope.faces[faceIndex];
     if (face.removed) return;
-    if (face.normal.dot(point) - face.distance <= slack) {  // cannot see the point: horizon
+    const bool seen = face.normal.dot(point) - face.distance > slack ||
+                      std::find(scratch.inPlane.begin(), scratch.inPlane.end(), faceIndex) != scratch.inPlane.end();
+    if (!seen) {  // cannot see the point: horizon
         scratch.horizon.push_back({face.vertices[(edge + 1) % 3], face.vertices[edge], faceIndex});
         return;
     }
@@ -94,18 +96,24 @@ static void walkHorizon(EpaPolytope& polytope, int faceIndex, int edge, const Ve
     }
 }
 
-/// Adds `point` to the polytope: removes the faces it sees, starting with the closest face
-/// `seenFace`, and fans new faces from it to the horizon. Round-off can make the polytope a hair
-/// non-convex, and then a horizon may not be one simple loop, a new face may be a sliver, or a
-/// new face may pass nearer the origin than the face it replaces (impossible for an exact
-/// convex polytope, which only grows). Any of these leaves the polytope as it was and returns
-/// false: EPA then stops with the best face it has rather than with a worse one.
-bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& point, Real scale,
+namespace {
+
+enum class Expansion { Done, PointInPlane, Broken };
+
+/// One try at adding `point` (expandPolytope): the faces it sees, plus those in
+/// `scratch.inPlane`, are removed and a fan of new faces closes the hole.
+Expansion tryExpand(EpaPolytope& polytope, int seenFace, const SupportPoint& point, Real scale,
                     ExpansionScratch& scratch) {
     scratch.horizon.clear();
     scratch.removed.clear();
     const Real slack = kRoundOff * scale;
+    // A convex polytope that holds the origin only grows, so no new face may come nearer than the
+    // one it replaces. The seed may leave the origin up to its containment slack outside (GJK's
+    // touching tolerance), most often on an edge or face through the origin when the shapes
+    // share a centre; then a new face through that edge may lie up to that slack on the far
+    // side, and only that is the floor.
     const Real closestDistance = polytope.faces[seenFace].distance;
+    const Real floor = closestDistance >= 0 ? closestDistance : -tolerance::kSeedContainment * scale;
     polytope.faces[seenFace].removed = true;
     scratch.removed.push_back(seenFace);
     for (int edge = 0; edge < 3; ++edge) {
@@ -114,18 +122,18 @@ bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& poi
         walkHorizon(polytope, neighbour, cornerOf(polytope.faces[neighbour], seen.vertices[(edge + 1) % 3]),
                     point.w, slack, scratch);
     }
-    const auto undo = [&] {
+    const auto undo = [&](Expansion outcome) {
         for (int f : scratch.removed) polytope.faces[f].removed = false;
-        return false;
+        return outcome;
     };
     // The horizon must be one loop that passes each vertex once, or the fan would not close.
     const std::vector<HorizonEdge>& horizon = scratch.horizon;
     const int count = static_cast<int>(horizon.size());
-    if (count < 3) return undo();
+    if (count < 3) return undo(Expansion::Broken);
     for (int i = 0; i < count; ++i) {
-        if (horizon[i].to != horizon[(i + 1) % count].from) return undo();
+        if (horizon[i].to != horizon[(i + 1) % count].from) return undo(Expansion::Broken);
         for (int j = 0; j < i; ++j) {
-            if (horizon[j].from == horizon[i].from) return undo();
+            if (horizon[j].from == horizon[i].from) return undo(Expansion::Broken);
         }
     }
 
@@ -141,9 +149,13 @@ bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& poi
         face.vertices[0] = horizon[i].from;
         face.vertices[1] = horizon[i].to;
         face.vertices[2] = newVertex;
-        if (!setPlane(polytope, face, scale) || face.distance < closestDistance - slack) {
+        if (!setPlane(polytope, face, scale) || face.distance < floor - slack) {
+            // A sliver, or a face turned inwards: the point lies in line with this horizon edge
+            // or beyond it, in the plane of the face across it within round-off. That face
+            // goes too, and the next try fans around it.
             polytope.vertices.pop_back();
-            return undo();
+            scratch.inPlane.push_back(horizon[i].outside);
+            return undo(Expansion::PointInPlane);
         }
     }
     // Stitch: edge 0 borders the face outside the horizon, edges 1 and 2 the fan's neighbours.
@@ -157,7 +169,29 @@ bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& poi
     }
     if (count > removedCount) polytope.faces.resize(polytope.faces.size() + (count - removedCount));
     for (int i = 0; i < count; ++i) polytope.faces[scratch.slots[i]] = scratch.fan[i];
-    return true;
+    return Expansion::Done;
+}
+
+}  // namespace
+
+/// Adds `point` to the polytope: removes the faces it sees, starting with the closest face
+/// `seenFace`, and fans new faces from it to the horizon. A point in the plane of a face it
+/// does not quite see (two nearly equal boxes give A - B many such faces) makes a fan face that
+/// is a sliver or turns inwards, nearer the origin than the face it replaces, which is
+/// impossible for an exact convex polytope, which only grows: the face across that horizon edge
+/// is then removed too, a few times at most. Round-off can also make the polytope a hair
+/// non-convex so that the horizon is not one simple loop. What cannot be mended leaves the
+/// polytope as it was and returns false: EPA then stops with the best face it has rather than
+/// with a worse one.
+bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& point, Real scale,
+                    ExpansionScratch& scratch) {
+    constexpr int kSliverTries = 4;
+    scratch.inPlane.clear();
+    for (int attempt = 0; attempt < kSliverTries; ++attempt) {
+        const Expansion outcome = tryExpand(polytope, seenFace, point, scale, scratch);
+        if (outcome != Expansion::PointInPlane) return outcome == Expansion::Done;
+    }
+    return false;
 }
 // [ch03-horizon]
 

@@ -28,6 +28,7 @@ struct ExpansionScratch {
     std::vector<int> removed;
     std::vector<int> slots;
     std::vector<EpaFace> fan;
+    std::vector<int> inPlane;  ///< faces removed although the point is only in their plane
 };
 
 /// Fills a face's plane. False when the triangle is too thin for its normal to mean anything.
