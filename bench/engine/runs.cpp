@@ -66,7 +66,10 @@ World withKnobs(const World& scene, const EngineKnobs& knobs) {
     Settings& s = world.settings;
     if (knobs.dt) s.dt = *knobs.dt;
     if (knobs.substeps) s.substeps = *knobs.substeps;
-    if (knobs.iterations) s.solverIterations = *knobs.iterations;
+    if (knobs.iterations) {  // a sweep's count is used as it stands, not planned around
+        s.solverIterations = *knobs.iterations;
+        s.planIterations = false;
+    }
     if (knobs.stabilisation) s.stabilisation = *knobs.stabilisation;
     if (knobs.solver) s.solver = *knobs.solver;
     if (knobs.warmStarting) s.warmStarting = *knobs.warmStarting;

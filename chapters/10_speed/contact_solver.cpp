@@ -1,4 +1,5 @@
 #include "10_speed/contact_solver.h"
+#include "10_speed/iteration_plan.h"
 
 #include "01_integrators/forces.h"
 #include "01_integrators/integrate.h"
@@ -497,7 +498,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     }
     stats.manifolds = static_cast<int>(scratch.contactOrder.size());
     // Every body moves in the substeps, touching or not (chapter 6's solve says why).
-    const int substeps = std::max(1, world.settings.solverIterations);
+    const int substeps = plannedIterations(world, scratch.contactOrder, world.step.iterationPlan);
     const Real h = dt / static_cast<Real>(substeps);
     // Nothing touches and nothing sleeps: chapter 1's semi-implicit Euler at the substep, as
     // chapter 6's solve does, so that free bodies move exactly as chapter 1 moves them.

@@ -153,6 +153,7 @@ void printSummary(std::ostream& out, const World& world, const RunStats& stats) 
             << world.candidatePairs.size() << " candidate pairs in the last step\n";
     if (const auto ccd = stats.planNotes.find(stage_group::kCcd); ccd != stats.planNotes.end())
         out << "ccd        " << ccd->second << "; " << world.step.ccd.totalToiEvents << " times of impact resolved\n";
+    if (const std::string plan = describeIterationPlan(world); !plan.empty()) out << "substeps   " << plan << "\n";
     out << "energy     " << std::setprecision(6) << stats.initialEnergy.total() << " J -> " << stats.finalEnergy.total()
         << " J" << (stats.energyByIntegrator.empty() ? "" : "; by integrator (its bodies and their springs):") << "\n";
     for (const RunStats::GroupEnergy& group : stats.energyByIntegrator)

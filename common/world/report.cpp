@@ -115,6 +115,19 @@ double percentile(std::vector<double> values, double p) {
     return values[index];
 }
 
+std::string describeIterationPlan(const World& world) {
+    const IterationPlan& plan = world.step.iterationPlan;
+    if (plan.mostIterations <= 0) return "";
+    const std::string most = std::to_string(plan.mostIterations);
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.4g", double(plan.largestRatio));
+    if (!world.settings.planIterations) return most + ": the scene's solver_iterations";
+    if (plan.mostIterations > std::max(1, world.settings.solverIterations))
+        return "auto: up to " + most + ", for touching masses up to " + std::string(ratio) + " to 1 (over 100 to 1 asks for more)";
+    return "auto: " + most + ", touching masses at most " + std::string(ratio) + " to 1 (up to 100 to 1 solve at " +
+           std::to_string(world.settings.solverIterations) + ")";
+}
+
 std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {
     Json report;
     report["format"] = "stepwise-report";
@@ -153,6 +166,11 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
                          {"plan", ccdNote->second},
                          {"toi_events", ccd.totalToiEvents},
                          {"steps_event_bound_hit", ccd.stepsBoundHit}};
+    }
+    // Extension: the fast solve's substep count and why (chapter 10 on).
+    if (world.step.iterationPlan.mostIterations > 0) {
+        report["solver_iterations"] = {{"most", world.step.iterationPlan.mostIterations},
+                                       {"plan", describeIterationPlan(world)}};
     }
     // Extension: how many dynamic bodies sleep at the end, when the pipeline planned sleeping
     // (chapter 10 on, whether the scene turns it on or off).

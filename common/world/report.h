@@ -44,6 +44,10 @@ double percentile(std::vector<double> values, double p);
 /// The report as JSON text (2-space indent, keys in contract order).
 std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion);
 
+/// How many substeps chapter 10's solve took at most, and why (solver_iterations "auto" or the
+/// scene's number); empty when no stage planned them (chapters 1 to 9).
+std::string describeIterationPlan(const World& world);
+
 /// Writes the report; throws std::runtime_error naming the path when the file cannot be written.
 void writeReport(const std::string& path, const World& world, const RunStats& stats,
                  const std::string& engineVersion);

@@ -30,7 +30,12 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     read("gravity", [&](const JsonCursor& v) { settings.gravity = v.vec3Within(kMaxGravity); });
     read("dt", [&](const JsonCursor& v) { settings.dt = v.positiveAtMost(1); });
     read("substeps", [&](const JsonCursor& v) { settings.substeps = v.integer(1, 64); });
-    read("solver_iterations", [&](const JsonCursor& v) { settings.solverIterations = v.integer(0, 1000); });
+    read("solver_iterations", [&](const JsonCursor& v) {
+        if (v.json().is_string() && v.json().get<std::string>() == "auto") return;  // the default
+        if (v.json().is_string()) v.fail("must be \"auto\" or an integer");
+        settings.solverIterations = v.integer(0, 1000);
+        settings.planIterations = false;
+    });
     read("baumgarte", [&](const JsonCursor& v) { settings.baumgarte = v.inRange(0, 1); });
     read("slop", [&](const JsonCursor& v) { settings.slop = v.nonNegative(); });
     read("restitution_threshold", [&](const JsonCursor& v) { settings.restitutionThreshold = v.nonNegative(); });

@@ -36,7 +36,8 @@ std::string saveSceneToString(const World& world) {
     scene["settings"] = {{"gravity", toJson(s.gravity)},
                          {"dt", tidyNumber(s.dt)},
                          {"substeps", s.substeps},
-                         {"solver_iterations", s.solverIterations},
+                         {"solver_iterations", s.planIterations && s.solverIterations == Settings{}.solverIterations
+                                                   ? Json("auto") : Json(s.solverIterations)},
                          {"baumgarte", tidyNumber(s.baumgarte)},
                          {"slop", tidyNumber(s.slop)},
                          {"warm_starting", s.warmStarting},

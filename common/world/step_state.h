@@ -46,6 +46,14 @@ struct CcdState {
     long stepsBoundHit = 0;      // substeps in which an event bound was hit
 };
 
+/// What chapter 10's planner for solver_iterations "auto" saw and chose (iteration_plan.h).
+struct IterationPlan {
+    int iterations = 0;       // substeps of the last frame's solve
+    Real massRatio = 1;       // heaviest over lightest dynamic body touching another, last frame
+    int mostIterations = 0;   // over every frame so far
+    Real largestRatio = 1;
+};
+
 struct StepState {
     int substep = 0;             // of the frame being stepped, 0 .. substepCount - 1
     int substepCount = 1;
@@ -59,6 +67,7 @@ struct StepState {
     int manifoldsReused = 0;     // by the last search: records carried without a shape query (chapter 10)
     int manifoldsRebuilt = 0;    // by the last search: pairs the shapes were queried for (chapter 10)
     CcdState ccd;                // continuous collision (chapter 7)
+    IterationPlan iterationPlan; // the fast solve's substep count (chapter 10)
 };
 
 }  // namespace stepwise

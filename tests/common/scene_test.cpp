@@ -117,6 +117,7 @@ TEST_CASE("Absent keys take the documented defaults", "[common][scene]") {
     CHECK(world.settings.dt == defaults.dt);
     CHECK(world.settings.substeps == 1);
     CHECK(world.settings.solverIterations == 10);
+    CHECK(world.settings.planIterations);  // solver_iterations "auto"
     CHECK(world.settings.restitutionThreshold == Approx(1.0));
     CHECK(world.settings.gyroscopic == GyroscopicMode::Implicit);
     CHECK(world.settings.solver == SolverKind::GaussSeidel);
@@ -309,6 +310,28 @@ TEST_CASE("Missing files and directories name the path", "[common][scene]") {
         CHECK(std::string(error.what()) == "no/such/scene.json: no such file");
     }
     CHECK_THROWS_AS(loadSceneFile("scenes"), SceneError);
+}
+
+TEST_CASE("solver_iterations is \"auto\" or a number, and saves as it was read", "[common][scene]") {
+    const World automatic = loadSceneFromString(R"({"settings": {"solver_iterations": "auto"}})");
+    CHECK(automatic.settings.planIterations);
+    CHECK(automatic.settings.solverIterations == 10);
+    const World fixed = loadSceneFromString(R"({"settings": {"solver_iterations": 10}})");
+    CHECK_FALSE(fixed.settings.planIterations);
+    CHECK(fixed.settings.solverIterations == 10);
+    for (const World* world : {&automatic, &fixed}) {
+        const World again = loadSceneFromString(saveSceneToString(*world));
+        CHECK(again.settings.planIterations == world->settings.planIterations);
+        CHECK(again.settings.solverIterations == world->settings.solverIterations);
+    }
+    CHECK(saveSceneToString(automatic).find(R"("solver_iterations": "auto")") != std::string::npos);
+    try {
+        loadSceneFromString(R"({"settings": {"solver_iterations": "many"}})");
+        FAIL("a word other than auto was accepted");
+    } catch (const SceneError& error) {
+        CHECK(std::string(error.what()).find("settings.solver_iterations") != std::string::npos);
+        CHECK(std::string(error.what()).find(R"(must be "auto" or an integer)") != std::string::npos);
+    }
 }
 
 TEST_CASE("A saved scene loads back to the same world", "[common][scene]") {
