@@ -16,6 +16,7 @@
 
 #include "app/registry.h"
 #include "world/scene.h"
+#include "world/scene_limits.h"
 #include "world/world.h"
 
 #include <cmath>
@@ -89,6 +90,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         def.linearVelocity = input.vector(-10, 10).cast<Real>();
         def.angularVelocity = input.vector(-10, 10).cast<Real>();
         def.density = Real(input.logUniform(10, 10000));
+        // The scene format refuses masses below kMinMass (scene_limits.h); the engine's claims are
+        // for what it accepts. Lighter bodies are an open case: a 0.08 mg capsule, 1.4 mm long,
+        // against a hull went non-finite in its first frame (docs/reliability.md).
+        if (computeMassProperties(def.shape, def.density).mass < kMinMass) continue;
         def.material.friction = Real(input.uniform(0, 1.2));
         def.material.restitution = Real(input.uniform(0, 1));
         def.bullet = input.flag();
@@ -158,7 +163,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             STEPWISE_FUZZ_CHECK(kTarget, finite, frame, motion.bodyIndex);
         }
     }
-    if (driven) return 0;
+    // The energy bound is part of the same claim: the explicit gyroscopic term gains energy by
+    // design (a spinning capsule on a distance joint: 1,346 J to 2,572 J in 100 frames, and to
+    // 463 J with the implicit term; found by the CI smoke).
+    if (driven || !claimsStability) return 0;
     const double endEnergy = computeEnergy(world).total();
     const double allowance = energyAllowance(world, startEnergy);
     STEPWISE_FUZZ_CHECK(kTarget, endEnergy <= startEnergy + allowance, endEnergy - startEnergy, allowance);
