@@ -185,9 +185,9 @@ Expansion tryExpand(EpaPolytope& polytope, int seenFace, const SupportPoint& poi
 /// with a worse one.
 bool expandPolytope(EpaPolytope& polytope, int seenFace, const SupportPoint& point, Real scale,
                     ExpansionScratch& scratch) {
-    constexpr int kSliverTries = 4;
+    constexpr int kInPlaneTries = 4;
     scratch.inPlane.clear();
-    for (int attempt = 0; attempt < kSliverTries; ++attempt) {
+    for (int attempt = 0; attempt < kInPlaneTries; ++attempt) {
         const Expansion outcome = tryExpand(polytope, seenFace, point, scale, scratch);
         if (outcome != Expansion::PointInPlane) return outcome == Expansion::Done;
     }
