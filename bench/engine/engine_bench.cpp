@@ -229,68 +229,70 @@ PlotSpec defaultsPlot(const std::vector<SceneResults>& all, bool withPeer) {
     return plot;
 }
 
+void measureEngine(BenchRun& bench) {
+    const BenchOptions& options = bench.options();
+    if (!options.peer.empty() && options.peer != "bullet")
+        throw std::runtime_error("--peer: unknown peer \"" + options.peer + "\" (known: bullet)");
+    const bool withPeer = options.peer == "bullet" && havePeer();
+    std::ostream& out = bench.out();
+    if (options.peer == "bullet" && !withPeer)
+        out << "bench engine: this program was built without the Bullet peer (libbullet-dev not found): Bullet skipped\n";
+    const std::string directory = options.scenesDir.empty() ? std::string(STEPWISE_REFERENCE_SCENES) : options.scenesDir;
+    const std::vector<ReferenceScene> scenes = loadReferenceScenes(directory);
+    const std::vector<Configuration> list = sweep(bench.quick(), withPeer);
+
+    std::vector<SceneResults> all;
+    for (const ReferenceScene& scene : scenes) {
+        bench.progress().stage(scene.name, static_cast<long>(list.size()));
+        SceneResults results;
+        results.scene = &scene;
+        for (const Configuration& configuration : list) {
+            results.outcomes.push_back(runOne(scene, configuration));
+            bench.progress().advance();
+        }
+        all.push_back(std::move(results));
+    }
+    bench.progress().endStage();
+
+    const CsvTable runs = runsTable(all), summary = summaryTable(all, withPeer), checks = checksTable(all, withPeer);
+    out << "bench engine: " << scenes.size() << (scenes.size() == 1 ? " reference scene" : " reference scenes")
+        << " from " << directory << ", " << list.size()
+        << " configurations" << (withPeer ? " (Bullet: " + peerName() + ")" : "") << ", " << realTypeName() << " build\n\n"
+        << "score = error / tolerance, worst check; <= 1 meets the reference. ms: per 1/60 s simulated.\n"
+        << summary.toText() << "\neach check at the defaults:\n" << checks.toText();
+    for (const SceneResults& results : all)
+        for (const Outcome& o : results.outcomes)
+            if (o.refused() && o.configuration->family == "bullet default")
+                out << "\n" << results.scene->name << ": Bullet " << o.run.failure;
+    out << "\n";
+    bench.writeCsv(runs);
+    bench.writeCsv(summary, "-summary");
+    bench.writeCsv(checks, "-checks");
+    bench.writePlot(defaultsPlot(all, withPeer));
+    for (const SceneResults& results : all) bench.writePlotFor(scenePlot(results), "-scene", results.scene->name);
+    const std::vector<FigureTable> figures = {
+        {{"Per scene: score (worst error / tolerance) and ms per 1/60 s at the defaults, the cheapest configuration "
+          "that meets every tolerance, and Bullet's."}, &summary},
+        {{"Each check at the defaults: error (in the check's units), tolerance, score."}, &checks}};
+    bench.writeTables(figures, "-tables");
+}
+
 }  // namespace
 
 BenchEntry engineBench() {
-    BenchEntry entry;
-    entry.name = "engine";
-    entry.chapter = 10;
-    entry.description = "the whole engine on the reference suite (scenes/reference): error against the known answer and "
-                        "ms per step over a sweep of its knobs, Bullet beside it with --peer bullet";
-    entry.files = {{BenchFile::Kind::Csv, "", "every run: scene, configuration, ms per step, score, each check's error"},
-                   {BenchFile::Kind::Csv, "-summary", "per scene: the defaults, the cheapest passing configuration, Bullet's"},
-                   {BenchFile::Kind::Csv, "-checks", "each check at the defaults: error, tolerance, score"},
-                   {BenchFile::Kind::Plot, "", "every scene's error against ms at each engine's defaults"},
-                   {BenchFile::Kind::Plot, "-tables", "the summary and the checks as a figure for the page"},
-                   {BenchFile::Kind::Plot, "-scene", "work precision of one scene, one curve per family of configurations", true}};
-    entry.measure = [](BenchRun& bench) {
-        const BenchOptions& options = bench.options();
-        if (!options.peer.empty() && options.peer != "bullet")
-            throw std::runtime_error("--peer: unknown peer \"" + options.peer + "\" (known: bullet)");
-        const bool withPeer = options.peer == "bullet" && havePeer();
-        std::ostream& out = bench.out();
-        if (options.peer == "bullet" && !withPeer)
-            out << "bench engine: this program was built without the Bullet peer (libbullet-dev not found): Bullet skipped\n";
-        const std::string directory = options.scenesDir.empty() ? std::string(STEPWISE_REFERENCE_SCENES) : options.scenesDir;
-        const std::vector<ReferenceScene> scenes = loadReferenceScenes(directory);
-        const std::vector<Configuration> list = sweep(bench.quick(), withPeer);
-
-        std::vector<SceneResults> all;
-        for (const ReferenceScene& scene : scenes) {
-            bench.progress().stage(scene.name, static_cast<long>(list.size()));
-            SceneResults results;
-            results.scene = &scene;
-            for (const Configuration& configuration : list) {
-                results.outcomes.push_back(runOne(scene, configuration));
-                bench.progress().advance();
-            }
-            all.push_back(std::move(results));
-        }
-        bench.progress().endStage();
-
-        const CsvTable runs = runsTable(all), summary = summaryTable(all, withPeer), checks = checksTable(all, withPeer);
-        out << "bench engine: " << scenes.size() << (scenes.size() == 1 ? " reference scene" : " reference scenes")
-            << " from " << directory << ", " << list.size()
-            << " configurations" << (withPeer ? " (Bullet: " + peerName() + ")" : "") << ", " << realTypeName() << " build\n\n"
-            << "score = error / tolerance, worst check; <= 1 meets the reference. ms: per 1/60 s simulated.\n"
-            << summary.toText() << "\neach check at the defaults:\n" << checks.toText();
-        for (const SceneResults& results : all)
-            for (const Outcome& o : results.outcomes)
-                if (o.refused() && o.configuration->family == "bullet default")
-                    out << "\n" << results.scene->name << ": Bullet " << o.run.failure;
-        out << "\n";
-        bench.writeCsv(runs);
-        bench.writeCsv(summary, "-summary");
-        bench.writeCsv(checks, "-checks");
-        bench.writePlot(defaultsPlot(all, withPeer));
-        for (const SceneResults& results : all) bench.writePlotFor(scenePlot(results), "-scene", results.scene->name);
-        const std::vector<FigureTable> figures = {
-            {{"Per scene: score (worst error / tolerance) and ms per 1/60 s at the defaults, the cheapest configuration "
-              "that meets every tolerance, and Bullet's."}, &summary},
-            {{"Each check at the defaults: error (in the check's units), tolerance, score."}, &checks}};
-        bench.writeTables(figures, "-tables");
-    };
-    return entry;
+    return benchEntry(10, measureEngine, R"(
+        engine: the whole engine on the reference suite (scenes/reference): error against the
+            known answer and ms per step over a sweep of its knobs, Bullet beside it with
+            --peer bullet
+        engine.csv           every run: scene, configuration, ms per step, score, each check's
+                             error
+        engine-summary.csv   per scene: the defaults, the cheapest passing configuration,
+                             Bullet's
+        engine-checks.csv    each check at the defaults: error, tolerance, score
+        engine.svg           every scene's error against ms at each engine's defaults
+        engine-tables.svg    the summary and the checks as a figure for the page
+        engine-scene-*.svg   work precision of one scene, one curve per family of
+                             configurations)");
 }
 
 }  // namespace stepwise::engine_bench

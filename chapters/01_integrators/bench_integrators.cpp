@@ -164,11 +164,11 @@ void measureIntegrators(BenchRun& run) {
 }  // namespace
 
 BenchEntry integratorsBench() {
-    return BenchEntry{"integrators", 1, "integrator error against run time on a spring oscillator (work-precision)",
-                      measureIntegrators,
-                      {{BenchFile::Kind::Csv, "", "per integrator and step count: dt, error, run time (median, quartiles)"},
-                       {BenchFile::Kind::Plot, "", "work-precision diagram: error against run time"},
-                       {BenchFile::Kind::Plot, "-dt", "error against step size (the slopes are the orders)"}}};
+    return benchEntry(1, measureIntegrators, R"(
+        integrators: integrator error against run time on a spring oscillator (work-precision)
+        integrators.csv     per integrator and step count: dt, error, run time (median, quartiles)
+        integrators.svg     work-precision diagram: error against run time
+        integrators-dt.svg  error against step size (the slopes are the orders))");
 }
 
 }  // namespace stepwise

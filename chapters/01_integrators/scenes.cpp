@@ -199,18 +199,17 @@ void drawProjectile(const World& world, DebugDraw& draw) {
 
 void addChapter01Scenes(Registry& registry) {
     const char* const category = "Integrators";
-    registry.addScene({"integrators-side-by-side", 1, category,
-                       "Three identical spring chains: RK4's swing slowly dies down, Verlet and "
-                       "semi-implicit Euler keep their energy within a band.",
-                       buildIntegratorsSideBySide, statelessView(drawChains, chainPanel)});
-    registry.addScene({"t-handle", 1, category,
-                       "Spun about its intermediate axis, the handle flips over every few seconds while its "
-                       "angular momentum (arrow) stays put.",
-                       [] { return buildTHandle(); }, statelessView(drawHandle, handlePanel)});
-    registry.addScene({"projectile", 1, category,
-                       "Verlet and RK4 stay on the exact parabola (white); semi-implicit Euler runs "
-                       "below it by |g| h t / 2.",
-                       buildProjectile, statelessView(drawProjectile)});
+    registry.addScene({"integrators-side-by-side", 1, category, prose(R"(
+        Three identical spring chains: RK4's swing slowly dies down, Verlet and semi-implicit Euler keep
+        their energy within a band.)"),
+        buildIntegratorsSideBySide, statelessView(drawChains, chainPanel)});
+    registry.addScene({"t-handle", 1, category, prose(R"(
+        Spun about its intermediate axis, the handle flips over every few seconds while its angular momentum
+        (arrow) stays put.)"),
+        [] { return buildTHandle(); }, statelessView(drawHandle, handlePanel)});
+    registry.addScene({"projectile", 1, category, prose(R"(
+        Verlet and RK4 stay on the exact parabola (white); semi-implicit Euler runs below it by |g| h t / 2.)"),
+        buildProjectile, statelessView(drawProjectile)});
 }
 
 }  // namespace stepwise

@@ -239,15 +239,14 @@ void measureGjk(BenchRun& run) {
 }  // namespace
 
 BenchEntry gjkBench() {
-    return BenchEntry{"gjk", 2,
-                      "GJK: ns per query (box support by extents vs vertices, hulls), iterations, near-contact "
-                      "misjudgements",
-                      measureGjk,
-                      {{BenchFile::Kind::Csv, "", "per query kind: ns per query (median, quartiles), iterations"},
-                       {BenchFile::Kind::Csv, "-iterations", "histogram: how many queries needed each iteration count"},
-                       {BenchFile::Kind::Csv, "-classification", "near-contact pairs: wrong answers per gap and variant"},
-                       {BenchFile::Kind::Plot, "", "plot of the iteration histogram"},
-                       {BenchFile::Kind::Plot, "-table", "both tables as a figure for the chapter page"}}};
+    return benchEntry(2, measureGjk, R"(
+        gjk: GJK: ns per query (box support by extents vs vertices, hulls), iterations,
+            near-contact misjudgements
+        gjk.csv                 per query kind: ns per query (median, quartiles), iterations
+        gjk-iterations.csv      histogram: how many queries needed each iteration count
+        gjk-classification.csv  near-contact pairs: wrong answers per gap and variant
+        gjk.svg                 plot of the iteration histogram
+        gjk-table.svg           both tables as a figure for the chapter page)");
 }
 
 }  // namespace stepwise

@@ -213,15 +213,14 @@ void drawGjkOverlay(const World& world, DebugDraw& draw, SupportMode mode, const
 
 void addChapter02Scenes(Registry& registry) {
     const char* const category = "GJK";
-    registry.addScene({"gjk-two-boxes", 2, category,
-                       "The plank's end sweeps through the cube: both turn red exactly while they overlap, and above "
-                       "them the origin (white cross) enters the Minkowski difference A - B, caught by a yellow "
-                       "tetrahedron.",
-                       buildGjkTwoBoxes, gjkView(Vec3(0, Real(4.5), 0))});
-    registry.addScene({"gjk-sphere-diamond", 2, category,
-                       "Each tip of the spinning diamond dips into the sphere and the pair turns red; above, "
-                       "A - B is the diamond grown by the sphere, and the label counts GJK's support points.",
-                       buildGjkSphereDiamond, gjkView(Vec3(0, Real(3), 0))});
+    registry.addScene({"gjk-two-boxes", 2, category, prose(R"(
+        The plank's end sweeps through the cube: both turn red exactly while they overlap, and above them
+        the origin (white cross) enters the Minkowski difference A - B, caught by a yellow tetrahedron.)"),
+        buildGjkTwoBoxes, gjkView(Vec3(0, Real(4.5), 0))});
+    registry.addScene({"gjk-sphere-diamond", 2, category, prose(R"(
+        Each tip of the spinning diamond dips into the sphere and the pair turns red; above, A - B is the
+        diamond grown by the sphere, and the label counts GJK's support points.)"),
+        buildGjkSphereDiamond, gjkView(Vec3(0, Real(3), 0))});
 }
 
 }  // namespace stepwise

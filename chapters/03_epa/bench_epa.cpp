@@ -267,13 +267,14 @@ void measureEpa(BenchRun& run) {
 
 }  // namespace
 
+// [foundation-bench-card]
 BenchEntry epaBench() {
-    return BenchEntry{"epa", 3,
-                      "EPA depth error against run time as tolerance and iteration cap vary; extents against "
-                      "vertex support (work-precision)",
-                      measureEpa,
-                      {{BenchFile::Kind::Csv, "", "per setting: ns per query (median, quartiles), depth errors, iterations"},
-                       {BenchFile::Kind::Plot, "", "work-precision plot: depth error against ns per query"}}};
+    return benchEntry(3, measureEpa, R"(
+        epa: EPA depth error against run time as tolerance and iteration cap vary; extents
+            against vertex support (work-precision)
+        epa.csv  per setting: ns per query (median, quartiles), depth errors, iterations
+        epa.svg  work-precision plot: depth error against ns per query)");
 }
+// [foundation-bench-card]
 
 }  // namespace stepwise

@@ -171,16 +171,15 @@ void drawGallery(const World& world, DebugDraw& draw) {
 
 void addChapter03Scenes(Registry& registry) {
     const char* const category = "Contacts";
-    registry.addScene({"epa-step-by-step", 3, category,
-                       "Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right, "
-                       "half size) closes in on the boundary; red cubes mark the contact points inside the overlap "
-                       "(Z: wireframe), the yellow arrow the normal.",
-                       buildEpaStepper, viewOfType<EpaStepperView>()});
-    registry.addScene({"epa-contact-gallery", 3, category,
-                       "Six shape pairs turning into each other; each label names the routine that found the "
-                       "contact (closed form or GJK + EPA), red cubes mark the points (Z: wireframe), yellow "
-                       "arrows the normals.",
-                       buildContactGallery, statelessView(drawGallery)});
+    registry.addScene({"epa-step-by-step", 3, category, prose(R"(
+        Step EPA one expansion at a time: the blue closest face of the grey polytope (A - B, right, half
+        size) closes in on the boundary; red cubes mark the contact points inside the overlap (Z:
+        wireframe), the yellow arrow the normal.)"),
+        buildEpaStepper, viewOfType<EpaStepperView>()});
+    registry.addScene({"epa-contact-gallery", 3, category, prose(R"(
+        Six shape pairs turning into each other; each label names the routine that found the contact (closed
+        form or GJK + EPA), red cubes mark the points (Z: wireframe), yellow arrows the normals.)"),
+        buildContactGallery, statelessView(drawGallery)});
 }
 
 }  // namespace stepwise

@@ -78,12 +78,11 @@ void measureResting(BenchRun& run) {
 }  // namespace
 
 BenchEntry restingBench() {
-    return BenchEntry{"resting", 4,
-                      "chapter 4: penetration of a resting ball and box over time, split vs integrate-first step "
-                      "order (one-point box jitter)",
-                      measureResting,
-                      {{BenchFile::Kind::Csv, "", "per frame: penetration of each run and the box's tilt"},
-                       {BenchFile::Kind::Plot, "", "plot: penetration over time, with the slop"}}};
+    return benchEntry(4, measureResting, R"(
+        resting: chapter 4: penetration of a resting ball and box over time, split vs
+            integrate-first step order (one-point box jitter)
+        resting.csv  per frame: penetration of each run and the box's tilt
+        resting.svg  plot: penetration over time, with the slop)");
 }
 
 }  // namespace stepwise

@@ -140,13 +140,12 @@ void measureSolver(BenchRun& run) {
 }  // namespace
 
 BenchEntry solverBench() {
-    return BenchEntry{"solver", 4,
-                      "chapter 4: velocity residual and penetration against solve time, iterations 1-50, "
-                      "Gauss-Seidel vs Jacobi",
-                      measureSolver,
-                      {{BenchFile::Kind::Csv, "", "per solver and iteration count: solve time (median, quartiles), "
-                                                  "residual, penetration"},
-                       {BenchFile::Kind::Plot, "", "plot: residual and penetration against solve time"}}};
+    return benchEntry(4, measureSolver, R"(
+        solver: chapter 4: velocity residual and penetration against solve time, iterations
+            1-50, Gauss-Seidel vs Jacobi
+        solver.csv  per solver and iteration count: solve time (median, quartiles), residual,
+                    penetration
+        solver.svg  plot: residual and penetration against solve time)");
 }
 
 }  // namespace stepwise

@@ -48,27 +48,26 @@ void solverPanel(World& world, Panel& panel) {
 void addChapter04Scenes(Registry& registry) {
     const char* const category = "Sequential impulses";
     const SceneViewFactory solverControls = statelessView({}, solverPanel);
-    registry.addScene({"pgs-drop", 4, category,
-                       "Boxes and spheres fall, bounce (two have restitution 0.5) and come to rest; try Jacobi "
-                       "and few iterations",
-                       buildDropScene, solverControls});
-    registry.addScene({"pgs-bounce", 4, category,
-                       "Balls with restitution 0.3, 0.6, 0.9 and 1 bounce to about e^2 of their drop height; e = 1 "
-                       "keeps its height",
-                       [] { return buildBounceScene(); }, solverControls});
-    registry.addScene({"pgs-resting", 4, category,
-                       "The ball rests still at the slop depth; the box, held by one contact point, rocks and "
-                       "wanders (chapter 6 fixes it); the 1 kg ball under the 10 kg one is pressed deeper than the "
-                       "slop (no warm starting yet: try 20 iterations)",
-                       buildRestingScene, solverControls});
-    registry.addScene({"pgs-friction", 4, category,
-                       "At 8 substeps the box on the ramp steeper than atan(mu) slides and the one on the gentler "
-                       "ramp stays (at 1 substep its rocking corner walks it down); the ball slides, then rolls at "
-                       "5/7 of its speed",
-                       [] { return buildFrictionScene(); }, solverControls});
-    registry.addScene({"pgs-sphere-pit", 4, category,
-                       "Forty balls settle into a pile: many coupled contacts; compare Gauss-Seidel with Jacobi",
-                       [] { return buildSpherePitScene(); }, solverControls});
+    registry.addScene({"pgs-drop", 4, category, prose(R"(
+        Boxes and spheres fall, bounce (two have restitution 0.5) and come to rest; try Jacobi and few
+        iterations)"),
+        buildDropScene, solverControls});
+    registry.addScene({"pgs-bounce", 4, category, prose(R"(
+        Balls with restitution 0.3, 0.6, 0.9 and 1 bounce to about e^2 of their drop height; e = 1 keeps its
+        height)"),
+        [] { return buildBounceScene(); }, solverControls});
+    registry.addScene({"pgs-resting", 4, category, prose(R"(
+        The ball rests still at the slop depth; the box, held by one contact point, rocks and wanders
+        (chapter 6 fixes it); the 1 kg ball under the 10 kg one is pressed deeper than the slop (no warm
+        starting yet: try 20 iterations))"),
+        buildRestingScene, solverControls});
+    registry.addScene({"pgs-friction", 4, category, prose(R"(
+        At 8 substeps the box on the ramp steeper than atan(mu) slides and the one on the gentler ramp stays
+        (at 1 substep its rocking corner walks it down); the ball slides, then rolls at 5/7 of its speed)"),
+        [] { return buildFrictionScene(); }, solverControls});
+    registry.addScene({"pgs-sphere-pit", 4, category, prose(R"(
+        Forty balls settle into a pile: many coupled contacts; compare Gauss-Seidel with Jacobi)"),
+        [] { return buildSpherePitScene(); }, solverControls});
 }
 
 }  // namespace

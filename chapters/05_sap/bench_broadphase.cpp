@@ -477,16 +477,16 @@ void measureBroadphase(BenchRun& bench) {
 }  // namespace
 
 BenchEntry broadphaseBench() {
-    return BenchEntry{"broadphase", 5,
-                      "chapter 5: broadphase and step time against body count (100 to 100,000), sparse and dense, "
-                      "brute force vs sweep and prune (full sort, incremental); the crossover auto uses",
-                      measureBroadphase,
-                      {{BenchFile::Kind::Csv, "", "per part, density, body count and method: broadphase, step, sort, "
-                                                  "narrowphase and solve ms, candidate pairs, pairs looked at"},
-                       {BenchFile::Kind::Plot, "", "plot: broadphase time against body count"},
-                       {BenchFile::Kind::Plot, "-step", "plot: whole step, and narrowphase + solve, against body count"},
-                       {BenchFile::Kind::Plot, "-summary", "table: the targets, the crossover, the axis choice, dense "
-                                                           "against sparse"}}};
+    return benchEntry(5, measureBroadphase, R"(
+        broadphase: chapter 5: broadphase and step time against body count (100 to 100,000),
+            sparse and dense, brute force vs sweep and prune (full sort, incremental); the
+            crossover auto uses
+        broadphase.csv          per part, density, body count and method: broadphase, step,
+                                sort, narrowphase and solve ms, candidate pairs, pairs looked at
+        broadphase.svg          plot: broadphase time against body count
+        broadphase-step.svg     plot: whole step, and narrowphase + solve, against body count
+        broadphase-summary.svg  table: the targets, the crossover, the axis choice, dense
+                                against sparse)");
 }
 
 }  // namespace stepwise

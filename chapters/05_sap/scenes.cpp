@@ -178,15 +178,15 @@ void addChapter05Scenes(Registry& registry) {
     };
     const auto sparse = stressScene(StressDensity::Sparse, "sap-stress");
     const auto dense = stressScene(StressDensity::Dense, "sap-stress-dense");
-    registry.addScene({"sap-stress", 5, category,
-                       "400 bodies spread out fall and land: switch brute force and sweep and prune and watch the "
-                       "broadphase time (the bodies move exactly the same); orange bounds have a candidate pair with "
-                       "another body, the cyan intervals lie on the sweep axis",
-                       sparse.first, sparse.second});
-    registry.addScene({"sap-stress-dense", 5, category,
-                       "343 bodies packed in a block fall into a pile: nearly every body has candidate pairs, so sweep "
-                       "and prune saves less and the narrowphase and solver take the time",
-                       dense.first, dense.second});
+    registry.addScene({"sap-stress", 5, category, prose(R"(
+        400 bodies spread out fall and land: switch brute force and sweep and prune and watch the broadphase
+        time (the bodies move exactly the same); orange bounds have a candidate pair with another body, the
+        cyan intervals lie on the sweep axis)"),
+        sparse.first, sparse.second});
+    registry.addScene({"sap-stress-dense", 5, category, prose(R"(
+        343 bodies packed in a block fall into a pile: nearly every body has candidate pairs, so sweep and
+        prune saves less and the narrowphase and solver take the time)"),
+        dense.first, dense.second});
 }
 
 }  // namespace stepwise

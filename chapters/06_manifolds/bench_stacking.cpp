@@ -203,18 +203,18 @@ void measureStackingBench(BenchRun& bench) {
 }  // namespace
 
 BenchEntry stackingBench() {
-    return BenchEntry{"stacking", 6,
-                      "chapter 6: drift, sag and deepest overlap of pyramids against step time, iterations 1 to 50 and "
-                      "substeps 1 to 8, each stabilisation, warm starting on and off, manifolds and one point; "
-                      "pyramids of 10, 20, 40 rows; the chapter's targets",
-                      measureStackingBench,
-                      {{BenchFile::Kind::Csv, "", "per part, scene, stabilisation, warm starting, contacts, iterations "
-                                                  "and substeps: drift, sag, sink per contact, deepest overlap, step ms"},
-                       {BenchFile::Kind::Plot, "", "plot: drift against step time as the iterations grow"},
-                       {BenchFile::Kind::Plot, "-sag", "plot: sag beyond the slop against step time"},
-                       {BenchFile::Kind::Plot, "-penetration", "plot: deepest overlap against step time"},
-                       {BenchFile::Kind::Plot, "-substeps", "plot: drift against step time as the substeps grow"},
-                       {BenchFile::Kind::Plot, "-summary", "table: pyramids of each size, and the targets"}}};
+    return benchEntry(6, measureStackingBench, R"(
+        stacking: chapter 6: drift, sag and deepest overlap of pyramids against step time,
+            iterations 1 to 50 and substeps 1 to 8, each stabilisation, warm starting on and
+            off, manifolds and one point; pyramids of 10, 20, 40 rows; the chapter's targets
+        stacking.csv              per part, scene, stabilisation, warm starting, contacts,
+                                  iterations and substeps: drift, sag, sink per contact,
+                                  deepest overlap, step ms
+        stacking.svg              plot: drift against step time as the iterations grow
+        stacking-sag.svg          plot: sag beyond the slop against step time
+        stacking-penetration.svg  plot: deepest overlap against step time
+        stacking-substeps.svg     plot: drift against step time as the substeps grow
+        stacking-summary.svg      table: pyramids of each size, and the targets)");
 }
 
 }  // namespace stepwise

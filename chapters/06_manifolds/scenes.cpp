@@ -208,19 +208,27 @@ private:
 void addChapter06Scenes(Registry& registry) {
     const char* const category = "Stacking";
     const SceneViewFactory view = viewOfType<StackingView>();
-    registry.addScene({"stack-16", 6, category, "16 boxes stand: none moves sideways by more than a centimetre",
-                       [] { return buildBoxStack(16); }, view});
-    registry.addScene({"pyramid-20", 6, category, "210 boxes in 20 rows stand still", [] { return buildPyramid(20); }, view});
-    registry.addScene({"heavy-on-light", 6, category, "100 kg on three 1 kg boxes sinks no more than the slop per contact",
-                       [] { return buildHeavyOnLight(); }, view});
-    registry.addScene({"tower-heavy-below", 6, category, "1, 10, 100, 1000 kg from the top: it stands",
-                       [] { return buildMassTower(true); }, view});
-    registry.addScene({"tower-heavy-above", 6, category, "1000 kg on top of 100, 10 and 1 kg: try soft_step",
-                       [] { return buildMassTower(false); }, view});
-    registry.addScene({"card-house", 6, category, "thin plates leaning on each other hold by friction",
-                       [] { return buildCardHouse(); }, view});
-    registry.addScene({"stack-ramp", 6, category, "a box on a 30 degree ramp with mu 0.8 does not creep",
-                       [] { return buildStickingRamp(); }, view});
+    registry.addScene({"stack-16", 6, category, prose(R"(
+        16 boxes stand: none moves sideways by more than a centimetre)"),
+        [] { return buildBoxStack(16); }, view});
+    registry.addScene({"pyramid-20", 6, category, prose(R"(
+        210 boxes in 20 rows stand still)"),
+        [] { return buildPyramid(20); }, view});
+    registry.addScene({"heavy-on-light", 6, category, prose(R"(
+        100 kg on three 1 kg boxes sinks no more than the slop per contact)"),
+        [] { return buildHeavyOnLight(); }, view});
+    registry.addScene({"tower-heavy-below", 6, category, prose(R"(
+        1, 10, 100, 1000 kg from the top: it stands)"),
+        [] { return buildMassTower(true); }, view});
+    registry.addScene({"tower-heavy-above", 6, category, prose(R"(
+        1000 kg on top of 100, 10 and 1 kg: try soft_step)"),
+        [] { return buildMassTower(false); }, view});
+    registry.addScene({"card-house", 6, category, prose(R"(
+        thin plates leaning on each other hold by friction)"),
+        [] { return buildCardHouse(); }, view});
+    registry.addScene({"stack-ramp", 6, category, prose(R"(
+        a box on a 30 degree ramp with mu 0.8 does not creep)"),
+        [] { return buildStickingRamp(); }, view});
 }
 
 }  // namespace stepwise

@@ -204,17 +204,14 @@ void measureCcd(BenchRun& bench) {
 }  // namespace
 
 BenchEntry ccdBench() {
-    BenchEntry entry;
-    entry.name = "ccd";
-    entry.chapter = 7;
-    entry.description = "tunnel rate and step cost against speed: CCD off, CCD on, 2 to 16 substeps";
-    entry.measure = measureCcd;
-    entry.files = {{BenchFile::Kind::Csv, "", "tunnel rate and step cost per method and speed"},
-                   {BenchFile::Kind::Csv, "-toi", "conservative advancement against separation roots on the same sweeps"},
-                   {BenchFile::Kind::Plot, "", "fraction of shots through the wall against speed"},
-                   {BenchFile::Kind::Plot, "-cost", "step time against speed"},
-                   {BenchFile::Kind::Plot, "-summary", "every speed together: tunnels, cost against CCD off, queries per impact; the two TOI methods"}};
-    return entry;
+    return benchEntry(7, measureCcd, R"(
+        ccd: tunnel rate and step cost against speed: CCD off, CCD on, 2 to 16 substeps
+        ccd.csv          tunnel rate and step cost per method and speed
+        ccd-toi.csv      conservative advancement against separation roots on the same sweeps
+        ccd.svg          fraction of shots through the wall against speed
+        ccd-cost.svg     step time against speed
+        ccd-summary.svg  every speed together: tunnels, cost against CCD off, queries per
+                         impact; the two TOI methods)");
 }
 
 }  // namespace stepwise

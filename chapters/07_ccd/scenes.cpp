@@ -90,13 +90,15 @@ World buildHeadOnBullets() {
 
 void addChapter07Scenes(Registry& registry) {
     const char* const category = "Continuous collision";
-    registry.addScene({"ccd-gun", 7, category,
-                       "bullets stop at a 5 cm wall and knock the stack; untick CCD and they fly through",
-                       [] { return buildGunRange(); }, viewOfType<GunView>()});
-    registry.addScene({"ccd-spinning-rod", 7, category, "a rod spinning at 100 rad/s and flying at 50 m/s stops at the wall",
-                       [] { return buildSpinningRod(); }, viewOfType<GunView>()});
-    registry.addScene({"ccd-head-on", 7, category, "two bullets at 300 m/s meet and bounce apart, momentum kept",
-                       [] { return buildHeadOnBullets(); }, viewOfType<GunView>()});
+    registry.addScene({"ccd-gun", 7, category, prose(R"(
+        bullets stop at a 5 cm wall and knock the stack; untick CCD and they fly through)"),
+        [] { return buildGunRange(); }, viewOfType<GunView>()});
+    registry.addScene({"ccd-spinning-rod", 7, category, prose(R"(
+        a rod spinning at 100 rad/s and flying at 50 m/s stops at the wall)"),
+        [] { return buildSpinningRod(); }, viewOfType<GunView>()});
+    registry.addScene({"ccd-head-on", 7, category, prose(R"(
+        two bullets at 300 m/s meet and bounce apart, momentum kept)"),
+        [] { return buildHeadOnBullets(); }, viewOfType<GunView>()});
 }
 
 }  // namespace stepwise

@@ -359,19 +359,15 @@ void measureJoints(BenchRun& bench) {
 }  // namespace
 
 BenchEntry jointsBench() {
-    BenchEntry entry;
-    entry.name = "joints";
-    entry.chapter = 8;
-    entry.description = "chain stretch and ragdoll joint error against step time: iterations, substeps, joint order, "
-                        "rigid and soft feedback, near-converged joints";
-    entry.measure = measureJoints;
-    entry.files = {{BenchFile::Kind::Csv, "", "per case, order, feedback, iterations, substeps and joint sweeps: step ms, "
-                                              "stretch, joint error"},
-                   {BenchFile::Kind::Plot, "", "largest chain stretch against step time as the iterations grow"},
-                   {BenchFile::Kind::Plot, "-substeps", "the swinging chain: iterations against frame substeps"},
-                   {BenchFile::Kind::Plot, "-ragdolls", "the ragdoll pile's joint error against step time"},
-                   {BenchFile::Kind::Plot, "-summary", "joint order, feedback, and near-converged joints"}};
-    return entry;
+    return benchEntry(8, measureJoints, R"(
+        joints: chain stretch and ragdoll joint error against step time: iterations, substeps,
+            joint order, rigid and soft feedback, near-converged joints
+        joints.csv           per case, order, feedback, iterations, substeps and joint sweeps:
+                             step ms, stretch, joint error
+        joints.svg           largest chain stretch against step time as the iterations grow
+        joints-substeps.svg  the swinging chain: iterations against frame substeps
+        joints-ragdolls.svg  the ragdoll pile's joint error against step time
+        joints-summary.svg   joint order, feedback, and near-converged joints)");
 }
 
 }  // namespace stepwise

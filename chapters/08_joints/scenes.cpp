@@ -253,26 +253,26 @@ World buildRagdollPile(int ragdolls, unsigned seed) {
 void addChapter08Scenes(Registry& registry) {
     const char* const category = "Joints";
     // The first scene is the one the demo opens on and the render test photographs.
-    registry.addScene({"joints-sandbox", 8, category,
-                       "the stack stands, the chain swings from its anchor, the blue platform carries its box by "
-                       "friction, the paddle throws the small bodies and the ragdoll falls and settles; a joint "
-                       "more than 1 cm off turns red",
-                       buildJointsSandbox, jointView()});
-    registry.addScene({"joints-gallery", 8, category,
-                       "one joint of each type on its post: the spring bounces, the ball socket circles, one hinge "
-                       "rests on its -45 degree limit while the motor turns the other at 2 rad/s, the cone-twist "
-                       "droops onto its 30 degree cone, the slider hits -0.5 m and its motor takes it to +0.5 m, "
-                       "the weld holds",
-                       buildJointGallery, jointView(true)});
-    registry.addScene({"joints-ragdoll-pile", 8, category, "ten ragdolls fall in a heap and come to rest, joints holding",
-                       [] { return buildRagdollPile(); }, jointView()});
-    registry.addScene({"joints-platform", 8, category,
-                       "the kinematic platform slides 2 m each way every 4 s; friction alone carries the box, which "
-                       "never slips",
-                       buildPlatformScene, jointView()});
-    registry.addScene({"joints-rotator", 8, category,
-                       "the kinematic paddle spins at 3 rad/s and throws the small boxes and spheres out of its sweep",
-                       buildRotatorScene, jointView()});
+    registry.addScene({"joints-sandbox", 8, category, prose(R"(
+        the stack stands, the chain swings from its anchor, the blue platform carries its box by friction,
+        the paddle throws the small bodies and the ragdoll falls and settles; a joint more than 1 cm off
+        turns red)"),
+        buildJointsSandbox, jointView()});
+    registry.addScene({"joints-gallery", 8, category, prose(R"(
+        one joint of each type on its post: the spring bounces, the ball socket circles, one hinge rests on
+        its -45 degree limit while the motor turns the other at 2 rad/s, the cone-twist droops onto its 30
+        degree cone, the slider hits -0.5 m and its motor takes it to +0.5 m, the weld holds)"),
+        buildJointGallery, jointView(true)});
+    registry.addScene({"joints-ragdoll-pile", 8, category, prose(R"(
+        ten ragdolls fall in a heap and come to rest, joints holding)"),
+        [] { return buildRagdollPile(); }, jointView()});
+    registry.addScene({"joints-platform", 8, category, prose(R"(
+        the kinematic platform slides 2 m each way every 4 s; friction alone carries the box, which never
+        slips)"),
+        buildPlatformScene, jointView()});
+    registry.addScene({"joints-rotator", 8, category, prose(R"(
+        the kinematic paddle spins at 3 rad/s and throws the small boxes and spheres out of its sweep)"),
+        buildRotatorScene, jointView()});
 }
 
 }  // namespace stepwise

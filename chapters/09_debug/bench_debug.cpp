@@ -67,103 +67,102 @@ RayHit reference(const Ray& ray, const RayTarget& target) {
     return castRay(ray, target.shape, target.pose);
 }
 
+void measureDebug(BenchRun& bench) {
+    const bool quick = bench.quick();
+    const std::vector<int> rows = quick ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8, 16, 24, 32};
+    CsvTable history({"bodies", "step (ms)", "record (ms)", "record / step", "bytes per frame", "120 frames (MB)",
+                      "rewind 60 + 60 steps + resume (ms)"});
+    PlotSeries stepSeries, recordSeries;
+    stepSeries.title = "step (chapter 8 pipeline)";
+    recordSeries.title = "record one frame";
+    bench.progress().stage("history", long(rows.size()));
+    for (int count : rows) {
+        const HistoryCost cost = measureHistory(count);
+        history.addRow({std::to_string(cost.bodies), formatNumber(cost.stepMs), formatNumber(cost.recordMs),
+                        formatNumber(100 * cost.recordMs / cost.stepMs, 3) + "%", formatNumber(cost.bytesPerFrame),
+                        formatNumber(cost.bytesPerFrame * kHistoryFrames / 1e6, 3), formatNumber(cost.rewindResumeMs)});
+        stepSeries.x.push_back(cost.bodies);
+        stepSeries.y.push_back(cost.stepMs);
+        recordSeries.x.push_back(cost.bodies);
+        recordSeries.y.push_back(cost.recordMs);
+        bench.progress().advance();
+    }
+
+    const int rayCount = quick ? 2000 : 20000;
+    const std::vector<int> caps{1, 2, 3, 4, 6, 8, 16, 64};
+    CsvTable rays({"shape", "method", "iteration cap", "ns per cast", "hits", "called otherwise",
+                   "largest deviation across the surface (m)"});
+    PlotSpec rayPlot("GJK ray cast: deviation from the closed form against time per cast (" + std::string(realTypeName()) + ")",
+                     "time per cast (ns, CPU)", "largest deviation across the surface (m)");
+    rayPlot.caption = std::to_string(rayCount) + " rays per shape from 3 m; along each line the iteration cap grows " +
+                      "1 to 64; drawn at 1 m while a ray is still called otherwise, a deviation of 0 at 1e-12 m.";
+    bench.progress().stage("ray casts", long(rayTargets().size()));
+    for (const RayTarget& target : rayTargets()) {
+        Random random(9);
+        std::vector<Ray> aimed;
+        for (int i = 0; i < rayCount; ++i) aimed.push_back(aimedRay(target, random));
+        std::vector<RayHit> exact(aimed.size());
+        ThreadStopwatch clock;
+        for (std::size_t i = 0; i < aimed.size(); ++i) exact[i] = reference(aimed[i], target);
+        const double exactNs = clock.seconds() * 1e9 / double(aimed.size());
+        const long exactHits = std::count_if(exact.begin(), exact.end(), [](const RayHit& hit) { return hit.hit; });
+        rays.addRow({target.name, target.shape.type == ShapeType::Convex ? "face planes" : "closed form", "-",
+                     formatNumber(exactNs), std::to_string(exactHits), "-", "0 (reference)"});
+        PlotSeries series;
+        series.title = target.name;
+        const ConvexProxy proxy{&target.shape, target.pose};
+        for (int cap : caps) {
+            std::vector<RayHit> cast(aimed.size());
+            clock.restart();
+            for (std::size_t i = 0; i < aimed.size(); ++i) cast[i] = rayConvex(aimed[i], proxy, cap);
+            const double ns = clock.seconds() * 1e9 / double(aimed.size());
+            double deviation = 0;
+            long hits = 0, otherwise = 0;
+            for (std::size_t i = 0; i < aimed.size(); ++i) {
+                hits += cast[i].hit ? 1 : 0;
+                // A hit one method calls a miss: a graze along an edge or a rim, or a cast
+                // stopped by its cap before it reached the shape.
+                if (cast[i].hit != exact[i].hit) ++otherwise;
+                else if (cast[i].hit)   // across the surface: along a grazing ray the same error is longer
+                    deviation = std::max(deviation, double(std::abs(cast[i].distance - exact[i].distance)) *
+                                                        std::abs(double(exact[i].normal.dot(aimed[i].direction))));
+            }
+            rays.addRow({target.name, "GJK", std::to_string(cap), formatNumber(ns), std::to_string(hits),
+                         std::to_string(otherwise), formatNumber(deviation)});
+            // The plot's error: the deviation, or 1 m while any ray is still called otherwise.
+            series.x.push_back(ns);
+            series.y.push_back(std::max(otherwise > 0 ? 1.0 : deviation, 1e-12));
+        }
+        rayPlot.series.push_back(series);
+        bench.progress().advance();
+    }
+    bench.progress().endStage();
+
+    std::ostream& out = bench.out();
+    out << "history (" << realTypeName() << ", pyramids through chapter 8's pipeline, medians of " << 2 * kHistoryFrames
+        << " frames):\n"
+        << history.toText() << "\nray casts (" << rayCount << " rays per shape):\n" << rays.toText();
+    bench.writeCsv(history);
+    bench.writeCsv(rays, "-rays");
+    PlotSpec historyPlot("History: recording a frame beside stepping it (" + std::string(realTypeName()) + ")",
+                         "bodies", "ms per frame (CPU, median)");
+    historyPlot.series = {stepSeries, recordSeries};
+    historyPlot.caption = "Pyramids of boxes through chapter 8's pipeline; recording copies the whole world into the "
+                          "120-frame ring (slots reused).";
+    bench.writePlot(historyPlot);
+    bench.writePlot(rayPlot, "-rays");
+}
+
 }  // namespace
 
 BenchEntry debugBench() {
-    BenchEntry entry;
-    entry.name = "debug";
-    entry.chapter = 9;
-    entry.description = "history cost per frame against scene size, rewind and resume, GJK ray cast error against its iteration cap";
-    entry.files = {{BenchFile::Kind::Csv, "", "history: step, record and memory per frame against body count"},
-                   {BenchFile::Kind::Csv, "-rays", "ray casts: time per cast and deviation from the closed form"},
-                   {BenchFile::Kind::Plot, "", "history: step and record time against body count"},
-                   {BenchFile::Kind::Plot, "-rays", "GJK ray cast deviation against time per cast, iteration cap growing"}};
-    entry.measure = [](BenchRun& bench) {
-        const bool quick = bench.quick();
-        const std::vector<int> rows = quick ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8, 16, 24, 32};
-        CsvTable history({"bodies", "step (ms)", "record (ms)", "record / step", "bytes per frame", "120 frames (MB)",
-                          "rewind 60 + 60 steps + resume (ms)"});
-        PlotSeries stepSeries, recordSeries;
-        stepSeries.title = "step (chapter 8 pipeline)";
-        recordSeries.title = "record one frame";
-        bench.progress().stage("history", long(rows.size()));
-        for (int count : rows) {
-            const HistoryCost cost = measureHistory(count);
-            history.addRow({std::to_string(cost.bodies), formatNumber(cost.stepMs), formatNumber(cost.recordMs),
-                            formatNumber(100 * cost.recordMs / cost.stepMs, 3) + "%", formatNumber(cost.bytesPerFrame),
-                            formatNumber(cost.bytesPerFrame * kHistoryFrames / 1e6, 3), formatNumber(cost.rewindResumeMs)});
-            stepSeries.x.push_back(cost.bodies);
-            stepSeries.y.push_back(cost.stepMs);
-            recordSeries.x.push_back(cost.bodies);
-            recordSeries.y.push_back(cost.recordMs);
-            bench.progress().advance();
-        }
-
-        const int rayCount = quick ? 2000 : 20000;
-        const std::vector<int> caps{1, 2, 3, 4, 6, 8, 16, 64};
-        CsvTable rays({"shape", "method", "iteration cap", "ns per cast", "hits", "called otherwise",
-                       "largest deviation across the surface (m)"});
-        PlotSpec rayPlot("GJK ray cast: deviation from the closed form against time per cast (" + std::string(realTypeName()) + ")",
-                         "time per cast (ns, CPU)", "largest deviation across the surface (m)");
-        rayPlot.caption = std::to_string(rayCount) + " rays per shape from 3 m; along each line the iteration cap grows " +
-                          "1 to 64; drawn at 1 m while a ray is still called otherwise, a deviation of 0 at 1e-12 m.";
-        bench.progress().stage("ray casts", long(rayTargets().size()));
-        for (const RayTarget& target : rayTargets()) {
-            Random random(9);
-            std::vector<Ray> aimed;
-            for (int i = 0; i < rayCount; ++i) aimed.push_back(aimedRay(target, random));
-            std::vector<RayHit> exact(aimed.size());
-            ThreadStopwatch clock;
-            for (std::size_t i = 0; i < aimed.size(); ++i) exact[i] = reference(aimed[i], target);
-            const double exactNs = clock.seconds() * 1e9 / double(aimed.size());
-            const long exactHits = std::count_if(exact.begin(), exact.end(), [](const RayHit& hit) { return hit.hit; });
-            rays.addRow({target.name, target.shape.type == ShapeType::Convex ? "face planes" : "closed form", "-",
-                         formatNumber(exactNs), std::to_string(exactHits), "-", "0 (reference)"});
-            PlotSeries series;
-            series.title = target.name;
-            const ConvexProxy proxy{&target.shape, target.pose};
-            for (int cap : caps) {
-                std::vector<RayHit> cast(aimed.size());
-                clock.restart();
-                for (std::size_t i = 0; i < aimed.size(); ++i) cast[i] = rayConvex(aimed[i], proxy, cap);
-                const double ns = clock.seconds() * 1e9 / double(aimed.size());
-                double deviation = 0;
-                long hits = 0, otherwise = 0;
-                for (std::size_t i = 0; i < aimed.size(); ++i) {
-                    hits += cast[i].hit ? 1 : 0;
-                    // A hit one method calls a miss: a graze along an edge or a rim, or a cast
-                    // stopped by its cap before it reached the shape.
-                    if (cast[i].hit != exact[i].hit) ++otherwise;
-                    else if (cast[i].hit)   // across the surface: along a grazing ray the same error is longer
-                        deviation = std::max(deviation, double(std::abs(cast[i].distance - exact[i].distance)) *
-                                                            std::abs(double(exact[i].normal.dot(aimed[i].direction))));
-                }
-                rays.addRow({target.name, "GJK", std::to_string(cap), formatNumber(ns), std::to_string(hits),
-                             std::to_string(otherwise), formatNumber(deviation)});
-                // The plot's error: the deviation, or 1 m while any ray is still called otherwise.
-                series.x.push_back(ns);
-                series.y.push_back(std::max(otherwise > 0 ? 1.0 : deviation, 1e-12));
-            }
-            rayPlot.series.push_back(series);
-            bench.progress().advance();
-        }
-        bench.progress().endStage();
-
-        std::ostream& out = bench.out();
-        out << "history (" << realTypeName() << ", pyramids through chapter 8's pipeline, medians of " << 2 * kHistoryFrames
-            << " frames):\n"
-            << history.toText() << "\nray casts (" << rayCount << " rays per shape):\n" << rays.toText();
-        bench.writeCsv(history);
-        bench.writeCsv(rays, "-rays");
-        PlotSpec historyPlot("History: recording a frame beside stepping it (" + std::string(realTypeName()) + ")",
-                             "bodies", "ms per frame (CPU, median)");
-        historyPlot.series = {stepSeries, recordSeries};
-        historyPlot.caption = "Pyramids of boxes through chapter 8's pipeline; recording copies the whole world into the "
-                              "120-frame ring (slots reused).";
-        bench.writePlot(historyPlot);
-        bench.writePlot(rayPlot, "-rays");
-    };
-    return entry;
+    return benchEntry(9, measureDebug, R"(
+        debug: history cost per frame against scene size, rewind and resume, GJK ray cast error
+            against its iteration cap
+        debug.csv       history: step, record and memory per frame against body count
+        debug-rays.csv  ray casts: time per cast and deviation from the closed form
+        debug.svg       history: step and record time against body count
+        debug-rays.svg  GJK ray cast deviation against time per cast, iteration cap growing)");
 }
 
 }  // namespace stepwise

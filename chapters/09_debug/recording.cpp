@@ -74,16 +74,24 @@ std::vector<ExactBodyState> exactStatesOf(const World& world) {
     return states;
 }
 
+/// Appends where a body is and how it moves, the fields a body state and an edit share, in
+/// the order the files have always had them.
+void addMotionJson(Json& json, const Transform& transform, const Vec3& linearVelocity, const Vec3& angularVelocity) {
+    json["position"] = exact(transform.position);
+    json["orientation"] = exact(transform.rotation);
+    json["linear_velocity"] = exact(linearVelocity);
+    json["angular_velocity"] = exact(angularVelocity);
+}
+
 Json stateToJson(const ExactBodyState& state) {
-    return {{"position", exact(state.transform.position)},
-            {"orientation", exact(state.transform.rotation)},
-            {"linear_velocity", exact(state.linearVelocity)},
-            {"angular_velocity", exact(state.angularVelocity)},
-            {"mass", double(state.mass)},
-            {"inverse_mass", double(state.inverseMass)},
-            {"local_center", exact(state.localCenter)},
-            {"inertia", exact(state.inertiaLocal)},
-            {"inverse_inertia", exact(state.inverseInertiaLocal)}};
+    Json json = Json::object();
+    addMotionJson(json, state.transform, state.linearVelocity, state.angularVelocity);
+    json.update(Json{{"mass", double(state.mass)},
+                     {"inverse_mass", double(state.inverseMass)},
+                     {"local_center", exact(state.localCenter)},
+                     {"inertia", exact(state.inertiaLocal)},
+                     {"inverse_inertia", exact(state.inverseInertiaLocal)}});
+    return json;
 }
 
 ExactBodyState stateFromJson(const JsonCursor& entry) {
@@ -105,15 +113,11 @@ ExactBodyState stateFromJson(const JsonCursor& entry) {
 }
 
 Json editToJson(const World& world, const BodyEdit& edit) {
-    const Json inertia = exact(edit.inertiaLocal);
-    return {{"frame", edit.frame},
-            {"body", world.bodies.at(static_cast<std::size_t>(edit.body)).name},
-            {"position", exact(edit.transform.position)},
-            {"orientation", exact(edit.transform.rotation)},
-            {"linear_velocity", exact(edit.linearVelocity)},
-            {"angular_velocity", exact(edit.angularVelocity)},
-            {"mass", double(edit.mass)},
-            {"inertia", inertia}};
+    Json json = {{"frame", edit.frame}, {"body", world.bodies.at(static_cast<std::size_t>(edit.body)).name}};
+    addMotionJson(json, edit.transform, edit.linearVelocity, edit.angularVelocity);
+    json["mass"] = double(edit.mass);
+    json["inertia"] = exact(edit.inertiaLocal);
+    return json;
 }
 
 std::uint64_t parseHash(const JsonCursor& cursor) {

@@ -70,22 +70,23 @@ World buildDebugJitter() {
 }
 
 void addChapter09Scenes(Registry& registry) {
-    const auto add = [&](const char* name, const char* category, const char* observe, World (*build)()) {
-        registry.addScene(SceneEntry{name, 9, category, observe, build, {}});
-    };
-    add("debug-drop", "debugging",
-        "Hold Space: the run stops on the frame the box first touches the ground (Left Alt goes on); "
-        "then drag the timeline back and step the impact again",
-        buildDebugDrop);
-    add("debug-hull-on-box", "debugging",
-        "Turn on the EPA face and A - B views: the blue face is the one whose normal became the contact normal",
-        buildDebugHullOnBox);
-    add("debug-tunnel", "debugging",
-        "The bullet passes the wall between two frames: rewind one frame at a time to see it never touched; set ccd on",
-        buildDebugTunnel);
-    add("debug-jitter", "debugging",
-        "Warm starting is off: select a contact in the hit tree and watch its impulse jump every frame; turn it on",
-        buildDebugJitter);
+    const char* const category = "debugging";
+    registry.addScene({"debug-drop", 9, category, prose(R"(
+        Hold Space: the run stops on the frame the box first touches the ground (Left Alt goes on); then
+        drag the timeline back and step the impact again)"),
+        buildDebugDrop, {}});
+    registry.addScene({"debug-hull-on-box", 9, category, prose(R"(
+        Turn on the EPA face and A - B views: the blue face is the one whose normal became the contact
+        normal)"),
+        buildDebugHullOnBox, {}});
+    registry.addScene({"debug-tunnel", 9, category, prose(R"(
+        The bullet passes the wall between two frames: rewind one frame at a time to see it never
+        touched; set ccd on)"),
+        buildDebugTunnel, {}});
+    registry.addScene({"debug-jitter", 9, category, prose(R"(
+        Warm starting is off: select a contact in the hit tree and watch its impulse jump every frame;
+        turn it on)"),
+        buildDebugJitter, {}});
 }
 
 }  // namespace stepwise

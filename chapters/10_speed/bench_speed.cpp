@@ -115,148 +115,146 @@ struct BenchScene {
     long timedFrom;     // frames before it are not timed (the pile's first contacts)
 };
 
+void measureSpeed(BenchRun& bench) {
+    const bool quick = bench.quick();
+    const bool withPeer = static_cast<bool>(peerEngine().run);
+    std::ostream& out = bench.out();
+    if (!withPeer)
+        out << "bench speed: no peer engine in this program (the `stepwise` program links the Bullet peer where "
+               "libbullet-dev is found): Bullet skipped\n";
+
+    // [ch10-bench-scenes]
+    std::vector<BenchScene> scenes;
+    scenes.push_back({"pyramid 100 rows", buildPyramidRow(1, quick ? 30 : 100), quick ? 60 : 600, 0});
+    scenes.push_back({"ten 20-row pyramids", buildPyramidRow(quick ? 3 : 10, 20), quick ? 60 : 600, 0});
+    scenes.push_back({"mixed pile", buildMixedPile(quick ? 300 : 2000), quick ? 120 : 600, 0});
+    for (BenchScene& scene : scenes) scene.world.settings.sleeping = false;
+    // [ch10-bench-scenes]
+
+    CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
+                    "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
+                    "x_faster_than_peer"});
+    // [ch10-bench-profile]
+    // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
+    CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
+                      "relax_ms", "store_ms"});
+    // [ch10-bench-profile]
+    const std::vector<Configuration> list = configurations(withPeer);
+    bench.progress().stage("scenes x configurations", static_cast<long>(scenes.size() * list.size()));
+    for (const BenchScene& scene : scenes) {
+        const int bodies = scene.world.dynamicBodyCount();
+        std::vector<std::pair<const Configuration*, Measurement>> results;
+        for (const Configuration& configuration : list) {
+            // Chapter 8's solve is slow on thousands of bodies: a second of simulated time measures it.
+            const long frames = configuration.options.fastSolve || configuration.peer ? scene.frames
+                                                                                     : std::min<long>(scene.frames, 60);
+            results.push_back({&configuration, configuration.peer ? runPeer(scene.world, frames, scene.timedFrom)
+                                                                  : runEngine(scene.world, configuration.options,
+                                                                              frames, scene.timedFrom)});
+            bench.progress().advance();
+        }
+        const FastSolveStats& phases = results.front().second.solvePhases;
+        std::vector<std::string> row = {scene.name, std::to_string(phases.manifolds), std::to_string(phases.points)};
+        for (double ms : phases.phaseMs) row.push_back(formatNumber(ms));
+        profile.addRow(std::move(row));
+        const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
+        for (const auto& result : results) {
+            const Configuration* configuration = result.first;
+            const Measurement& m = result.second;
+            auto stage = [&](const char* group) {
+                const auto found = m.stageMs.find(group);
+                return found == m.stageMs.end() ? std::string("") : formatNumber(found->second);
+            };
+            table.addRow({scene.name, std::to_string(bodies), configuration->name, std::to_string(m.frames),
+                          formatNumber(m.stepMs.median), formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper),
+                          stage(stage_group::kBroadphase), stage(stage_group::kNarrowphase), stage(stage_group::kSolve),
+                          formatNumber(1e6 * m.stepMs.median / bodies), formatNumber(m.maxSideways),
+                          formatNumber(m.lowest), configuration->peer ? "" : formatNumber(m.maxPenetration),
+                          withPeer ? formatNumber(peerMs / m.stepMs.median, 3) : ""});
+        }
+    }
+    bench.progress().endStage();
+
+    // [ch10-bench-sleep]
+    // Piles that have settled: the step with sleeping on against the same step awake. Spheres and
+    // capsules roll on with nothing to stop them (no rolling resistance), and one moving body
+    // keeps its whole island awake, so the pile of boxes and hulls is measured beside the mixed one.
+    CsvTable sleepTable({"scene", "bodies", "sleeping", "settle_frames", "bodies_asleep", "ms_median", "fraction_of_awake"});
+    bench.progress().stage("settled piles, asleep and awake", 4);
+    for (bool roundShapes : {true, false}) {
+        const World pile = buildMixedPile(quick ? 300 : 2000, roundShapes);
+        const long settle = quick ? 240 : 900;
+        SpeedOptions asleep, awake;
+        awake.sleeping = false;
+        const Measurement sleeping = runEngine(pile, asleep, settle + 60, settle);
+        bench.progress().advance();
+        const Measurement notSleeping = runEngine(pile, awake, settle + 60, settle);
+        bench.progress().advance();
+        const int bodies = pile.dynamicBodyCount();
+        sleepTable.addRow({pile.name, std::to_string(bodies), "on", std::to_string(settle), std::to_string(sleeping.sleeping),
+                           formatNumber(sleeping.stepMs.median),
+                           formatNumber(sleeping.stepMs.median / notSleeping.stepMs.median, 3)});
+        sleepTable.addRow({pile.name, std::to_string(bodies), "off", std::to_string(settle), "0",
+                           formatNumber(notSleeping.stepMs.median), "1"});
+    }
+    bench.progress().endStage();
+    // [ch10-bench-sleep]
+
+    // Scaling: pyramids of growing size.
+    CsvTable scaling({"rows", "bodies", "configuration", "ms_median", "ms_q1", "ms_q3"});
+    PlotSpec plot("ms per step against body count (pyramids)", "boxes", "ms per step");
+    plot.integerX = true;
+    plot.caption = std::string("Median ms per step (quartiles as whiskers) of pyramids of 10 to ") + (quick ? "30" : "100") +
+                   " rows, 120 frames each, single thread, " + realTypeName() +
+                   " build; chapter 10 with sleeping off, its scalar solve, and the peer when the program has one.";
+    const std::vector<int> rowsList = quick ? std::vector<int>{10, 20, 30} : std::vector<int>{10, 20, 40, 60, 80, 100};
+    std::vector<Configuration> scalingList = {list[0], list[1]};
+    if (withPeer) scalingList.push_back(list.back());
+    bench.progress().stage("pyramids of growing size", static_cast<long>(rowsList.size() * scalingList.size()));
+    for (const Configuration& configuration : scalingList) {
+        PlotSeries series(configuration.name);
+        for (int rows : rowsList) {
+            const World pyramid = buildPyramidRow(1, rows);
+            const long frames = quick ? 30 : 120;
+            const Measurement m = configuration.peer ? runPeer(pyramid, frames, 0)
+                                                     : runEngine(pyramid, configuration.options, frames, 0);
+            const int bodies = pyramid.dynamicBodyCount();
+            scaling.addRow({std::to_string(rows), std::to_string(bodies), configuration.name, formatNumber(m.stepMs.median),
+                            formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper)});
+            series.x.push_back(bodies);
+            series.y.push_back(m.stepMs.median);
+            series.yLow.push_back(m.stepMs.lower);
+            series.yHigh.push_back(m.stepMs.upper);
+            bench.progress().advance();
+        }
+        plot.series.push_back(series);
+    }
+    bench.progress().endStage();
+
+    out << table.toText() << "\n" << profile.toText() << "\n" << sleepTable.toText() << "\n" << scaling.toText();
+    bench.writeCsv(table);
+    bench.writeCsv(profile, "-profile");
+    bench.writeCsv(scaling, "-scaling");
+    bench.writePlot(plot);
+    const std::vector<FigureTable> figures = {
+        {{"Ms per step and per stage, single thread, " + std::string(realTypeName()) + " build."}, &table},
+        {{"Where chapter 10's solve spends its time: ms per step in each phase."}, &profile},
+        {{"A settled pile: the step with sleeping on, as a fraction of the same step awake."}, &sleepTable}};
+    bench.writeTables(figures, "-tables");
+}
+
 }  // namespace
 
 BenchEntry speedBench() {
-    BenchEntry entry;
-    entry.name = "speed";
-    entry.chapter = 10;
-    entry.description =
-        "ms per step and per stage on a 100-row pyramid, ten 20-row pyramids and a 2,000-body pile, each "
-        "optimisation off in turn, Bullet beside it; a settled pile asleep and awake; ms against body count";
-    entry.files = {{BenchFile::Kind::Csv, "", "per scene and configuration: ms per step, per stage, drift, penetration"},
-                   {BenchFile::Kind::Csv, "-profile", "chapter 10's solve phase by phase: ms per step in each"},
-                   {BenchFile::Kind::Csv, "-scaling", "pyramids of growing size: ms per step against body count"},
-                   {BenchFile::Kind::Plot, "", "ms per step against body count, chapter 10, scalar, Bullet"},
-                   {BenchFile::Kind::Plot, "-tables", "the tables as a figure for the page"}};
-    entry.measure = [](BenchRun& bench) {
-        const bool quick = bench.quick();
-        const bool withPeer = static_cast<bool>(peerEngine().run);
-        std::ostream& out = bench.out();
-        if (!withPeer)
-            out << "bench speed: no peer engine in this program (the `stepwise` program links the Bullet peer where "
-                   "libbullet-dev is found): Bullet skipped\n";
-
-        // [ch10-bench-scenes]
-        std::vector<BenchScene> scenes;
-        scenes.push_back({"pyramid 100 rows", buildPyramidRow(1, quick ? 30 : 100), quick ? 60 : 600, 0});
-        scenes.push_back({"ten 20-row pyramids", buildPyramidRow(quick ? 3 : 10, 20), quick ? 60 : 600, 0});
-        scenes.push_back({"mixed pile", buildMixedPile(quick ? 300 : 2000), quick ? 120 : 600, 0});
-        for (BenchScene& scene : scenes) scene.world.settings.sleeping = false;
-        // [ch10-bench-scenes]
-
-        CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
-                        "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
-                        "x_faster_than_peer"});
-        // [ch10-bench-profile]
-        // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
-        CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
-                          "relax_ms", "store_ms"});
-        // [ch10-bench-profile]
-        const std::vector<Configuration> list = configurations(withPeer);
-        bench.progress().stage("scenes x configurations", static_cast<long>(scenes.size() * list.size()));
-        for (const BenchScene& scene : scenes) {
-            const int bodies = scene.world.dynamicBodyCount();
-            std::vector<std::pair<const Configuration*, Measurement>> results;
-            for (const Configuration& configuration : list) {
-                // Chapter 8's solve is slow on thousands of bodies: a second of simulated time measures it.
-                const long frames = configuration.options.fastSolve || configuration.peer ? scene.frames
-                                                                                         : std::min<long>(scene.frames, 60);
-                results.push_back({&configuration, configuration.peer ? runPeer(scene.world, frames, scene.timedFrom)
-                                                                      : runEngine(scene.world, configuration.options,
-                                                                                  frames, scene.timedFrom)});
-                bench.progress().advance();
-            }
-            const FastSolveStats& phases = results.front().second.solvePhases;
-            std::vector<std::string> row = {scene.name, std::to_string(phases.manifolds), std::to_string(phases.points)};
-            for (double ms : phases.phaseMs) row.push_back(formatNumber(ms));
-            profile.addRow(std::move(row));
-            const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
-            for (const auto& result : results) {
-                const Configuration* configuration = result.first;
-                const Measurement& m = result.second;
-                auto stage = [&](const char* group) {
-                    const auto found = m.stageMs.find(group);
-                    return found == m.stageMs.end() ? std::string("") : formatNumber(found->second);
-                };
-                table.addRow({scene.name, std::to_string(bodies), configuration->name, std::to_string(m.frames),
-                              formatNumber(m.stepMs.median), formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper),
-                              stage(stage_group::kBroadphase), stage(stage_group::kNarrowphase), stage(stage_group::kSolve),
-                              formatNumber(1e6 * m.stepMs.median / bodies), formatNumber(m.maxSideways),
-                              formatNumber(m.lowest), configuration->peer ? "" : formatNumber(m.maxPenetration),
-                              withPeer ? formatNumber(peerMs / m.stepMs.median, 3) : ""});
-            }
-        }
-        bench.progress().endStage();
-
-        // [ch10-bench-sleep]
-        // Piles that have settled: the step with sleeping on against the same step awake. Spheres and
-        // capsules roll on with nothing to stop them (no rolling resistance), and one moving body
-        // keeps its whole island awake, so the pile of boxes and hulls is measured beside the mixed one.
-        CsvTable sleepTable({"scene", "bodies", "sleeping", "settle_frames", "bodies_asleep", "ms_median", "fraction_of_awake"});
-        bench.progress().stage("settled piles, asleep and awake", 4);
-        for (bool roundShapes : {true, false}) {
-            const World pile = buildMixedPile(quick ? 300 : 2000, roundShapes);
-            const long settle = quick ? 240 : 900;
-            SpeedOptions asleep, awake;
-            awake.sleeping = false;
-            const Measurement sleeping = runEngine(pile, asleep, settle + 60, settle);
-            bench.progress().advance();
-            const Measurement notSleeping = runEngine(pile, awake, settle + 60, settle);
-            bench.progress().advance();
-            const int bodies = pile.dynamicBodyCount();
-            sleepTable.addRow({pile.name, std::to_string(bodies), "on", std::to_string(settle), std::to_string(sleeping.sleeping),
-                               formatNumber(sleeping.stepMs.median),
-                               formatNumber(sleeping.stepMs.median / notSleeping.stepMs.median, 3)});
-            sleepTable.addRow({pile.name, std::to_string(bodies), "off", std::to_string(settle), "0",
-                               formatNumber(notSleeping.stepMs.median), "1"});
-        }
-        bench.progress().endStage();
-        // [ch10-bench-sleep]
-
-        // Scaling: pyramids of growing size.
-        CsvTable scaling({"rows", "bodies", "configuration", "ms_median", "ms_q1", "ms_q3"});
-        PlotSpec plot("ms per step against body count (pyramids)", "boxes", "ms per step");
-        plot.integerX = true;
-        plot.caption = std::string("Median ms per step (quartiles as whiskers) of pyramids of 10 to ") + (quick ? "30" : "100") +
-                       " rows, 120 frames each, single thread, " + realTypeName() +
-                       " build; chapter 10 with sleeping off, its scalar solve, and the peer when the program has one.";
-        const std::vector<int> rowsList = quick ? std::vector<int>{10, 20, 30} : std::vector<int>{10, 20, 40, 60, 80, 100};
-        std::vector<Configuration> scalingList = {list[0], list[1]};
-        if (withPeer) scalingList.push_back(list.back());
-        bench.progress().stage("pyramids of growing size", static_cast<long>(rowsList.size() * scalingList.size()));
-        for (const Configuration& configuration : scalingList) {
-            PlotSeries series(configuration.name);
-            for (int rows : rowsList) {
-                const World pyramid = buildPyramidRow(1, rows);
-                const long frames = quick ? 30 : 120;
-                const Measurement m = configuration.peer ? runPeer(pyramid, frames, 0)
-                                                         : runEngine(pyramid, configuration.options, frames, 0);
-                const int bodies = pyramid.dynamicBodyCount();
-                scaling.addRow({std::to_string(rows), std::to_string(bodies), configuration.name, formatNumber(m.stepMs.median),
-                                formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper)});
-                series.x.push_back(bodies);
-                series.y.push_back(m.stepMs.median);
-                series.yLow.push_back(m.stepMs.lower);
-                series.yHigh.push_back(m.stepMs.upper);
-                bench.progress().advance();
-            }
-            plot.series.push_back(series);
-        }
-        bench.progress().endStage();
-
-        out << table.toText() << "\n" << profile.toText() << "\n" << sleepTable.toText() << "\n" << scaling.toText();
-        bench.writeCsv(table);
-        bench.writeCsv(profile, "-profile");
-        bench.writeCsv(scaling, "-scaling");
-        bench.writePlot(plot);
-        const std::vector<FigureTable> figures = {
-            {{"Ms per step and per stage, single thread, " + std::string(realTypeName()) + " build."}, &table},
-            {{"Where chapter 10's solve spends its time: ms per step in each phase."}, &profile},
-            {{"A settled pile: the step with sleeping on, as a fraction of the same step awake."}, &sleepTable}};
-        bench.writeTables(figures, "-tables");
-    };
-    return entry;
+    return benchEntry(10, measureSpeed, R"(
+        speed: ms per step and per stage on a 100-row pyramid, ten 20-row pyramids and a
+            2,000-body pile, each optimisation off in turn, Bullet beside it; a settled pile
+            asleep and awake; ms against body count
+        speed.csv          per scene and configuration: ms per step, per stage, drift, penetration
+        speed-profile.csv  chapter 10's solve phase by phase: ms per step in each
+        speed-scaling.csv  pyramids of growing size: ms per step against body count
+        speed.svg          ms per step against body count, chapter 10, scalar, Bullet
+        speed-tables.svg   the tables as a figure for the page)");
 }
 
 }  // namespace stepwise

@@ -89,14 +89,15 @@ World buildMixedPile(int count, bool roundShapes) {
 
 void addChapter10Scenes(Registry& registry) {
     const char* category = "10 speed";
-    registry.addScene({"speed-pyramids", 10, category,
-                       "ten 20-row pyramids (2,100 boxes) stand; the panel shows ms per stage", [] {
+    registry.addScene({"speed-pyramids", 10, category, prose(R"(
+        ten 20-row pyramids (2,100 boxes) stand; the panel shows ms per stage)"),
+        [] {
                            return buildPyramidRow(10, 20);
                        },
                        {}});
-    registry.addScene({"speed-pile", 10, category,
-                       "2,000 mixed bodies fall into a pit and settle; the rolling ones keep the pile awake",
-                       [] { return buildMixedPile(2000); }, {}});
+    registry.addScene({"speed-pile", 10, category, prose(R"(
+        2,000 mixed bodies fall into a pit and settle; the rolling ones keep the pile awake)"),
+        [] { return buildMixedPile(2000); }, {}});
 }
 
 }  // namespace stepwise

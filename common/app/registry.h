@@ -99,6 +99,25 @@ struct BenchEntry {
     std::vector<BenchFile> files;                 // every file it can write, named in --help
 };
 
+/// Text written as a paragraph in a raw string literal, as one line: its lines trimmed and
+/// joined by single spaces. Scene notes and bench cards are prose; written as paragraphs they
+/// read as prose in the code, not as strings cut at the margin.
+std::string prose(const std::string& paragraph);
+
+/// A bench from its card: the card is what `stepwise bench --help` shows of it, a paragraph
+/// that starts `NAME: what it measures`, then one paragraph per file, each starting with the
+/// file's name given `--csv out/NAME.csv --plot out/NAME.svg` (without `out/`; a `*` before the
+/// extension: one file per item of the run, `NAME-scene-*.svg`):
+///
+///     epa: EPA depth error against run time ...
+///     epa.csv     per setting: ns per query, depth errors, iterations
+///     epa.svg     work-precision plot: depth error against ns per query
+///
+/// A line that does not start a file continues the paragraph above it. A card that does not
+/// parse is a programming error (std::logic_error naming the line); the registry tests read
+/// every bench's card.
+BenchEntry benchEntry(int chapter, std::function<void(BenchRun&)> measure, const std::string& card);
+
 /// A CLI subcommand a chapter adds (e.g. `collide` in chapter 3).
 struct CommandEntry {
     int chapter = 0;

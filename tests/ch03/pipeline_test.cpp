@@ -20,8 +20,9 @@ using namespace stepwise;
 namespace {
 
 std::vector<std::string> stageNames(const Pipeline& pipeline) {
-    std::vector<std::string> names;
-    for (const Stage& stage : pipeline.stages()) names.push_back(stage.name);
+    const std::vector<Stage>& stages = pipeline.stages();
+    std::vector<std::string> names(stages.size());
+    std::transform(stages.begin(), stages.end(), names.begin(), [](const Stage& stage) { return stage.name; });
     return names;
 }
 

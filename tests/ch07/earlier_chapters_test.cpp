@@ -12,13 +12,14 @@ using namespace stepwise;
 namespace {
 
 std::vector<test::PipelineVariant> throughChapter7() {
-    return test::variantsOver(
-        {false, true}, [](bool forced) { return forced ? "ccd on" : "ccd auto"; },
-        [](bool forced, World& world, ContactSearch search) {
-            if (forced) world.settings.ccd = CcdMode::On;
-            return makeChapter07Pipeline(world,
-                                         makeChapter06Pipeline(world, ManifoldOptions{}, chooseStepOrder(world), search));
-        });
+    const auto chapter7 = [](World& world, ContactSearch search) {
+        return makeChapter07Pipeline(world, makeChapter06Pipeline(world, ManifoldOptions{}, chooseStepOrder(world), search));
+    };
+    const auto ccdOnEverywhere = [chapter7](World& world, ContactSearch search) {
+        world.settings.ccd = CcdMode::On;
+        return chapter7(world, search);
+    };
+    return {{"ccd auto", chapter7}, {"ccd on", ccdOnEverywhere}};
 }
 
 }  // namespace
