@@ -100,28 +100,30 @@ void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std:
 
 // [ch05-axis]
 Vec3 centreVariance(const std::vector<Aabb>& bounds) {
-    double mean[3] = {0, 0, 0};
+    // One pass, in double, over each centre's offset from the first one: offsets from a centre
+    // among the bodies keep the sum of squares from cancelling far from the origin.
+    double reference[3] = {0, 0, 0}, sum[3] = {0, 0, 0}, sumSquares[3] = {0, 0, 0};
     long count = 0;
     for (const Aabb& box : bounds) {
-        if ((box.min.array() > box.max.array()).any()) continue;  // empty: no place to count
-        const Vec3 centre = box.center();
-        for (int axis = 0; axis < 3; ++axis) mean[axis] += static_cast<double>(centre[axis]);
+        if (!(box.min.x() <= box.max.x()) || !(box.min.y() <= box.max.y()) || !(box.min.z() <= box.max.z()))
+            continue;  // empty: no place to count
+        for (int axis = 0; axis < 3; ++axis) {
+            const double centre = 0.5 * (static_cast<double>(box.min[axis]) + static_cast<double>(box.max[axis]));
+            if (count == 0) reference[axis] = centre;
+            const double offset = centre - reference[axis];
+            sum[axis] += offset;
+            sumSquares[axis] += offset * offset;
+        }
         ++count;
     }
     if (count == 0) return Vec3::Zero();
-    for (double& m : mean) m /= static_cast<double>(count);
-    // Two passes: the squares of deviations, not the difference of large squares.
-    double spread[3] = {0, 0, 0};
-    for (const Aabb& box : bounds) {
-        if ((box.min.array() > box.max.array()).any()) continue;
-        const Vec3 centre = box.center();
-        for (int axis = 0; axis < 3; ++axis) {
-            const double deviation = static_cast<double>(centre[axis]) - mean[axis];
-            spread[axis] += deviation * deviation;
-        }
-    }
     const double n = static_cast<double>(count);
-    return Vec3(static_cast<Real>(spread[0] / n), static_cast<Real>(spread[1] / n), static_cast<Real>(spread[2] / n));
+    Vec3 variance;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double mean = sum[axis] / n;
+        variance[axis] = static_cast<Real>(std::max(0.0, sumSquares[axis] / n - mean * mean));
+    }
+    return variance;
 }
 
 int chooseSweepAxis(const Vec3& variance, int previousAxis) {
@@ -265,19 +267,23 @@ inline int countOverlaps(const ColumnView& columns, std::size_t first, const Int
     return hits;
 }
 
-/// Calls hit(j) for every entry j after the interval's entry i whose box overlaps its box, and
+/// Calls hit(j) for every entry j after the interval's entry i whose box overlaps its box (or
+/// hitBlock(first) for a whole block of them starting at entry `first`), and
 /// returns how many entries after i meet it on the sweep axis. The lower ends are sorted, so
 /// those are the entries from i + 1 up to the first that starts past the interval's upper end:
 /// the scan stops at the first block that holds one. A block is tested first on the sweep axis
 /// and the first other axis only, which on a spread layer rejects nearly every block; a block
 /// that passes is tested on all three (in a pile, many do), and only a block with a hit is
 /// looked at entry by entry.
-template <class Hit>
-std::size_t scanForward(const ColumnView& columns, std::size_t i, const Interval& box, Hit hit) {
+template <class Hit, class HitBlock>
+std::size_t scanForward(const ColumnView& columns, std::size_t i, const Interval& box, Hit hit, HitBlock hitBlock) {
     std::size_t met = 0;
     for (std::size_t first = i + 1;; first += kBlock) {
         const BlockTest block = testBlock(columns, first, box);
-        if (block.passed > 0 && countOverlaps(columns, first, box) > 0) {
+        const int hits = block.passed > 0 ? countOverlaps(columns, first, box) : 0;
+        if (hits == static_cast<int>(kBlock)) {  // a large box (a ground) meets whole blocks
+            hitBlock(first);
+        } else if (hits > 0) {
             for (std::size_t j = first; j < first + kBlock; ++j)
                 if (overlaps(columns, j, box)) hit(j);
         }
@@ -304,7 +310,20 @@ long sweepEndpoints(const std::vector<SweepEndpoint>& endpoints, const std::vect
             const int other = columns.body[j];
             pairs.push_back(BodyPair{std::min(body, other), std::max(body, other)});
         };
-        const std::size_t met = scanForward(view, i, intervalAt(view, i), addPair);
+        // A whole block overlaps (the ground meets every body above it): its pairs are written
+        // without a branch each, and those that need no contact are written over.
+        const auto addBlock = [&](std::size_t first) {
+            const std::size_t size = pairs.size();
+            pairs.resize(size + kBlock);
+            BodyPair* out = pairs.data() + size;
+            for (std::size_t j = first; j < first + kBlock; ++j) {
+                const int other = columns.body[j];
+                *out = BodyPair{std::min(body, other), std::max(body, other)};
+                out += needsContact(dynamic, columns.dynamic[j] != 0) ? 1 : 0;
+            }
+            pairs.resize(static_cast<std::size_t>(out - pairs.data()));
+        };
+        const std::size_t met = scanForward(view, i, intervalAt(view, i), addPair, addBlock);
         if (dynamic) {
             looked += static_cast<long>(met);
         } else {  // only the dynamic ones need a contact with this body
