@@ -28,6 +28,7 @@ void DemoState::setWorld(World next) {
     } catch (const std::exception& error) {
         pipelineError = error.what();
     }
+    pipeline.timeStagesEvery(1);  // the per-stage graph draws every frame
     // A new session per load: the history, edits and frame hashes belong to one run. The
     // switches a learner set (pause, simulation off, stop rules) carry over, as the pause
     // always did across a restart.

@@ -59,6 +59,7 @@ SimulationResult simulatePit(int sphereCount, int frames, SolverKind kind, int i
     Pipeline pipeline = makeChapter04Pipeline(world);
     const Stage* solve = pipeline.find(stage_group::kSolve);
     if (!solve) throw std::logic_error("chapter 4 pipeline has no solve stage");
+    pipeline.timeStagesEvery(1);  // every frame's solve time is a sample
     SimulationResult result;
     std::vector<double> frameMs;
     int measured = 0;

@@ -21,6 +21,16 @@ std::string broadphaseReason(const World& world) {
                : "auto: " + bodies + ", fewer than the " + crossover + " from which sweep and prune is faster";
 }
 
+void noteBroadphaseReason(World& world) {
+    BroadphaseState& state = world.broadphase;
+    if (!state.reason.empty() && state.reasonSetting == world.settings.broadphase &&
+        state.reasonBodyCount == world.bodies.size())
+        return;
+    state.reason = broadphaseReason(world);
+    state.reasonSetting = world.settings.broadphase;
+    state.reasonBodyCount = world.bodies.size();
+}
+
 // [ch05-sweep-and-prune]
 void sweepAndPrune(World& world, SortMode sortMode) {
     computeBroadphaseBounds(world, world.broadphase.bounds, world.broadphase.dynamic);
@@ -74,7 +84,7 @@ void findCandidatePairs(World& world) {
         sweepAndPrune(world);
     else
         bruteForceBroadphase(world);
-    world.broadphase.reason = broadphaseReason(world);
+    noteBroadphaseReason(world);
 }
 
 Pipeline makeChapter05Pipeline(const World& world) { return makeChapter05Pipeline(world, chooseStepOrder(world)); }

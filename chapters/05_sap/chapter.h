@@ -29,6 +29,9 @@ BroadphaseMode chooseBroadphase(const World& world);
 /// Why chooseBroadphase chose what it did, in words (the run report's "broadphase.reason").
 std::string broadphaseReason(const World& world);
 
+/// Sets world.broadphase.reason, when the setting or the body count changed since it was set.
+void noteBroadphaseReason(World& world);
+
 /// Sweep and prune: fills world.broadphase (bounds, axis, sorted ends, statistics) and
 /// world.candidatePairs (canonical order).
 void sweepAndPrune(World& world, SortMode sortMode = SortMode::Incremental);

@@ -74,15 +74,18 @@ Measurement runEngine(const World& start, SpeedOptions options, long frames, lon
     Pipeline pipeline = makeChapter10Pipeline(world, options);
     std::vector<double> stepMs;
     Measurement measured;
+    long stageTimedFrames = 0;
     for (long frame = 0; frame < frames; ++frame) {
         if (frame == timedFrom) *options.profile = FastSolveStats{};
         pipeline.step(world);
         if (frame < timedFrom) continue;
         stepMs.push_back(pipeline.lastStepMs());
+        if (!pipeline.lastStepTimedStages()) continue;  // stages are timed one frame in eight
         for (const Stage& stage : pipeline.stages()) measured.stageMs[stageGroup(stage.name)] += stage.lastMs;
+        ++stageTimedFrames;
     }
     const double timed = static_cast<double>(std::max<std::size_t>(1, stepMs.size()));
-    for (auto& [group, ms] : measured.stageMs) ms /= timed;
+    for (auto& [group, ms] : measured.stageMs) ms /= static_cast<double>(std::max<long>(1, stageTimedFrames));
     FastSolveStats& phases = measured.solvePhases;
     phases = *options.profile;
     for (double& ms : phases.phaseMs) ms /= timed;

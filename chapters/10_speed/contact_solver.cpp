@@ -447,7 +447,9 @@ void moveFreeBodies(World& world, Real h, int substeps) {
             motion.linearVelocity = state.linearVelocity;
             motion.angularVelocity = state.angularVelocity;
             motion.force = motion.torque = Vec3::Zero();
-            state = readMotionState(world, motion);  // integratePositions reads the pose back
+            // integratePositions would read the state again here: the same pose, and the
+            // velocities `state` holds already. Between substeps the pose does go through the
+            // body (written, then read back), as chapter 1's does, rounding and all.
             eulerPositionStep(h, state);
             writeMotionState(world, motion, state);
         }

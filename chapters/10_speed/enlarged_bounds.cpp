@@ -44,7 +44,7 @@ void sweepAndPruneEnlarged(World& world, Real margin) {
         if (state.bounds[static_cast<std::size_t>(pair.bodyA)].overlaps(state.bounds[static_cast<std::size_t>(pair.bodyB)]))
             world.candidatePairs.push_back(pair);
     state.used = BroadphaseMode::Sap;
-    state.reason = broadphaseReason(world);
+    noteBroadphaseReason(world);
 }
 // [ch10-enlarged-bounds]
 

@@ -97,13 +97,17 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
         if (stage.enabled && stageGroup(stage.name) == stage_group::kNarrowphase) stats.overlapsMeasured = true;
     const bool showProgress = options.progress && stderrIsTerminal();
     std::map<std::string, double> stageTotals;
+    long stageTimedFrames = 0;
     for (long frame = 0; frame < options.frames; ++frame) {
         if (options.beforeFrame) options.beforeFrame(world);
         pipeline.step(world);
         if (options.afterFrame) options.afterFrame(world);
         stats.stepMs.push_back(pipeline.lastStepMs());
-        for (const Stage& stage : pipeline.stages())
-            if (stage.enabled) stageTotals[stageGroup(stage.name)] += stage.lastMs;
+        if (pipeline.lastStepTimedStages()) {  // one frame in Pipeline::kStageTimingPeriod
+            for (const Stage& stage : pipeline.stages())
+                if (stage.enabled) stageTotals[stageGroup(stage.name)] += stage.lastMs;
+            ++stageTimedFrames;
+        }
         ++stats.frames;
         if (probe) stats.maxPenetration = std::max(stats.maxPenetration, static_cast<double>(probe->measure(world)));
         if (!world.pairs.empty()) ++stats.framesWithOverlap;
@@ -121,7 +125,8 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
             std::fprintf(stderr, "\r  frame %ld/%ld", frame + 1, options.frames);
     }
     if (showProgress) std::fprintf(stderr, "\n");
-    for (const auto& [group, total] : stageTotals) stats.stageMeanMs[group] = stats.frames ? total / stats.frames : 0;
+    for (const auto& [group, total] : stageTotals)
+        stats.stageMeanMs[group] = stageTimedFrames ? total / static_cast<double>(stageTimedFrames) : 0;
     stats.finalEnergy = computeEnergy(world);
     const std::vector<RunStats::GroupEnergy> finalGroups = energyByIntegrator(world);
     for (std::size_t i = 0; i < stats.energyByIntegrator.size() && i < finalGroups.size(); ++i)

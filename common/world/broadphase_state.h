@@ -57,6 +57,10 @@ struct BroadphaseState {
     // What the last run did: for tests, the demo panel and the run report.
     BroadphaseMode used = BroadphaseMode::Auto;  // Sap or Brute once a broadphase ran; Auto: none ran
     std::string reason;                     // why `used`, in words, for the run report
+    // What `reason` was written for: it changes only with the setting and the body count, and
+    // writing it again every step would cost a one-body step a tenth of its time.
+    BroadphaseMode reasonSetting = BroadphaseMode::Auto;
+    std::size_t reasonBodyCount = 0;
     Vec3 centreVariance = Vec3::Zero();     // of the bounds' centres per axis, m^2
     bool fullSort = false;                  // the last sweep sorted from scratch
     long sortMoves = 0;                     // endpoints the insertion sort moved past another

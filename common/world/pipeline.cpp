@@ -51,7 +51,9 @@ void Pipeline::step(World& world) {
     using Clock = std::chrono::steady_clock;
     const int substeps = std::max(1, world.settings.substeps);
     const Real dt = world.settings.dt / static_cast<Real>(substeps);
-    for (Stage& stage : stages_) stage.lastMs = 0;
+    const bool timeStages = stepsTaken_++ % stageTimingPeriod_ == 0;
+    if (timeStages)
+        for (Stage& stage : stages_) stage.lastMs = 0;
     const auto frameStart = Clock::now();
     // One clock read per stage: a stage's time runs from the previous one's end.
     auto stageStart = frameStart;
@@ -63,16 +65,20 @@ void Pipeline::step(World& world) {
             if (stage.frequency == StageFrequency::FrameStart && substep != 0) continue;
             if (stage.frequency == StageFrequency::FrameEnd && substep != substeps - 1) continue;
             stage.run(world, dt);
+            if (!timeStages) continue;
             const auto stageEnd = Clock::now();
             stage.lastMs += std::chrono::duration<double, std::milli>(stageEnd - stageStart).count();
             stageStart = stageEnd;
         }
     }
-    for (Stage& stage : stages_) {
-        if (!stage.enabled) continue;
-        stage.totalMs += stage.lastMs;
-        ++stage.runs;
+    if (timeStages) {
+        for (Stage& stage : stages_) {
+            if (!stage.enabled) continue;
+            stage.totalMs += stage.lastMs;
+            ++stage.runs;
+        }
     }
+    lastStepTimedStages_ = timeStages;
     world.step.substep = 0;
     lastStepMs_ = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
     world.time += world.settings.dt;
