@@ -163,10 +163,12 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
         p.offset2[lane] = offset2;
         p.twistRadius[lane] = radius;
         // Last frame's impulses: the points' friction summed into the centre's force and twist.
-        const Real carriedNormal = std::max(Real(0), point.normalImpulse);
-        carried1 += point.tangentImpulse[0];
-        carried2 += point.tangentImpulse[1];
-        carriedTwist += offset1 * point.tangentImpulse[1] - offset2 * point.tangentImpulse[0];
+        const Real carriedNormal = std::max(Real(0), point.normalImpulse) * params.carryScale;
+        const Real carriedTangent1 = point.tangentImpulse[0] * params.carryScale;
+        const Real carriedTangent2 = point.tangentImpulse[1] * params.carryScale;
+        carried1 += carriedTangent1;
+        carried2 += carriedTangent2;
+        carriedTwist += offset1 * carriedTangent2 - offset2 * carriedTangent1;
         carriedLoad += carriedNormal;
         carriedTwistLoad += carriedNormal * radius;
         p.normalImpulse[lane] = warm ? carriedNormal : 0;
@@ -500,6 +502,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     }
     stats.manifolds = static_cast<int>(scratch.contactOrder.size());
     // Every body moves in the substeps, touching or not (chapter 6's solve says why).
+    const int lastSubsteps = world.step.iterationPlan.iterations;  // 0 before the first frame
     const int substeps = plannedIterations(world, scratch.contactOrder, world.step.iterationPlan);
     const Real h = dt / static_cast<Real>(substeps);
     // Nothing touches and nothing sleeps: chapter 1's semi-implicit Euler at the substep, as
@@ -510,7 +513,9 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         world.step.velocitiesBeforeForces.clear();
         return;
     }
-    const ContactSolveParams params = solveParams(world.settings, h);
+    ContactSolveParams params = solveParams(world.settings, h);
+    if (lastSubsteps > 0 && lastSubsteps != substeps)
+        params.carryScale = static_cast<Real>(lastSubsteps) / static_cast<Real>(substeps);
 
     if (path == SolverPath::Wide) {
         buildWideBlocks(world, scratch, params);

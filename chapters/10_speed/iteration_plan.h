@@ -5,7 +5,9 @@
 // heavier (Erleben, "Velocity-based shock propagation for multibody dynamics animation", 2007;
 // Tonge, Benevolenski and Voroshilov, "Mass splitting for jitter-free parallel rigid body
 // simulation", 2012). More substeps are the engine's cure for that, and a scene only pays for
-// them when its touching masses differ widely.
+// them when its touching masses differ widely. A deep stack has the same trouble: when it is
+// loaded (or hit), the load must cross every contact layer before the bottom pushes back
+// enough, and while it crosses, the top rows sway.
 
 #include "world/world.h"
 
@@ -18,6 +20,15 @@ namespace stepwise {
 constexpr Real kPlainMassRatio = 100;
 /// The most the planner multiplies the scene's count by.
 constexpr int kMostIterationFactor = 4;
+
+/// Stacks up to this many bodies deep stand at the scene's count: a 20-row pyramid takes its
+/// load at ten substeps with its boxes 1.5 mm from where they started.
+constexpr int kPlainStackDepth = 20;
+
+/// How many dynamic bodies the deepest stack has between its top and what holds it up (a static
+/// or kinematic body): the longest of the shortest paths, in touching contacts, from a dynamic
+/// body down to a support. 0 when no dynamic body touches a support.
+int supportDepth(const World& world, const std::vector<int>& contactOrder);
 
 /// The substep count for this frame's contacts (indices into World::contacts), and what the
 /// planner saw, into `plan` (World::step.iterationPlan).

@@ -107,6 +107,10 @@ struct ContactSolveParams {
     Real restitutionThreshold = 0;   // m/s
     Real staticBiasRate = 0, staticMassScale = 1, staticImpulseScale = 0;    // against a body that cannot move
     Real dynamicBiasRate = 0, dynamicMassScale = 1, dynamicImpulseScale = 0;
+    /// What last frame's impulses are multiplied by before they warm start this frame: an
+    /// impulse is a force times the substep, so when the planner changes the substep count the
+    /// same force is last frame's count over this frame's times the impulse (1 when unchanged).
+    Real carryScale = 1;
 };
 
 }  // namespace stepwise

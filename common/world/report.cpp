@@ -122,8 +122,14 @@ std::string describeIterationPlan(const World& world) {
     char ratio[32];
     std::snprintf(ratio, sizeof ratio, "%.4g", double(plan.largestRatio));
     if (!world.settings.planIterations) return most + ": the scene's solver_iterations";
-    if (plan.mostIterations > std::max(1, world.settings.solverIterations))
-        return "auto: up to " + most + ", for touching masses up to " + std::string(ratio) + " to 1 (over 100 to 1 asks for more)";
+    if (plan.mostIterations > std::max(1, world.settings.solverIterations)) {
+        // What asked for more: touching masses over 100 to 1, a stack over 20 bodies deep, or both.
+        const bool deep = plan.deepestStack > 20;
+        const bool heavy = plan.largestRatio > 100 || !deep;
+        std::string why = heavy ? "touching masses up to " + std::string(ratio) + " to 1" : "";
+        if (deep) why += std::string(heavy ? " and " : "") + "a stack " + std::to_string(plan.deepestStack) + " bodies deep";
+        return "auto: up to " + most + ", for " + why + " (over 100 to 1, or over 20 deep, asks for more)";
+    }
     return "auto: " + most + ", touching masses at most " + std::string(ratio) + " to 1 (up to 100 to 1 solve at " +
            std::to_string(world.settings.solverIterations) + ")";
 }

@@ -1,5 +1,6 @@
 // Chapter 10's planner for solver_iterations "auto": more substeps where touching masses differ
-// by more than 100 to 1, the scene's ten elsewhere.
+// by more than 100 to 1 and for stacks over 20 bodies deep, the scene's ten elsewhere; a change of
+// count carries the same forces over.
 #include "10_speed/chapter.h"
 #include "10_speed/iteration_plan.h"
 #include "world/report.h"
@@ -80,4 +81,64 @@ TEST_CASE("solver_iterations auto keeps ten substeps for touching masses within 
         CHECK(standing.drift < Real(0.01));
         CHECK(world.step.iterationPlan.mostIterations == 10);
     }
+}
+
+namespace {
+
+/// A reference scene (the suites run in the source tree).
+World sceneFile(const std::string& name) { return loadSceneFile("scenes/reference/" + name); }
+
+/// The deepest stack of the world's current contacts, as the planner counts it.
+int depthNow(const World& world) {
+    std::vector<int> order(world.contacts.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    return supportDepth(world, order);
+}
+
+}  // namespace
+
+TEST_CASE("the planner counts a stack's depth from its support", "[ch10][solve]") {
+    World pyramid = sceneFile("pyramid-40.json");
+    Pipeline pipeline = makeChapter10Pipeline(pyramid, SpeedOptions{});
+    pipeline.step(pyramid);
+    CHECK(depthNow(pyramid) == 40);  // the top box rests on 39 rows and the ground
+
+    World stack = sceneFile("stack-16.json");
+    Pipeline stackPipeline = makeChapter10Pipeline(stack, SpeedOptions{});
+    stackPipeline.step(stack);
+    CHECK(depthNow(stack) == 0);  // sixteen contacts: fewer than a stack over 20 deep needs
+    CHECK(stack.step.iterationPlan.stackDepth == 0);
+    CHECK(stack.step.iterationPlan.iterations == 10);
+}
+
+TEST_CASE("solver_iterations auto: a 40-row pyramid stands, where the scene's ten let its top rows sway", "[ch10][solve]") {
+    World automatic = sceneFile("pyramid-40.json");
+    const Standing held = runFiveSeconds(automatic);
+    INFO("auto: drift " << held.drift << " m, sag " << held.sag << " m");
+    CHECK(held.drift < Real(0.01));
+    CHECK(automatic.step.iterationPlan.mostIterations == 20);  // ten per 20 rows
+    CHECK(automatic.step.iterationPlan.deepestStack == 40);
+    CHECK(describeIterationPlan(automatic).find("auto: up to 20, for a stack 40 bodies deep") == 0);
+
+    World ten = sceneFile("pyramid-40.json");
+    ten.settings.planIterations = false;
+    const Standing swayed = runFiveSeconds(ten);
+    INFO("10: drift " << swayed.drift << " m");
+    CHECK(swayed.drift > Real(0.015));
+}
+
+TEST_CASE("a change of substep count carries the same forces into the next frame", "[ch10][solve]") {
+    // A settled 16-box stack whose count goes from 10 to 20: the impulses carried from the last
+    // frame are per substep, and are halved with it, so nothing jumps.
+    World stack = sceneFile("stack-16.json");
+    stack.settings.planIterations = false;
+    stack.settings.sleeping = false;
+    Pipeline pipeline = makeChapter10Pipeline(stack, SpeedOptions{});
+    for (int frame = 0; frame < 120; ++frame) pipeline.step(stack);
+    stack.settings.solverIterations = 20;
+    pipeline.step(stack);
+    Real fastest = 0;
+    for (const Motion& motion : stack.motions) fastest = std::max(fastest, motion.linearVelocity.norm());
+    INFO("fastest box after the change: " << fastest << " m/s");
+    CHECK(fastest < Real(0.01));
 }
