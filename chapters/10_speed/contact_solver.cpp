@@ -503,7 +503,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     stats.manifolds = static_cast<int>(scratch.contactOrder.size());
     // Every body moves in the substeps, touching or not (chapter 6's solve says why).
     const int lastSubsteps = world.step.iterationPlan.iterations;  // 0 before the first frame
-    const int substeps = plannedIterations(world, scratch.contactOrder, world.step.iterationPlan);
+    const int substeps = plannedIterations(world, scratch.contactOrder, world.step.iterationPlan, scratch.stackSearch);
     const Real h = dt / static_cast<Real>(substeps);
     // Nothing touches and nothing sleeps: chapter 1's semi-implicit Euler at the substep, as
     // chapter 6's solve does, so that free bodies move exactly as chapter 1 moves them.

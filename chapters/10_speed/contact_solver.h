@@ -4,6 +4,7 @@
 // physics: the scalar one solves the contacts one after another in contact order; the wide one
 // solves kWideLanes contacts of a colour at once (colouring.h) and the overflow after them.
 
+#include "10_speed/iteration_plan.h"
 #include "10_speed/solver_data.h"
 #include "world/world.h"
 
@@ -53,6 +54,7 @@ struct ContactSolverScratch {
     std::vector<ManifoldBlock<kWideLanes>> wideBlocks;   // grouped by colour
     std::vector<int> contactOrder, slotA, slotB, colours;
     std::vector<std::uint64_t> colourBits;
+    StackSearch stackSearch;  // the planner's (iteration_plan.h)
     FastSolveStats stats;
     bool timePhases = false;  // fill stats.phaseMs (the bench's profile); off, the solve reads no clock
 };

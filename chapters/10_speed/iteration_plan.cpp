@@ -6,36 +6,40 @@
 
 namespace stepwise {
 
-int supportDepth(const World& world, const std::vector<int>& contactOrder) {
+int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search) {
     // A stack deeper than kPlainStackDepth has at least that many contacts: small scenes skip
     // the search.
     if (static_cast<int>(contactOrder.size()) < kPlainStackDepth) return 0;
     const std::size_t bodyCount = world.bodies.size();
-    // The contact graph as adjacency lists in two flat arrays (compressed rows).
-    std::vector<int> start(bodyCount + 1, 0), neighbours;
     const auto isDynamic = [&](int body) { return world.bodies[static_cast<std::size_t>(body)].type == BodyType::Dynamic; };
+    // The contact graph as adjacency lists in two flat arrays (compressed rows).
+    std::vector<int>& start = search.start;
+    start.assign(bodyCount + 1, 0);
     for (const int index : contactOrder) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
         ++start[static_cast<std::size_t>(contact.bodyA) + 1];
         ++start[static_cast<std::size_t>(contact.bodyB) + 1];
     }
     for (std::size_t body = 0; body < bodyCount; ++body) start[body + 1] += start[body];
-    neighbours.resize(static_cast<std::size_t>(start[bodyCount]));
-    std::vector<int> fill(start.begin(), start.end() - 1);
+    search.neighbours.resize(static_cast<std::size_t>(start[bodyCount]));
+    search.fill.assign(start.begin(), start.end() - 1);
     for (const int index : contactOrder) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
-        neighbours[static_cast<std::size_t>(fill[static_cast<std::size_t>(contact.bodyA)]++)] = contact.bodyB;
-        neighbours[static_cast<std::size_t>(fill[static_cast<std::size_t>(contact.bodyB)]++)] = contact.bodyA;
+        search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(contact.bodyA)]++)] = contact.bodyB;
+        search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(contact.bodyB)]++)] = contact.bodyA;
     }
     // Breadth first from the supports: a body's depth is its layer.
-    std::vector<int> depth(bodyCount, 0), queue;
+    std::vector<int>& depth = search.depth;
+    std::vector<int>& queue = search.queue;
+    depth.assign(bodyCount, 0);
+    queue.clear();
     for (std::size_t body = 0; body < bodyCount; ++body)
         if (!isDynamic(static_cast<int>(body)) && start[body + 1] > start[body]) queue.push_back(static_cast<int>(body));
     int deepest = 0;
     for (std::size_t next = 0; next < queue.size(); ++next) {
         const int body = queue[next];
         for (int k = start[static_cast<std::size_t>(body)]; k < start[static_cast<std::size_t>(body) + 1]; ++k) {
-            const int other = neighbours[static_cast<std::size_t>(k)];
+            const int other = search.neighbours[static_cast<std::size_t>(k)];
             if (!isDynamic(other) || depth[static_cast<std::size_t>(other)] > 0) continue;
             depth[static_cast<std::size_t>(other)] = depth[static_cast<std::size_t>(body)] + 1;
             deepest = std::max(deepest, depth[static_cast<std::size_t>(other)]);
@@ -46,7 +50,8 @@ int supportDepth(const World& world, const std::vector<int>& contactOrder) {
 }
 
 // [ch10-iteration-plan]
-int plannedIterations(const World& world, const std::vector<int>& contactOrder, IterationPlan& plan) {
+int plannedIterations(const World& world, const std::vector<int>& contactOrder, IterationPlan& plan,
+                      StackSearch& search) {
     const Settings& settings = world.settings;
     const int scene = std::max(1, settings.solverIterations);
     Real lightest = kRealMax, heaviest = 0;
@@ -67,7 +72,7 @@ int plannedIterations(const World& world, const std::vector<int>& contactOrder, 
         const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio);
         iterations = std::min(scene * kMostIterationFactor, static_cast<int>(std::ceil(wanted)));
     }
-    plan.stackDepth = supportDepth(world, contactOrder);
+    plan.stackDepth = supportDepth(world, contactOrder, search);
     if (settings.planIterations && plan.stackDepth > kPlainStackDepth) {
         // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 40 rows move their top boxes
         // 2.6 cm at ten substeps, 1.2 cm at 15, 0.6 cm at 20: ten per 20 rows. Only while they

@@ -25,13 +25,20 @@ constexpr int kMostIterationFactor = 4;
 /// load at ten substeps with its boxes 1.5 mm from where they started.
 constexpr int kPlainStackDepth = 20;
 
+/// Working memory of supportDepth, kept from frame to frame so that the search allocates nothing
+/// once it has run: the contact graph in compressed rows, and the breadth-first search.
+struct StackSearch {
+    std::vector<int> start, fill, neighbours, depth, queue;
+};
+
 /// How many dynamic bodies the deepest stack has between its top and what holds it up (a static
 /// or kinematic body): the longest of the shortest paths, in touching contacts, from a dynamic
 /// body down to a support. 0 when no dynamic body touches a support.
-int supportDepth(const World& world, const std::vector<int>& contactOrder);
+int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search);
 
 /// The substep count for this frame's contacts (indices into World::contacts), and what the
 /// planner saw, into `plan` (World::step.iterationPlan).
-int plannedIterations(const World& world, const std::vector<int>& contactOrder, IterationPlan& plan);
+int plannedIterations(const World& world, const std::vector<int>& contactOrder, IterationPlan& plan,
+                      StackSearch& search);
 
 }  // namespace stepwise

@@ -92,7 +92,8 @@ World sceneFile(const std::string& name) { return loadSceneFile("scenes/referenc
 int depthNow(const World& world) {
     std::vector<int> order(world.contacts.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-    return supportDepth(world, order);
+    StackSearch search;
+    return supportDepth(world, order, search);
 }
 
 }  // namespace
