@@ -1,5 +1,7 @@
 #include "07_ccd/chapter.h"
 
+#include <memory>
+
 namespace stepwise {
 
 Pipeline makeChapter07Pipeline(const World& world) { return makeChapter07Pipeline(world, makeChapter06Pipeline(world)); }
@@ -27,8 +29,9 @@ void addContinuousCollision(Pipeline& pipeline) {
     // sweeps. Settings::ccd is read every step, so the demo's toggle acts at once.
     Stage toi;
     toi.name = stageName(stage_group::kCcd, "toi");
-    toi.run = [](World& world, Real dt) {
-        if (world.settings.ccd != CcdMode::Off) resolveTimesOfImpact(world, dt);
+    // Working memory only, rebuilt every step: a copied World steps the same.
+    toi.run = [scratch = std::make_shared<ToiLoopScratch>()](World& world, Real dt) {
+        if (world.settings.ccd != CcdMode::Off) resolveTimesOfImpact(world, dt, *scratch);
     };
     std::vector<Stage>& stages = pipeline.stages();
     stages.insert(stages.begin(), std::move(sweepStart));

@@ -120,26 +120,14 @@ Real resolveImpact(World& world, const ToiEvent& event, const std::vector<Sweep>
 
 namespace {
 
-/// What one run of the loop works on: every body's sweep, which bodies it checks, the impacts
-/// found and not yet resolved, and how many each body took.
-struct LoopState {
-    std::vector<Sweep> sweeps;
-    std::vector<char> checked;     // 1: a body whose sweep the loop looks at
-    std::vector<char> stopped;     // 1: a body waiting at its time-of-impact pose
-    std::vector<int> eventsOf;
-    std::vector<ToiEvent> pending;
-    int resolved = 0;
-    int queries = 0;               // distance queries of the impacts found
-};
-
 bool involves(const ToiEvent& event, int body) { return event.mover == body || event.other == body; }
 
-bool isStill(const World& world, const LoopState& loop, int body) {
+bool isStill(const World& world, const ToiLoopScratch& loop, int body) {
     return loop.stopped[std::size_t(body)] || world.bodies[std::size_t(body)].type != BodyType::Dynamic;
 }
 
 /// Impacts of `body` with everything it can hit or be hit by, except `skip`; each pair once.
-void collectImpacts(const World& world, LoopState& loop, int body, int skip, const ToiOptions& options) {
+void collectImpacts(const World& world, ToiLoopScratch& loop, int body, int skip, const ToiOptions& options) {
     for (int other = 0; other < int(world.bodies.size()); ++other) {
         if (other == skip || other == body) continue;
         int mover = body, target = other;
@@ -158,7 +146,7 @@ void collectImpacts(const World& world, LoopState& loop, int body, int skip, con
 }
 
 /// Leaves the body at its pose at time t for the rest of the step.
-void stopAt(const World& world, LoopState& loop, int body, Real t) {
+void stopAt(const World& world, ToiLoopScratch& loop, int body, Real t) {
     if (world.bodies[std::size_t(body)].type != BodyType::Dynamic) return;
     Sweep& sweep = loop.sweeps[std::size_t(body)];
     const Transform pose = poseAt(sweep, t);
@@ -176,7 +164,12 @@ bool earlier(const ToiEvent& a, const ToiEvent& b) {
 }  // namespace
 
 // [ch07-toi-loop]
-void resolveTimesOfImpact(World& world, Real /*dt*/) {
+void resolveTimesOfImpact(World& world, Real dt) {
+    ToiLoopScratch loop;
+    resolveTimesOfImpact(world, dt, loop);
+}
+
+void resolveTimesOfImpact(World& world, Real /*dt*/, ToiLoopScratch& loop) {
     CcdState& state = world.step.ccd;
     state.fastBodies = state.toiEvents = state.rootIterations = 0;
     state.boundHit = false;
@@ -186,9 +179,12 @@ void resolveTimesOfImpact(World& world, Real /*dt*/) {
     state.sweptBounds.clear();
     const std::size_t count = world.bodies.size();
     if (state.sweepStart.size() != count) return;  // no sweep start recorded for these bodies
+    if (count < 2) return;                           // a body alone has nothing to hit
 
     // Every body's sweep from where the step began to where the step left it.
-    LoopState loop;
+    loop.sweeps.clear();
+    loop.pending.clear();
+    loop.resolved = loop.queries = 0;
     loop.checked.assign(count, 0);
     loop.stopped.assign(count, 0);
     loop.eventsOf.assign(count, 0);

@@ -43,8 +43,23 @@ bool findImpact(const World& world, int mover, int other, const std::vector<Swee
 /// Returns the impulse applied, N s.
 Real resolveImpact(World& world, const ToiEvent& event, const std::vector<Sweep>& sweeps);
 
+/// What one run of the loop works on: every body's sweep, which bodies it checks, the impacts
+/// found and not yet resolved, and how many each body took. Working memory only: the pipeline
+/// keeps one from step to step so that the loop allocates nothing once it has run.
+struct ToiLoopScratch {
+    std::vector<Sweep> sweeps;
+    std::vector<char> checked;     // 1: a body whose sweep the loop looks at
+    std::vector<char> stopped;     // 1: a body waiting at its time-of-impact pose
+    std::vector<int> eventsOf;
+    std::vector<ToiEvent> pending;
+    int resolved = 0;
+    int queries = 0;               // distance queries of the impacts found
+};
+
 /// The whole loop for one step of dt: reads World::step.ccd.sweepStart and the bodies' poses
 /// now (the end of the step), writes the corrected poses and velocities and what it did.
 void resolveTimesOfImpact(World& world, Real dt);
+/// The same, in working memory kept by the caller.
+void resolveTimesOfImpact(World& world, Real dt, ToiLoopScratch& scratch);
 
 }  // namespace stepwise

@@ -419,12 +419,12 @@ private:
     std::chrono::steady_clock::time_point last_{};
 };
 
-/// Bodies that touch nothing, each through all the substeps at once: chapter 1's applyForces,
-/// integrateVelocities and integratePositions substep after substep, with the same arithmetic in
-/// the same order (bit for bit), but without gathering every body's state and forces again each
-/// substep, which cost a one-body scene more than its integration. The fast solve takes no
-/// springs, dampings or kinematic bodies, so each body feels its weight and the user's force only
-/// (a kinematic body added since the plan takes chapter 1's functions).
+/// Bodies that touch nothing, each through all the substeps at once: chapter 1's semi-implicit
+/// Euler for the velocities and the turn, without gathering every body's state and forces again
+/// each substep (which cost a one-body scene more than its integration), and the centre moved
+/// along its exact parabola. The fast solve takes no springs, dampings or kinematic bodies, so
+/// each body feels its weight and the user's force only, constant through the frame (a kinematic
+/// body added since the plan takes chapter 1's functions).
 void moveFreeBodies(World& world, Real h, int substeps) {
     const bool allDynamic = std::all_of(world.motions.begin(), world.motions.end(), [&](const Motion& motion) {
         return world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Dynamic;
@@ -444,15 +444,19 @@ void moveFreeBodies(World& world, Real h, int substeps) {
         for (int substep = 0; substep < substeps; ++substep) {
             motion.force += weight;
             MotionState state = readMotionState(world, motion);
+            const Vec3 velocityBefore = state.linearVelocity;
             eulerVelocityStep(motion, worldInverseInertia(body, motion), Wrench{motion.force, motion.torque}, gyroscopic,
                               h, state);
             motion.linearVelocity = state.linearVelocity;
             motion.angularVelocity = state.angularVelocity;
             motion.force = motion.torque = Vec3::Zero();
-            // integratePositions would read the state again here: the same pose, and the
-            // velocities `state` holds already. Between substeps the pose does go through the
-            // body (written, then read back), as chapter 1's does, rounding and all.
             eulerPositionStep(h, state);
+            // [ch10-free-flight]
+            // The force is the same all through the substep, so the centre's path is the parabola
+            // x0 + v0 h + a h^2 / 2: it moves by the mean of the two velocities, where Euler's
+            // step moved it by the new one, h (v1 - v0) / 2 too far. One substep is then exact.
+            state.center -= (h / 2) * (state.linearVelocity - velocityBefore);
+            // [ch10-free-flight]
             writeMotionState(world, motion, state);
         }
     }
@@ -478,14 +482,25 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     // Contacts found at an earlier substep of the frame (Settings::substeps > 1, collision once per
     // frame) are where their bodies were then: their points move with the bodies first.
     if (world.step.substep > 0 && world.step.contactsFoundAtSubstep < world.step.substep) followContactAnchors(world);
-    prepareBodies(world, scratch.bodies);
-    stats.bodies = static_cast<int>(scratch.bodies.states.size()) - 1;
-
-
-    // The contacts that involve a moving body, in contact order (canonical: sorted by pair).
     scratch.contactOrder.clear();
     scratch.slotA.clear();
     scratch.slotB.clear();
+    const bool allAwakeDynamic = std::all_of(world.motions.begin(), world.motions.end(), [&](const Motion& motion) {
+        return !motion.asleep && world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Dynamic;
+    });
+    if (world.contacts.empty() && allAwakeDynamic) {
+        // Nothing touches: no solver state to gather, the bodies move on their own (below).
+        stats.bodies = static_cast<int>(world.motions.size());
+        const int substeps = plannedIterations(world, dt, scratch.contactOrder, world.step.iterationPlan, scratch.stackSearch);
+        moveFreeBodies(world, dt / static_cast<Real>(substeps), substeps);
+        world.step.solver = SolverStats{};
+        world.step.velocitiesBeforeForces.clear();
+        return;
+    }
+    prepareBodies(world, scratch.bodies);
+    stats.bodies = static_cast<int>(scratch.bodies.states.size()) - 1;
+
+    // The contacts that involve a moving body, in contact order (canonical: sorted by pair).
     SolverStats solverStats;
     for (std::size_t i = 0; i < world.contacts.size(); ++i) {
         const Contact& contact = world.contacts[i];
@@ -503,10 +518,9 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     stats.manifolds = static_cast<int>(scratch.contactOrder.size());
     // Every body moves in the substeps, touching or not (chapter 6's solve says why).
     const int lastSubsteps = world.step.iterationPlan.iterations;  // 0 before the first frame
-    const int substeps = plannedIterations(world, scratch.contactOrder, world.step.iterationPlan, scratch.stackSearch);
+    const int substeps = plannedIterations(world, dt, scratch.contactOrder, world.step.iterationPlan, scratch.stackSearch);
     const Real h = dt / static_cast<Real>(substeps);
-    // Nothing touches and nothing sleeps: chapter 1's semi-implicit Euler at the substep, as
-    // chapter 6's solve does, so that free bodies move exactly as chapter 1 moves them.
+    // Nothing touches and nothing sleeps: the bodies fly free (moveFreeBodies).
     if (stats.manifolds == 0 && stats.bodies == static_cast<int>(world.motions.size())) {
         moveFreeBodies(world, h, substeps);
         world.step.solver = solverStats;

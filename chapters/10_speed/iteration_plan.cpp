@@ -1,33 +1,47 @@
 // solver_iterations "auto": the substep count from the touching mass ratio (iteration_plan.h).
 #include "10_speed/iteration_plan.h"
 
+#include "04_pgs/contact_constraints.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace stepwise {
 
-int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search) {
-    // A stack deeper than kPlainStackDepth has at least that many contacts: small scenes skip
-    // the search.
-    if (static_cast<int>(contactOrder.size()) < kPlainStackDepth) return 0;
+int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search, bool withJoints) {
+    if (contactOrder.empty() && (!withJoints || world.joints.empty())) return 0;
     const std::size_t bodyCount = world.bodies.size();
     const auto isDynamic = [&](int body) { return world.bodies[static_cast<std::size_t>(body)].type == BodyType::Dynamic; };
     // The contact graph as adjacency lists in two flat arrays (compressed rows).
     std::vector<int>& start = search.start;
     start.assign(bodyCount + 1, 0);
+    const auto validJoint = [&](const JointDesc& joint) {
+        return withJoints && joint.bodyA >= 0 && joint.bodyB >= 0 && static_cast<std::size_t>(joint.bodyA) < bodyCount &&
+               static_cast<std::size_t>(joint.bodyB) < bodyCount;
+    };
     for (const int index : contactOrder) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
         ++start[static_cast<std::size_t>(contact.bodyA) + 1];
         ++start[static_cast<std::size_t>(contact.bodyB) + 1];
     }
+    for (const JointDesc& joint : world.joints) {
+        if (!validJoint(joint)) continue;
+        ++start[static_cast<std::size_t>(joint.bodyA) + 1];
+        ++start[static_cast<std::size_t>(joint.bodyB) + 1];
+    }
     for (std::size_t body = 0; body < bodyCount; ++body) start[body + 1] += start[body];
     search.neighbours.resize(static_cast<std::size_t>(start[bodyCount]));
     search.fill.assign(start.begin(), start.end() - 1);
+    const auto link = [&](int a, int b) {
+        search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(a)]++)] = b;
+        search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(b)]++)] = a;
+    };
     for (const int index : contactOrder) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
-        search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(contact.bodyA)]++)] = contact.bodyB;
-        search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(contact.bodyB)]++)] = contact.bodyA;
+        link(contact.bodyA, contact.bodyB);
     }
+    for (const JointDesc& joint : world.joints)
+        if (validJoint(joint)) link(joint.bodyA, joint.bodyB);
     // Breadth first from the supports: a body's depth is its layer.
     std::vector<int>& depth = search.depth;
     std::vector<int>& queue = search.queue;
@@ -49,14 +63,24 @@ int supportDepth(const World& world, const std::vector<int>& contactOrder, Stack
     return deepest;
 }
 
+int substepsFor(Real dt, Real longest) {
+    // A hair under the quotient: 1/60 over 1/600 is 10.000001 in float, and means ten.
+    return std::max(1, static_cast<int>(std::ceil(dt / longest - Real(1e-3))));
+}
+
 // [ch10-iteration-plan]
-int plannedIterations(const World& world, const std::vector<int>& contactOrder, IterationPlan& plan,
+int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
                       StackSearch& search) {
     const Settings& settings = world.settings;
+    // Bodies that carry one another take the scene's count (auto: ten) in every solve: a load
+    // crosses a contact layer a sweep, and a substep is a sweep however long it is.
     const int scene = std::max(1, settings.solverIterations);
     Real lightest = kRealMax, heaviest = 0;
+    bool bouncy = false;
     for (const int index : contactOrder) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        bouncy = bouncy || combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
+                                               world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
         const Motion* a = world.motionOf(contact.bodyA);
         const Motion* b = world.motionOf(contact.bodyB);
         if (!a || !b || !(a->mass > 0) || !(b->mass > 0)) continue;  // static or kinematic
@@ -64,15 +88,20 @@ int plannedIterations(const World& world, const std::vector<int>& contactOrder, 
         heaviest = std::max({heaviest, a->mass, b->mass});
     }
     plan.massRatio = heaviest > 0 ? heaviest / lightest : Real(1);
+    plan.stackDepth = supportDepth(world, contactOrder, search);
+    plan.plainIterations = scene;
     int iterations = scene;
+    if (settings.planIterations && contactOrder.empty())
+        iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
+    else if (settings.planIterations && plan.stackDepth <= 1 && !bouncy)
+        iterations = std::min(scene, substepsFor(dt, kLightSubstep));
     if (settings.planIterations && plan.massRatio > kPlainMassRatio) {
         // Measured on towers of four boxes, masses in geometric steps (docs/ch10_speed.md):
         // 1:300 stands from 15 substeps, 1:1000 from 25. The square root of the ratio over the
         // plain one gives 18 and 32.
         const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio);
-        iterations = std::min(scene * kMostIterationFactor, static_cast<int>(std::ceil(wanted)));
+        iterations = std::max(iterations, std::min(scene * kMostIterationFactor, static_cast<int>(std::ceil(wanted))));
     }
-    plan.stackDepth = supportDepth(world, contactOrder, search);
     if (settings.planIterations && plan.stackDepth > kPlainStackDepth) {
         // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 40 rows move their top boxes
         // 2.6 cm at ten substeps, 1.2 cm at 15, 0.6 cm at 20: ten per 20 rows. Only while they
@@ -83,10 +112,38 @@ int plannedIterations(const World& world, const std::vector<int>& contactOrder, 
     }
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);
+    plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, iterations) : iterations;
     plan.largestRatio = std::max(plan.largestRatio, plan.massRatio);
     plan.deepestStack = std::max(plan.deepestStack, plan.stackDepth);
     return iterations;
 }
 // [ch10-iteration-plan]
+
+int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& contacts, IterationPlan& plan,
+                                StackSearch& search) {
+    const Settings& settings = world.settings;
+    const int scene = std::max(1, settings.solverIterations);
+    const bool substepped =
+        settings.stabilisation == Stabilisation::Relax || settings.stabilisation == Stabilisation::SoftStep;
+    if (!settings.planIterations || world.joints.empty() || !world.springs.empty() || !substepped) return scene;
+    contacts.clear();
+    bool bouncy = false;
+    for (std::size_t i = 0; i < world.contacts.size(); ++i) {
+        const Contact& contact = world.contacts[i];
+        if (contact.pointCount <= 0 || contact.bodyA < 0 || contact.bodyB < 0) continue;
+        contacts.push_back(static_cast<int>(i));
+        bouncy = bouncy || combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
+                                               world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
+    }
+    plan.stackDepth = supportDepth(world, contacts, search, /*withJoints=*/true);
+    plan.plainIterations = scene;
+    plan.massRatio = 1;
+    const int iterations = plan.stackDepth <= 1 && !bouncy ? std::min(scene, substepsFor(dt, kLightSubstep)) : scene;
+    plan.iterations = iterations;
+    plan.mostIterations = std::max(plan.mostIterations, iterations);
+    plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, iterations) : iterations;
+    plan.deepestStack = std::max(plan.deepestStack, plan.stackDepth);
+    return iterations;
+}
 
 }  // namespace stepwise

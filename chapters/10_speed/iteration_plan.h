@@ -15,6 +15,23 @@
 
 namespace stepwise {
 
+/// How long a substep may be where no load passes from body to body (solver_iterations "auto").
+/// Bodies that carry one another need the scene's count of sweeps in every solve, however short
+/// (a load crosses one contact layer a sweep). Where nothing touches, or where every touching body
+/// rests on the world alone and nothing bounces, one sweep settles each contact, and substeps buy
+/// only accuracy in time: the planner takes as many as keep each no longer than these, so a scene
+/// stepped at 1/30 s does the same work a second as at 1/60 s (docs/ch10_speed.md). Bounces keep
+/// the scene's count: restitution reverses the speed of the substep a ball arrives in, and a long
+/// one overshoots (an elastic ball dropped from 2 m rose 3 cm above its start with two).
+/// Free flight: semi-implicit Euler's fall is off by g h t / 2, 8 cm after a second at 1/60 s.
+constexpr Real kFreeFlightSubstep = Real(1) / Real(60);
+/// Bodies resting on the world alone: the reference ramp and rolling ball meet their tolerances
+/// at two substeps a frame (docs/engine_bench.md).
+constexpr Real kLightSubstep = Real(1) / Real(120);
+
+/// Substeps that keep each no longer than `longest` (at least one).
+int substepsFor(Real dt, Real longest);
+
 /// Touching mass ratios up to this solve at the scene's count: a 100 kg box on 1 kg boxes
 /// stands at ten substeps.
 constexpr Real kPlainMassRatio = 100;
@@ -34,11 +51,21 @@ struct StackSearch {
 /// How many dynamic bodies the deepest stack has between its top and what holds it up (a static
 /// or kinematic body): the longest of the shortest paths, in touching contacts, from a dynamic
 /// body down to a support. 0 when no dynamic body touches a support.
-int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search);
+/// With `withJoints`, a joint ties its two bodies as a contact does (chapter 8's solve).
+int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search,
+                 bool withJoints = false);
 
-/// The substep count for this frame's contacts (indices into World::contacts), and what the
-/// planner saw, into `plan` (World::step.iterationPlan).
-int plannedIterations(const World& world, const std::vector<int>& contactOrder, IterationPlan& plan,
+/// The substep count for a solve of `dt` over this frame's contacts (indices into
+/// World::contacts), and what the planner saw, into `plan` (World::step.iterationPlan).
+int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
                       StackSearch& search);
+
+/// The substep count for chapter 8's solve, which chapter 10 keeps for scenes with joints: two
+/// (kLightSubstep) where every dynamic body hangs or rests on the world alone, through a joint or a
+/// contact, and nothing bounces, as a pendulum does; the scene's count elsewhere. Scenes without
+/// joints, with springs, or with a stabilisation that does not substep keep the scene's count.
+/// `contacts` is working memory (the touching contacts' indices).
+int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& contacts, IterationPlan& plan,
+                                StackSearch& search);
 
 }  // namespace stepwise

@@ -1,5 +1,8 @@
 #include "10_speed/chapter.h"
 
+#include "04_pgs/chapter.h"
+#include "10_speed/iteration_plan.h"
+
 #include <algorithm>
 #include <memory>
 
@@ -28,6 +31,22 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
     } else if (!fastSolveApplies(world, &why)) {
         pipeline.setPlanNote(stage_group::kSolve, "chapter 8's solve: " + why);
         pipeline.setPlanNote(stage_group::kSleep, noSleep);
+        Stage* solve = pipeline.find(stage_group::kSolve);
+        if (solve && !world.joints.empty() && chooseStepOrder(world) == StepOrder::SplitIntegration) {
+            // Chapter 8's solve takes the scene's count as its substeps; the planner hands it
+            // fewer for a frame where every body hangs or rests on the world alone.
+            struct JointPlanScratch {
+                std::vector<int> contacts;
+                StackSearch search;
+            };
+            solve->run = [run = solve->run, scratch = std::make_shared<JointPlanScratch>()](World& stepWorld, Real dt) {
+                const int scene = stepWorld.settings.solverIterations;
+                stepWorld.settings.solverIterations = plannedJointSolveIterations(
+                    stepWorld, dt, scratch->contacts, stepWorld.step.iterationPlan, scratch->search);
+                run(stepWorld, dt);
+                stepWorld.settings.solverIterations = scene;
+            };
+        }
     } else if (Stage* solve = pipeline.find(stage_group::kSolve)) {
         solve->name = stageName(stage_group::kSolve, std::string(toString(options.solverPath)) + "_" +
                                                          toString(world.settings.stabilisation));

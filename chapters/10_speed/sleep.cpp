@@ -2,6 +2,7 @@
 #include "10_speed/sleep.h"
 
 #include <memory>
+#include <algorithm>
 #include <numeric>
 #include <sstream>
 
@@ -113,6 +114,11 @@ int updateSleepTimers(World& world, Real dt) {
 
 // [ch10-islands-sleep]
 int putIslandsToSleep(World& world, SleepScratch& scratch) {
+    // An island sleeps only when every body in it has been slow long enough: none has, none sleeps.
+    const bool anyReady = std::any_of(world.motions.begin(), world.motions.end(), [&](const Motion& motion) {
+        return isAwakeDynamic(world, motion.bodyIndex) && motion.sleepTime >= world.settings.timeToSleep;
+    });
+    if (!anyReady) return 0;
     resetSleepScratch(world, scratch);
     // Islands of awake dynamic bodies only: a static or kinematic body links nothing (the ground
     // under two piles must not make one island of them), it only keeps an island awake when it moves.
@@ -145,6 +151,9 @@ int putIslandsToSleep(World& world, SleepScratch& scratch) {
 
 // [ch10-wake]
 int wakeTouchedIslands(World& world, SleepScratch& scratch) {
+    const bool anySleeper = std::any_of(world.motions.begin(), world.motions.end(),
+                                        [&](const Motion& motion) { return isSleeper(world, motion.bodyIndex); });
+    if (!anySleeper) return 0;
     resetSleepScratch(world, scratch);
     // The sleeping islands: sleepers joined through each other only.
     forEachIslandLink(world, [&](int a, int b, bool) {

@@ -122,7 +122,7 @@ std::string describeIterationPlan(const World& world) {
     char ratio[32];
     std::snprintf(ratio, sizeof ratio, "%.4g", double(plan.largestRatio));
     if (!world.settings.planIterations) return most + ": the scene's solver_iterations";
-    if (plan.mostIterations > std::max(1, world.settings.solverIterations)) {
+    if (plan.mostIterations > std::max(1, plan.plainIterations)) {
         // What asked for more: touching masses over 100 to 1, a stack over 20 bodies deep, or both.
         const bool deep = plan.deepestStack > 20;
         const bool heavy = plan.largestRatio > 100 || !deep;
@@ -130,8 +130,14 @@ std::string describeIterationPlan(const World& world) {
         if (deep) why += std::string(heavy ? " and " : "") + "a stack " + std::to_string(plan.deepestStack) + " bodies deep";
         return "auto: up to " + most + ", for " + why + " (over 100 to 1, or over 20 deep, asks for more)";
     }
-    return "auto: " + most + ", touching masses at most " + std::string(ratio) + " to 1 (up to 100 to 1 solve at " +
-           std::to_string(world.settings.solverIterations) + ")";
+    // Substeps no longer than 1/60 s where nothing touches, 1/240 s where bodies rest on the world
+    // alone, 1/600 s where they carry one another (chapter 10's iteration_plan.h).
+    const std::string plain = std::to_string(plan.plainIterations);
+    const std::string range =
+        plan.fewestIterations < plan.mostIterations ? std::to_string(plan.fewestIterations) + " to " + most : most;
+    return "auto: " + range + " by what touches (" + plain +
+           " where bodies carry one another or bounce, fewer where they rest on the world alone or nothing touches), "
+           "touching masses at most " + std::string(ratio) + " to 1 (up to 100 to 1 solve at " + plain + ")";
 }
 
 std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {

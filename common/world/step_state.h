@@ -51,7 +51,9 @@ struct IterationPlan {
     int iterations = 0;       // substeps of the last frame's solve
     Real massRatio = 1;       // heaviest over lightest dynamic body touching another, last frame
     int stackDepth = 0;       // dynamic bodies between the top of the deepest stack and its support, last frame
+    int plainIterations = 0;  // where bodies carry one another, at the solve's dt (auto), last frame
     int mostIterations = 0;   // over every frame so far
+    int fewestIterations = 0; // over every frame so far
     Real largestRatio = 1;
     int deepestStack = 0;     // over every frame so far
 };

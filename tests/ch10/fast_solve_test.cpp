@@ -186,8 +186,9 @@ TEST_CASE("a world copied mid-run steps exactly as the original", "[ch10][solve]
 TEST_CASE("a dropped ball bounces to e^2 h at the defaults: restitution reverses the speed it hits at", "[ch10][solve]") {
     // One frame of ten substeps: the frame the ball lands in began at 4.25 m/s and the ball hit at
     // 4.41. Reversing the first left the bounce 8% short; the speed at which the gap closes
-    // leaves it within 2% (Euler's g h t / 2 at the substep, and a collision taken up to two
-    // substeps early, 1.4% high).
+    // leaves it 2% high (the flights up and down are exact parabolas, moveFreeBodies; the
+    // collision is taken up to two substeps early). With Euler's flights it was 1.4% high: their
+    // g h t / 2 hid part of that.
     for (SolverPath path : {SolverPath::Wide, SolverPath::Scalar}) {
         World world = emptyWorld("drop");
         addGroundPlane(world, Real(0.6), Real(0.8));
@@ -204,6 +205,6 @@ TEST_CASE("a dropped ball bounces to e^2 h at the defaults: restitution reverses
         }
         INFO((path == SolverPath::Wide ? "wide" : "scalar") << " path: apex " << apex);
         REQUIRE(bounced);
-        CHECK(std::abs(apex - Real(0.64) * height) < Real(0.02) * Real(0.64) * height);
+        CHECK(std::abs(apex - Real(0.64) * height) < Real(0.025) * Real(0.64) * height);
     }
 }

@@ -107,9 +107,62 @@ TEST_CASE("the planner counts a stack's depth from its support", "[ch10][solve]"
     World stack = sceneFile("stack-16.json");
     Pipeline stackPipeline = makeChapter10Pipeline(stack, SpeedOptions{});
     stackPipeline.step(stack);
-    CHECK(depthNow(stack) == 0);  // sixteen contacts: fewer than a stack over 20 deep needs
-    CHECK(stack.step.iterationPlan.stackDepth == 0);
-    CHECK(stack.step.iterationPlan.iterations == 10);
+    CHECK(depthNow(stack) == 16);
+    CHECK(stack.step.iterationPlan.stackDepth == 16);
+    CHECK(stack.step.iterationPlan.iterations == 10);  // 16 deep: the scene's ten
+}
+
+TEST_CASE("solver_iterations auto takes fewer substeps where no load passes from body to body", "[ch10][solve]") {
+    // Free flight: one substep of 1/60 s (the centre's parabola is exact); a block on the ramp,
+    // which rests on the world alone: two; at 1/30 s twice as many, the same work a second.
+    for (const Real dt : {Real(1) / Real(60), Real(1) / Real(30)}) {
+        const int perSixtieth = dt > Real(1) / Real(60) ? 2 : 1;
+        World projectile = sceneFile("projectile.json");
+        projectile.settings.dt = dt;
+        Pipeline flight = makeChapter10Pipeline(projectile, SpeedOptions{});
+        flight.step(projectile);
+        CHECK(projectile.step.iterationPlan.iterations == perSixtieth);
+
+        World ramp = sceneFile("ramp.json");
+        ramp.settings.dt = dt;
+        Pipeline rampPipeline = makeChapter10Pipeline(ramp, SpeedOptions{});
+        rampPipeline.step(ramp);
+        REQUIRE(!ramp.contacts.empty());
+        CHECK(ramp.step.iterationPlan.stackDepth == 1);
+        CHECK(ramp.step.iterationPlan.iterations == 2 * perSixtieth);
+        CHECK(describeIterationPlan(ramp).find("auto: " + std::to_string(2 * perSixtieth) + " by what touches") == 0);
+    }
+    // A box on a box is a load carried: the scene's ten, as is a bounce (chapter 4's elastic ball
+    // would rise above its start at fewer).
+    World two = tower(R"("auto")", {1, 1, 1, 1});
+    Pipeline towerPipeline = makeChapter10Pipeline(two, SpeedOptions{});
+    towerPipeline.step(two);
+    CHECK(two.step.iterationPlan.iterations == 10);
+    World bounce = sceneFile("bouncing-ball.json");
+    Pipeline bouncePipeline = makeChapter10Pipeline(bounce, SpeedOptions{});
+    int contactFrames = 0;
+    for (int frame = 0; frame < 120; ++frame) {
+        bouncePipeline.step(bounce);
+        if (bounce.contacts.empty()) continue;
+        ++contactFrames;
+        CHECK(bounce.step.iterationPlan.iterations == 10);
+    }
+    CHECK(contactFrames > 0);
+    CHECK(bounce.step.iterationPlan.fewestIterations == 1);
+}
+
+TEST_CASE("a body in free flight follows its parabola exactly in one substep", "[ch10][solve]") {
+    World world = sceneFile("projectile.json");
+    const World launch = world;
+    Pipeline pipeline = makeChapter10Pipeline(world, SpeedOptions{});
+    for (int frame = 0; frame < 60; ++frame) pipeline.step(world);
+    const Real t = Real(60) * world.settings.dt;
+    const Vec3 start = launch.bodies[0].transform.position;
+    const Vec3 velocity = launch.motions[0].linearVelocity;
+    const Vec3 exact = start + velocity * t + Real(0.5) * world.settings.gravity * t * t;
+    // Euler at one substep would be g h t / 2 = 8 cm low; float rounding over 60 frames is far less.
+    CHECK((world.bodies[0].transform.position - exact).norm() < Real(1e-4));
+    CHECK(world.step.iterationPlan.mostIterations == 1);
 }
 
 TEST_CASE("solver_iterations auto: a 40-row pyramid stands, where the scene's ten let its top rows sway", "[ch10][solve]") {
