@@ -117,7 +117,9 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
         const Body& bodyB = world.bodies[static_cast<std::size_t>(pair.bodyB)];
         if (!canCollide(bodyA, bodyB)) continue;
         ++queries;
-        const ContactQuery query = collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide);
+        const ContactQuery query = options.query
+                                       ? options.query(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide)
+                                       : collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide);
         if (query.routine == std::string("invalid")) continue;  // nothing to keep of a broken pair
         const Real margin = manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead);
         const Real keepDistance = margin + pointSlack(world);

@@ -13,8 +13,13 @@
 
 namespace stepwise {
 
+/// The shape query a manifold is built from (chapter 3's collideShapes, or a faster one for some pairs).
+using ContactQueryFunction = ContactQuery (*)(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
+                                              const CollideOptions& options);
+
 struct ManifoldOptions {
     bool multiPoint = true;          // false: chapter 3's one point per pair (for A/B in tests, bench, demo)
+    ContactQueryFunction query = nullptr;  // null: collideShapes; chapter 10 hands its box-box query here
     Real matchDistance = Real(0.01); // m: fallback match of body-local anchors when feature ids differ (Jolt uses 1 cm)
     int keepSteps = 3;               // steps a pair whose bounds still overlap keeps its manifold within the speculative margin
 };

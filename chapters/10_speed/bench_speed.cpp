@@ -35,6 +35,9 @@ std::vector<Configuration> configurations(bool withPeer) {
     SpeedOptions noCache = all;
     noCache.contactCache.enabled = false;
     list.push_back({"no contact cache", noCache, false});
+    SpeedOptions noBoxBox = all;
+    noBoxBox.boxBoxQuery = false;
+    list.push_back({"no box-box query", noBoxBox, false});
     SpeedOptions reference = all;
     reference.fastSolve = false;
     list.push_back({"chapter 8's solve", reference, false});

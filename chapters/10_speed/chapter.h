@@ -21,6 +21,7 @@ struct SpeedOptions {
     ContactCacheRule contactCache;     // enabled = false: every pair is queried every frame
     bool sleeping = true;              // with Settings::sleeping; false: never (the bench's A/B)
     bool enlargedBounds = true;        // sweep only when a body leaves its grown box; false: every step
+    bool boxBoxQuery = true;           // two boxes by separating axes (box_box.h); false: GJK and EPA
     std::shared_ptr<FastSolveStats> profile;  // when set, every fast solve adds its phase times here
 };
 

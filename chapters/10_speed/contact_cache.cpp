@@ -108,7 +108,10 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
             }
             CollideOptions collide;
             collide.separationDistance = true;
-            const ContactQuery query = collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide);
+            // The box-box query's gap is a lower bound of the distance: kept, it only asks sooner.
+            const ContactQuery query =
+                options.query ? options.query(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide)
+                              : collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide);
             ++stats.measured;
             if (query.routine != std::string("invalid") && !query.intersect && -query.depth >= keepDistance) {
                 const Quat inverseA = bodyA.transform.rotation.conjugate();

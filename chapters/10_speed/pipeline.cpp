@@ -1,6 +1,7 @@
 #include "10_speed/chapter.h"
 
 #include "04_pgs/chapter.h"
+#include "10_speed/box_box.h"
 #include "10_speed/iteration_plan.h"
 
 #include <algorithm>
@@ -65,9 +66,10 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
             // through the whole frame on the contacts found here: chapter 6's look-ahead for it.
             auto cache = std::make_shared<ContactCacheScratch>();
             narrowphase->name = stageName(stage_group::kNarrowphase, "cached_manifold");
-            narrowphase->run = [cache, rule = options.contactCache](World& stepWorld, Real) {
+            narrowphase->run = [cache, rule = options.contactCache, boxBox = options.boxBoxQuery](World& stepWorld, Real) {
                 ManifoldOptions manifold;
                 manifold.multiPoint = stepWorld.settings.manifoldContacts;
+                if (boxBox) manifold.query = fastContactQuery;
                 const Real lookAhead = static_cast<Real>(std::max(1, stepWorld.settings.substeps));
                 updateManifoldsCached(stepWorld, lookAhead, manifold, rule, *cache);
             };

@@ -17,7 +17,7 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
         speedBench(), "ch10_bench_test",
         "scene,bodies,configuration,frames,ms_median,ms_q1,ms_q3,broadphase_ms,narrowphase_ms,solve_ms,ns_per_body,"
         "max_sideways_m,lowest_m,max_penetration_m,x_faster_than_peer");
-    REQUIRE(run.rows.size() == 12);  // 3 scenes x 4 configurations, no peer here
+    REQUIRE(run.rows.size() == 15);  // 3 scenes x 5 configurations, no peer here
     std::map<std::string, std::map<std::string, double>> ms;  // scene -> configuration -> ms per step
     for (const std::vector<std::string>& cells : run.rows) {
         REQUIRE(cells.size() >= 14);  // the last column, times faster than the peer, is empty here

@@ -224,7 +224,12 @@ void ballsBounceToRestitutionSquared(const PipelineMaker& makePipeline) {
             CHECK(first[i].falling);
             CHECK(relativeError(first[i].apex, restitutions[i] * restitutions[i] * height) < 0.02);
         }
-        CHECK(highest <= height);
+        // A discrete solve places an impact only to within a substep's travel, and the elastic
+        // ball may come back up to that much higher: 0.16 mm here. Chapter 10's flights, exact
+        // parabolas, show it (0.1 mm in double); Euler's flights hid it under their own loss.
+        const double substep = static_cast<double>(world.settings.dt) /
+                               (world.settings.substeps * std::max(1, world.settings.solverIterations));
+        CHECK(highest <= height + std::sqrt(2 * 9.81 * height) * substep);
     }
 }
 
@@ -329,7 +334,7 @@ std::vector<Promise> promisesOfChapter(int chapter) {
         {1, "the T-handle flips and keeps |L|", tHandleFlipsAndKeepsMomentum},
         {2, "the two boxes move as in chapter 2, and the narrowphase still agrees with the oracle", twoBoxesMoveAsInChapterTwo},
         {3, "the contact gallery's contacts are finite, the EPA stepper's match EPA", galleryContactsAreFinite},
-        {4, "balls bounce to e^2 h, and e = 1 never rises above its start", ballsBounceToRestitutionSquared},
+        {4, "balls bounce to e^2 h, and e = 1 never rises above its start by more than a substep's travel", ballsBounceToRestitutionSquared},
         {4, "head-on collisions conserve momentum and obey the restitution law", headOnCollisionsConserveMomentum},
         {4, "a sliding ball rolls after 2v/(7 mu g) at 5/7 of its speed; ramps hold below atan(mu)", slidingBallRollsAndRampsHold},
         {4, "a dropped ball comes to rest within the slop; a 10 kg ball on a 1 kg ball sinks less than twice it", restingWithinTheSlop},
