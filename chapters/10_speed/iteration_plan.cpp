@@ -128,16 +128,26 @@ int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& c
     if (!settings.planIterations || world.joints.empty() || !world.springs.empty() || !substepped) return scene;
     contacts.clear();
     bool bouncy = false;
+    Real lightest = kRealMax, heaviest = 0;
+    const auto bodyCount = static_cast<int>(world.bodies.size());
     for (std::size_t i = 0; i < world.contacts.size(); ++i) {
         const Contact& contact = world.contacts[i];
-        if (contact.pointCount <= 0 || contact.bodyA < 0 || contact.bodyB < 0) continue;
+        if (contact.pointCount <= 0 || contact.bodyA < 0 || contact.bodyB < 0 || contact.bodyA >= bodyCount ||
+            contact.bodyB >= bodyCount)
+            continue;
         contacts.push_back(static_cast<int>(i));
         bouncy = bouncy || combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
                                                world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
+        const Motion* a = world.motionOf(contact.bodyA);
+        const Motion* b = world.motionOf(contact.bodyB);
+        if (!a || !b || !(a->mass > 0) || !(b->mass > 0)) continue;
+        lightest = std::min({lightest, a->mass, b->mass});
+        heaviest = std::max({heaviest, a->mass, b->mass});
     }
     plan.stackDepth = supportDepth(world, contacts, search, /*withJoints=*/true);
     plan.plainIterations = scene;
-    plan.massRatio = 1;
+    plan.massRatio = heaviest > 0 ? heaviest / lightest : Real(1);
+    plan.largestRatio = std::max(plan.largestRatio, plan.massRatio);
     const int iterations = plan.stackDepth <= 1 && !bouncy ? std::min(scene, substepsFor(dt, kLightSubstep)) : scene;
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);

@@ -151,6 +151,27 @@ TEST_CASE("solver_iterations auto takes fewer substeps where no load passes from
     CHECK(bounce.step.iterationPlan.fewestIterations == 1);
 }
 
+TEST_CASE("solver_iterations auto hands chapter 8's solve two substeps for a pendulum, ten for a chain", "[ch10][solve]") {
+    World pendulum = sceneFile("hinge-pendulum.json");
+    Pipeline pendulumPipeline = makeChapter10Pipeline(pendulum, SpeedOptions{});
+    for (int frame = 0; frame < 30; ++frame) pendulumPipeline.step(pendulum);
+    CHECK(pendulum.step.iterationPlan.stackDepth == 1);  // the bob hangs from the static pivot
+    CHECK(pendulum.step.iterationPlan.mostIterations == 2);
+    CHECK(pendulum.settings.solverIterations == 10);     // the scene's setting, as it was
+
+    World chain = sceneFile("hanging-chain.json");
+    Pipeline chainPipeline = makeChapter10Pipeline(chain, SpeedOptions{});
+    chainPipeline.step(chain);
+    CHECK(chain.step.iterationPlan.stackDepth == 20);    // twenty links below the anchor
+    CHECK(chain.step.iterationPlan.iterations == 10);
+
+    World fixed = sceneFile("hinge-pendulum.json");
+    fixed.settings.planIterations = false;
+    Pipeline fixedPipeline = makeChapter10Pipeline(fixed, SpeedOptions{});
+    fixedPipeline.step(fixed);
+    CHECK(fixed.step.iterationPlan.iterations == 0);      // a number in the scene: not planned
+}
+
 TEST_CASE("a body in free flight follows its parabola exactly in one substep", "[ch10][solve]") {
     World world = sceneFile("projectile.json");
     const World launch = world;
