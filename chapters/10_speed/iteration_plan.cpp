@@ -1,4 +1,5 @@
-// solver_iterations "auto": the substep count from the touching mass ratio (iteration_plan.h).
+// solver_iterations "auto" (iteration_plan.h): the substep count from what touches: free flight,
+// bodies resting on the world alone, bounces, touching mass ratios, stack depth.
 #include "10_speed/iteration_plan.h"
 
 #include "04_pgs/contact_constraints.h"
@@ -63,6 +64,35 @@ int supportDepth(const World& world, const std::vector<int>& contactOrder, Stack
     return deepest;
 }
 
+namespace {
+
+/// What the planner reads off a frame's touching contacts: whether any pair bounces, and the
+/// touching dynamic bodies' mass ratio (heaviest over lightest; 1 when no two dynamic bodies touch).
+struct TouchSummary {
+    bool bouncy = false;
+    Real massRatio = 1;
+};
+
+TouchSummary summarizeTouches(const World& world, const std::vector<int>& contacts) {
+    TouchSummary summary;
+    Real lightest = kRealMax, heaviest = 0;
+    for (const int index : contacts) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        summary.bouncy = summary.bouncy ||
+                         combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
+                                             world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
+        const Motion* a = world.motionOf(contact.bodyA);
+        const Motion* b = world.motionOf(contact.bodyB);
+        if (!a || !b || !(a->mass > 0) || !(b->mass > 0)) continue;  // static or kinematic
+        lightest = std::min({lightest, a->mass, b->mass});
+        heaviest = std::max({heaviest, a->mass, b->mass});
+    }
+    if (heaviest > 0) summary.massRatio = heaviest / lightest;
+    return summary;
+}
+
+}  // namespace
+
 int substepsFor(Real dt, Real longest) {
     // A hair under the quotient: 1/60 over 1/600 is 10.000001 in float, and means ten.
     return std::max(1, static_cast<int>(std::ceil(dt / longest - Real(1e-3))));
@@ -75,25 +105,14 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     // Bodies that carry one another take the scene's count (auto: ten) in every solve: a load
     // crosses a contact layer a sweep, and a substep is a sweep however long it is.
     const int scene = std::max(1, settings.solverIterations);
-    Real lightest = kRealMax, heaviest = 0;
-    bool bouncy = false;
-    for (const int index : contactOrder) {
-        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
-        bouncy = bouncy || combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
-                                               world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
-        const Motion* a = world.motionOf(contact.bodyA);
-        const Motion* b = world.motionOf(contact.bodyB);
-        if (!a || !b || !(a->mass > 0) || !(b->mass > 0)) continue;  // static or kinematic
-        lightest = std::min({lightest, a->mass, b->mass});
-        heaviest = std::max({heaviest, a->mass, b->mass});
-    }
-    plan.massRatio = heaviest > 0 ? heaviest / lightest : Real(1);
+    const TouchSummary touches = summarizeTouches(world, contactOrder);
+    plan.massRatio = touches.massRatio;
     plan.stackDepth = supportDepth(world, contactOrder, search);
     plan.plainIterations = scene;
     int iterations = scene;
     if (settings.planIterations && contactOrder.empty())
         iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
-    else if (settings.planIterations && plan.stackDepth <= 1 && !bouncy)
+    else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy)
         iterations = std::min(scene, substepsFor(dt, kLightSubstep));
     if (settings.planIterations && plan.massRatio > kPlainMassRatio) {
         // Measured on towers of four boxes, masses in geometric steps (docs/ch10_speed.md):
@@ -127,28 +146,20 @@ int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& c
         settings.stabilisation == Stabilisation::Relax || settings.stabilisation == Stabilisation::SoftStep;
     if (!settings.planIterations || world.joints.empty() || !world.springs.empty() || !substepped) return scene;
     contacts.clear();
-    bool bouncy = false;
-    Real lightest = kRealMax, heaviest = 0;
     const auto bodyCount = static_cast<int>(world.bodies.size());
     for (std::size_t i = 0; i < world.contacts.size(); ++i) {
         const Contact& contact = world.contacts[i];
-        if (contact.pointCount <= 0 || contact.bodyA < 0 || contact.bodyB < 0 || contact.bodyA >= bodyCount ||
-            contact.bodyB >= bodyCount)
-            continue;
-        contacts.push_back(static_cast<int>(i));
-        bouncy = bouncy || combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
-                                               world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
-        const Motion* a = world.motionOf(contact.bodyA);
-        const Motion* b = world.motionOf(contact.bodyB);
-        if (!a || !b || !(a->mass > 0) || !(b->mass > 0)) continue;
-        lightest = std::min({lightest, a->mass, b->mass});
-        heaviest = std::max({heaviest, a->mass, b->mass});
+        if (contact.pointCount > 0 && contact.bodyA >= 0 && contact.bodyB >= 0 && contact.bodyA < bodyCount &&
+            contact.bodyB < bodyCount)
+            contacts.push_back(static_cast<int>(i));
     }
+    const TouchSummary touches = summarizeTouches(world, contacts);
     plan.stackDepth = supportDepth(world, contacts, search, /*withJoints=*/true);
     plan.plainIterations = scene;
-    plan.massRatio = heaviest > 0 ? heaviest / lightest : Real(1);
+    plan.massRatio = touches.massRatio;
     plan.largestRatio = std::max(plan.largestRatio, plan.massRatio);
-    const int iterations = plan.stackDepth <= 1 && !bouncy ? std::min(scene, substepsFor(dt, kLightSubstep)) : scene;
+    const int iterations =
+        plan.stackDepth <= 1 && !touches.bouncy ? std::min(scene, substepsFor(dt, kLightSubstep)) : scene;
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);
     plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, iterations) : iterations;
