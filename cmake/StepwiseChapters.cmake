@@ -54,7 +54,7 @@ function(stepwise_add_chapter number name)
     # The chapter as a decimal number: "08" would be an invalid octal literal in C++.
     string(REGEX REPLACE "^0+([0-9])" "\\1" chapter_value "${number}")
     target_compile_definitions(${lib}_demo PRIVATE STEPWISE_DEMO_CHAPTER=${chapter_value})
-    target_link_libraries(${lib}_demo PRIVATE ${lib}_registry)
+    target_link_libraries(${lib}_demo PRIVATE stepwise_headless_demo ${lib}_registry)
     set_target_properties(${lib}_demo PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
     stepwise_set_warnings(${lib}_demo)
   endif()
