@@ -56,9 +56,14 @@ ContactSearchStart beginContactSearch(World& world, const std::vector<BodyPair>&
 int updateContacts(World& world, const std::vector<BodyPair>& candidates, int lookAhead = 0,
                    const CollideOptions& options = CollideOptions{});
 
-/// Moves every contact point with its bodies: world points from the anchors, depth along the
-/// normal found with them. The substeps after the first see how far their bodies moved since the
-/// contacts were found.
+/// Moves one contact point with its bodies: world points from the anchors, depth along the
+/// normal found with them. A point on a sphere or a capsule stays where its round surface faces
+/// the other body, however the body turned, and the other body's point faces it (a rolling ball's
+/// contact stays under the ball).
+void followContactPoint(const Body& bodyA, const Body& bodyB, const Vec3& normal, ContactPoint& point);
+
+/// followContactPoint for every point of every contact. The substeps after the first see how far
+/// their bodies moved since the contacts were found.
 void followContactAnchors(World& world);
 
 /// findAllPairCandidates then updateContacts: the stage of this chapter.

@@ -158,19 +158,42 @@ int updateContacts(World& world, const std::vector<BodyPair>& candidates, int lo
 }
 // [ch03-update-contacts]
 
+namespace {
+
+bool isRound(const Shape& shape) { return shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule; }
+
+/// Where a point on a round body's surface is now: not the material point of its anchor (a
+/// rolling ball turns that away from the ground) but the core's point nearest it (a sphere's
+/// centre, a capsule's segment) pushed out by the radius along `outward`, the normal leaving the
+/// body toward the other.
+Vec3 roundSurfacePoint(const Body& body, const Vec3& localAnchor, const Vec3& outward) {
+    const Shape& shape = body.shape;
+    const Real along = shape.type == ShapeType::Capsule ? std::clamp(localAnchor.y(), -shape.halfHeight, shape.halfHeight) : Real(0);
+    return body.transform.apply(Vec3(0, along, 0)) + shape.radius * outward;
+}
+
+}  // namespace
+
+// [ch03-follow-point]
+void followContactPoint(const Body& bodyA, const Body& bodyB, const Vec3& normal, ContactPoint& point) {
+    const bool roundA = isRound(bodyA.shape), roundB = isRound(bodyB.shape);
+    point.pointA = roundA ? roundSurfacePoint(bodyA, point.localAnchorA, normal) : bodyA.transform.apply(point.localAnchorA);
+    point.pointB = roundB ? roundSurfacePoint(bodyB, point.localAnchorB, -normal) : bodyB.transform.apply(point.localAnchorB);
+    // pointA - pointB = depth * normal when found; the normal stays for the frame.
+    point.depth = normal.dot(point.pointA - point.pointB);
+    // Against a round body the contact is where the round surface is: the other body's point
+    // slides to face it at the same depth. Left behind where the frame began, the impulses would
+    // act half a frame's roll behind the ball, and its weight would spin it up.
+    if (roundB && !roundA) point.pointA = point.pointB + point.depth * normal;
+    if (roundA && !roundB) point.pointB = point.pointA - point.depth * normal;
+}
+// [ch03-follow-point]
+
 // [ch03-follow-anchors]
 void followContactAnchors(World& world) {
-    for (Contact& contact : world.contacts) {
-        const Transform& transformA = world.bodies[contact.bodyA].transform;
-        const Transform& transformB = world.bodies[contact.bodyB].transform;
-        for (int i = 0; i < contact.pointCount; ++i) {
-            ContactPoint& point = contact.points[i];
-            point.pointA = transformA.apply(point.localAnchorA);
-            point.pointB = transformB.apply(point.localAnchorB);
-            // pointA - pointB = depth * normal when found; the normal stays for the frame.
-            point.depth = contact.normal.dot(point.pointA - point.pointB);
-        }
-    }
+    for (Contact& contact : world.contacts)
+        for (int i = 0; i < contact.pointCount; ++i)
+            followContactPoint(world.bodies[contact.bodyA], world.bodies[contact.bodyB], contact.normal, contact.points[i]);
 }
 // [ch03-follow-anchors]
 

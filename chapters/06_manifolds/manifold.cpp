@@ -142,7 +142,7 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
         if (old && keepsMissedRecord(*old, options.keepSteps)) {
             Contact kept = *old;
             ++kept.missedSteps;
-            refreshFromAnchors(kept, bodyA.transform, bodyB.transform);
+            refreshFromAnchors(kept, bodyA, bodyB);
             world.contacts.push_back(kept);
         }
     }

@@ -1,6 +1,8 @@
 // Matching manifolds between steps, and the life cycle of a pair's record.
 #include "06_manifolds/persistence.h"
 
+#include "03_epa/chapter.h"
+
 #include <algorithm>
 
 namespace stepwise {
@@ -91,13 +93,9 @@ int matchContactPoints(Contact& contact, const Contact& previous, Real matchDist
 }
 // [ch06-match-points]
 
-void refreshFromAnchors(Contact& contact, const Transform& transformA, const Transform& transformB) {
-    for (int i = 0; i < std::min(std::max(contact.pointCount, 0), 4); ++i) {
-        ContactPoint& point = contact.points[i];
-        point.pointA = transformA.apply(point.localAnchorA);
-        point.pointB = transformB.apply(point.localAnchorB);
-        point.depth = contact.normal.dot(point.pointA - point.pointB);
-    }
+void refreshFromAnchors(Contact& contact, const Body& bodyA, const Body& bodyB) {
+    for (int i = 0; i < std::min(std::max(contact.pointCount, 0), 4); ++i)
+        followContactPoint(bodyA, bodyB, contact.normal, contact.points[i]);
 }
 
 // [ch06-keep-missed]

@@ -15,8 +15,8 @@ namespace stepwise {
 int matchContactPoints(Contact& contact, const Contact& previous, Real matchDistance);
 
 /// Moves a record's points with their bodies: world points from the anchors, depth along the
-/// record's normal (as chapter 3's followContactAnchors does for a substep).
-void refreshFromAnchors(Contact& contact, const Transform& transformA, const Transform& transformB);
+/// record's normal (chapter 3's followContactPoint, as for a substep).
+void refreshFromAnchors(Contact& contact, const Body& bodyA, const Body& bodyB);
 
 /// Whether the previous record of a pair still in the broadphase's candidates, but no longer close
 /// enough to make a contact, is kept one more search: while it has missed fewer than keepSteps.

@@ -100,12 +100,28 @@ void JointConstraints::prepare(const World& world, const std::vector<SolverBody>
     // The biased pass starts from last solve's impulses only with warm starting on; the relax pass
     // always starts from the impulses the biased pass applied.
     const bool carry = !positionFeedback || world.settings.warmStarting;
-    // The joints do not change within a solve: sorted once, used by all its substeps and passes.
-    if (!sweepFound_) {
+    // The joints do not change within a solve, and seldom between frames: sorted again only when
+    // a joint's bodies, or whether they move, changed (a hand edit in chapter 9's debugger).
+    if (sweepStale(world)) {
         sweep_ = jointSolveOrder(world, order_);
         sweepFound_ = true;
     }
     for (int jointIndex : sweep_) appendJointRows(rows_, world, jointIndex, bodies, h, feedback, carry);
+}
+
+bool JointConstraints::sweepStale(const World& world) {
+    std::vector<int>& key = keyScratch_;
+    key.clear();
+    key.push_back(static_cast<int>(world.bodies.size()));
+    const auto moves = [&](int body) {
+        return body >= 0 && static_cast<std::size_t>(body) < world.bodies.size() &&
+               world.bodies[static_cast<std::size_t>(body)].type == BodyType::Dynamic;
+    };
+    for (const JointDesc& joint : world.joints)
+        key.insert(key.end(), {joint.bodyA, joint.bodyB, moves(joint.bodyA), moves(joint.bodyB)});
+    if (sweepFound_ && key == sweepKey_) return false;
+    sweepKey_.swap(key);
+    return true;
 }
 
 void JointConstraints::warmStart(std::vector<SolverBody>& bodies) {
@@ -131,6 +147,10 @@ void JointConstraints::store(World& world) const {
 
 void solveWithJoints(World& world, Real dt, bool splitOrder, JointOrder order, JointFeedback::Kind feedback) {
     JointConstraints joints(order, feedback);
+    solveWithJoints(world, dt, splitOrder, joints);
+}
+
+void solveWithJoints(World& world, Real dt, bool splitOrder, JointConstraints& joints) {
     runStabilisedSolve(world, dt, splitOrder, world.joints.empty() ? nullptr : &joints);
 }
 

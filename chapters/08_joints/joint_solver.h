@@ -64,9 +64,13 @@ public:
     const JointRows& rows() const { return rows_; }
 
 private:
+    bool sweepStale(const World& world);
+
     JointOrder order_;
     JointFeedback::Kind feedback_;
-    std::vector<int> sweep_;        // jointSolveOrder, found at the first prepare of this solve
+    std::vector<int> sweep_;         // jointSolveOrder, found again only when sweepKey_ changes
+    std::vector<int> sweepKey_;      // what the order depends on: each joint's bodies, and which move
+    std::vector<int> keyScratch_;
     bool sweepFound_ = false;
     JointRows rows_;
 };
@@ -74,5 +78,9 @@ private:
 /// Chapter 6's solve step (runStabilisedSolve) with the world's joints in it.
 void solveWithJoints(World& world, Real dt, bool splitOrder, JointOrder order = kDefaultJointOrder,
                      JointFeedback::Kind feedback = JointFeedback::Kind::Soft);
+/// The same with `joints` kept by the caller (the pipeline) from frame to frame: every prepare
+/// rebuilds its rows from the World, so it carries nothing between frames, but its vectors keep
+/// their room and the sweep order its answer, and a step allocates nothing.
+void solveWithJoints(World& world, Real dt, bool splitOrder, JointConstraints& joints);
 
 }  // namespace stepwise

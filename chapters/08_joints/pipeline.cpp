@@ -4,6 +4,7 @@
 #include "08_joints/kinematic.h"
 
 #include <algorithm>
+#include <memory>
 #include <string>
 
 namespace stepwise {
@@ -61,9 +62,10 @@ Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options, 
         // The solve now carries the joints' rows beside the contacts'.
         if (Stage* solve = pipeline.find(stage_group::kSolve)) {
             const bool split = chooseStepOrder(world) == StepOrder::SplitIntegration;
-            solve->run = [split, order = options.order, feedback = options.feedback](World& stepWorld, Real dt) {
-                solveWithJoints(stepWorld, dt, split, order, feedback);
-            };
+            // One JointConstraints for every frame: rebuilt from the World at each prepare, it
+            // carries nothing between frames (a copied World steps the same); its rows keep their room.
+            solve->run = [split, joints = std::make_shared<JointConstraints>(options.order, options.feedback)](
+                             World& stepWorld, Real dt) { solveWithJoints(stepWorld, dt, split, *joints); };
         }
     }
     if (world.kinematicPaths.empty()) {

@@ -140,7 +140,8 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
             }
             Contact& carried = previous[next];
             carried.normal = (transformA.rotation * carried.builtLocalNormal).normalized();
-            refreshFromAnchors(carried, transformA, transformB);
+            refreshFromAnchors(carried, world.bodies[static_cast<std::size_t>(pair.bodyA)],
+                               world.bodies[static_cast<std::size_t>(pair.bodyB)]);
             for (int i = 0; i < carried.pointCount; ++i) carried.points[i].persisted = true;
             scratch.kept.push_back(static_cast<int>(next));
             ++stats.reused;

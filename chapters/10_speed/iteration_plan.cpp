@@ -70,8 +70,26 @@ namespace {
 /// touching dynamic bodies' mass ratio (heaviest over lightest; 1 when no two dynamic bodies touch).
 struct TouchSummary {
     bool bouncy = false;
+    bool sliding = false;  // a touching body moves along the surface under friction (accelerates)
     Real massRatio = 1;
 };
+
+/// Whether a touching pair has a moving body that friction pushes along (last frame's impulses):
+/// sliding, or rolling down a slope. Such a body accelerates, and Euler's step puts it h a t / 2
+/// off its path; a body at rest, or rolling steadily on the level (no friction), does not.
+bool slidesUnderFriction(const World& world, const Contact& contact) {
+    Real normal = 0, tangent = 0;
+    for (int i = 0; i < contact.pointCount; ++i) {
+        normal += contact.points[i].normalImpulse;
+        tangent += std::abs(contact.points[i].tangentImpulse[0]) + std::abs(contact.points[i].tangentImpulse[1]);
+    }
+    if (!(tangent > kFrictionAtRest * normal)) return false;
+    for (const int body : {contact.bodyA, contact.bodyB}) {
+        const Motion* motion = world.motionOf(body);
+        if (motion && motion->linearVelocity.squaredNorm() > kRestingSpeed * kRestingSpeed) return true;
+    }
+    return false;
+}
 
 TouchSummary summarizeTouches(const World& world, const std::vector<int>& contacts) {
     TouchSummary summary;
@@ -81,6 +99,7 @@ TouchSummary summarizeTouches(const World& world, const std::vector<int>& contac
         summary.bouncy = summary.bouncy ||
                          combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
                                              world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
+        summary.sliding = summary.sliding || slidesUnderFriction(world, contact);
         const Motion* a = world.motionOf(contact.bodyA);
         const Motion* b = world.motionOf(contact.bodyB);
         if (!a || !b || !(a->mass > 0) || !(b->mass > 0)) continue;  // static or kinematic
@@ -113,7 +132,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     if (settings.planIterations && contactOrder.empty())
         iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
     else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy)
-        iterations = std::min(scene, substepsFor(dt, kLightSubstep));
+        iterations = std::min(scene, substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep));
     if (settings.planIterations && plan.massRatio > kPlainMassRatio) {
         // Measured on towers of four boxes, masses in geometric steps (docs/ch10_speed.md):
         // 1:300 stands from 15 substeps, 1:1000 from 25. The square root of the ratio over the
@@ -158,8 +177,10 @@ int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& c
     plan.plainIterations = scene;
     plan.massRatio = touches.massRatio;
     plan.largestRatio = std::max(plan.largestRatio, plan.massRatio);
-    const int iterations =
-        plan.stackDepth <= 1 && !touches.bouncy ? std::min(scene, substepsFor(dt, kLightSubstep)) : scene;
+    // Hanging alone with nothing touching is free flight on a leash: substeps of free flight's
+    // length; touching the world as well, those of bodies resting on it.
+    const Real longest = contacts.empty() ? kFreeFlightSubstep : touches.sliding ? kSlidingSubstep : kRestingSubstep;
+    const int iterations = plan.stackDepth <= 1 && !touches.bouncy ? std::min(scene, substepsFor(dt, longest)) : scene;
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);
     plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, iterations) : iterations;

@@ -23,11 +23,21 @@ namespace stepwise {
 /// stepped at 1/30 s does the same work a second as at 1/60 s (docs/ch10_speed.md). Bounces keep
 /// the scene's count: restitution reverses the speed of the substep a ball arrives in, and a long
 /// one overshoots (an elastic ball dropped from 2 m rose 3 cm above its start with two).
-/// Free flight: semi-implicit Euler's fall is off by g h t / 2, 8 cm after a second at 1/60 s.
+/// Free flight: semi-implicit Euler's fall is off by g h t / 2, 8 cm after a second at 1/60 s;
+/// chapter 10 moves a free body on its exact parabola instead.
 constexpr Real kFreeFlightSubstep = Real(1) / Real(60);
-/// Bodies resting on the world alone: the reference ramp and rolling ball meet their tolerances
-/// at two substeps a frame (docs/engine_bench.md).
-constexpr Real kLightSubstep = Real(1) / Real(120);
+/// Bodies resting on the world alone, at rest or rolling steadily: nothing accelerates them along
+/// the surface, and one substep a frame at 60 Hz holds them (the reference rolling ball ends within
+/// 2e-5 m/s of 5/7 of its speed, docs/engine_bench.md).
+constexpr Real kRestingSubstep = Real(1) / Real(60);
+/// ...and where friction drags one along (a sliding block, a ball still skidding): it accelerates,
+/// and Euler's step puts it h a t / 2 behind; the reference ramp's sliding block is 2 cm off at
+/// one substep a frame, 1 cm at two (its tolerance 4 cm).
+constexpr Real kSlidingSubstep = Real(1) / Real(120);
+/// A touching pair slides under friction when its friction impulses are more than this fraction
+/// of its normal ones and one of its bodies moves faster than kRestingSpeed.
+constexpr Real kFrictionAtRest = Real(1e-3);
+constexpr Real kRestingSpeed = Real(1e-3);  // m/s
 
 /// Substeps that keep each no longer than `longest` (at least one).
 int substepsFor(Real dt, Real longest);
@@ -60,10 +70,11 @@ int supportDepth(const World& world, const std::vector<int>& contactOrder, Stack
 int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
                       StackSearch& search);
 
-/// The substep count for chapter 8's solve, which chapter 10 keeps for scenes with joints: two
-/// (kLightSubstep) where every dynamic body hangs or rests on the world alone, through a joint or a
-/// contact, and nothing bounces, as a pendulum does; the scene's count elsewhere. Scenes without
-/// joints, with springs, or with a stabilisation that does not substep keep the scene's count.
+/// The substep count for chapter 8's solve, which chapter 10 keeps for scenes with joints: where
+/// every dynamic body hangs or rests on the world alone, through a joint or a contact, and nothing
+/// bounces, substeps of kFreeFlightSubstep if nothing touches (a pendulum: one at 60 Hz), else of
+/// kRestingSubstep or kSlidingSubstep; the scene's count elsewhere. Scenes without joints, with
+/// springs, or with a stabilisation that does not substep keep the scene's count.
 /// `contacts` is working memory (the touching contacts' indices).
 int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& contacts, IterationPlan& plan,
                                 StackSearch& search);
