@@ -62,8 +62,12 @@ int updateContacts(World& world, const std::vector<BodyPair>& candidates, int lo
 /// contact stays under the ball).
 void followContactPoint(const Body& bodyA, const Body& bodyB, const Vec3& normal, ContactPoint& point);
 
-/// followContactPoint for every point of every contact. The substeps after the first see how far
-/// their bodies moved since the contacts were found.
+/// followContactPoint for every point of a contact (its depth and world points; a pair of
+/// polytopes takes the material points without asking each point).
+void followContact(const Body& bodyA, const Body& bodyB, Contact& contact);
+
+/// followContact for every contact. The substeps after the first see how far their bodies moved
+/// since the contacts were found.
 void followContactAnchors(World& world);
 
 /// findAllPairCandidates then updateContacts: the stage of this chapter.

@@ -189,11 +189,23 @@ void followContactPoint(const Body& bodyA, const Body& bodyB, const Vec3& normal
 }
 // [ch03-follow-point]
 
+void followContact(const Body& bodyA, const Body& bodyB, Contact& contact) {
+    const int count = std::min(std::max(contact.pointCount, 0), 4);
+    if (isRound(bodyA.shape) || isRound(bodyB.shape)) {
+        for (int i = 0; i < count; ++i) followContactPoint(bodyA, bodyB, contact.normal, contact.points[i]);
+        return;
+    }
+    for (int i = 0; i < count; ++i) {  // corners and faces: the material points
+        ContactPoint& point = contact.points[i];
+        point.pointA = bodyA.transform.apply(point.localAnchorA);
+        point.pointB = bodyB.transform.apply(point.localAnchorB);
+        point.depth = contact.normal.dot(point.pointA - point.pointB);
+    }
+}
+
 // [ch03-follow-anchors]
 void followContactAnchors(World& world) {
-    for (Contact& contact : world.contacts)
-        for (int i = 0; i < contact.pointCount; ++i)
-            followContactPoint(world.bodies[contact.bodyA], world.bodies[contact.bodyB], contact.normal, contact.points[i]);
+    for (Contact& contact : world.contacts) followContact(world.bodies[contact.bodyA], world.bodies[contact.bodyB], contact);
 }
 // [ch03-follow-anchors]
 

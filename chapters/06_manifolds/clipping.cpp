@@ -100,13 +100,18 @@ void removeRedundantVertices(std::vector<ClipVertex>& polygon, Real tolerance) {
 
 std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> polygon, const std::vector<ClipPlane>& planes,
                                     const CrossingFeatures& crossing) {
-    std::vector<ClipVertex> clipped;
+    std::vector<ClipVertex> working;
+    clipPolygon(polygon, planes, crossing, working);
+    return polygon;
+}
+
+void clipPolygon(std::vector<ClipVertex>& polygon, const std::vector<ClipPlane>& planes, const CrossingFeatures& crossing,
+                 std::vector<ClipVertex>& working) {
     for (const ClipPlane& plane : planes) {
-        clipAgainstPlane(polygon, plane, crossing, clipped);
-        polygon.swap(clipped);
+        clipAgainstPlane(polygon, plane, crossing, working);
+        polygon.swap(working);
         if (polygon.empty()) break;
     }
-    return polygon;
 }
 
 }  // namespace stepwise

@@ -59,5 +59,9 @@ void removeRedundantVertices(std::vector<ClipVertex>& polygon, Real tolerance);
 /// Clips against every plane in turn. Returns the clipped polygon (empty when nothing is left).
 std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> polygon, const std::vector<ClipPlane>& planes,
                                     const CrossingFeatures& crossing);
+/// The same in place: `polygon` becomes the clipped polygon, `working` holds each plane's result
+/// (both keep their room from call to call).
+void clipPolygon(std::vector<ClipVertex>& polygon, const std::vector<ClipPlane>& planes, const CrossingFeatures& crossing,
+                 std::vector<ClipVertex>& working);
 
 }  // namespace stepwise

@@ -48,7 +48,13 @@ bool buildManifold(const Shape& a, const Transform& ta, const Shape& b, const Tr
     local.pointA -= origin;
     local.pointB -= origin;
 
-    ManifoldCandidates candidates;
+    // The candidates' points keep their room from call to call (one record per thread; nothing in
+    // it outlives the call): a rebuilt pair allocates nothing.
+    thread_local ManifoldCandidates candidates;
+    candidates.normal = Vec3::UnitY();
+    candidates.points.clear();
+    candidates.kind = "none";
+    candidates.referenceSide = 0;
     bool found = false;
     if (options.multiPoint && isPolytope(a) && isPolytope(b)) {
         ReferenceSide preferred = ReferenceSide::None;

@@ -93,10 +93,7 @@ int matchContactPoints(Contact& contact, const Contact& previous, Real matchDist
 }
 // [ch06-match-points]
 
-void refreshFromAnchors(Contact& contact, const Body& bodyA, const Body& bodyB) {
-    for (int i = 0; i < std::min(std::max(contact.pointCount, 0), 4); ++i)
-        followContactPoint(bodyA, bodyB, contact.normal, contact.points[i]);
-}
+void refreshFromAnchors(Contact& contact, const Body& bodyA, const Body& bodyB) { followContact(bodyA, bodyB, contact); }
 
 // [ch06-keep-missed]
 bool keepsMissedRecord(const Contact& previous, int keepSteps) {

@@ -15,7 +15,7 @@ namespace stepwise {
 int matchContactPoints(Contact& contact, const Contact& previous, Real matchDistance);
 
 /// Moves a record's points with their bodies: world points from the anchors, depth along the
-/// record's normal (chapter 3's followContactPoint, as for a substep).
+/// record's normal (chapter 3's followContact, as for a substep).
 void refreshFromAnchors(Contact& contact, const Body& bodyA, const Body& bodyB);
 
 /// Whether the previous record of a pair still in the broadphase's candidates, but no longer close

@@ -45,7 +45,17 @@ Vec3 polytopeFaceNormal(const Shape& shape, int face) {
 
 FacePolygon polytopeFace(const Shape& shape, int face) {
     FacePolygon polygon;
-    if (face < 0 || face >= polytopeFaceCount(shape)) return polygon;
+    polytopeFace(shape, face, polygon);
+    return polygon;
+}
+
+void polytopeFace(const Shape& shape, int face, FacePolygon& polygon) {
+    polygon.index = -1;
+    polygon.normal = Vec3::Zero();
+    polygon.offset = 0;
+    polygon.corners.clear();
+    polygon.vertexIndices.clear();
+    if (face < 0 || face >= polytopeFaceCount(shape)) return;
     polygon.index = face;
     polygon.normal = polytopeFaceNormal(shape, face);
     if (shape.type == ShapeType::Box) {
@@ -63,7 +73,7 @@ FacePolygon polytopeFace(const Shape& shape, int face) {
             polygon.corners.push_back(boxCorner(shape.halfExtents, index));
         }
         polygon.offset = shape.halfExtents[axis];
-        return polygon;
+        return;
     }
     const HullFace& hullFace = shape.hull->faces[static_cast<std::size_t>(face)];
     polygon.offset = hullFace.offset;
@@ -72,7 +82,6 @@ FacePolygon polytopeFace(const Shape& shape, int face) {
         polygon.vertexIndices.push_back(index);
         polygon.corners.push_back(shape.hull->vertices[static_cast<std::size_t>(index)]);
     }
-    return polygon;
 }
 
 int mostAlignedFace(const Shape& shape, const Transform& transform, const Vec3& worldDirection, Real& alignment) {
@@ -124,8 +133,9 @@ Real faceSeparation(const Shape& shape, const Transform& transform, int face, co
 std::vector<PolytopeEdge> polytopeEdges(const Shape& shape) {
     std::vector<PolytopeEdge> edges;
     const int count = polytopeFaceCount(shape);
+    FacePolygon polygon;
     for (int face = 0; face < count; ++face) {
-        const FacePolygon polygon = polytopeFace(shape, face);
+        polytopeFace(shape, face, polygon);
         const int corners = static_cast<int>(polygon.corners.size());
         for (int k = 0; k < corners; ++k) {
             const int next = (k + 1) % corners;

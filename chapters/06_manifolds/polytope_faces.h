@@ -28,6 +28,9 @@ struct FacePolygon {
 
 /// Face `face` of a box or hull, body frame. Empty corners for other shapes or a bad index.
 FacePolygon polytopeFace(const Shape& shape, int face);
+/// The same into `polygon`, whose vectors keep their room from call to call (the narrowphase
+/// builds two faces a pair and allocates nothing once it has seen the largest).
+void polytopeFace(const Shape& shape, int face, FacePolygon& polygon);
 
 /// The outward normal of face `face`, body frame (no corners built).
 Vec3 polytopeFaceNormal(const Shape& shape, int face);

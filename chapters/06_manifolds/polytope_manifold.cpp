@@ -33,13 +33,26 @@ Real patchSize(const std::vector<ClipVertex>& polygon) {
     return size;
 }
 
-WorldFace placeFace(const Shape& shape, const Transform& transform, int face) {
-    WorldFace placed;
-    placed.local = polytopeFace(shape, face);
+void placeFace(const Shape& shape, const Transform& transform, int face, WorldFace& placed) {
+    polytopeFace(shape, face, placed.local);
     placed.normal = transform.rotate(placed.local.normal);
+    placed.corners.clear();
     for (const Vec3& corner : placed.local.corners) placed.corners.push_back(transform.apply(corner));
     placed.offset = placed.local.offset + placed.normal.dot(transform.position);
-    return placed;
+}
+
+/// faceContact's working memory, one per thread, kept from call to call: a face contact allocates
+/// nothing once the largest faces have been seen (they were a third of a rebuilt box pair's cost).
+/// Nothing in it outlives a call.
+struct FaceContactScratch {
+    WorldFace reference, incident;
+    std::vector<ClipVertex> polygon, working;
+    std::vector<ClipPlane> planes;
+};
+
+FaceContactScratch& faceContactScratch() {
+    thread_local FaceContactScratch scratch;
+    return scratch;
 }
 
 // [ch06-face-contact]
@@ -48,16 +61,20 @@ WorldFace placeFace(const Shape& shape, const Transform& transform, int face) {
 bool faceContact(const Shape& reference, const Transform& referenceTransform, int referenceFace,
                  const Shape& incident, const Transform& incidentTransform, bool referenceIsA, Real keepDistance,
                  ManifoldCandidates& out) {
-    const WorldFace ref = placeFace(reference, referenceTransform, referenceFace);
+    FaceContactScratch& scratch = faceContactScratch();
+    const WorldFace& ref = scratch.reference;
+    placeFace(reference, referenceTransform, referenceFace, scratch.reference);
     Real alignment = 0;
     const int incidentFace = mostAlignedFace(incident, incidentTransform, -ref.normal, alignment);
     if (incidentFace < 0 || ref.corners.size() < 3) return false;
-    const WorldFace inc = placeFace(incident, incidentTransform, incidentFace);
+    const WorldFace& inc = scratch.incident;
+    placeFace(incident, incidentTransform, incidentFace, scratch.incident);
     const std::size_t incidentCount = inc.corners.size();
     if (incidentCount < 3) return false;
 
     // The incident face as a polygon whose vertices and edges know their features.
-    std::vector<ClipVertex> polygon(incidentCount);
+    std::vector<ClipVertex>& polygon = scratch.polygon;
+    polygon.assign(incidentCount, ClipVertex{});
     for (std::size_t k = 0; k < incidentCount; ++k) {
         polygon[k].position = inc.corners[k];
         polygon[k].referenceFeature = makeFeature(FeatureKind::Face, static_cast<std::uint32_t>(referenceFace));
@@ -69,7 +86,8 @@ bool faceContact(const Shape& reference, const Transform& referenceTransform, in
     }
     // Side planes: through each reference edge, perpendicular to the face, facing out. The corners
     // run counter-clockwise seen from outside, so edge x normal points away from the face.
-    std::vector<ClipPlane> planes;
+    std::vector<ClipPlane>& planes = scratch.planes;
+    planes.clear();
     const std::size_t referenceCount = ref.corners.size();
     for (std::size_t k = 0; k < referenceCount; ++k) {
         const Vec3& start = ref.corners[k];
@@ -87,8 +105,9 @@ bool faceContact(const Shape& reference, const Transform& referenceTransform, in
     }
     CrossingFeatures crossing;
     crossing.incidentFaceFeature = makeFeature(FeatureKind::Face, static_cast<std::uint32_t>(incidentFace));
-    std::vector<ClipVertex> clipped = clipPolygon(std::move(polygon), planes, crossing);
-    removeRedundantVertices(clipped, kPatchTolerance * patchSize(clipped));
+    clipPolygon(polygon, planes, crossing, scratch.working);
+    const std::vector<ClipVertex>& clipped = polygon;
+    removeRedundantVertices(polygon, kPatchTolerance * patchSize(polygon));
 
     out.normal = referenceIsA ? ref.normal : Vec3(-ref.normal);
     out.kind = referenceIsA ? "face_a" : "face_b";

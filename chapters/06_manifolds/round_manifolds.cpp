@@ -92,7 +92,8 @@ bool capsuleOnFace(const Shape& polytope, const Transform& polytopeTransform, co
     Real alignment = 0;
     const int face = mostAlignedFace(polytope, polytopeTransform, towardsCapsule, alignment);
     if (face < 0) return false;
-    const FacePolygon local = polytopeFace(polytope, face);
+    thread_local FacePolygon local;  // keeps its room from call to call
+    polytopeFace(polytope, face, local);
     const std::size_t count = local.corners.size();
     if (count < 3) return false;
     const Vec3 faceNormal = polytopeTransform.rotate(local.normal);
