@@ -13,6 +13,7 @@ namespace stepwise {
 struct JointOptions {
     JointOrder order = kDefaultJointOrder;
     JointFeedback::Kind feedback = JointFeedback::Kind::Soft;   // Baumgarte: the rigid rows the page measures
+    bool relaxOnBiasedRows = false;   // JointConstraints' option (chapter 10 turns it on)
 };
 
 Pipeline makeChapter08Pipeline(const World& world);

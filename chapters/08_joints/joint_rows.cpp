@@ -66,7 +66,7 @@ public:
         const bool linear = !row.linearA.isZero(0) || !row.linearB.isZero(0);
         const Real cap = linear ? kMaxJointPushOutSpeed : kMaxJointPushOutTurn;
         row.bias = std::clamp(row.bias, -cap, cap);
-        add(row, soft);
+        add(row, soft, /*fedBack=*/true);
     }
 
     // C >= 0 wanted (a limit), row J = dC/dt, impulse >= 0. Not reached: speculative, the row
@@ -106,9 +106,10 @@ public:
         add(row, soft);
     }
 
-    void add(const ConstraintRow& row, const Softness& soft) {
+    void add(const ConstraintRow& row, const Softness& soft, bool fedBack = false) {
         out_.rows.push_back(row);
         out_.softness.push_back(soft);
+        out_.fedBack.push_back(fedBack);
     }
 
 private:
@@ -266,6 +267,7 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
     if (!std::all_of(rows, out.rows.end(), finiteRow)) {
         out.rows.resize(first);
         out.softness.resize(first);
+        out.fedBack.resize(first);
         ++out.invalidSkipped;
         return;
     }

@@ -53,6 +53,7 @@ struct JointRowSet {
 struct JointRows {
     std::vector<ConstraintRow> rows;
     std::vector<Softness> softness;   // one per row
+    std::vector<char> fedBack;        // one per row: its bias and softness are the feedback's (an equality)
     std::vector<JointRowSet> joints;
     int invalidSkipped = 0;           // joints with bad bodies or non-finite data: left out
 };

@@ -90,9 +90,21 @@ JointFeedback jointFeedback(const Settings& settings, Real h, JointFeedback::Kin
 // [ch08-joint-solve]
 void JointConstraints::prepare(const World& world, const std::vector<SolverBody>& bodies, Real h,
                                bool positionFeedback) {
+    if (!positionFeedback && relaxOnBiasedRows_ && biasedStep_ == h && !rows_.rows.empty()) {
+        // The relax pass on the biased pass's rows: its impulses are already in the rows.
+        for (std::size_t i = 0; i < rows_.rows.size(); ++i) {
+            if (!rows_.fedBack[i]) continue;
+            rows_.rows[i].bias = 0;
+            rows_.softness[i] = Softness{};
+        }
+        biasedStep_ = 0;
+        return;
+    }
+    biasedStep_ = positionFeedback ? h : Real(0);
     // Cleared, not replaced: the vectors keep their room for the solve's other substeps and passes.
     rows_.rows.clear();
     rows_.softness.clear();
+    rows_.fedBack.clear();
     rows_.joints.clear();
     rows_.invalidSkipped = 0;
     JointFeedback feedback = jointFeedback(world.settings, h, feedback_);

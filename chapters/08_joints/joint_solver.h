@@ -51,9 +51,13 @@ JointFeedback jointFeedback(const Settings& settings, Real h, JointFeedback::Kin
 
 class JointConstraints final : public ExtraConstraints {
 public:
+    /// With `relaxOnBiasedRows`, a relax pass right after a biased one at the same h takes the
+    /// biased pass's rows with the feedback taken out (no bias, rigid), where the biased pass's
+    /// Jacobians stand, instead of building them again where the bodies moved (Box2D v3 keeps a
+    /// joint's rows for its whole step; chapter 10 asks for this).
     explicit JointConstraints(JointOrder order = kDefaultJointOrder,
-                              JointFeedback::Kind feedback = JointFeedback::Kind::Soft)
-        : order_(order), feedback_(feedback) {}
+                              JointFeedback::Kind feedback = JointFeedback::Kind::Soft, bool relaxOnBiasedRows = false)
+        : order_(order), feedback_(feedback), relaxOnBiasedRows_(relaxOnBiasedRows) {}
 
     bool active(const World& world) const override { return !world.joints.empty(); }
     void prepare(const World& world, const std::vector<SolverBody>& bodies, Real h, bool positionFeedback) override;
@@ -68,6 +72,8 @@ private:
 
     JointOrder order_;
     JointFeedback::Kind feedback_;
+    bool relaxOnBiasedRows_ = false;
+    Real biasedStep_ = 0;            // h of the biased prepare whose rows the next relax may take; 0: none
     std::vector<int> sweep_;         // jointSolveOrder, found again only when sweepKey_ changes
     std::vector<int> sweepKey_;      // what the order depends on: each joint's bodies, and which move
     std::vector<int> keyScratch_;

@@ -64,7 +64,8 @@ Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options, 
             const bool split = chooseStepOrder(world) == StepOrder::SplitIntegration;
             // One JointConstraints for every frame: rebuilt from the World at each prepare, it
             // carries nothing between frames (a copied World steps the same); its rows keep their room.
-            solve->run = [split, joints = std::make_shared<JointConstraints>(options.order, options.feedback)](
+            solve->run = [split, joints = std::make_shared<JointConstraints>(options.order, options.feedback,
+                                                                              options.relaxOnBiasedRows)](
                              World& stepWorld, Real dt) { solveWithJoints(stepWorld, dt, split, *joints); };
         }
     }

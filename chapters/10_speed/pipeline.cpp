@@ -13,7 +13,11 @@ Pipeline makeChapter10Pipeline(const World& world) { return makeChapter10Pipelin
 
 // [ch10-pipeline]
 Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) {
-    Pipeline pipeline = makeChapter08Pipeline(world);
+    // Chapter 8's solve, for the scenes with joints the fast solve does not take: its relax pass
+    // keeps the biased pass's joint rows (half the joint work of a substep).
+    JointOptions joints;
+    joints.relaxOnBiasedRows = true;
+    Pipeline pipeline = makeChapter08Pipeline(world, joints);
     if (Stage* broadphase = pipeline.find(stage_group::kBroadphase); broadphase && options.enlargedBounds) {
         // Same pairs as chapter 5's sweep, which runs only when a body has left its grown box.
         broadphase->run = [sweep = broadphase->run](World& stepWorld, Real dt) {
