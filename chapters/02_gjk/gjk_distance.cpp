@@ -21,7 +21,7 @@ namespace {
 ConvexProxy coreOf(const ConvexProxy& proxy, Shape& storage, Real& radius) {
     ConvexProxy core = proxy;
     radius = 0;
-    if (proxy.shape->type == ShapeType::Sphere || proxy.shape->type == ShapeType::Capsule) {
+    if (isRound(*proxy.shape)) {
         const Real halfHeight = proxy.shape->type == ShapeType::Capsule ? proxy.shape->halfHeight : Real(0);
         storage = Shape::box(Vec3(0, halfHeight, 0));
         radius = proxy.shape->radius;

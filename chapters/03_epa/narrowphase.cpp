@@ -10,8 +10,8 @@
 namespace stepwise {
 
 bool hasClosedForm(ShapeType a, ShapeType b) {
-    const auto isRound = [](ShapeType type) { return type == ShapeType::Sphere || type == ShapeType::Capsule; };
-    if (isRound(a) && isRound(b)) return true;
+    const auto roundType = [](ShapeType type) { return type == ShapeType::Sphere || type == ShapeType::Capsule; };
+    if (roundType(a) && roundType(b)) return true;
     return (a == ShapeType::Sphere && b == ShapeType::Box) || (a == ShapeType::Box && b == ShapeType::Sphere);
 }
 

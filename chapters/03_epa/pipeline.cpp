@@ -160,8 +160,6 @@ int updateContacts(World& world, const std::vector<BodyPair>& candidates, int lo
 
 namespace {
 
-bool isRound(const Shape& shape) { return shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule; }
-
 /// Where a point on a round body's surface is now: not the material point of its anchor (a
 /// rolling ball turns that away from the ground) but the core's point nearest it (a sphere's
 /// centre, a capsule's segment) pushed out by the radius along `outward`, the normal leaving the

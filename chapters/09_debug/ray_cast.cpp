@@ -192,8 +192,8 @@ RayHit rayConvex(const Ray& ray, const ConvexProxy& proxy, int maxIterations) {
     // is cast as its core (a point, a segment) grown by its radius, the planes pushed out by it:
     // on the core the loop ends in a few steps, where on the round surface it would only creep
     // closer (the paper's section on shapes with a margin; chapter 2's distance does the same).
-    const bool round = shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule;
-    const Real margin = round ? shape.radius : Real(0);
+    const bool round = isRound(shape);
+    const Real margin = roundRadius(shape);
     const auto coreSupport = [&](const Vec3& direction) -> Vec3 {
         if (shape.type == ShapeType::Sphere) return Vec3::Zero();
         if (shape.type == ShapeType::Capsule) return Vec3(0, direction.y() >= 0 ? shape.halfHeight : -shape.halfHeight, 0);

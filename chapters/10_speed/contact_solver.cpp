@@ -89,13 +89,6 @@ void setLane(PackSym3<N>& pack, int lane, const Mat3& m) {
     pack.yz[lane] = m(1, 2);
 }
 
-/// How far a body's surface lies outside its core (a point or a segment): the radius of a sphere
-/// or a capsule, 0 for shapes with corners.
-Real roundRadius(const World& world, int body) {
-    const Shape& shape = world.bodies[static_cast<std::size_t>(body)].shape;
-    return shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule ? shape.radius : Real(0);
-}
-
 // [ch10-prepare-contact]
 /// Fills one lane of a block from a contact record: everything the substeps need, computed once.
 template <int N>
@@ -164,8 +157,8 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
         // surface does not turn with its body: the ball's lowest point stays lowest as it rolls.
         // Turned with the ball, the material point rose r (1 - cos w h) a substep, a false gap the
         // solve let the ball fall into (a ball rolling at 2 m/s kept 8 cm/s of downward speed).
-        const Vec3 armA = at - centerA - roundRadius(world, contact.bodyA) * normal;
-        const Vec3 armB = at - centerB + roundRadius(world, contact.bodyB) * normal;
+        const Vec3 armA = at - centerA - roundRadius(world.bodies[static_cast<std::size_t>(contact.bodyA)].shape) * normal;
+        const Vec3 armB = at - centerB + roundRadius(world.bodies[static_cast<std::size_t>(contact.bodyB)].shape) * normal;
         setLane(p.armA, lane, armA);
         setLane(p.armB, lane, armB);
         p.adjustedSeparation[lane] = -point.depth - normal.dot(armB - armA);

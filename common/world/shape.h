@@ -76,4 +76,12 @@ Aabb computeAabb(const Shape& shape, const Transform& transform);
 /// Radius of the smallest origin-centred sphere holding the shape (for CCD and culling).
 Real boundingRadius(const Shape& shape);
 
+/// Whether the shape is round: a sphere or a capsule, a core (a point, a segment) grown by its
+/// radius. A point on a round surface does not turn with its body (a rolling ball's lowest point
+/// stays lowest).
+inline bool isRound(const Shape& shape) { return shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule; }
+
+/// How far the surface lies outside the core: a round shape's radius, 0 for shapes with corners.
+inline Real roundRadius(const Shape& shape) { return isRound(shape) ? shape.radius : Real(0); }
+
 }  // namespace stepwise
