@@ -116,7 +116,6 @@ void JointConstraints::prepare(const World& world, const std::vector<SolverBody>
     // a joint's bodies, or whether they move, changed (a hand edit in chapter 9's debugger).
     if (sweepStale(world)) {
         sweep_ = jointSolveOrder(world, order_);
-        sweepFound_ = true;
     }
     for (int jointIndex : sweep_) appendJointRows(rows_, world, jointIndex, bodies, h, feedback, carry);
 }
@@ -131,7 +130,7 @@ bool JointConstraints::sweepStale(const World& world) {
     };
     for (const JointDesc& joint : world.joints)
         key.insert(key.end(), {joint.bodyA, joint.bodyB, moves(joint.bodyA), moves(joint.bodyB)});
-    if (sweepFound_ && key == sweepKey_) return false;
+    if (key == sweepKey_) return false;  // never equal before the first: the key holds the body count
     sweepKey_.swap(key);
     return true;
 }

@@ -77,7 +77,6 @@ private:
     std::vector<int> sweep_;         // jointSolveOrder, found again only when sweepKey_ changes
     std::vector<int> sweepKey_;      // what the order depends on: each joint's bodies, and which move
     std::vector<int> keyScratch_;
-    bool sweepFound_ = false;
     JointRows rows_;
 };
 
