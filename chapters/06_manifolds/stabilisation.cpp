@@ -53,6 +53,9 @@ void sweepManifolds(std::vector<ConstraintRow>& rows, const std::vector<std::pai
     const Softness rigid;
     for (const auto& [begin, end] : ranges) {
         for (int sweep = 0; sweep < manifoldSweeps; ++sweep) {
+            // A sweep that changes no impulse leaves the velocities as they were, so every later
+            // sweep would repeat it: a speculative contact that stays apart costs one sweep, not eight.
+            bool changed = false;
             for (int i = begin; i < end; ++i) {
                 ConstraintRow& row = rows[static_cast<std::size_t>(i)];
                 if (row.effectiveMass == 0) continue;
@@ -66,8 +69,11 @@ void sweepManifolds(std::vector<ConstraintRow>& rows, const std::vector<std::pai
                 const Real previous = row.impulse;
                 const Real increment = soft.massScale * row.effectiveMass * velocityError - soft.impulseScale * previous;
                 row.impulse = std::clamp(previous + increment, lower, upper);
+                if (row.impulse == previous) continue;
+                changed = true;
                 applyRowImpulse(row, row.impulse - previous, bodies);
             }
+            if (!changed) break;
         }
     }
 }

@@ -69,7 +69,7 @@ namespace {
 /// What the planner reads off a frame's touching contacts: whether any pair bounces, and the
 /// touching dynamic bodies' mass ratio (heaviest over lightest; 1 when no two dynamic bodies touch).
 struct TouchSummary {
-    bool bouncy = false;
+    bool bouncy = false;   // a pair with restitution closes faster than the restitution threshold
     bool sliding = false;  // a touching body moves along the surface under friction (accelerates)
     Real massRatio = 1;
 };
@@ -91,14 +91,36 @@ bool slidesUnderFriction(const World& world, const Contact& contact) {
     return false;
 }
 
+/// The velocity of `body`'s material point at `point` (world frame); zero for a static body.
+Vec3 velocityAt(const World& world, int body, const Vec3& point) {
+    const Motion* motion = world.motionOf(body);
+    if (!motion) return Vec3::Zero();
+    const Vec3 center = world.bodies[static_cast<std::size_t>(body)].transform.apply(motion->localCenter);
+    return motion->linearVelocity + motion->angularVelocity.cross(point - center);
+}
+
+/// Whether a pair with restitution arrives this frame: one of its points closes faster than the
+/// restitution threshold, so the solve reverses that speed. Balls that rest against one another
+/// (a cradle between strikes) or that part after a bounce do not bounce again.
+bool arrivesBouncing(const World& world, const Contact& contact) {
+    const Real restitution = combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
+                                                 world.bodies[static_cast<std::size_t>(contact.bodyB)].material);
+    if (!(restitution > 0)) return false;
+    for (int i = 0; i < contact.pointCount; ++i) {
+        const Vec3 point = (contact.points[i].pointA + contact.points[i].pointB) * Real(0.5);
+        const Real closing =
+            (velocityAt(world, contact.bodyA, point) - velocityAt(world, contact.bodyB, point)).dot(contact.normal);
+        if (closing > world.settings.restitutionThreshold) return true;
+    }
+    return false;
+}
+
 TouchSummary summarizeTouches(const World& world, const std::vector<int>& contacts) {
     TouchSummary summary;
     Real lightest = kRealMax, heaviest = 0;
     for (const int index : contacts) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
-        summary.bouncy = summary.bouncy ||
-                         combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
-                                             world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
+        summary.bouncy = summary.bouncy || arrivesBouncing(world, contact);
         summary.sliding = summary.sliding || slidesUnderFriction(world, contact);
         const Motion* a = world.motionOf(contact.bodyA);
         const Motion* b = world.motionOf(contact.bodyB);

@@ -20,9 +20,11 @@ namespace stepwise {
 /// (a load crosses one contact layer a sweep). Where nothing touches, or where every touching body
 /// rests on the world alone and nothing bounces, one sweep settles each contact, and substeps buy
 /// only accuracy in time: the planner takes as many as keep each no longer than these, so a scene
-/// stepped at 1/30 s does the same work a second as at 1/60 s (docs/ch10_speed.md). Bounces keep
-/// the scene's count: restitution reverses the speed of the substep a ball arrives in, and a long
-/// one overshoots (an elastic ball dropped from 2 m rose 3 cm above its start with two).
+/// stepped at 1/30 s does the same work a second as at 1/60 s (docs/ch10_speed.md). A frame in
+/// which a bouncy pair arrives (closes faster than the restitution threshold) keeps the scene's
+/// count: restitution reverses the speed of the substep a ball arrives in, and a long one
+/// overshoots (an elastic ball dropped from 2 m rose 3 cm above its start with two). Bouncy bodies
+/// that rest against one another, or part, do not bounce, and take the lengths below.
 /// Free flight: semi-implicit Euler's fall is off by g h t / 2, 8 cm after a second at 1/60 s;
 /// chapter 10 moves a free body on its exact parabola instead.
 constexpr Real kFreeFlightSubstep = Real(1) / Real(60);
