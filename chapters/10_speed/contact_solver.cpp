@@ -366,6 +366,28 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
 }
 // [ch10-wide-blocks]
 
+/// The scalar path's blocks, one contact each, in the wide path's order: colour by colour, then
+/// the overflow. Lanes of a wide block share no body, nor do the blocks of one colour, so the wide
+/// sweep is this sweep done eight contacts at a time, and the two paths differ only in rounding
+/// (the wide file's fused multiply-adds): what the scalar solve measures is the lanes alone.
+void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params) {
+    const std::vector<int>& order = scratch.contactOrder;
+    colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(scratch.bodies.states.size()), scratch.colours,
+                   scratch.colourBits);
+    scratch.wideBlocks.clear();
+    scratch.scalarBlocks.resize(order.size());
+    std::size_t next = 0;
+    const auto fill = [&](std::size_t i) { fillLane(scratch.scalarBlocks[next++], 0, world, order[i], scratch.bodies, params); };
+    for (int colour = 0; colour < kMaxColours; ++colour) {
+        const std::size_t before = next;
+        for (std::size_t i = 0; i < order.size(); ++i)
+            if (scratch.colours[i] == colour) fill(i);
+        if (next == before) break;
+    }
+    for (std::size_t i = 0; i < order.size(); ++i)
+        if (scratch.colours[i] < 0) fill(i);
+}
+
 template <int N>
 void warmStartAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states) {
     for (ManifoldBlock<N>& block : blocks) warmStartBlock(block, states);
@@ -541,10 +563,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     if (path == SolverPath::Wide) {
         buildWideBlocks(world, scratch, params);
     } else {
-        scratch.wideBlocks.clear();
-        scratch.scalarBlocks.resize(scratch.contactOrder.size());
-        for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i)
-            fillLane(scratch.scalarBlocks[i], 0, world, scratch.contactOrder[i], scratch.bodies, params);
+        buildScalarBlocks(world, scratch, params);
     }
 
     stats.wideBlocks = static_cast<int>(scratch.wideBlocks.size());

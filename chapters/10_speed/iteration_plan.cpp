@@ -162,13 +162,19 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio);
         iterations = std::max(iterations, std::min(scene * kMostIterationFactor, static_cast<int>(std::ceil(wanted))));
     }
-    if (settings.planIterations && plan.stackDepth > kPlainStackDepth) {
-        // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 40 rows move their top boxes
-        // 2.6 cm at ten substeps, 1.2 cm at 15, 0.6 cm at 20: ten per 20 rows. Only while they
-        // settle was tried and is worse: changing the count changes how deep a resting contact
-        // sits, and a stack switched between counts is pumped into swaying.
-        const int wanted = (scene * plan.stackDepth + kPlainStackDepth - 1) / kPlainStackDepth;
-        iterations = std::max(iterations, std::min(scene * kMostIterationFactor, wanted));
+    if (settings.planIterations && plan.stackDepth > 1 && !touches.bouncy) {
+        // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 20 rows walk 1.5 mm at ten
+        // substeps, 9.5 mm at four; 40 rows 2.6 cm at ten, 1.2 cm at 15, 0.6 cm at 20. Only while
+        // they settle was tried and is worse: changing the count changes how deep a resting
+        // contact sits, and a stack switched between counts is pumped into swaying.
+        const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
+        const int wanted = static_cast<int>(
+            std::ceil(Real(scene) * rows * rows * std::sqrt(kPlainStackDrift / kHeldStackDrift) - Real(1e-3)));
+        // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
+        const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
+        const int stack = std::min(scene * kMostIterationFactor, std::max({kFewestStackSubsteps, lengths, wanted}));
+        // Unlike masses keep at least the scene's count (and the mass-ratio rule above).
+        iterations = plan.massRatio <= kLikeMassRatio ? stack : std::max(iterations, stack);
     }
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);

@@ -50,9 +50,20 @@ constexpr Real kPlainMassRatio = 100;
 /// The most the planner multiplies the scene's count by.
 constexpr int kMostIterationFactor = 4;
 
-/// Stacks up to this many bodies deep stand at the scene's count: a 20-row pyramid takes its
-/// load at ten substeps with its boxes 1.5 mm from where they started.
+/// A stack of bodies of like mass, this many deep, at the scene's count (ten substeps): a 20-row
+/// pyramid takes its load with its boxes kPlainStackDrift from where they started.
 constexpr int kPlainStackDepth = 20;
+constexpr Real kPlainStackDrift = Real(0.0015);  // m
+/// How far the planner lets a stack's boxes walk: half the reference scenes' 1 cm. Measured on
+/// pyramids of 1 m boxes, the walk goes as (depth^2 / substeps)^2 (docs/ch10_speed.md), so the
+/// planner takes scene * (depth / kPlainStackDepth)^2 * sqrt(kPlainStackDrift / kHeldStackDrift).
+constexpr Real kHeldStackDrift = Real(0.005);  // m
+/// A body resting on another sinks into it as the square of the stack over the substeps: four
+/// 1 m boxes sink 14 mm in all at one substep a frame, 3.6 mm at two (each contact within the
+/// slop either way), 0.8 mm at four. A stack takes at least this many.
+constexpr int kFewestStackSubsteps = 2;
+/// Touching masses within this ratio count as like.
+constexpr Real kLikeMassRatio = 2;
 
 /// Working memory of supportDepth, kept from frame to frame so that the search allocates nothing
 /// once it has run: the contact graph in compressed rows, and the breadth-first search.

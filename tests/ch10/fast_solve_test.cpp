@@ -94,9 +94,11 @@ TEST_CASE("the wide and the scalar path agree on a settled pyramid", "[ch10][sol
     stepFrames(wide, widePipeline, 120);
     stepFrames(scalar, scalarPipeline, 120);
     const Real apart = largestMove(wide, scalar);
-    // The two sweep the contacts in different orders (colour order, contact order): the same
-    // solution to within the solver's tolerance, a few millimetres on 78 boxes after 2 s.
-    CHECK(apart < Real(0.005));
+    INFO("largest distance between the two paths' boxes: " << apart << " m");
+    // The two sweep the contacts in the same order (colour by colour) and differ in rounding only
+    // (the wide file's fused multiply-adds), which 2 s of a pyramid grow to 0.07 mm. While the
+    // scalar path swept in contact order, this bound was 5 mm.
+    CHECK(apart < Real(5e-4));
 }
 
 TEST_CASE("colours never hold two contacts of one moving body", "[ch10][colouring]") {
