@@ -98,18 +98,32 @@ btScalar engineFriction(const btCollisionObject* a, const btCollisionObject* b) 
 btScalar engineRestitution(const btCollisionObject* a, const btCollisionObject* b) {
     return std::max(a->getRestitution(), b->getRestitution());
 }
+/// Rolling resistance (chapter 10): each body's is set as resistance x round radius, a length, as
+/// Bullet's rolling and spinning friction are; the pair takes the larger.
+btScalar engineRollingFriction(const btCollisionObject* a, const btCollisionObject* b) {
+    return std::max(a->getRollingFriction(), b->getRollingFriction());
+}
+btScalar engineSpinningFriction(const btCollisionObject* a, const btCollisionObject* b) {
+    return std::max(a->getSpinningFriction(), b->getSpinningFriction());
+}
 
 /// Bullet's combining callbacks are process-wide; this puts the engine's in for one run.
 struct CombineRules {
     CalculateCombinedCallback friction = gCalculateCombinedFrictionCallback;
     CalculateCombinedCallback restitution = gCalculateCombinedRestitutionCallback;
+    CalculateCombinedCallback rolling = gCalculateCombinedRollingFrictionCallback;
+    CalculateCombinedCallback spinning = gCalculateCombinedSpinningFrictionCallback;
     CombineRules() {
         gCalculateCombinedFrictionCallback = engineFriction;
         gCalculateCombinedRestitutionCallback = engineRestitution;
+        gCalculateCombinedRollingFrictionCallback = engineRollingFriction;
+        gCalculateCombinedSpinningFrictionCallback = engineSpinningFriction;
     }
     ~CombineRules() {
         gCalculateCombinedFrictionCallback = friction;
         gCalculateCombinedRestitutionCallback = restitution;
+        gCalculateCombinedRollingFrictionCallback = rolling;
+        gCalculateCombinedSpinningFrictionCallback = spinning;
     }
     CombineRules(const CombineRules&) = delete;
     CombineRules& operator=(const CombineRules&) = delete;
@@ -230,6 +244,8 @@ void addBodies(BulletScene& scene, const World& world) {
         info.m_startWorldTransform = bulletPose(body.transform, frame);
         info.m_friction = btScalar(body.material.friction);
         info.m_restitution = btScalar(body.material.restitution);
+        info.m_rollingFriction = info.m_spinningFriction =
+            btScalar(body.material.rollingResistance * roundRadius(body.shape));
         Real linearRate = 0, angularRate = 0;
         for (const Damping& damping : world.dampings)
             if (dynamic && (damping.body == int(i) || damping.body < 0)) linearRate += damping.linear, angularRate += damping.angular;

@@ -182,14 +182,15 @@ void measureSpeed(BenchRun& bench) {
     bench.progress().endStage();
 
     // [ch10-bench-sleep]
-    // Piles that have settled: the step with sleeping on against the same step awake. Spheres and
-    // capsules roll on with nothing to stop them (no rolling resistance), and one moving body
-    // keeps its whole island awake, so the pile of boxes and hulls is measured beside the mixed one.
+    // Piles that have settled (20 s): the step with sleeping on against the same step awake. The
+    // mixed pile's spheres and capsules have a little rolling resistance: without it they roll, or
+    // spin in place on one point, for ever, and one moving body keeps its whole island awake. The
+    // pile of boxes and hulls alone is measured beside it.
     CsvTable sleepTable({"scene", "bodies", "sleeping", "settle_frames", "bodies_asleep", "ms_median", "fraction_of_awake"});
     bench.progress().stage("settled piles, asleep and awake", 4);
     for (bool roundShapes : {true, false}) {
         const World pile = buildMixedPile(quick ? 300 : 2000, roundShapes);
-        const long settle = quick ? 240 : 900;
+        const long settle = quick ? 240 : 1200;
         SpeedOptions asleep, awake;
         awake.sleeping = false;
         const Measurement sleeping = runEngine(pile, asleep, settle + 60, settle);

@@ -258,10 +258,31 @@ inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
     applyFriction(c, c.tangentImpulse1, c.tangentImpulse2, a, b);
     a.angularVelocity = a.angularVelocity - c.twistImpulse * c.twistTurnA;
     b.angularVelocity = b.angularVelocity + c.twistImpulse * c.twistTurnB;
+    if (anyNegative(-c.rollingLength)) {  // a lane resists rolling
+        a.angularVelocity = a.angularVelocity - c.inverseInertiaA * c.rollingImpulse;
+        b.angularVelocity = b.angularVelocity + c.inverseInertiaB * c.rollingImpulse;
+    }
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
 }
 // [ch10-warm-start]
+
+/// The rolling rows' effective mass, the inverse of K = IA^-1 + IB^-1 (symmetric, by its
+/// adjugate); zero in lanes without rolling resistance or without a body that turns.
+template <int N>
+inline void prepareRolling(ManifoldBlock<N>& c) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    const PackSym3<N>& ia = c.inverseInertiaA;
+    const PackSym3<N>& ib = c.inverseInertiaB;
+    const PackSym3<N> k{ia.xx + ib.xx, ia.yy + ib.yy, ia.zz + ib.zz, ia.xy + ib.xy, ia.xz + ib.xz, ia.yz + ib.yz};
+    const PackSym3<N> adjugate{k.yy * k.zz - k.yz * k.yz, k.xx * k.zz - k.xz * k.xz, k.xx * k.yy - k.xy * k.xy,
+                               k.xz * k.yz - k.xy * k.zz, k.xy * k.yz - k.xz * k.yy, k.xy * k.xz - k.xx * k.yz};
+    const Pack<N> determinant = k.xx * adjugate.xx + k.xy * adjugate.xy + k.xz * adjugate.xz;
+    const Pack<N> scale = selectPositive(min(determinant, c.rollingLength),
+                                         one / max(determinant, Pack<N>::splat(Real(1e-30))), zero);
+    c.rollingMass = {scale * adjugate.xx, scale * adjugate.yy, scale * adjugate.zz,
+                     scale * adjugate.xy, scale * adjugate.xz, scale * adjugate.yz};
+}
 
 // [ch10-normal-block]
 /// Once per frame, after fillLane: everything about the rows that depends only on the frame's
@@ -340,8 +361,29 @@ inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states) {
     c.twistTurnB = c.inverseInertiaB * c.normal;
     const Pack<N> twistInverse = dot(c.normal, c.twistTurnA) + dot(c.normal, c.twistTurnB);
     c.twistMass = selectPositive(twistInverse, one / max(twistInverse, Pack<N>::splat(Real(1e-30))), zero);
+    if (anyNegative(-c.rollingLength)) prepareRolling(c);
 }
 // [ch10-normal-block]
+
+// [ch10-rolling]
+/// Rolling resistance: the angular impulse that stops the bodies' relative turn, kept within a
+/// ball of radius rollingLength times the load (Box2D v3 clamps its one rolling axis the same way;
+/// in 3D the ball also holds back spinning about the normal, which a one-point contact's twist
+/// row cannot: its points have no spread).
+template <int N>
+inline void solveRolling(ManifoldBlock<N>& c, const Pack<N>& load, BodyPack<N>& a, BodyPack<N>& b) {
+    const Pack<N> one = Pack<N>::splat(1);
+    PackVec3<N> total = c.rollingImpulse - c.rollingMass * (b.angularVelocity - a.angularVelocity);
+    const Pack<N> limit = c.rollingLength * load;
+    const Pack<N> lengthSquared = dot(total, total);
+    total = selectPositive(lengthSquared - limit * limit, limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), one) *
+            total;
+    const PackVec3<N> change = total - c.rollingImpulse;
+    c.rollingImpulse = total;
+    a.angularVelocity = a.angularVelocity - c.inverseInertiaA * change;
+    b.angularVelocity = b.angularVelocity + c.inverseInertiaB * change;
+}
+// [ch10-rolling]
 
 // [ch10-friction]
 /// The manifold's friction at its centre, against the normal impulses just found: the two
@@ -381,6 +423,7 @@ inline void solveFriction(ManifoldBlock<N>& c, BodyPack<N>& a, BodyPack<N>& b) {
     c.twistImpulse = twist;
     a.angularVelocity = a.angularVelocity - twistChange * c.twistTurnA;
     b.angularVelocity = b.angularVelocity + twistChange * c.twistTurnB;
+    if (anyNegative(-c.rollingLength)) solveRolling(c, load, a, b);
 }
 // [ch10-friction]
 

@@ -113,6 +113,11 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
     const Real friction = combinedFriction(materialA, materialB);
     block.friction[lane] = friction;
     block.restitution[lane] = combinedRestitution(materialA, materialB);
+    // A rolling ball is held back by a torque of c r N (Box2D v3 takes the larger body's too).
+    block.rollingLength[lane] =
+        std::max(materialA.rollingResistance * roundRadius(world.bodies[static_cast<std::size_t>(contact.bodyA)].shape),
+                 materialB.rollingResistance * roundRadius(world.bodies[static_cast<std::size_t>(contact.bodyB)].shape));
+    setLane(block.rollingImpulse, lane, Vec3::Zero());  // not carried between frames
     block.inverseMassA[lane] = infoA.inverseMass;
     block.inverseMassB[lane] = infoB.inverseMass;
     setLane(block.inverseInertiaA, lane, infoA.inverseInertia);
@@ -195,7 +200,8 @@ void emptyLane(ManifoldBlock<N>& block, int lane) {
     block.slotA[lane] = block.slotB[lane] = 0;
     block.contactIndex[lane] = -1;
     block.pointCount[lane] = 0;
-    block.friction[lane] = block.restitution[lane] = 0;
+    block.friction[lane] = block.restitution[lane] = block.rollingLength[lane] = 0;
+    setLane(block.rollingImpulse, lane, Vec3::Zero());
     block.inverseMassA[lane] = block.inverseMassB[lane] = 0;
     setLane(block.inverseInertiaA, lane, Mat3::Zero());
     setLane(block.inverseInertiaB, lane, Mat3::Zero());
@@ -424,6 +430,7 @@ void resetImpulses(std::vector<ManifoldBlock<N>>& blocks) {
     for (ManifoldBlock<N>& block : blocks) {
         for (ManifoldPointPack<N>& p : block.point) p.normalImpulse = Pack<N>::splat(0);
         block.tangentImpulse1 = block.tangentImpulse2 = block.twistImpulse = Pack<N>::splat(0);
+        block.rollingImpulse = PackVec3<N>{Pack<N>::splat(0), Pack<N>::splat(0), Pack<N>::splat(0)};
     }
 }
 

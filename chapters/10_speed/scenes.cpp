@@ -82,6 +82,9 @@ World buildMixedPile(int count, bool roundShapes) {
                                       -halfWidth + spacing * (Real(0.5) + static_cast<Real>(cell / side)));
         def.transform.rotation = random.rotation();
         def.density = 500;
+        // Round bodies roll, or spin in place on one point, for ever on rigid surfaces, and one
+        // moving body keeps its whole island awake: they get a little rolling resistance.
+        if (isRound(def.shape)) def.material.rollingResistance = kPileRollingResistance;
         addBody(world, def);
     }
     return world;

@@ -14,7 +14,9 @@ World buildPyramidRow(int count, int rows);
 /// `count` bodies (boxes, spheres, irregular hulls and capsules in turn; without `roundShapes` only
 /// boxes and hulls) dropped in a grid into a walled pit, from 1 m above its floor; sizes 0.3 to
 /// 0.6 m, seeded. The walls stand higher than the highest body starts.
+/// The spheres and capsules have a rolling resistance of kPileRollingResistance.
 World buildMixedPile(int count, bool roundShapes = true);
+constexpr Real kPileRollingResistance = Real(0.05);
 
 void addChapter10Scenes(Registry& registry);
 

@@ -82,6 +82,11 @@ struct ManifoldBlock {
     Pack<N> tangentInverse11, tangentInverse12, tangentInverse22;  // the 2x2 tangent block's K^-1, kg
     Pack<N> twistMass;                          // 1 / (n . IA^-1 n + n . IB^-1 n), kg m^2
     Pack<N> tangentImpulse1, tangentImpulse2, twistImpulse;      // accumulated, N s and N m s
+    // Rolling resistance (Material::rollingResistance): the bodies' relative turn, all three axes,
+    // held back by an angular impulse of at most rollingLength times the manifold's load.
+    Pack<N> rollingLength;                      // max over the two bodies of resistance x round radius, m
+    PackSym3<N> rollingMass;                    // (IA^-1 + IB^-1)^-1, kg m^2; 0 where rollingLength is
+    PackVec3<N> rollingImpulse;                 // accumulated this frame, N m s
     /// The inverse of the four normal rows' effective-mass matrix K (upper triangle: 00 01 02 03 11
     /// 12 13 22 23 33), K slightly regularised: a face's four corners make K singular (three
     /// independent directions, four rows), and (K + eps diag K)^-1 picks the least change of load.

@@ -19,6 +19,10 @@ const char* toString(BodyType type);
 struct Material {
     Real friction = Real(0.6);
     Real restitution = 0;
+    /// Resists one body turning on another, rolling or spinning (Box2D v3's rolling resistance,
+    /// usually 0 to 1): a round body's turn is held back by at most this times its radius times
+    /// the normal impulse. Chapter 10's solve reads it; earlier chapters' solves do not.
+    Real rollingResistance = 0;
 };
 
 struct Body {

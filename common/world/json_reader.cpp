@@ -168,7 +168,7 @@ Json parseStrictJson(const std::string& text, const std::string& source) {
 
 BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors) {
     cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
-                         "density", "friction", "restitution", "bullet", "integrator", "path"},
+                         "density", "friction", "restitution", "rolling_resistance", "bullet", "integrator", "path"},
                         &errors);
     BodyDef def;
     def.name = "body" + std::to_string(index);
@@ -221,6 +221,9 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
     });
     errors.attempt([&] {
         if (auto v = cursor.optional("restitution")) def.material.restitution = v->inRange(0, 1);
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("rolling_resistance")) def.material.rollingResistance = v->inRange(0, 1);
     });
     errors.attempt([&] {
         if (auto v = cursor.optional("bullet")) def.bullet = v->boolean();

@@ -65,6 +65,7 @@ std::string saveSceneToString(const World& world) {
         }
         out["friction"] = tidyNumber(body.material.friction);
         out["restitution"] = tidyNumber(body.material.restitution);
+        if (body.material.rollingResistance > 0) out["rolling_resistance"] = tidyNumber(body.material.rollingResistance);
         if (body.bullet) out["bullet"] = true;
         for (const KinematicPath& path : world.kinematicPaths)
             if (path.body == int(i))
