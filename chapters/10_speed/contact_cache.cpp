@@ -39,6 +39,53 @@ bool manifoldStillValid(const Contact& contact, const Transform& transformA, con
 }
 // [ch10-cache-rule]
 
+// [ch10-cache-slide]
+bool faceContactSlides(const Contact& contact, const Body& bodyA, const Body& bodyB, const ContactCacheRule& rule) {
+    if (!contact.builtPoseKnown || contact.referenceSide == 0 || contact.pointCount <= 0) return false;
+    if (bodyA.shape.type != ShapeType::Box || bodyB.shape.type != ShapeType::Box) return false;
+    const Quat inverseA = bodyA.transform.rotation.conjugate();
+    const Vec3 moved = inverseA * (bodyB.transform.position - bodyA.transform.position) - contact.builtRelativePosition;
+    if (std::abs(moved.dot(contact.builtLocalNormal)) > rule.maxTranslation) return false;
+    const Quat relativeRotation = inverseA * bodyB.transform.rotation;
+    if (std::abs(relativeRotation.coeffs().dot(contact.builtRelativeRotation.coeffs())) < std::cos(Real(0.5) * rule.maxRotation))
+        return false;
+    // The reference face: the box face whose outward normal is the contact normal (A's face
+    // points along it, B's against it).
+    const bool referenceIsA = contact.referenceSide == 1;
+    const Body& reference = referenceIsA ? bodyA : bodyB;
+    const Body& incident = referenceIsA ? bodyB : bodyA;
+    const Vec3 normal = bodyA.transform.rotation * contact.builtLocalNormal;
+    const Vec3 outward = reference.transform.rotateInverse(referenceIsA ? normal : Vec3(-normal));
+    int axis = 0;
+    outward.cwiseAbs().maxCoeff(&axis);
+    if (std::abs(outward[axis]) < Real(0.999)) return false;  // not a face's normal
+    const Vec3& halfExtents = reference.shape.halfExtents;
+    for (int i = 0; i < contact.pointCount; ++i) {
+        const ContactPoint& point = contact.points[i];
+        const Vec3 corner = reference.transform.applyInverse(
+            incident.transform.apply(referenceIsA ? point.localAnchorB : point.localAnchorA));
+        for (int side = 0; side < 3; ++side)
+            if (side != axis && std::abs(corner[side]) > halfExtents[side] - rule.maxTranslation) return false;
+    }
+    return true;
+}
+
+void slideFaceContact(Contact& contact, const Body& bodyA, const Body& bodyB) {
+    followContact(bodyA, bodyB, contact);  // the incident corners where their body is, the depths
+    const bool referenceIsA = contact.referenceSide == 1;
+    for (int i = 0; i < contact.pointCount; ++i) {
+        ContactPoint& point = contact.points[i];
+        if (referenceIsA) {
+            point.pointA = point.pointB + point.depth * contact.normal;
+            point.localAnchorA = bodyA.transform.applyInverse(point.pointA);
+        } else {
+            point.pointB = point.pointA - point.depth * contact.normal;
+            point.localAnchorB = bodyB.transform.applyInverse(point.pointB);
+        }
+    }
+}
+// [ch10-cache-slide]
+
 // [ch10-pair-gap]
 bool stillApart(const PairGap& gap, const Transform& transformA, const Transform& transformB, Real keepDistance) {
     const Quat inverseA = transformA.rotation.conjugate();
@@ -133,15 +180,23 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
         } else {
             const Transform& transformA = world.bodies[static_cast<std::size_t>(pair.bodyA)].transform;
             const Transform& transformB = world.bodies[static_cast<std::size_t>(pair.bodyB)].transform;
-            if (!manifoldStillValid(*old, transformA, transformB, rule)) {
+            const Body& bodyA = world.bodies[static_cast<std::size_t>(pair.bodyA)];
+            const Body& bodyB = world.bodies[static_cast<std::size_t>(pair.bodyB)];
+            const bool still = manifoldStillValid(*old, transformA, transformB, rule);
+            const bool slides = !still && faceContactSlides(*old, bodyA, bodyB, rule);
+            if (!still && !slides) {
                 scratch.misses.push_back(pair);
                 scratch.missedRecords.push_back(*old);
                 continue;
             }
             Contact& carried = previous[next];
             carried.normal = (transformA.rotation * carried.builtLocalNormal).normalized();
-            refreshFromAnchors(carried, world.bodies[static_cast<std::size_t>(pair.bodyA)],
-                               world.bodies[static_cast<std::size_t>(pair.bodyB)]);
+            if (slides) {
+                slideFaceContact(carried, bodyA, bodyB);
+                ++stats.slid;
+            } else {
+                refreshFromAnchors(carried, bodyA, bodyB);
+            }
             for (int i = 0; i < carried.pointCount; ++i) carried.points[i].persisted = true;
             scratch.kept.push_back(static_cast<int>(next));
             ++stats.reused;

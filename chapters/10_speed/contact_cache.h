@@ -22,6 +22,7 @@ struct ContactCacheRule {
 
 struct ContactCacheStats {
     int reused = 0;     // manifolds carried on their anchors
+    int slid = 0;       // of those, face contacts of two boxes that slid (faceContactSlides)
     int rebuilt = 0;    // pairs sent to chapter 6's narrowphase
     int asleep = 0;     // pairs of sleeping or static bodies, kept as they were
     int apart = 0;      // pairs known apart (World::pairGaps), not queried
@@ -45,6 +46,17 @@ struct ContactCacheScratch {
 /// Whether B's pose in A's frame is within the rule of the pose the manifold was built at.
 bool manifoldStillValid(const Contact& contact, const Transform& transformA, const Transform& transformB,
                         const ContactCacheRule& rule);
+
+/// Whether a face contact of two boxes may be carried although its boxes slid apart along the
+/// face: turned no more than the rule allows, moved no more than its translation along the normal,
+/// and every point of the incident face still inside the reference face by that much. The clip
+/// that built the manifold then cuts nothing now either, and the same corners touch at the same
+/// depths: the incident corners ride on their body, the reference points slide to face them.
+bool faceContactSlides(const Contact& contact, const Body& bodyA, const Body& bodyB, const ContactCacheRule& rule);
+
+/// Carries a sliding face contact (faceContactSlides): each incident corner where its body took it,
+/// its reference point moved along the face to face it, the depth unchanged by the slide.
+void slideFaceContact(Contact& contact, const Body& bodyA, const Body& bodyB);
 
 /// Records where the manifold was built (the pose the rule compares against).
 void markBuiltPose(Contact& contact, const Transform& transformA, const Transform& transformB);
