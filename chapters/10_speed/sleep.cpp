@@ -150,10 +150,37 @@ int putIslandsToSleep(World& world, SleepScratch& scratch) {
 // [ch10-islands-sleep]
 
 // [ch10-wake]
+namespace {
+
+/// Whether `other`, linked to the sleeper `sleeper`, disturbs it: it touches it and moved this frame,
+/// or a joint or spring ties it to an awake body, or it is a kinematic body that moves.
+bool disturbs(const World& world, int sleeper, int other, bool isContact) {
+    if (!isSleeper(world, sleeper)) return false;
+    const bool movedThisFrame = isAwakeDynamic(world, other) && world.motionOf(other)->sleepTime == 0;
+    const bool tiedToAwake = !isContact && isAwakeDynamic(world, other);
+    return movedThisFrame || tiedToAwake || isMovingKinematic(world, other);
+}
+
+}  // namespace
+
 int wakeTouchedIslands(World& world, SleepScratch& scratch) {
-    const bool anySleeper = std::any_of(world.motions.begin(), world.motions.end(),
-                                        [&](const Motion& motion) { return isSleeper(world, motion.bodyIndex); });
+    // A user's push: a sleeper has no velocity, force or torque of its own (putIslandsToSleep and
+    // the frame-end stage keep them zero), so any it has now was given to it.
+    bool anySleeper = false, disturbed = false;
+    for (const Motion& motion : world.motions) {
+        if (!isSleeper(world, motion.bodyIndex)) continue;
+        anySleeper = true;
+        disturbed = disturbed || hasUserMotion(motion);
+    }
     if (!anySleeper) return 0;
+    // Something that moved touches a sleeper, or an awake body is tied to one: a joint or spring
+    // between an awake and a sleeping body would pull on a body the solve holds still. Most frames
+    // nothing does, and the islands need not be found at all.
+    if (!disturbed)
+        forEachIslandLink(world, [&](int a, int b, bool isContact) {
+            disturbed = disturbed || disturbs(world, a, b, isContact) || disturbs(world, b, a, isContact);
+        });
+    if (!disturbed) return 0;
     resetSleepScratch(world, scratch);
     // The sleeping islands: sleepers joined through each other only.
     forEachIslandLink(world, [&](int a, int b, bool) {
@@ -161,20 +188,11 @@ int wakeTouchedIslands(World& world, SleepScratch& scratch) {
     });
     std::vector<char>& wake = scratch.flagged;  // per root: the island wakes
     const auto disturb = [&](int sleeper) { wake[std::size_t(islandRoot(scratch.parent, sleeper))] = 1; };
-    // A user's push: a sleeper has no velocity, force or torque of its own (putIslandsToSleep and
-    // the frame-end stage keep them zero), so any it has now was given to it.
     for (const Motion& motion : world.motions)
         if (isSleeper(world, motion.bodyIndex) && hasUserMotion(motion)) disturb(motion.bodyIndex);
-    // Something that moved touches the island, or an awake body is tied to it: a joint or spring
-    // between an awake and a sleeping body would pull on a body the solve holds still.
     forEachIslandLink(world, [&](int a, int b, bool isContact) {
-        for (int side = 0; side < 2; ++side) {
-            const int sleeper = side == 0 ? a : b, other = side == 0 ? b : a;
-            if (!isSleeper(world, sleeper)) continue;
-            const bool movedThisFrame = isAwakeDynamic(world, other) && world.motionOf(other)->sleepTime == 0;
-            const bool tiedToAwake = !isContact && isAwakeDynamic(world, other);
-            if (movedThisFrame || tiedToAwake || isMovingKinematic(world, other)) disturb(sleeper);
-        }
+        if (disturbs(world, a, b, isContact)) disturb(a);
+        if (disturbs(world, b, a, isContact)) disturb(b);
     });
     int woken = 0;
     for (Motion& motion : world.motions) {
