@@ -71,8 +71,17 @@ bool faceContactSlides(const Contact& contact, const Body& bodyA, const Body& bo
 }
 
 void slideFaceContact(Contact& contact, const Body& bodyA, const Body& bodyB) {
-    followContact(bodyA, bodyB, contact);  // the incident corners where their body is, the depths
+    // Depths are read across the reference face, so along its own normal: a normal tilted from the
+    // face by an angle t reads a corner that slid s along it s sin(t) off (a box may turn 2 degrees
+    // relative to the other before the rule sends the pair to be built again).
     const bool referenceIsA = contact.referenceSide == 1;
+    const Body& reference = referenceIsA ? bodyA : bodyB;
+    Vec3 outward = reference.transform.rotateInverse(referenceIsA ? contact.normal : Vec3(-contact.normal));
+    int axis = 0;
+    outward.cwiseAbs().maxCoeff(&axis);
+    const Vec3 faceNormal = reference.transform.rotate(Vec3::Unit(axis) * (outward[axis] < 0 ? Real(-1) : Real(1)));
+    contact.normal = referenceIsA ? faceNormal : Vec3(-faceNormal);
+    followContact(bodyA, bodyB, contact);  // the incident corners where their body is, the depths
     for (int i = 0; i < contact.pointCount; ++i) {
         ContactPoint& point = contact.points[i];
         if (referenceIsA) {
