@@ -162,7 +162,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio);
         iterations = std::max(iterations, std::min(scene * kMostIterationFactor, static_cast<int>(std::ceil(wanted))));
     }
-    if (settings.planIterations && plan.stackDepth > 1 && !touches.bouncy) {
+    if (settings.planIterations && plan.stackDepth > 1) {
         // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 20 rows walk 1.5 mm at ten
         // substeps, 9.5 mm at four; 40 rows 2.6 cm at ten, 1.2 cm at 15, 0.6 cm at 20. Only while
         // they settle was tried and is worse: changing the count changes how deep a resting
@@ -173,8 +173,10 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
         const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
         const int stack = std::min(scene * kMostIterationFactor, std::max({kFewestStackSubsteps, lengths, wanted}));
-        // Unlike masses keep at least the scene's count (and the mass-ratio rule above).
-        iterations = plan.massRatio <= kLikeMassRatio ? stack : std::max(iterations, stack);
+        // Unlike masses, and a frame in which something arrives bouncing, keep at least the
+        // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
+        const bool keepScene = touches.bouncy || plan.massRatio > kLikeMassRatio;
+        iterations = keepScene ? std::max(iterations, stack) : stack;
     }
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);
