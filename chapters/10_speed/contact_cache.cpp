@@ -22,6 +22,29 @@ bool touching(const Contact& contact) {
     return false;
 }
 
+/// Whether B has turned, relative to A, no more than the rule allows since the manifold was built:
+/// the angle between two rotations q1 and q2 is 2 acos(|q1 . q2|).
+bool turnedWithin(const Contact& contact, const Quat& relativeRotation, const ContactCacheRule& rule) {
+    const Real cosHalfAngle = std::abs(relativeRotation.coeffs().dot(contact.builtRelativeRotation.coeffs()));
+    return cosHalfAngle >= std::cos(Real(0.5) * rule.maxRotation);
+}
+
+/// The face of a box that a direction (world frame) leaves: its axis in the box's frame, the side
+/// (+1 or -1), and how nearly the direction is the face's normal (1: exactly).
+struct BoxFace {
+    int axis = 0;
+    Real side = 1;
+    Real alignment = 0;
+};
+BoxFace faceLeftBy(const Body& box, const Vec3& direction) {
+    const Vec3 local = box.transform.rotateInverse(direction);
+    BoxFace face;
+    local.cwiseAbs().maxCoeff(&face.axis);
+    face.side = local[face.axis] < 0 ? Real(-1) : Real(1);
+    face.alignment = std::abs(local[face.axis]);
+    return face;
+}
+
 }  // namespace
 
 // [ch10-cache-rule]
@@ -32,10 +55,7 @@ bool manifoldStillValid(const Contact& contact, const Transform& transformA, con
     const Vec3 relativePosition = inverseA * (transformB.position - transformA.position);
     if ((relativePosition - contact.builtRelativePosition).squaredNorm() > rule.maxTranslation * rule.maxTranslation)
         return false;
-    // The angle between two rotations q1 and q2 is 2 acos(|q1 . q2|).
-    const Quat relativeRotation = inverseA * transformB.rotation;
-    const Real cosHalfAngle = std::abs(relativeRotation.coeffs().dot(contact.builtRelativeRotation.coeffs()));
-    return cosHalfAngle >= std::cos(Real(0.5) * rule.maxRotation);
+    return turnedWithin(contact, inverseA * transformB.rotation, rule);
 }
 // [ch10-cache-rule]
 
@@ -46,26 +66,22 @@ bool faceContactSlides(const Contact& contact, const Body& bodyA, const Body& bo
     const Quat inverseA = bodyA.transform.rotation.conjugate();
     const Vec3 moved = inverseA * (bodyB.transform.position - bodyA.transform.position) - contact.builtRelativePosition;
     if (std::abs(moved.dot(contact.builtLocalNormal)) > rule.maxTranslation) return false;
-    const Quat relativeRotation = inverseA * bodyB.transform.rotation;
-    if (std::abs(relativeRotation.coeffs().dot(contact.builtRelativeRotation.coeffs())) < std::cos(Real(0.5) * rule.maxRotation))
-        return false;
+    if (!turnedWithin(contact, inverseA * bodyB.transform.rotation, rule)) return false;
     // The reference face: the box face whose outward normal is the contact normal (A's face
     // points along it, B's against it).
     const bool referenceIsA = contact.referenceSide == 1;
     const Body& reference = referenceIsA ? bodyA : bodyB;
     const Body& incident = referenceIsA ? bodyB : bodyA;
     const Vec3 normal = bodyA.transform.rotation * contact.builtLocalNormal;
-    const Vec3 outward = reference.transform.rotateInverse(referenceIsA ? normal : Vec3(-normal));
-    int axis = 0;
-    outward.cwiseAbs().maxCoeff(&axis);
-    if (std::abs(outward[axis]) < Real(0.999)) return false;  // not a face's normal
+    const BoxFace face = faceLeftBy(reference, referenceIsA ? normal : Vec3(-normal));
+    if (face.alignment < Real(0.999)) return false;  // not a face's normal
     const Vec3& halfExtents = reference.shape.halfExtents;
     for (int i = 0; i < contact.pointCount; ++i) {
         const ContactPoint& point = contact.points[i];
         const Vec3 corner = reference.transform.applyInverse(
             incident.transform.apply(referenceIsA ? point.localAnchorB : point.localAnchorA));
         for (int side = 0; side < 3; ++side)
-            if (side != axis && std::abs(corner[side]) > halfExtents[side] - rule.maxTranslation) return false;
+            if (side != face.axis && std::abs(corner[side]) > halfExtents[side] - rule.maxTranslation) return false;
     }
     return true;
 }
@@ -76,10 +92,8 @@ void slideFaceContact(Contact& contact, const Body& bodyA, const Body& bodyB) {
     // relative to the other before the rule sends the pair to be built again).
     const bool referenceIsA = contact.referenceSide == 1;
     const Body& reference = referenceIsA ? bodyA : bodyB;
-    Vec3 outward = reference.transform.rotateInverse(referenceIsA ? contact.normal : Vec3(-contact.normal));
-    int axis = 0;
-    outward.cwiseAbs().maxCoeff(&axis);
-    const Vec3 faceNormal = reference.transform.rotate(Vec3::Unit(axis) * (outward[axis] < 0 ? Real(-1) : Real(1)));
+    const BoxFace face = faceLeftBy(reference, referenceIsA ? contact.normal : Vec3(-contact.normal));
+    const Vec3 faceNormal = reference.transform.rotate(face.side * Vec3::Unit(face.axis));
     contact.normal = referenceIsA ? faceNormal : Vec3(-faceNormal);
     followContact(bodyA, bodyB, contact);  // the incident corners where their body is, the depths
     for (int i = 0; i < contact.pointCount; ++i) {
