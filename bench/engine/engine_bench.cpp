@@ -57,31 +57,23 @@ std::string scoreText(const Outcome& outcome) {
 const Outcome* findDefault(const SceneResults& results, bool peer);
 
 /// The cheapest outcome of the engine (or of the peer) that meets every check; null when none.
+/// With `atSceneDt`, only the engine's configurations that keep the scene's own dt: the knobs the
+/// planner sets (substeps, iterations) and the ones a user sets without changing the frame rate
+/// (a game stepped at 60 Hz must deliver a state every 1/60 s; only its author can halve that).
 /// Timings of repeated runs scatter by a few per cent: a passing default is kept unless another
 /// configuration is at least kCheaperBy cheaper.
-const Outcome* cheapestPassing(const SceneResults& results, bool peer) {
-    constexpr double kCheaperBy = 0.1;
-    const Outcome* best = nullptr;
-    for (const Outcome& outcome : results.outcomes)
-        if (outcome.configuration->peer == peer && outcome.meets() && (!best || outcome.cost < best->cost)) best = &outcome;
-    const Outcome* defaults = findDefault(results, peer);
-    if (best && defaults && defaults->meets() && best->cost > (1 - kCheaperBy) * defaults->cost) return defaults;
-    return best;
-}
-
-/// The cheapest passing outcome of the engine stepped at the scene's own dt: the knobs the planner
-/// sets (substeps, iterations) and the ones a user sets without changing the frame rate. A game
-/// stepped at 60 Hz must deliver a state every 1/60 s; only the user can halve that.
-const Outcome* cheapestPassingAtSceneDt(const SceneResults& results) {
+const Outcome* cheapestPassing(const SceneResults& results, bool peer, bool atSceneDt = false) {
     constexpr double kCheaperBy = 0.1;
     const Real sceneDt = results.scene->world.settings.dt;
+    const auto keepsDt = [&](const Outcome& outcome) {
+        return withKnobs(results.scene->world, outcome.configuration->knobs).settings.dt == sceneDt;
+    };
     const Outcome* best = nullptr;
-    for (const Outcome& outcome : results.outcomes) {
-        if (outcome.configuration->peer || !outcome.meets()) continue;
-        if (withKnobs(results.scene->world, outcome.configuration->knobs).settings.dt != sceneDt) continue;
-        if (!best || outcome.cost < best->cost) best = &outcome;
-    }
-    const Outcome* defaults = findDefault(results, false);
+    for (const Outcome& outcome : results.outcomes)
+        if (outcome.configuration->peer == peer && outcome.meets() && (!atSceneDt || keepsDt(outcome)) &&
+            (!best || outcome.cost < best->cost))
+            best = &outcome;
+    const Outcome* defaults = findDefault(results, peer);
     if (best && defaults && defaults->meets() && best->cost > (1 - kCheaperBy) * defaults->cost) return defaults;
     return best;
 }
@@ -139,7 +131,7 @@ CsvTable summaryTable(const std::vector<SceneResults>& all, bool withPeer) {
                                         cheapest ? cheapest->configuration->name : "none",
                                         cheapest ? formatNumber(cheapest->cost, 3) : "",
                                         cheapest ? formatNumber(engine->cost / cheapest->cost, 3) : ""};
-        const Outcome* sameDt = cheapestPassingAtSceneDt(results);
+        const Outcome* sameDt = cheapestPassing(results, false, /*atSceneDt=*/true);
         row.insert(row.end(), {sameDt ? sameDt->configuration->name : "none",
                                sameDt ? formatNumber(engine->cost / sameDt->cost, 3) : ""});
         const Outcome* peer = withPeer ? findDefault(results, true) : nullptr;

@@ -95,8 +95,8 @@ TEST_CASE("the wide and the scalar path agree on a settled pyramid", "[ch10][sol
     stepFrames(scalar, scalarPipeline, 120);
     const Real apart = largestMove(wide, scalar);
     INFO("largest distance between the two paths' boxes: " << apart << " m");
-    // The two sweep the contacts in the same order (colour by colour) and differ in rounding only
-    // (the wide file's fused multiply-adds), which 2 s of a pyramid grow to 0.07 mm. While the
+    // The two sweep the contacts in the same order (colour by colour) and differ in rounding only,
+    // which 2 s of a pyramid grow to 0.07 mm. While the
     // scalar path swept in contact order, this bound was 5 mm.
     CHECK(apart < Real(5e-4));
 }
