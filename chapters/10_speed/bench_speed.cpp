@@ -38,6 +38,9 @@ std::vector<Configuration> configurations(bool withPeer) {
     SpeedOptions noBoxBox = all;
     noBoxBox.boxBoxQuery = false;
     list.push_back({"no box-box query", noBoxBox, false});
+    SpeedOptions noShock = all;
+    noShock.shockPropagation = false;
+    list.push_back({"no shock sweep", noShock, false});
     SpeedOptions reference = all;
     reference.fastSolve = false;
     list.push_back({"chapter 8's solve", reference, false});

@@ -22,6 +22,7 @@ struct SpeedOptions {
     bool sleeping = true;              // with Settings::sleeping; false: never (the bench's A/B)
     bool enlargedBounds = true;        // sweep only when a body leaves its grown box; false: every step
     bool boxBoxQuery = true;           // two boxes by separating axes (box_box.h); false: GJK and EPA
+    bool shockPropagation = true;      // the planner's shock sweep (shock_propagation.h); false: never
     std::shared_ptr<FastSolveStats> profile;  // when set, every fast solve adds its phase times here
 };
 

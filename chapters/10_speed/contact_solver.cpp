@@ -10,6 +10,7 @@
 #include "06_manifolds/stabilisation.h"
 #include "10_speed/colouring.h"
 #include "10_speed/contact_kernels.h"
+#include "10_speed/sleep.h"
 #include "10_speed/wide_solver.h"
 
 #include <algorithm>
@@ -224,6 +225,61 @@ void emptyLane(ManifoldBlock<N>& block, int lane) {
     }
 }
 
+/// Copies what fillLane put in a lane (not what prepareBlock derives from it), from a block of M
+/// lanes to one of N: a lane filled again from its contact record costs ten times as much.
+template <int M, int N>
+void copyLaneInputs(const ManifoldBlock<M>& from, int source, ManifoldBlock<N>& to, int lane) {
+    const auto copy3 = [&](const PackVec3<M>& a, PackVec3<N>& b) {
+        b.x[lane] = a.x[source];
+        b.y[lane] = a.y[source];
+        b.z[lane] = a.z[source];
+    };
+    const auto copySym = [&](const PackSym3<M>& a, PackSym3<N>& b) {
+        b.xx[lane] = a.xx[source];
+        b.yy[lane] = a.yy[source];
+        b.zz[lane] = a.zz[source];
+        b.xy[lane] = a.xy[source];
+        b.xz[lane] = a.xz[source];
+        b.yz[lane] = a.yz[source];
+    };
+    to.slotA[lane] = from.slotA[source];
+    to.slotB[lane] = from.slotB[source];
+    to.contactIndex[lane] = from.contactIndex[source];
+    to.pointCount[lane] = from.pointCount[source];
+    to.friction[lane] = from.friction[source];
+    to.restitution[lane] = from.restitution[source];
+    to.rollingLength[lane] = from.rollingLength[source];
+    to.inverseMassA[lane] = from.inverseMassA[source];
+    to.inverseMassB[lane] = from.inverseMassB[source];
+    to.biasRate[lane] = from.biasRate[source];
+    to.massScale[lane] = from.massScale[source];
+    to.impulseScale[lane] = from.impulseScale[source];
+    to.tangentImpulse1[lane] = from.tangentImpulse1[source];
+    to.tangentImpulse2[lane] = from.tangentImpulse2[source];
+    to.twistImpulse[lane] = from.twistImpulse[source];
+    copy3(from.rollingImpulse, to.rollingImpulse);
+    copy3(from.normal, to.normal);
+    copy3(from.tangent1, to.tangent1);
+    copy3(from.tangent2, to.tangent2);
+    copy3(from.centerArmA, to.centerArmA);
+    copy3(from.centerArmB, to.centerArmB);
+    copySym(from.inverseInertiaA, to.inverseInertiaA);
+    copySym(from.inverseInertiaB, to.inverseInertiaB);
+    for (int k = 0; k < 4; ++k) {
+        const ManifoldPointPack<M>& p = from.point[k];
+        ManifoldPointPack<N>& q = to.point[k];
+        copy3(p.armA, q.armA);
+        copy3(p.armB, q.armB);
+        q.adjustedSeparation[lane] = p.adjustedSeparation[source];
+        q.normalMass[lane] = p.normalMass[source] > 0 ? Real(1) : Real(0);  // present or not, as fillLane says
+        q.normalImpulse[lane] = p.normalImpulse[source];
+        q.maxNormalImpulse[lane] = p.maxNormalImpulse[source];
+        q.offset1[lane] = p.offset1[source];
+        q.offset2[lane] = p.offset2[source];
+        q.twistRadius[lane] = p.twistRadius[source];
+    }
+}
+
 // [ch10-store]
 /// Writes the impulses back to the contact points, where every chapter keeps them (chapter 6
 /// carries them from point to point, chapter 9 shows them): the centre's friction force F shared
@@ -367,6 +423,7 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
     const std::array<int, kMaxColours> counts = colourForBlocks(scratch);
     scratch.wideBlocks.clear();
     scratch.scalarBlocks.clear();
+    scratch.placeOf.resize(order.size());
     for (int colour = 0; colour < kMaxColours; ++colour) {
         if (counts[static_cast<std::size_t>(colour)] == 0) continue;
         int lane = kWideLanes;
@@ -376,12 +433,14 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
                 scratch.wideBlocks.emplace_back();
                 lane = 0;
             }
+            scratch.placeOf[i] = LanePlace{static_cast<int>(scratch.wideBlocks.size()) - 1, lane, true};
             fillLane(scratch.wideBlocks.back(), lane++, world, order[i], scratch.bodies, params);
         }
         for (; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
     }
     for (std::size_t i = 0; i < order.size(); ++i) {
         if (scratch.colours[i] >= 0) continue;
+        scratch.placeOf[i] = LanePlace{static_cast<int>(scratch.scalarBlocks.size()), 0, false};
         scratch.scalarBlocks.emplace_back();
         fillLane(scratch.scalarBlocks.back(), 0, world, order[i], scratch.bodies, params);
     }
@@ -397,8 +456,12 @@ void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const 
     const std::array<int, kMaxColours> counts = colourForBlocks(scratch);
     scratch.wideBlocks.clear();
     scratch.scalarBlocks.resize(order.size());
+    scratch.placeOf.resize(order.size());
     std::size_t next = 0;
-    const auto fill = [&](std::size_t i) { fillLane(scratch.scalarBlocks[next++], 0, world, order[i], scratch.bodies, params); };
+    const auto fill = [&](std::size_t i) {
+        scratch.placeOf[i] = LanePlace{static_cast<int>(next), 0, false};
+        fillLane(scratch.scalarBlocks[next++], 0, world, order[i], scratch.bodies, params);
+    };
     for (int colour = 0; colour < kMaxColours; ++colour) {
         if (counts[static_cast<std::size_t>(colour)] == 0) continue;
         for (std::size_t i = 0; i < order.size(); ++i)
@@ -407,6 +470,68 @@ void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const 
     for (std::size_t i = 0; i < order.size(); ++i)
         if (scratch.colours[i] < 0) fill(i);
 }
+
+// [ch10-shock-blocks]
+/// The shock sweep's blocks, in its order (orderShockSweep), N lanes at a time within a group: the
+/// contacts whose two bodies were slow when the frame began (isSlow, the sleep test), each with its
+/// lower body where it is now, at rest and immovable. Built after the substeps, from the frame's
+/// blocks and the impulses they accumulated: the sweep then solves each upper body against its
+/// lower one in full (a push may shrink as well as grow, and friction keeps its cone), and what it
+/// adds is not carried to the next frame. Each lower body gets a slot of its own past the moving
+/// ones, its pose's copy with no velocity, which the sweep reads and never changes (no inverse
+/// mass on its side); the caller removes them after the sweep.
+template <int N>
+void buildShockBlocks(const World& world, ContactSolverScratch& scratch, std::vector<ManifoldBlock<N>>& blocks) {
+    SolverBodies& bodies = scratch.bodies;
+    const std::vector<int>& depth = scratch.stackSearch.depth;  // this frame's (plannedIterations)
+    const std::size_t moving = bodies.states.size();
+    std::vector<int>& slotDepth = scratch.slotDepth;
+    slotDepth.assign(moving, 0);
+    for (std::size_t slot = 1; slot < moving; ++slot) {
+        const auto body = static_cast<std::size_t>(bodies.info[slot].bodyIndex);
+        slotDepth[slot] = body < depth.size() ? depth[body] : 0;
+    }
+    const ShockOrder& order = scratch.shockOrder;
+    orderShockSweep(scratch.slotA, scratch.slotB, slotDepth, scratch.shockOrder);
+    // The depths are read: from here a slot's entry is its still copy's slot (0: none yet), or -1
+    // when its body was not slow.
+    std::vector<int>& copyOf = slotDepth;
+    for (std::size_t slot = 1; slot < moving; ++slot) copyOf[slot] = isSlow(world, bodies.info[slot].bodyIndex) ? 0 : -1;
+    blocks.clear();
+    for (std::size_t group = 0; group + 1 < order.groupStart.size(); ++group) {
+        int lane = N;
+        for (int k = order.groupStart[group]; k < order.groupStart[group + 1]; ++k) {
+            const auto i = static_cast<std::size_t>(order.entries[static_cast<std::size_t>(k)]);
+            const bool lowerIsA = order.lowerIsA[static_cast<std::size_t>(k)] != 0;
+            const auto lower = static_cast<std::size_t>(lowerIsA ? scratch.slotA[i] : scratch.slotB[i]);
+            const auto upper = static_cast<std::size_t>(lowerIsA ? scratch.slotB[i] : scratch.slotA[i]);
+            if (copyOf[lower] < 0 || copyOf[upper] < 0) continue;
+            if (copyOf[lower] == 0) {
+                copyOf[lower] = static_cast<int>(bodies.states.size());
+                SolverBodyState still = bodies.states[lower];
+                for (int axis = 0; axis < 3; ++axis) still.linearVelocity[axis] = still.angularVelocity[axis] = 0;
+                bodies.states.push_back(still);
+            }
+            if (lane == N) {
+                blocks.emplace_back();
+                lane = 0;
+            }
+            ManifoldBlock<N>& block = blocks.back();
+            const LanePlace& place = scratch.placeOf[i];
+            if (place.wide)
+                copyLaneInputs(scratch.wideBlocks[static_cast<std::size_t>(place.block)], place.lane, block, lane);
+            else
+                copyLaneInputs(scratch.scalarBlocks[static_cast<std::size_t>(place.block)], 0, block, lane);
+            (lowerIsA ? block.slotA : block.slotB)[lane] = copyOf[lower];
+            (lowerIsA ? block.inverseMassA : block.inverseMassB)[lane] = 0;
+            setLane(lowerIsA ? block.inverseInertiaA : block.inverseInertiaB, lane, Mat3::Zero());
+            block.restitution[lane] = block.rollingLength[lane] = 0;
+            ++lane;
+        }
+        for (; lane < N && !blocks.empty(); ++lane) emptyLane(blocks.back(), lane);
+    }
+}
+// [ch10-shock-blocks]
 
 template <int N>
 void warmStartAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states) {
@@ -569,6 +694,10 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     // Every body moves in the substeps, touching or not (chapter 6's solve says why).
     const int lastSubsteps = world.step.iterationPlan.iterations;  // 0 before the first frame
     const int substeps = plannedIterations(world, dt, scratch.contactOrder, world.step.iterationPlan, scratch.stackSearch);
+    if (!scratch.shockAllowed && world.step.iterationPlan.shockPropagation) {
+        world.step.iterationPlan.shockPropagation = false;
+        --world.step.iterationPlan.shockFrames;
+    }
     const Real h = dt / static_cast<Real>(substeps);
     // Nothing touches and nothing sleeps: the bodies fly free (moveFreeBodies).
     if (stats.manifolds == 0 && stats.bodies == static_cast<int>(world.motions.size())) {
@@ -625,6 +754,22 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         solveAll(scratch.scalarBlocks, states, params, false);
         stats.ms(SolvePhase::Relax) += clock.lap();
     }
+    // [ch10-shock-sweep]
+    const std::size_t moving = scratch.bodies.states.size();
+    const bool shock = world.step.iterationPlan.shockPropagation;
+    if (shock && path == SolverPath::Wide) {
+        buildShockBlocks(world, scratch, scratch.shockWide);
+        prepareWide(scratch.shockWide, scratch.bodies.states.data());
+        solveWide(scratch.shockWide, scratch.bodies.states.data(), params, /*useBias=*/false);
+    } else if (shock) {
+        buildShockBlocks(world, scratch, scratch.shockScalar);
+        for (ManifoldBlock<1>& block : scratch.shockScalar) prepareBlock(block, scratch.bodies.states.data());
+        solveAll(scratch.shockScalar, scratch.bodies.states.data(), params, false);
+    }
+    scratch.bodies.states.resize(moving);  // the lower bodies' still copies go
+    states = scratch.bodies.states.data();
+    // [ch10-shock-sweep]
+    stats.ms(SolvePhase::Relax) += clock.lap();
     restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
     restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
 

@@ -5,6 +5,7 @@
 // solves kWideLanes contacts of a colour at once (colouring.h) and the overflow after them.
 
 #include "10_speed/iteration_plan.h"
+#include "10_speed/shock_propagation.h"
 #include "10_speed/solver_data.h"
 #include "world/world.h"
 
@@ -45,6 +46,14 @@ struct FastSolveStats {
 /// total's phase times += frame's; the counts become frame's.
 void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame);
 
+/// Where a contact's lane sits among a solve's blocks: wideBlocks[block] lane `lane`, or
+/// scalarBlocks[block] (lane 0). block -1: nowhere (an empty lane).
+struct LanePlace {
+    int block = -1;
+    int lane = 0;
+    bool wide = false;
+};
+
 /// The buffers a solve works in. Rebuilt from the World every frame and carrying nothing from one
 /// frame to the next (all state stays in the World); kept only so that a steady scene allocates
 /// nothing per step.
@@ -55,7 +64,15 @@ struct ContactSolverScratch {
     std::vector<int> contactOrder, slotA, slotB, colours;
     std::vector<std::uint64_t> colourBits;
     StackSearch stackSearch;  // the planner's (iteration_plan.h)
+    // Shock propagation (shock_propagation.h): each contact's place in the blocks above (per
+    // contact-order index), the sweep's order and blocks.
+    std::vector<LanePlace> placeOf;
+    std::vector<int> slotDepth;
+    ShockOrder shockOrder;
+    std::vector<ManifoldBlock<kWideLanes>> shockWide;
+    std::vector<ManifoldBlock<1>> shockScalar;
     FastSolveStats stats;
+    bool shockAllowed = true;  // false: no shock sweep whatever the planner says (the bench's A/B)
     bool timePhases = false;  // fill stats.phaseMs (the bench's profile); off, the solve reads no clock
 };
 

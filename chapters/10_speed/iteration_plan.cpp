@@ -162,14 +162,19 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio);
         iterations = std::max(iterations, std::min(scene * kMostIterationFactor, static_cast<int>(std::ceil(wanted))));
     }
+    plan.shockPropagation = false;
     if (settings.planIterations && plan.stackDepth > 1) {
         // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 20 rows walk 1.5 mm at ten
         // substeps, 9.5 mm at four; 40 rows 2.6 cm at ten, 1.2 cm at 15, 0.6 cm at 20. Only while
         // they settle was tried and is worse: changing the count changes how deep a resting
         // contact sits, and a stack switched between counts is pumped into swaying.
         const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
-        const int wanted = static_cast<int>(
-            std::ceil(Real(scene) * rows * rows * std::sqrt(kPlainStackDrift / kHeldStackDrift) - Real(1e-3)));
+        // A stack of like masses into which nothing arrives bouncing: the shock sweep ends the
+        // frame, and the walk law with it sets the count.
+        plan.shockPropagation = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
+        const Real plain = Real(scene) * rows * rows * std::sqrt(kPlainStackDrift / kHeldStackDrift);
+        const Real shocked = kShockStackSubsteps * std::pow(rows, kShockDepthExponent);
+        const int wanted = static_cast<int>(std::ceil((plan.shockPropagation ? shocked : plain) - Real(1e-3)));
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
         const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
         const int stack = std::min(scene * kMostIterationFactor, std::max({kFewestStackSubsteps, lengths, wanted}));
@@ -178,6 +183,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const bool keepScene = touches.bouncy || plan.massRatio > kLikeMassRatio;
         iterations = keepScene ? std::max(iterations, stack) : stack;
     }
+    plan.shockFrames += plan.shockPropagation ? 1 : 0;
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);
     plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, iterations) : iterations;
@@ -203,6 +209,7 @@ int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& c
             contacts.push_back(static_cast<int>(i));
     }
     const TouchSummary touches = summarizeTouches(world, contacts);
+    plan.shockPropagation = false;  // chapter 8's solve has no shock sweep
     plan.stackDepth = supportDepth(world, contacts, search, /*withJoints=*/true);
     plan.plainIterations = scene;
     plan.massRatio = touches.massRatio;

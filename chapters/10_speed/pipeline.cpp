@@ -59,6 +59,7 @@ Pipeline makeChapter10Pipeline(const World& world, const SpeedOptions& options) 
         // frames (a copied World steps the same), and spare the allocation per step.
         auto scratch = std::make_shared<ContactSolverScratch>();
         scratch->timePhases = options.profile != nullptr;
+        scratch->shockAllowed = options.shockPropagation;
         solve->run = [scratch, path = options.solverPath, profile = options.profile](World& stepWorld, Real dt) {
             solveFast(stepWorld, dt, path, *scratch);
             if (profile) addPhaseTimes(*profile, scratch->stats);

@@ -56,6 +56,8 @@ struct IterationPlan {
     int fewestIterations = 0; // over every frame so far
     Real largestRatio = 1;
     int deepestStack = 0;     // over every frame so far
+    bool shockPropagation = false;  // the last frame ended with a shock sweep (chapter 10)
+    int shockFrames = 0;            // frames that did, so far
 };
 
 struct StepState {

@@ -35,8 +35,7 @@ struct Standing {
     Real sag = 0;    // largest drop of a box, m
 };
 
-Standing runFiveSeconds(World& world) {
-    SpeedOptions options;
+Standing runFiveSeconds(World& world, const SpeedOptions& options = SpeedOptions{}) {
     Pipeline pipeline = makeChapter10Pipeline(world, options);
     const World start = world;
     Standing standing;
@@ -107,7 +106,8 @@ TEST_CASE("the planner counts a stack's depth from its support", "[ch10][solve]"
     stackPipeline.step(stack);
     CHECK(depthNow(stack) == 16);
     CHECK(stack.step.iterationPlan.stackDepth == 16);
-    CHECK(stack.step.iterationPlan.iterations == 4);  // 16 deep: 10 x 0.8^2 x 0.55 = 3.5
+    CHECK(stack.step.iterationPlan.shockPropagation);  // like masses, nothing bouncing
+    CHECK(stack.step.iterationPlan.iterations == 3);   // 16 deep: 3.34 x 0.8^0.7 = 2.85
 }
 
 TEST_CASE("solver_iterations auto counts a stack of like masses by its depth", "[ch10][solve]") {
@@ -119,12 +119,14 @@ TEST_CASE("solver_iterations auto counts a stack of like masses by its depth", "
     CHECK(four.step.iterationPlan.mostIterations == kFewestStackSubsteps);
     CHECK(standing.drift < Real(1e-4));
     CHECK(standing.sag < Real(0.005));
-    // Ten 20-row pyramids' worth of depth: six, and the pyramid walks under 5 mm (ten: 1.5 mm).
+    // A 20-row pyramid with the shock sweep: 3.34 substeps' worth, four, and it walks under
+    // 20 x kHeldWalkPerBody = 2.5 mm.
     World pyramid = sceneFile("pyramid-20.json");
     const Standing pyramidHeld = runFiveSeconds(pyramid);
     INFO("pyramid-20: drift " << pyramidHeld.drift << " m, sag " << pyramidHeld.sag << " m");
-    CHECK(pyramid.step.iterationPlan.mostIterations == 6);
-    CHECK(pyramidHeld.drift < kHeldStackDrift);
+    CHECK(pyramid.step.iterationPlan.mostIterations == 4);
+    CHECK(pyramid.step.iterationPlan.shockFrames > 0);  // until it sleeps
+    CHECK(pyramidHeld.drift < 20 * kHeldWalkPerBody);
 }
 
 TEST_CASE("solver_iterations auto takes fewer substeps where no load passes from body to body", "[ch10][solve]") {
@@ -246,11 +248,21 @@ TEST_CASE("solver_iterations auto: a 40-row pyramid stands, where the scene's te
     const Standing held = runFiveSeconds(automatic);
     INFO("auto: drift " << held.drift << " m, sag " << held.sag << " m");
     CHECK(held.drift < Real(0.01));
-    CHECK(held.drift < Real(0.0075));  // the planner holds about 5 mm
-    // 10 x (40 / 20)^2 x sqrt(1.5 mm / 5 mm) = 21.9
-    CHECK(automatic.step.iterationPlan.mostIterations == 22);
+    CHECK(held.drift < 40 * kHeldWalkPerBody);  // the planner holds 5 mm
+    // With the shock sweep, 3.34 x 2^0.7 = 5.4
+    CHECK(automatic.step.iterationPlan.mostIterations == 6);
     CHECK(automatic.step.iterationPlan.deepestStack == 40);
-    CHECK(describeIterationPlan(automatic).find("auto: up to 22, for a stack 40 bodies deep") == 0);
+    CHECK(describeIterationPlan(automatic).find("a shock sweep up the stack (like masses, 40 deep) ended") != std::string::npos);
+
+    // The same substeps without the sweep: the top rows walk over a centimetre.
+    World unshocked = sceneFile("pyramid-40.json");
+    SpeedOptions noShock;
+    noShock.shockPropagation = false;
+    const Standing walked = runFiveSeconds(unshocked, noShock);
+    INFO("no shock sweep: drift " << walked.drift << " m");
+    CHECK(unshocked.step.iterationPlan.mostIterations == 6);
+    CHECK(unshocked.step.iterationPlan.shockFrames == 0);
+    CHECK(walked.drift > Real(0.01));
 
     World ten = sceneFile("pyramid-40.json");
     ten.settings.planIterations = false;
