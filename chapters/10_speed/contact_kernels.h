@@ -626,17 +626,21 @@ inline bool collideBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Con
 // [ch10-collide]
 
 // [ch10-restitution]
-/// After the last substep (Box3D's order): a point that approached faster than the threshold and
-/// pushed this frame gets its normal speed set to -e times the approach speed, push only.
+/// After the last substep (Box3D's order): a point with restitution that approached faster than
+/// the threshold and pushed this frame gets its normal speed set to -e times the approach speed,
+/// push only. Without restitution a point is left as the relax sweep left it (Box2D v3 skips it
+/// too), so a scene without restitution has no pass to run.
 template <int N>
 inline void restitutionBlock(ManifoldBlock<N>& c, SolverBodyState* states, Real threshold) {
+    if (!anyNegative(-c.restitution)) return;  // no lane bounces
     BodyPack<N> a = gatherBodies<N>(states, c.slotA);
     BodyPack<N> b = gatherBodies<N>(states, c.slotB);
     const Pack<N> zero = Pack<N>::splat(0);
     const Pack<N> fastApproach = Pack<N>::splat(-threshold);
     for (ManifoldPointPack<N>& p : c.point) {
         // Lanes where the rule does not apply get a zero mass, so a zero impulse.
-        const Pack<N> applies = selectPositive(fastApproach - p.approachSpeed, p.maxNormalImpulse, zero);
+        const Pack<N> applies =
+            selectPositive(c.restitution, selectPositive(fastApproach - p.approachSpeed, p.maxNormalImpulse, zero), zero);
         const Pack<N> mass = selectPositive(applies, p.normalMass, zero);
         const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
         Pack<N> impulse = -(mass * (normalSpeed + c.restitution * p.approachSpeed));

@@ -674,6 +674,11 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     }
     prepareBodies(world, scratch.bodies);
     stats.bodies = static_cast<int>(scratch.bodies.states.size()) - 1;
+    if (stats.bodies == 0) {  // everything sleeps (or cannot move): nothing to solve or move
+        world.step.solver = SolverStats{};
+        world.step.velocitiesBeforeForces.clear();
+        return;
+    }
 
     // The contacts that involve a moving body, in contact order (canonical: sorted by pair).
     SolverStats solverStats;
@@ -770,8 +775,10 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     states = scratch.bodies.states.data();
     // [ch10-shock-sweep]
     stats.ms(SolvePhase::Relax) += clock.lap();
-    restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
-    restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
+    if (collisions) {  // some lane has restitution
+        restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
+        restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
+    }
 
     writeBodiesBack(world, scratch.bodies);
     for (const ManifoldBlock<kWideLanes>& block : scratch.wideBlocks) storeBlock(block, world);

@@ -166,13 +166,16 @@ bool disturbs(const World& world, int sleeper, int other, bool isContact) {
 int wakeTouchedIslands(World& world, SleepScratch& scratch) {
     // A user's push: a sleeper has no velocity, force or torque of its own (putIslandsToSleep and
     // the frame-end stage keep them zero), so any it has now was given to it.
-    bool anySleeper = false, disturbed = false;
+    bool anySleeper = false, anyMover = false, disturbed = false;
     for (const Motion& motion : world.motions) {
-        if (!isSleeper(world, motion.bodyIndex)) continue;
+        if (!isSleeper(world, motion.bodyIndex)) {
+            anyMover = true;  // an awake dynamic body, or a kinematic one
+            continue;
+        }
         anySleeper = true;
         disturbed = disturbed || hasUserMotion(motion);
     }
-    if (!anySleeper) return 0;
+    if (!anySleeper || (!anyMover && !disturbed)) return 0;  // all asleep and untouched: nothing to wake them
     // Something that moved touches a sleeper, or an awake body is tied to one: a joint or spring
     // between an awake and a sleeping body would pull on a body the solve holds still. Most frames
     // nothing does, and the islands need not be found at all.

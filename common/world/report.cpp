@@ -122,18 +122,17 @@ std::string describeIterationPlan(const World& world) {
     char ratio[32];
     std::snprintf(ratio, sizeof ratio, "%.4g", double(plan.largestRatio));
     if (!world.settings.planIterations) return most + ": the scene's solver_iterations";
-    // Chapter 10's shock sweep (a stack of like masses, nothing bouncing into it).
-    const std::string shock =
-        plan.shockFrames > 0 ? "; a shock sweep up the stack (like masses, " + std::to_string(plan.deepestStack) +
-                                   " deep) ended " + std::to_string(plan.shockFrames) + " frame(s)"
-                             : "";
+    // Chapter 10's shock sweep (a stack with nothing bouncing into it).
+    const std::string shock = plan.shockFrames > 0 ? "; a shock sweep up the stack (" + std::to_string(plan.deepestStack) +
+                                                         " deep) ended " + std::to_string(plan.shockFrames) + " frame(s)"
+                                                   : "";
     if (plan.mostIterations > std::max(1, plan.plainIterations)) {
         // What asked for more: touching masses over 100 to 1, a stack over 20 bodies deep, or both.
         const bool deep = plan.deepestStack > 20;
         const bool heavy = plan.largestRatio > 100 || !deep;
         std::string why = heavy ? "touching masses up to " + std::string(ratio) + " to 1" : "";
         if (deep) why += std::string(heavy ? " and " : "") + "a stack " + std::to_string(plan.deepestStack) + " bodies deep";
-        return "auto: up to " + most + ", for " + why + " (over 100 to 1, or over 20 deep, asks for more)" + shock;
+        return "auto: up to " + most + ", for " + why + " (over 100 to 1, or a deep stack, asks for more)" + shock;
     }
     // Substeps no longer than 1/60 s where nothing touches, 1/240 s where bodies rest on the world
     // alone, 1/600 s where they carry one another (chapter 10's iteration_plan.h).
