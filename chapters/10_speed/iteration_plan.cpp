@@ -169,20 +169,19 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // they settle was tried and is worse: changing the count changes how deep a resting
         // contact sits, and a stack switched between counts is pumped into swaying.
         const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
-        // A stack into which nothing arrives bouncing: the shock sweep ends the frame, and two
-        // laws measured with it set the count, the stack's walk by its depth and the touching
-        // masses' ratio (iteration_plan.h).
-        plan.shockPropagation = !touches.bouncy;
+        // A stack of like masses into which nothing arrives bouncing: the shock sweep ends the
+        // frame, and the walk law with it sets the count.
+        plan.shockPropagation = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
         const Real plain = Real(scene) * rows * rows * std::sqrt(kPlainStackDrift / kHeldStackDrift);
-        const Real shocked = std::max(kShockStackSubsteps * std::pow(rows, kShockDepthExponent),
-                                      Real(scene) * std::pow(plan.massRatio / kPlainMassRatio, kShockRatioExponent));
+        const Real shocked = kShockStackSubsteps * std::pow(rows, kShockDepthExponent);
         const int wanted = static_cast<int>(std::ceil((plan.shockPropagation ? shocked : plain) - Real(1e-3)));
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
         const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
         const int stack = std::min(scene * kMostIterationFactor, std::max({kFewestStackSubsteps, lengths, wanted}));
-        // A frame in which something arrives bouncing keeps at least the scene's count (and the
-        // mass-ratio rule above); a deep stack more, whatever bounces on it.
-        iterations = touches.bouncy ? std::max(iterations, stack) : stack;
+        // Unlike masses, and a frame in which something arrives bouncing, keep at least the
+        // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
+        const bool keepScene = touches.bouncy || plan.massRatio > kLikeMassRatio;
+        iterations = keepScene ? std::max(iterations, stack) : stack;
     }
     plan.shockFrames += plan.shockPropagation ? 1 : 0;
     plan.iterations = iterations;

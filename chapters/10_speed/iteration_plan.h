@@ -62,7 +62,10 @@ constexpr Real kHeldStackDrift = Real(0.005);  // m
 /// 1 m boxes sink 14 mm in all at one substep a frame, 3.6 mm at two (each contact within the
 /// slop either way), 0.8 mm at four. A stack takes at least this many.
 constexpr int kFewestStackSubsteps = 2;
-/// A stack into which nothing arrives bouncing ends each frame with the shock sweep
+/// Touching masses within this ratio count as like.
+constexpr Real kLikeMassRatio = 2;
+
+/// A stack of like masses into which nothing arrives bouncing ends each frame with the shock sweep
 /// (shock_propagation.h), and then needs far fewer substeps. Measured on pyramids of 1 m boxes
 /// with it, the walk goes as depth^2.4 / substeps^2 (docs/ch10_speed.md): 20 rows walk 10 mm at
 /// two substeps, 3.1 mm at three, 1.7 mm at four; 40 rows 9.3 mm at four, 4.2 mm at six; 100 rows
@@ -73,11 +76,9 @@ constexpr int kFewestStackSubsteps = 2;
 constexpr Real kHeldWalkPerBody = Real(0.000125);  // m
 constexpr Real kShockStackSubsteps = Real(3.34);
 constexpr Real kShockDepthExponent = Real(0.7);
-/// ...and where the touching masses differ: towers of four 1 m boxes, 1 kg under the rest, with the
-/// sweep stand (five seconds, drift under 1 cm, sag under 4 cm) from 3 substeps at 1:3 and 1:10,
-/// 5 at 1:30, 10 at 1:100, 12 at 1:300 and 20 at 1:1000 (without it: 6 at 1:30, 25 at 1:1000).
-/// The planner takes scene * (ratio / kPlainMassRatio)^kShockRatioExponent: 3, 5, 7, 10, 15, 23.
-constexpr Real kShockRatioExponent = Real(0.35);
+/// Stacks of unlike masses keep the scene's count and no sweep: with it, towers of four boxes stand
+/// at fewer substeps (docs/ch10_speed.md), but the 2,000-body mixed pile given those counts never
+/// settled.
 
 /// Working memory of supportDepth, kept from frame to frame so that the search allocates nothing
 /// once it has run: the contact graph in compressed rows, and the breadth-first search.
