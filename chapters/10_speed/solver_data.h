@@ -62,6 +62,10 @@ struct ManifoldPointPack {
 /// Up to N manifolds solved side by side, one per lane.
 template <int N>
 struct ManifoldBlock {
+    // Provided, and empty: value-initialisation (emplace_back()) of a block without it zeroes all
+    // of it first, 6.5 kB for eight lanes, and was a quarter of the shock sweep's build; a frame
+    // fills every lane it solves (fillLane, emptyLane), and prepareBlock derives the rest.
+    ManifoldBlock() {}
     int slotA[N] = {};               // SolverBodies slots (0: static, sleeping or an empty lane)
     int slotB[N] = {};
     int contactIndex[N] = {};        // into World::contacts; -1 for an empty lane
