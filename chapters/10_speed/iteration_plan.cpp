@@ -170,11 +170,15 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // contact sits, and a stack switched between counts is pumped into swaying.
         const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
         // A stack of like masses into which nothing arrives bouncing: the shock sweep ends the
-        // frame, and the walk law with it sets the count.
-        plan.shockPropagation = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
-        const Real plain = Real(scene) * rows * rows * std::sqrt(kPlainStackDrift / kHeldStackDrift);
-        const Real shocked = kShockStackSubsteps * std::pow(rows, kShockDepthExponent);
-        const int wanted = static_cast<int>(std::ceil((plan.shockPropagation ? shocked : plain) - Real(1e-3)));
+        // frame where the walk law with it asks for fewer substeps than the law without it (the
+        // sweep costs about a substep; a stack under 14 deep gains nothing from it).
+        const auto count = [](Real substeps) {
+            return std::max(kFewestStackSubsteps, static_cast<int>(std::ceil(substeps - Real(1e-3))));
+        };
+        const int plain = count(Real(scene) * rows * rows * std::sqrt(kPlainStackDrift / kHeldStackDrift));
+        const int shocked = count(kShockStackSubsteps * std::pow(rows, kShockDepthExponent));
+        plan.shockPropagation = plan.massRatio <= kLikeMassRatio && !touches.bouncy && shocked < plain;
+        const int wanted = plan.shockPropagation ? shocked : plain;
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
         const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
         const int stack = std::min(scene * kMostIterationFactor, std::max({kFewestStackSubsteps, lengths, wanted}));
