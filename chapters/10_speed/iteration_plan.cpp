@@ -170,8 +170,8 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // contact sits, and a stack switched between counts is pumped into swaying.
         const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
         // A stack of like masses into which nothing arrives bouncing: the shock sweep ends the
-        // frame where the walk law with it asks for fewer substeps than the law without it (the
-        // sweep costs about a substep; a stack under 14 deep gains nothing from it).
+        // frame where the walk law with it asks for fewer substeps than the law without it (from
+        // 16 deep; below, the sweep would only add its own cost).
         const auto count = [](Real substeps) {
             return std::max(kFewestStackSubsteps, static_cast<int>(std::ceil(substeps - Real(1e-3))));
         };
