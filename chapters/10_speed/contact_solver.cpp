@@ -698,11 +698,8 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     stats.manifolds = static_cast<int>(scratch.contactOrder.size());
     // Every body moves in the substeps, touching or not (chapter 6's solve says why).
     const int lastSubsteps = world.step.iterationPlan.iterations;  // 0 before the first frame
-    const int substeps = plannedIterations(world, dt, scratch.contactOrder, world.step.iterationPlan, scratch.stackSearch);
-    if (!scratch.shockAllowed && world.step.iterationPlan.shockPropagation) {
-        world.step.iterationPlan.shockPropagation = false;
-        --world.step.iterationPlan.shockFrames;
-    }
+    const int substeps = plannedIterations(world, dt, scratch.contactOrder, world.step.iterationPlan, scratch.stackSearch,
+                                           scratch.shockAllowed);
     const Real h = dt / static_cast<Real>(substeps);
     // Nothing touches and nothing sleeps: the bodies fly free (moveFreeBodies).
     if (stats.manifolds == 0 && stats.bodies == static_cast<int>(world.motions.size())) {

@@ -141,7 +141,7 @@ int substepsFor(Real dt, Real longest) {
 
 // [ch10-iteration-plan]
 int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
-                      StackSearch& search) {
+                      StackSearch& search, bool shockAllowed) {
     const Settings& settings = world.settings;
     // Bodies that carry one another take the scene's count (auto: ten) in every solve: a load
     // crosses a contact layer a sweep, and a substep is a sweep however long it is.
@@ -177,8 +177,9 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         };
         const int plain = count(Real(scene) * rows * rows * std::sqrt(kPlainStackDrift / kHeldStackDrift));
         const int shocked = count(kShockStackSubsteps * std::pow(rows, kShockDepthExponent));
-        plan.shockPropagation = plan.massRatio <= kLikeMassRatio && !touches.bouncy && shocked < plain;
-        const int wanted = plan.shockPropagation ? shocked : plain;
+        const bool sweepSaves = plan.massRatio <= kLikeMassRatio && !touches.bouncy && shocked < plain;
+        plan.shockPropagation = sweepSaves && shockAllowed;
+        const int wanted = sweepSaves ? shocked : plain;
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
         const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
         const int stack = std::min(scene * kMostIterationFactor, std::max({kFewestStackSubsteps, lengths, wanted}));

@@ -76,9 +76,9 @@ constexpr Real kLikeMassRatio = 2;
 constexpr Real kHeldWalkPerBody = Real(0.000125);  // m
 constexpr Real kShockStackSubsteps = Real(3.34);
 constexpr Real kShockDepthExponent = Real(0.7);
-/// Stacks of unlike masses keep the scene's count and no sweep: with it, towers of four boxes stand
-/// at fewer substeps (docs/ch10_speed.md), but the 2,000-body mixed pile given those counts never
-/// settled.
+// Stacks of unlike masses keep the scene's count and no sweep: with it, towers of four boxes stand
+// at fewer substeps (docs/ch10_speed.md), but the 2,000-body mixed pile given those counts never
+// settled.
 
 /// Working memory of supportDepth, kept from frame to frame so that the search allocates nothing
 /// once it has run: the contact graph in compressed rows, and the breadth-first search.
@@ -95,8 +95,9 @@ int supportDepth(const World& world, const std::vector<int>& contactOrder, Stack
 
 /// The substep count for a solve of `dt` over this frame's contacts (indices into
 /// World::contacts), and what the planner saw, into `plan` (World::step.iterationPlan).
+/// `shockAllowed` false (the speed bench's A/B): the same count, without the sweep.
 int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
-                      StackSearch& search);
+                      StackSearch& search, bool shockAllowed = true);
 
 /// The substep count for chapter 8's solve, which chapter 10 keeps for scenes with joints: where
 /// every dynamic body hangs or rests on the world alone, through a joint or a contact, and nothing

@@ -122,7 +122,7 @@ std::string describeIterationPlan(const World& world) {
     char ratio[32];
     std::snprintf(ratio, sizeof ratio, "%.4g", double(plan.largestRatio));
     if (!world.settings.planIterations) return most + ": the scene's solver_iterations";
-    // Chapter 10's shock sweep (a stack with nothing bouncing into it).
+    // Chapter 10's shock sweep (a stack of like masses with nothing bouncing into it).
     const std::string shock = plan.shockFrames > 0 ? "; a shock sweep up the stack (" + std::to_string(plan.deepestStack) +
                                                          " deep) ended " + std::to_string(plan.shockFrames) + " frame(s)"
                                                    : "";
