@@ -472,16 +472,45 @@ void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const 
 }
 
 // [ch10-shock-blocks]
-/// The shock sweep's blocks, in its order (orderShockSweep), N lanes at a time within a group: the
-/// contacts whose two bodies were slow when the frame began (isSlow, the sleep test), each with its
-/// lower body where it is now, at rest and immovable. Built after the substeps, from the frame's
-/// blocks and the impulses they accumulated: the sweep then solves each upper body against its
-/// lower one in full (a push may shrink as well as grow, and friction keeps its cone), and what it
-/// adds is not carried to the next frame. Each lower body gets a slot of its own past the moving
-/// ones, its pose's copy with no velocity, which the sweep reads and never changes (no inverse
-/// mass on its side); the caller removes them after the sweep.
+
+/// One lane of a shock block: the frame's lane for contact i, its lower body swapped for the still
+/// copy in slot lowerCopy (no inverse mass, no restitution: the sweep only relaxes).
 template <int N>
-void buildShockBlocks(const World& world, ContactSolverScratch& scratch, std::vector<ManifoldBlock<N>>& blocks) {
+void fillShockLane(const ContactSolverScratch& scratch, const ShockLane& entry, int lowerCopy, ManifoldBlock<N>& block,
+                   int lane) {
+    const LanePlace& place = scratch.placeOf[entry.contact];
+    if (place.wide)
+        copyLaneInputs(scratch.wideBlocks[static_cast<std::size_t>(place.block)], place.lane, block, lane);
+    else
+        copyLaneInputs(scratch.scalarBlocks[static_cast<std::size_t>(place.block)], 0, block, lane);
+    (entry.lowerIsA ? block.slotA : block.slotB)[lane] = lowerCopy;
+    (entry.lowerIsA ? block.inverseMassA : block.inverseMassB)[lane] = 0;
+    setLane(entry.lowerIsA ? block.inverseInertiaA : block.inverseInertiaB, lane, Mat3::Zero());
+    block.restitution[lane] = block.rollingLength[lane] = 0;
+}
+
+/// Appends a block to the sweep's order: a new run where the kind changes.
+void addShockBlock(ContactSolverScratch& scratch, bool wide) {
+    std::vector<ShockRun>& runs = scratch.shockRuns;
+    if (runs.empty() || runs.back().wide != wide)
+        runs.push_back({wide, wide ? scratch.shockWide.size() : scratch.shockScalar.size(), 0});
+    ++runs.back().count;
+    if (wide)
+        scratch.shockWide.emplace_back();
+    else
+        scratch.shockScalar.emplace_back();
+}
+
+/// The shock sweep's blocks, in its order (orderShockSweep), a group at a time: the contacts whose
+/// two bodies were slow when the frame began (isSlow, the sleep test), each with its lower body
+/// where it is now, at rest and immovable. Built after the substeps, from the frame's blocks and
+/// the impulses they accumulated: the sweep then solves each upper body against its lower one in
+/// full (a push may shrink as well as grow, and friction keeps its cone), and what it adds is not
+/// carried to the next frame. Each lower body gets a slot of its own past the moving ones, its
+/// pose's copy with no velocity, which the sweep reads and never changes (no inverse mass on its
+/// side); the caller removes them after the sweep. `wide`: a group's lanes fill wide blocks, but
+/// for a few left over (kShockWideLanesAtLeast); else every lane is a one-lane block.
+void buildShockBlocks(const World& world, ContactSolverScratch& scratch, bool wide) {
     SolverBodies& bodies = scratch.bodies;
     const std::vector<int>& depth = scratch.stackSearch.depth;  // this frame's (plannedIterations)
     const std::size_t moving = bodies.states.size();
@@ -497,9 +526,13 @@ void buildShockBlocks(const World& world, ContactSolverScratch& scratch, std::ve
     // when its body was not slow.
     std::vector<int>& copyOf = slotDepth;
     for (std::size_t slot = 1; slot < moving; ++slot) copyOf[slot] = isSlow(world, bodies.info[slot].bodyIndex) ? 0 : -1;
-    blocks.clear();
+    scratch.shockWide.clear();
+    scratch.shockScalar.clear();
+    scratch.shockRuns.clear();
+    std::vector<ShockLane>& lanes = scratch.shockLanes;
+    constexpr auto N = static_cast<std::size_t>(kWideLanes);
     for (std::size_t group = 0; group + 1 < order.groupStart.size(); ++group) {
-        int lane = N;
+        lanes.clear();
         for (int k = order.groupStart[group]; k < order.groupStart[group + 1]; ++k) {
             const auto i = static_cast<std::size_t>(order.entries[static_cast<std::size_t>(k)]);
             const bool lowerIsA = order.lowerIsA[static_cast<std::size_t>(k)] != 0;
@@ -512,23 +545,23 @@ void buildShockBlocks(const World& world, ContactSolverScratch& scratch, std::ve
                 for (int axis = 0; axis < 3; ++axis) still.linearVelocity[axis] = still.angularVelocity[axis] = 0;
                 bodies.states.push_back(still);
             }
-            if (lane == N) {
-                blocks.emplace_back();
-                lane = 0;
-            }
-            ManifoldBlock<N>& block = blocks.back();
-            const LanePlace& place = scratch.placeOf[i];
-            if (place.wide)
-                copyLaneInputs(scratch.wideBlocks[static_cast<std::size_t>(place.block)], place.lane, block, lane);
-            else
-                copyLaneInputs(scratch.scalarBlocks[static_cast<std::size_t>(place.block)], 0, block, lane);
-            (lowerIsA ? block.slotA : block.slotB)[lane] = copyOf[lower];
-            (lowerIsA ? block.inverseMassA : block.inverseMassB)[lane] = 0;
-            setLane(lowerIsA ? block.inverseInertiaA : block.inverseInertiaB, lane, Mat3::Zero());
-            block.restitution[lane] = block.rollingLength[lane] = 0;
-            ++lane;
+            lanes.push_back({i, lowerIsA});
         }
-        for (; lane < N && !blocks.empty(); ++lane) emptyLane(blocks.back(), lane);
+        const std::size_t leftOver = lanes.size() % N;
+        const std::size_t inWide = !wide ? 0 : lanes.size() - (leftOver < static_cast<std::size_t>(kShockWideLanesAtLeast) ? leftOver : 0);
+        for (std::size_t j = 0; j < lanes.size(); ++j) {
+            const auto lower = static_cast<std::size_t>(lanes[j].lowerIsA ? scratch.slotA[lanes[j].contact]
+                                                                          : scratch.slotB[lanes[j].contact]);
+            if (j < inWide) {
+                if (j % N == 0) addShockBlock(scratch, true);
+                fillShockLane(scratch, lanes[j], copyOf[lower], scratch.shockWide.back(), static_cast<int>(j % N));
+            } else {
+                addShockBlock(scratch, false);
+                fillShockLane(scratch, lanes[j], copyOf[lower], scratch.shockScalar.back(), 0);
+            }
+        }
+        for (std::size_t lane = inWide % N; inWide % N != 0 && lane < N; ++lane)
+            emptyLane(scratch.shockWide.back(), static_cast<int>(lane));
     }
 }
 // [ch10-shock-blocks]
@@ -759,14 +792,19 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     // [ch10-shock-sweep]
     const std::size_t moving = scratch.bodies.states.size();
     const bool shock = world.step.iterationPlan.shockPropagation;
-    if (shock && path == SolverPath::Wide) {
-        buildShockBlocks(world, scratch, scratch.shockWide);
-        prepareWide(scratch.shockWide, scratch.bodies.states.data());
-        solveWide(scratch.shockWide, scratch.bodies.states.data(), params, /*useBias=*/false);
-    } else if (shock) {
-        buildShockBlocks(world, scratch, scratch.shockScalar);
-        for (ManifoldBlock<1>& block : scratch.shockScalar) prepareBlock(block, scratch.bodies.states.data());
-        solveAll(scratch.shockScalar, scratch.bodies.states.data(), params, false);
+    if (shock) {
+        buildShockBlocks(world, scratch, path == SolverPath::Wide);
+        states = scratch.bodies.states.data();  // the still copies may have moved the array
+        prepareWide(scratch.shockWide, states);
+        for (ManifoldBlock<1>& block : scratch.shockScalar) prepareBlock(block, states);
+        for (const ShockRun& run : scratch.shockRuns) {
+            if (run.wide) {
+                solveWideRange(scratch.shockWide, run.first, run.count, states, params, /*useBias=*/false);
+            } else {
+                for (std::size_t b = run.first; b < run.first + run.count; ++b)
+                    solveBlock(scratch.shockScalar[b], states, params, false);
+            }
+        }
     }
     scratch.bodies.states.resize(moving);  // the lower bodies' still copies go
     states = scratch.bodies.states.data();

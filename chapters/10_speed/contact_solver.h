@@ -54,6 +54,21 @@ struct LanePlace {
     bool wide = false;
 };
 
+/// A stretch of the shock sweep solved by one kind of block: shockWide[first, first + count) or
+/// shockScalar[first, first + count). A group of a few contacts goes into one-lane blocks (a stack
+/// of single boxes would otherwise solve eight lanes, seven of them empty, per layer).
+struct ShockRun {
+    bool wide = false;
+    std::size_t first = 0;
+    std::size_t count = 0;
+};
+
+/// One contact of a shock group: its contact-order index, and which of its bodies is held.
+struct ShockLane {
+    std::size_t contact = 0;
+    bool lowerIsA = false;
+};
+
 /// The buffers a solve works in. Rebuilt from the World every frame and carrying nothing from one
 /// frame to the next (all state stays in the World); kept only so that a steady scene allocates
 /// nothing per step.
@@ -71,6 +86,8 @@ struct ContactSolverScratch {
     ShockOrder shockOrder;
     std::vector<ManifoldBlock<kWideLanes>> shockWide;
     std::vector<ManifoldBlock<1>> shockScalar;
+    std::vector<ShockRun> shockRuns;      // the sweep's order over the two
+    std::vector<ShockLane> shockLanes;    // one group's, while it is built
     FastSolveStats stats;
     bool shockAllowed = true;  // false: no shock sweep whatever the planner says (the bench's A/B)
     bool timePhases = false;  // fill stats.phaseMs (the bench's profile); off, the solve reads no clock

@@ -3,6 +3,8 @@
 #include "10_speed/iteration_plan.h"
 
 #include "04_pgs/contact_constraints.h"
+#include "10_speed/lanes.h"
+#include "10_speed/shock_propagation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +136,52 @@ TouchSummary summarizeTouches(const World& world, const std::vector<int>& contac
 
 }  // namespace
 
+Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder, StackSearch& search) {
+    const std::vector<int>& depth = search.depth;
+    const auto isDynamic = [&](int body) { return world.bodies[static_cast<std::size_t>(body)].type == BodyType::Dynamic; };
+    // A contact the sweep takes: two dynamic bodies a layer apart (orderShockSweep); its layer is
+    // the lower one's depth, and its upper body's contacts downwards split the layer into groups.
+    const auto swept = [&](const Contact& contact) {
+        return isDynamic(contact.bodyA) && isDynamic(contact.bodyB) &&
+               depth[static_cast<std::size_t>(contact.bodyA)] != depth[static_cast<std::size_t>(contact.bodyB)];
+    };
+    const auto upperOf = [&](const Contact& contact) {
+        const bool aHigher = depth[static_cast<std::size_t>(contact.bodyA)] > depth[static_cast<std::size_t>(contact.bodyB)];
+        return static_cast<std::size_t>(aHigher ? contact.bodyA : contact.bodyB);
+    };
+    search.downward.assign(world.bodies.size(), 0);
+    int deepest = 0;
+    for (const int index : contactOrder) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        if (!swept(contact)) continue;
+        ++search.downward[upperOf(contact)];
+        deepest = std::max(deepest, depth[upperOf(contact)]);
+    }
+    search.layerLanes.assign(static_cast<std::size_t>(deepest) + 1, 0);
+    search.layerGroups.assign(static_cast<std::size_t>(deepest) + 1, 0);
+    for (const int index : contactOrder) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        if (!swept(contact)) continue;
+        const std::size_t upper = upperOf(contact);
+        const auto layer = static_cast<std::size_t>(depth[upper] - 1);
+        ++search.layerLanes[layer];
+        search.layerGroups[layer] = std::max(search.layerGroups[layer], search.downward[upper]);
+    }
+    // A group's lanes fill wide blocks; a few left over (buildShockBlocks) are one-lane blocks.
+    const auto groupBlocks = [](int lanes) {
+        const int leftOver = lanes % kWideLanes;
+        const Real last = leftOver >= kShockWideLanesAtLeast ? Real(1) : kShockLaneBlocks * static_cast<Real>(leftOver);
+        return static_cast<Real>(lanes / kWideLanes) + last;
+    };
+    Real shockBlocks = 0;
+    for (std::size_t layer = 0; layer < search.layerLanes.size(); ++layer) {
+        const int groups = search.layerGroups[layer];
+        if (groups > 0) shockBlocks += static_cast<Real>(groups) * groupBlocks((search.layerLanes[layer] + groups - 1) / groups);
+    }
+    const Real frameBlocks = std::max(Real(1), std::ceil(static_cast<Real>(contactOrder.size()) / static_cast<Real>(kWideLanes)));
+    return kShockBlockSubsteps * shockBlocks / frameBlocks;
+}
+
 int substepsFor(Real dt, Real longest) {
     // A hair under the quotient: 1/60 over 1/600 is 10.000001 in float, and means ten.
     return std::max(1, static_cast<int>(std::ceil(dt / longest - Real(1e-3))));
@@ -151,6 +199,9 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     plan.stackDepth = supportDepth(world, contactOrder, search);
     plan.plainIterations = scene;
     int iterations = scene;
+    // The laws below hold a substep's length (kMeasuredFrame), and so does their ceiling.
+    const Real perMeasuredFrame = dt / kMeasuredFrame;
+    const int most = static_cast<int>(std::ceil(Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame) - Real(1e-3)));
     if (settings.planIterations && contactOrder.empty())
         iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
     else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy)
@@ -159,8 +210,8 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // Measured on towers of four boxes, masses in geometric steps (docs/ch10_speed.md):
         // 1:300 stands from 15 substeps, 1:1000 from 25. The square root of the ratio over the
         // plain one gives 18 and 32.
-        const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio);
-        iterations = std::max(iterations, std::min(scene * kMostIterationFactor, static_cast<int>(std::ceil(wanted))));
+        const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio) * perMeasuredFrame;
+        iterations = std::max(iterations, std::min(most, static_cast<int>(std::ceil(wanted - Real(1e-3)))));
     }
     plan.shockPropagation = false;
     if (settings.planIterations && plan.stackDepth > 1) {
@@ -170,19 +221,25 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // contact sits, and a stack switched between counts is pumped into swaying.
         const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
         // A stack of like masses into which nothing arrives bouncing: the shock sweep ends the
-        // frame where the walk law with it asks for fewer substeps than the law without it (from
-        // 16 deep; below, the sweep would only add its own cost).
+        // frame where the walk law with it, plus the sweep's own cost, asks for fewer substeps
+        // than the law without it (a pyramid from 16 rows; never a column of single boxes).
         const auto count = [](Real substeps) {
             return std::max(kFewestStackSubsteps, static_cast<int>(std::ceil(substeps - Real(1e-3))));
         };
-        const int plain = count(Real(scene) * rows * rows * std::sqrt(kPlainStackDrift / kHeldStackDrift));
-        const int shocked = count(kShockStackSubsteps * std::pow(rows, kShockDepthExponent));
-        const bool sweepSaves = plan.massRatio <= kLikeMassRatio && !touches.bouncy && shocked < plain;
+        const Real plainLaw = Real(scene) * rows * rows * perMeasuredFrame;  // walks kPlainStackDrift
+        const int plain = count(plainLaw * std::sqrt(kPlainStackDrift / kHeldStackDrift));
+        const int shocked = count(kShockStackSubsteps * std::pow(rows, kShockDepthExponent) * perMeasuredFrame);
+        // The sweep pays where, for the walk its law allows, it and its substeps cost less than
+        // the substeps without it.
+        const Real heldWalk = kHeldWalkPerBody * static_cast<Real>(plan.stackDepth);
+        const Real plainForHeldWalk = plainLaw * std::sqrt(kPlainStackDrift / heldWalk);
+        const bool sweepSaves = plan.massRatio <= kLikeMassRatio && !touches.bouncy &&
+                                Real(shocked) + shockSweepSubsteps(world, contactOrder, search) < plainForHeldWalk;
         plan.shockPropagation = sweepSaves && shockAllowed;
         const int wanted = sweepSaves ? shocked : plain;
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
         const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
-        const int stack = std::min(scene * kMostIterationFactor, std::max({kFewestStackSubsteps, lengths, wanted}));
+        const int stack = std::min(most, std::max({kFewestStackSubsteps, lengths, wanted}));
         // Unlike masses, and a frame in which something arrives bouncing, keep at least the
         // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
         const bool keepScene = touches.bouncy || plan.massRatio > kLikeMassRatio;

@@ -44,6 +44,12 @@ constexpr Real kRestingSpeed = Real(1e-3);  // m/s
 /// Substeps that keep each no longer than `longest` (at least one).
 int substepsFor(Real dt, Real longest);
 
+/// The frame the stack and mass-ratio laws below were measured at (60 Hz). What sets how far a
+/// stack walks and sinks is the substep's length, not the frame's: at another dt the planner takes
+/// the measured count times dt / kMeasuredFrame (the same substep), so a 20-row pyramid stepped at
+/// 30 Hz stands as it does at 60 Hz (at the 60 Hz count it walked 1 cm, and the 1:1000 tower fell).
+constexpr Real kMeasuredFrame = Real(1) / Real(60);
+
 /// Touching mass ratios up to this solve at the scene's count: a 100 kg box on 1 kg boxes
 /// stands at ten substeps.
 constexpr Real kPlainMassRatio = 100;
@@ -76,6 +82,16 @@ constexpr Real kLikeMassRatio = 2;
 constexpr Real kHeldWalkPerBody = Real(0.000125);  // m
 constexpr Real kShockStackSubsteps = Real(3.34);
 constexpr Real kShockDepthExponent = Real(0.7);
+/// The sweep is not free: each of its blocks is copied from the frame's lanes, prepared and solved
+/// once, about kShockBlockSubsteps substeps' work on one of the frame's blocks, and a one-lane
+/// block (a group of one contact) kShockLaneBlocks of a wide one. Measured: on the 20-row pyramid,
+/// where the sweep has about as many blocks as the frame, a sweep cost 2.6 substeps; on the 16-box
+/// column, fifteen layers of one contact against the frame's two blocks, ten. The planner takes
+/// the sweep where its substeps and this cost come to fewer than the substeps that, without it,
+/// hold the walk the sweep's law allows (kHeldWalkPerBody a body of depth): from 16 rows on a
+/// pyramid, never on a column of single boxes.
+constexpr Real kShockBlockSubsteps = Real(2.1);
+constexpr Real kShockLaneBlocks = Real(0.65);
 // Stacks of unlike masses keep the scene's count and no sweep: with it, towers of four boxes stand
 // at fewer substeps (docs/ch10_speed.md), but the 2,000-body mixed pile given those counts never
 // settled.
@@ -84,6 +100,7 @@ constexpr Real kShockDepthExponent = Real(0.7);
 /// once it has run: the contact graph in compressed rows, and the breadth-first search.
 struct StackSearch {
     std::vector<int> start, fill, neighbours, depth, queue;
+    std::vector<int> downward, layerLanes, layerGroups;  // the shock sweep's cost (shockSweepSubsteps)
 };
 
 /// How many dynamic bodies the deepest stack has between its top and what holds it up (a static
@@ -92,6 +109,11 @@ struct StackSearch {
 /// With `withJoints`, a joint ties its two bodies as a contact does (chapter 8's solve).
 int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search,
                  bool withJoints = false);
+
+/// What a shock sweep over these contacts would cost, in substeps (kShockBlockSubsteps): its blocks
+/// counted as shock_propagation.h groups them (a layer's contacts, in as many groups as an upper
+/// body there has contacts downwards), over the frame's. Reads the depths supportDepth left.
+Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder, StackSearch& search);
 
 /// The substep count for a solve of `dt` over this frame's contacts (indices into
 /// World::contacts), and what the planner saw, into `plan` (World::step.iterationPlan).

@@ -17,6 +17,11 @@ void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* 
     for (ManifoldBlock<kWideLanes>& block : blocks) solveBlock(block, states, params, useBias);
 }
 
+void solveWideRange(std::vector<ManifoldBlock<kWideLanes>>& blocks, std::size_t first, std::size_t count,
+                    SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
+    for (std::size_t b = first; b < first + count && b < blocks.size(); ++b) solveBlock(blocks[b], states, params, useBias);
+}
+
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold) {
     for (ManifoldBlock<kWideLanes>& block : blocks) restitutionBlock(block, states, threshold);
 }

@@ -9,6 +9,7 @@
 
 #include "10_speed/solver_data.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace stepwise {
@@ -18,6 +19,9 @@ void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBod
 void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states);
 void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
                bool useBias);
+/// solveWide over blocks[first, first + count) alone (the shock sweep's runs).
+void solveWideRange(std::vector<ManifoldBlock<kWideLanes>>& blocks, std::size_t first, std::size_t count,
+                    SolverBodyState* states, const ContactSolveParams& params, bool useBias);
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold);
 /// One sweep of collideBlock over the blocks; whether any point was struck.
 bool collideWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params);

@@ -107,8 +107,66 @@ TEST_CASE("the planner counts a stack's depth from its support", "[ch10][solve]"
     stackPipeline.step(stack);
     CHECK(depthNow(stack) == 16);
     CHECK(stack.step.iterationPlan.stackDepth == 16);
-    CHECK(stack.step.iterationPlan.shockPropagation);  // like masses, nothing bouncing
-    CHECK(stack.step.iterationPlan.iterations == 3);   // 16 deep: 3.34 x 0.8^0.7 = 2.85
+    // Like masses and nothing bouncing, but a column: its sweep would be fifteen one-lane blocks
+    // against the frame's two, about ten substeps, for the one it saves (3.34 x 0.8^0.7 = 2.85
+    // with it, 10 x 0.8^2 x sqrt(0.3) = 3.5 without).
+    CHECK(!stack.step.iterationPlan.shockPropagation);
+    CHECK(stack.step.iterationPlan.iterations == 4);
+}
+
+TEST_CASE("the planner prices the shock sweep in substeps by the blocks it would build", "[ch10][solve]") {
+    const auto sweepCost = [](World world) {
+        Pipeline pipeline = makeChapter10Pipeline(world, SpeedOptions{});
+        pipeline.step(world);
+        std::vector<int> order(world.contacts.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+        StackSearch search;
+        supportDepth(world, order, search);
+        return shockSweepSubsteps(world, order, search);
+    };
+    // The column: 15 layers of one contact (the ground's is not swept), one-lane blocks, against
+    // ceil(16 / 8) = 2 blocks in the frame.
+    const Real column = 15 * kShockLaneBlocks * kShockBlockSubsteps / 2;
+    CHECK(sweepCost(sceneFile("stack-16.json")) == Approx(column));
+    // The 20-row pyramid: each layer in two groups (a box rests on two), about as many blocks as
+    // the frame has, so a few substeps.
+    const Real pyramid = sweepCost(sceneFile("pyramid-20.json"));
+    CHECK(pyramid > Real(2));
+    CHECK(pyramid < Real(4));
+    World pyramidWorld = sceneFile("pyramid-20.json");
+    Pipeline pipeline = makeChapter10Pipeline(pyramidWorld, SpeedOptions{});
+    pipeline.step(pyramidWorld);
+    CHECK(pyramidWorld.step.iterationPlan.shockPropagation);
+    CHECK(pyramidWorld.step.iterationPlan.iterations == 4);
+}
+
+TEST_CASE("solver_iterations auto holds a stack's substep length at another frame rate", "[ch10][solve]") {
+    // The laws were measured at 60 Hz: at 30 Hz a 20-row pyramid takes 3.34 x 2 = 6.7, seven,
+    // and walks about as it does at 60 Hz (2.7 mm, 1.8 mm there, where four rounds 3.34 up
+    // further; at four substeps it walked 1 cm); at 120 Hz, 10 x 0.55 / 2, three without the sweep.
+    World thirty = sceneFile("pyramid-20.json");
+    thirty.settings.dt = Real(1) / Real(30);
+    Pipeline pipeline = makeChapter10Pipeline(thirty, SpeedOptions{});
+    const World start = thirty;
+    Real drift = 0;
+    for (int frame = 0; frame < 150; ++frame) {  // five seconds
+        pipeline.step(thirty);
+        for (std::size_t i = 1; i < thirty.bodies.size(); ++i) {
+            const Vec3 move = thirty.bodies[i].transform.position - start.bodies[i].transform.position;
+            drift = std::max(drift, std::hypot(move.x(), move.z()));
+        }
+    }
+    INFO("drift at 30 Hz: " << drift << " m");
+    CHECK(thirty.step.iterationPlan.mostIterations == 7);
+    CHECK(thirty.step.iterationPlan.shockFrames > 0);
+    CHECK(drift < kHeldStackDrift);
+
+    World oneTwenty = sceneFile("pyramid-20.json");
+    oneTwenty.settings.dt = Real(1) / Real(120);
+    Pipeline fast = makeChapter10Pipeline(oneTwenty, SpeedOptions{});
+    fast.step(oneTwenty);
+    CHECK(oneTwenty.step.iterationPlan.iterations == 3);
+    CHECK(!oneTwenty.step.iterationPlan.shockPropagation);
 }
 
 TEST_CASE("solver_iterations auto counts a stack of like masses by its depth", "[ch10][solve]") {
