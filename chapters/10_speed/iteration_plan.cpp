@@ -222,19 +222,21 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
         // A stack of like masses into which nothing arrives bouncing: the shock sweep ends the
         // frame where the walk law with it, plus the sweep's own cost, asks for fewer substeps
-        // than the law without it (a pyramid from 16 rows; never a column of single boxes).
+        // than the law without it (a pyramid from about 20 rows; never a column of single boxes).
         const auto count = [](Real substeps) {
             return std::max(kFewestStackSubsteps, static_cast<int>(std::ceil(substeps - Real(1e-3))));
         };
         const Real plainLaw = Real(scene) * rows * rows * perMeasuredFrame;  // walks kPlainStackDrift
         const int plain = count(plainLaw * std::sqrt(kPlainStackDrift / kHeldStackDrift));
         const int shocked = count(kShockStackSubsteps * std::pow(rows, kShockDepthExponent) * perMeasuredFrame);
+        // [ch10-shock-price]
         // The sweep pays where, for the walk its law allows, it and its substeps cost less than
         // the substeps without it.
         const Real heldWalk = kHeldWalkPerBody * static_cast<Real>(plan.stackDepth);
         const Real plainForHeldWalk = plainLaw * std::sqrt(kPlainStackDrift / heldWalk);
         const bool sweepSaves = plan.massRatio <= kLikeMassRatio && !touches.bouncy &&
                                 Real(shocked) + shockSweepSubsteps(world, contactOrder, search) < plainForHeldWalk;
+        // [ch10-shock-price]
         plan.shockPropagation = sweepSaves && shockAllowed;
         const int wanted = sweepSaves ? shocked : plain;
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.

@@ -88,7 +88,7 @@ constexpr Real kShockDepthExponent = Real(0.7);
 /// where the sweep has about as many blocks as the frame, a sweep cost 2.6 substeps; on the 16-box
 /// column, fifteen layers of one contact against the frame's two blocks, ten. The planner takes
 /// the sweep where its substeps and this cost come to fewer than the substeps that, without it,
-/// hold the walk the sweep's law allows (kHeldWalkPerBody a body of depth): from 16 rows on a
+/// hold the walk the sweep's law allows (kHeldWalkPerBody a body of depth): from about 20 rows on a
 /// pyramid, never on a column of single boxes.
 constexpr Real kShockBlockSubsteps = Real(2.1);
 constexpr Real kShockLaneBlocks = Real(0.65);

@@ -3,6 +3,7 @@
 // count carries the same forces over.
 #include "10_speed/chapter.h"
 #include "10_speed/iteration_plan.h"
+#include "10_speed/lanes.h"
 #include "world/report.h"
 #include "world/scene.h"
 
@@ -125,8 +126,8 @@ TEST_CASE("the planner prices the shock sweep in substeps by the blocks it would
         return shockSweepSubsteps(world, order, search);
     };
     // The column: 15 layers of one contact (the ground's is not swept), one-lane blocks, against
-    // ceil(16 / 8) = 2 blocks in the frame.
-    const Real column = 15 * kShockLaneBlocks * kShockBlockSubsteps / 2;
+    // 16 / kWideLanes blocks in the frame (two of eight floats, four of four doubles).
+    const Real column = 15 * kShockLaneBlocks * kShockBlockSubsteps / Real(16 / kWideLanes);
     CHECK(sweepCost(sceneFile("stack-16.json")) == Approx(column));
     // The 20-row pyramid: each layer in two groups (a box rests on two), about as many blocks as
     // the frame has, so a few substeps.
