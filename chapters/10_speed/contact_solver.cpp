@@ -548,7 +548,8 @@ void buildShockBlocks(const World& world, ContactSolverScratch& scratch, bool wi
             lanes.push_back({i, lowerIsA});
         }
         const std::size_t leftOver = lanes.size() % N;
-        const std::size_t inWide = !wide ? 0 : lanes.size() - (leftOver < static_cast<std::size_t>(kShockWideLanesAtLeast) ? leftOver : 0);
+        const bool fewLeft = leftOver < static_cast<std::size_t>(kShockWideLanesAtLeast);
+        const std::size_t inWide = !wide ? 0 : lanes.size() - (fewLeft ? leftOver : 0);
         for (std::size_t j = 0; j < lanes.size(); ++j) {
             const auto lower = static_cast<std::size_t>(lanes[j].lowerIsA ? scratch.slotA[lanes[j].contact]
                                                                           : scratch.slotB[lanes[j].contact]);

@@ -146,8 +146,8 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
                depth[static_cast<std::size_t>(contact.bodyA)] != depth[static_cast<std::size_t>(contact.bodyB)];
     };
     const auto upperOf = [&](const Contact& contact) {
-        const bool aHigher = depth[static_cast<std::size_t>(contact.bodyA)] > depth[static_cast<std::size_t>(contact.bodyB)];
-        return static_cast<std::size_t>(aHigher ? contact.bodyA : contact.bodyB);
+        const auto a = static_cast<std::size_t>(contact.bodyA), b = static_cast<std::size_t>(contact.bodyB);
+        return depth[a] > depth[b] ? a : b;
     };
     search.downward.assign(world.bodies.size(), 0);
     int deepest = 0;
@@ -176,9 +176,12 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
     Real shockBlocks = 0;
     for (std::size_t layer = 0; layer < search.layerLanes.size(); ++layer) {
         const int groups = search.layerGroups[layer];
-        if (groups > 0) shockBlocks += static_cast<Real>(groups) * groupBlocks((search.layerLanes[layer] + groups - 1) / groups);
+        if (groups == 0) continue;
+        const int lanesPerGroup = (search.layerLanes[layer] + groups - 1) / groups;
+        shockBlocks += static_cast<Real>(groups) * groupBlocks(lanesPerGroup);
     }
-    const Real frameBlocks = std::max(Real(1), std::ceil(static_cast<Real>(contactOrder.size()) / static_cast<Real>(kWideLanes)));
+    const Real frameLanes = static_cast<Real>(contactOrder.size());
+    const Real frameBlocks = std::max(Real(1), std::ceil(frameLanes / static_cast<Real>(kWideLanes)));
     return kShockBlockSubsteps * shockBlocks / frameBlocks;
 }
 
@@ -201,7 +204,8 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     int iterations = scene;
     // The laws below hold a substep's length (kMeasuredFrame), and so does their ceiling.
     const Real perMeasuredFrame = dt / kMeasuredFrame;
-    const int most = static_cast<int>(std::ceil(Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame) - Real(1e-3)));
+    const Real mostAtThisDt = Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame);
+    const int most = static_cast<int>(std::ceil(mostAtThisDt - Real(1e-3)));
     if (settings.planIterations && contactOrder.empty())
         iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
     else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy)
@@ -234,7 +238,8 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // the substeps without it.
         const Real heldWalk = kHeldWalkPerBody * static_cast<Real>(plan.stackDepth);
         const Real plainForHeldWalk = plainLaw * std::sqrt(kPlainStackDrift / heldWalk);
-        const bool sweepSaves = plan.massRatio <= kLikeMassRatio && !touches.bouncy &&
+        const bool likeAndQuiet = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
+        const bool sweepSaves = likeAndQuiet && Real(shocked) < plainForHeldWalk &&
                                 Real(shocked) + shockSweepSubsteps(world, contactOrder, search) < plainForHeldWalk;
         // [ch10-shock-price]
         plan.shockPropagation = sweepSaves && shockAllowed;
