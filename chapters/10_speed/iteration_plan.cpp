@@ -239,8 +239,15 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const Real heldWalk = kHeldWalkPerBody * static_cast<Real>(plan.stackDepth);
         const Real plainForHeldWalk = plainLaw * std::sqrt(kPlainStackDrift / heldWalk);
         const bool likeAndQuiet = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
-        const bool sweepSaves = likeAndQuiet && Real(shocked) < plainForHeldWalk &&
-                                Real(shocked) + shockSweepSubsteps(world, contactOrder, search) < plainForHeldWalk;
+        // The sweep costs at most every contact a one-lane block: where even that pays, the
+        // blocks are not counted (a 40-row pyramid, six substeps against 22).
+        const Real mostSweep = kShockBlockSubsteps * kShockLaneBlocks * static_cast<Real>(kWideLanes);
+        const auto sweepCost = [&] {
+            return Real(shocked) + mostSweep < plainForHeldWalk ? mostSweep
+                                                                : shockSweepSubsteps(world, contactOrder, search);
+        };
+        const bool sweepSaves =
+            likeAndQuiet && Real(shocked) < plainForHeldWalk && Real(shocked) + sweepCost() < plainForHeldWalk;
         // [ch10-shock-price]
         plan.shockPropagation = sweepSaves && shockAllowed;
         const int wanted = sweepSaves ? shocked : plain;
