@@ -472,7 +472,6 @@ void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const 
 }
 
 // [ch10-shock-blocks]
-
 /// One lane of a shock block: the frame's lane for contact i, its lower body swapped for the still
 /// copy in slot lowerCopy (no inverse mass, no restitution: the sweep only relaxes).
 template <int N>
