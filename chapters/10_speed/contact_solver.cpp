@@ -472,17 +472,16 @@ void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const 
 }
 
 // [ch10-shock-blocks]
-/// One lane of a shock block: the frame's lane for contact i, its lower body swapped for the still
-/// copy in slot lowerCopy (no inverse mass, no restitution: the sweep only relaxes).
+/// One lane of a shock block: the frame's lane for the entry's contact, its lower body swapped for
+/// the still copy (no inverse mass, no restitution: the sweep only relaxes).
 template <int N>
-void fillShockLane(const ContactSolverScratch& scratch, const ShockLane& entry, int lowerCopy, ManifoldBlock<N>& block,
-                   int lane) {
+void fillShockLane(const ContactSolverScratch& scratch, const ShockLane& entry, ManifoldBlock<N>& block, int lane) {
     const LanePlace& place = scratch.placeOf[entry.contact];
     if (place.wide)
         copyLaneInputs(scratch.wideBlocks[static_cast<std::size_t>(place.block)], place.lane, block, lane);
     else
         copyLaneInputs(scratch.scalarBlocks[static_cast<std::size_t>(place.block)], 0, block, lane);
-    (entry.lowerIsA ? block.slotA : block.slotB)[lane] = lowerCopy;
+    (entry.lowerIsA ? block.slotA : block.slotB)[lane] = entry.lowerCopy;
     (entry.lowerIsA ? block.inverseMassA : block.inverseMassB)[lane] = 0;
     setLane(entry.lowerIsA ? block.inverseInertiaA : block.inverseInertiaB, lane, Mat3::Zero());
     block.restitution[lane] = block.rollingLength[lane] = 0;
@@ -544,20 +543,18 @@ void buildShockBlocks(const World& world, ContactSolverScratch& scratch, bool wi
                 for (int axis = 0; axis < 3; ++axis) still.linearVelocity[axis] = still.angularVelocity[axis] = 0;
                 bodies.states.push_back(still);
             }
-            lanes.push_back({i, lowerIsA});
+            lanes.push_back({i, lowerIsA, copyOf[lower]});
         }
         const std::size_t leftOver = lanes.size() % N;
         const bool fewLeft = leftOver < static_cast<std::size_t>(kShockWideLanesAtLeast);
         const std::size_t inWide = !wide ? 0 : lanes.size() - (fewLeft ? leftOver : 0);
         for (std::size_t j = 0; j < lanes.size(); ++j) {
-            const auto lower = static_cast<std::size_t>(lanes[j].lowerIsA ? scratch.slotA[lanes[j].contact]
-                                                                          : scratch.slotB[lanes[j].contact]);
             if (j < inWide) {
                 if (j % N == 0) addShockBlock(scratch, true);
-                fillShockLane(scratch, lanes[j], copyOf[lower], scratch.shockWide.back(), static_cast<int>(j % N));
+                fillShockLane(scratch, lanes[j], scratch.shockWide.back(), static_cast<int>(j % N));
             } else {
                 addShockBlock(scratch, false);
-                fillShockLane(scratch, lanes[j], copyOf[lower], scratch.shockScalar.back(), 0);
+                fillShockLane(scratch, lanes[j], scratch.shockScalar.back(), 0);
             }
         }
         for (std::size_t lane = inWide % N; inWide % N != 0 && lane < N; ++lane)

@@ -63,10 +63,12 @@ struct ShockRun {
     std::size_t count = 0;
 };
 
-/// One contact of a shock group: its contact-order index, and which of its bodies is held.
+/// One contact of a shock group: its contact-order index, which of its bodies is held, and the
+/// slot of that body's still copy.
 struct ShockLane {
     std::size_t contact = 0;
     bool lowerIsA = false;
+    int lowerCopy = 0;
 };
 
 /// The buffers a solve works in. Rebuilt from the World every frame and carrying nothing from one

@@ -5,6 +5,7 @@
 #include "04_pgs/contact_constraints.h"
 #include "10_speed/lanes.h"
 #include "10_speed/shock_propagation.h"
+#include "10_speed/sleep.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,7 @@ namespace stepwise {
 int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search, bool withJoints) {
     if (contactOrder.empty() && (!withJoints || world.joints.empty())) return 0;
     const std::size_t bodyCount = world.bodies.size();
-    const auto isDynamic = [&](int body) { return world.bodies[static_cast<std::size_t>(body)].type == BodyType::Dynamic; };
+    const auto isDynamic = [&](int body) { return isDynamicBody(world, body); };
     // The contact graph as adjacency lists in two flat arrays (compressed rows).
     std::vector<int>& start = search.start;
     start.assign(bodyCount + 1, 0);
@@ -138,7 +139,7 @@ TouchSummary summarizeTouches(const World& world, const std::vector<int>& contac
 
 Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder, StackSearch& search) {
     const std::vector<int>& depth = search.depth;
-    const auto isDynamic = [&](int body) { return world.bodies[static_cast<std::size_t>(body)].type == BodyType::Dynamic; };
+    const auto isDynamic = [&](int body) { return isDynamicBody(world, body); };
     // A contact the sweep takes: two dynamic bodies a layer apart (orderShockSweep); its layer is
     // the lower one's depth, and its upper body's contacts downwards split the layer into groups.
     const auto swept = [&](const Contact& contact) {

@@ -7,12 +7,13 @@
 #include <sstream>
 
 namespace stepwise {
-namespace {
 
 bool isDynamicBody(const World& world, int bodyIndex) {
     return bodyIndex >= 0 && std::size_t(bodyIndex) < world.bodies.size() &&
            world.bodies[std::size_t(bodyIndex)].type == BodyType::Dynamic;
 }
+
+namespace {
 
 bool isAwakeDynamic(const World& world, int bodyIndex) {
     return isDynamicBody(world, bodyIndex) && !world.motionOf(bodyIndex)->asleep;

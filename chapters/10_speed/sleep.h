@@ -34,6 +34,9 @@ struct SleepScratch {
 /// radius of its shape (the fastest a point of the body can turn around its origin).
 bool isSlow(const World& world, int bodyIndex);
 
+/// Whether bodyIndex names a dynamic body of the world (false for any other index).
+bool isDynamicBody(const World& world, int bodyIndex);
+
 /// Whether a body is a kinematic body that moves (not slow): it keeps what it touches awake.
 bool isMovingKinematic(const World& world, int bodyIndex);
 
