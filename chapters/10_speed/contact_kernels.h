@@ -130,24 +130,29 @@ inline void scatterEight(SolverBodyState* states, const int* slots, int first, c
         if (slots[first + i] != 0) _mm256_store_ps(reinterpret_cast<float*>(&states[slots[first + i]]), row[i]);
 }
 
-template <>
-inline void scatterBodies<8>(SolverBodyState* states, const int* slots, const BodyPack<8>& body) {
+/// Every field of lanes [first, first + 8) back to their states (the integration's scatter).
+template <int N>
+inline void scatterAllEight(SolverBodyState* states, const int* slots, int first, const BodyPack<N>& body) {
     const __m256 zero = _mm256_setzero_ps();
-    __m256 low[8] = {_mm256_load_ps(body.linearVelocity.x.data()),  _mm256_load_ps(body.linearVelocity.y.data()),
-                     _mm256_load_ps(body.linearVelocity.z.data()),  _mm256_load_ps(body.angularVelocity.x.data()),
-                     _mm256_load_ps(body.angularVelocity.y.data()), _mm256_load_ps(body.angularVelocity.z.data()),
-                     _mm256_load_ps(body.deltaPosition.x.data()),   _mm256_load_ps(body.deltaPosition.y.data())};
-    __m256 high[8] = {_mm256_load_ps(body.deltaPosition.z.data()), _mm256_load_ps(body.deltaRotation.x.data()),
-                      _mm256_load_ps(body.deltaRotation.y.data()), _mm256_load_ps(body.deltaRotation.z.data()),
-                      _mm256_load_ps(body.deltaRotation.w.data()), zero, zero, zero};
+    const auto lanes = [first](const Pack<N>& field) { return _mm256_load_ps(field.data() + first); };
+    __m256 low[8] = {lanes(body.linearVelocity.x),  lanes(body.linearVelocity.y),  lanes(body.linearVelocity.z),
+                     lanes(body.angularVelocity.x), lanes(body.angularVelocity.y), lanes(body.angularVelocity.z),
+                     lanes(body.deltaPosition.x),   lanes(body.deltaPosition.y)};
+    __m256 high[8] = {lanes(body.deltaPosition.z), lanes(body.deltaRotation.x), lanes(body.deltaRotation.y),
+                      lanes(body.deltaRotation.z), lanes(body.deltaRotation.w), zero, zero, zero};
     transpose8(low);
     transpose8(high);
     for (int i = 0; i < 8; ++i) {
-        if (slots[i] == 0) continue;
-        float* state = reinterpret_cast<float*>(&states[slots[i]]);  // the 16 floats of one cache line
+        if (slots[first + i] == 0) continue;
+        float* state = reinterpret_cast<float*>(&states[slots[first + i]]);  // the 16 floats of one cache line
         _mm256_store_ps(state, low[i]);
         _mm256_store_ps(state + 8, high[i]);
     }
+}
+
+template <>
+inline void scatterBodies<8>(SolverBodyState* states, const int* slots, const BodyPack<8>& body) {
+    scatterAllEight(states, slots, 0, body);
 }
 
 template <>
@@ -161,6 +166,25 @@ inline void scatterVelocities<8>(SolverBodyState* states, const int* slots, cons
     scatterEight(states, slots, 0, body);
 }
 // [ch10-avx2-gather]
+
+// The AVX-512 build's sixteen lanes: two rows of eight each way.
+template <>
+inline BodyPack<16> gatherBodies<16>(const SolverBodyState* states, const int* slots) {
+    BodyPack<16> body;
+    gatherEight(states, slots, 0, body);
+    gatherEight(states, slots, 8, body);
+    return body;
+}
+template <>
+inline void scatterVelocities<16>(SolverBodyState* states, const int* slots, const BodyPack<16>& body) {
+    scatterEight(states, slots, 0, body);
+    scatterEight(states, slots, 8, body);
+}
+template <>
+inline void scatterBodies<16>(SolverBodyState* states, const int* slots, const BodyPack<16>& body) {
+    scatterAllEight(states, slots, 0, body);
+    scatterAllEight(states, slots, 8, body);
+}
 #endif
 
 /// v += m^-1 P and w += I^-1 (arm x P) on B, the opposite on A.
@@ -195,15 +219,7 @@ inline void integratePositionsPack(SolverBodyState* states, const int* slots, Re
     const Pack<N> y = halfStep * halfStep * dot(w, w);
     bool seriesHolds = true;
     for (int lane = 0; lane < N; ++lane) seriesHolds &= y[lane] <= kTurnSeriesLimit;
-    if (!seriesHolds) {
-        for (int lane = 0; lane < N; ++lane) {
-            const Quat turned = turnRotation(Quat(q.w[lane], q.x[lane], q.y[lane], q.z[lane]),
-                                             Vec3(w.x[lane], w.y[lane], w.z[lane]), h);
-            q.x[lane] = turned.x(), q.y[lane] = turned.y(), q.z[lane] = turned.z(), q.w[lane] = turned.w();
-        }
-        scatterBodies(states, slots, body);
-        return;
-    }
+    const PackQuat<N> start = q;  // a lane too fast for the series turns from here (below)
     Pack<N> cosine, sineRatio;
     turnSeries(y, [](Real value) { return Pack<N>::splat(value); }, cosine, sineRatio);
     // 1/2 (0, w) q, as quaternionDerivative.
@@ -219,6 +235,12 @@ inline void integratePositionsPack(SolverBodyState* states, const int* slots, Re
     q.y = q.y / length;
     q.z = q.z / length;
     q.w = q.w / length;
+    for (int lane = 0; !seriesHolds && lane < N; ++lane) {
+        if (y[lane] <= kTurnSeriesLimit) continue;
+        const Quat turned = turnRotation(Quat(start.w[lane], start.x[lane], start.y[lane], start.z[lane]),
+                                         Vec3(w.x[lane], w.y[lane], w.z[lane]), h);
+        q.x[lane] = turned.x(), q.y[lane] = turned.y(), q.z[lane] = turned.z(), q.w[lane] = turned.w();
+    }
     scatterBodies(states, slots, body);
 }
 // [ch10-integrate-positions]
@@ -442,6 +464,39 @@ inline void pointSeparations(const ManifoldBlock<N>& c, const BodyPack<N>& a, co
     }
 }
 
+/// Entries of the normal block's inverse M = K^-1 by point pair (normalBlockInverse keeps the upper triangle).
+constexpr int kBlockEntry[4][4] = {{0, 1, 2, 3}, {1, 4, 5, 6}, {2, 5, 7, 8}, {3, 6, 8, 9}};
+
+/// solveBlock's increments with the corner that pulls hardest let go, and the lanes where that
+/// answer holds (useDropped 1: the corner separates, the others still push, the rows are rigid).
+template <int N>
+inline void dropCorner(const ManifoldBlock<N>& c, const Pack<N> total[4], const Pack<N> increment[4],
+                       const Pack<N>& useBlock, const Pack<N>& rigid, Pack<N> dropped[4], Pack<N>& useDropped) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    Pack<N> worst = total[0], column[4], chosen[4];
+    for (int i = 0; i < 4; ++i) {
+        column[i] = c.normalBlockInverse[kBlockEntry[i][0]];
+        chosen[i] = i == 0 ? one : zero;
+    }
+    for (int j = 1; j < 4; ++j) {
+        const Pack<N> worse = worst - total[j];  // > 0: corner j pulls harder
+        for (int i = 0; i < 4; ++i) {
+            column[i] = selectPositive(worse, c.normalBlockInverse[kBlockEntry[i][j]], column[i]);
+            chosen[i] = selectPositive(worse, i == j ? one : zero, chosen[i]);
+        }
+        worst = min(worst, total[j]);
+    }
+    Pack<N> pivot = zero;  // M_jj
+    for (int i = 0; i < 4; ++i) pivot = pivot + chosen[i] * column[i];
+    const Pack<N> release = -worst / max(pivot, Pack<N>::splat(Real(1e-30)));
+    Pack<N> leastDropped = zero;
+    for (int i = 0; i < 4; ++i) {
+        dropped[i] = selectPositive(chosen[i], -c.point[i].normalImpulse, increment[i] + release * column[i]);
+        leastDropped = min(leastDropped, selectPositive(chosen[i], zero, c.point[i].normalImpulse + dropped[i]));
+    }
+    useDropped = (one - useBlock) * selectNonNegative(leastDropped, selectNonNegative(release, rigid, zero), zero);
+}
+
 // [ch10-solve-block]
 /// One sweep over the block's points: the four normal rows as one block (or one at a time where
 /// the block would pull, with position feedback when `useBias`), then friction against the normal
@@ -482,10 +537,12 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // they leave every point pushing (lambda + d >= 0) and every row rigid.
     Pack<N> target[4], increment[4];  // target: each row's speed plus bias; increment: the block's change
     const Pack<N> approach = dot(c.normal, b.linearVelocity - a.linearVelocity);
+    const bool bounces = anyNegative(-c.restitution);  // approachSpeed is read only where a lane bounces
     for (int k = 0; k < 4; ++k) {
         const Pack<N> speed = approach + dot(b.angularVelocity, c.point[k].angularB) -
                               dot(a.angularVelocity, c.point[k].angularA) + bias[k];
         target[k] = selectPositive(c.point[k].normalMass, speed, zero);  // a missing point asks for nothing
+        if (!bounces) continue;
         // A gap that a substep's motion closes (the relax sweep looks one substep ahead):
         // restitution reverses the fastest speed it closed at, not the speed at the frame's
         // start, which the fall has not finished (a ball dropped from 1 m hit at 4.41 m/s and
@@ -495,11 +552,10 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
         c.point[k].approachSpeed =
             selectPositive(closes, min(c.point[k].approachSpeed, speed - bias[k]), c.point[k].approachSpeed);
     }
-    static constexpr int kEntry[4][4] = {{0, 1, 2, 3}, {1, 4, 5, 6}, {2, 5, 7, 8}, {3, 6, 8, 9}};
     Pack<N> total[4], leastLoad = zero, softness = zero;
     for (int i = 0; i < 4; ++i) {
-        increment[i] = -(c.normalBlockInverse[kEntry[i][0]] * target[0] + c.normalBlockInverse[kEntry[i][1]] * target[1] +
-                         c.normalBlockInverse[kEntry[i][2]] * target[2] + c.normalBlockInverse[kEntry[i][3]] * target[3]);
+        increment[i] = -(c.normalBlockInverse[kBlockEntry[i][0]] * target[0] + c.normalBlockInverse[kBlockEntry[i][1]] * target[1] +
+                         c.normalBlockInverse[kBlockEntry[i][2]] * target[2] + c.normalBlockInverse[kBlockEntry[i][3]] * target[3]);
         total[i] = c.point[i].normalImpulse + increment[i];
         leastLoad = min(leastLoad, total[i]);
         softness = max(softness, impulseScale[i]);
@@ -510,29 +566,9 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // Where one corner would pull, let it go: its impulse becomes zero and the other rows still
     // meet their targets. With M = K^-1 that is d + s M e_j, s = -(lambda_j + d_j) / M_jj, exact
     // when s >= 0 (the corner then separates) and the others still push. j is the corner that
-    // pulls hardest.
-    Pack<N> worst = total[0], column[4], chosen[4];
-    for (int i = 0; i < 4; ++i) {
-        column[i] = c.normalBlockInverse[kEntry[i][0]];
-        chosen[i] = i == 0 ? one : zero;
-    }
-    for (int j = 1; j < 4; ++j) {
-        const Pack<N> worse = worst - total[j];  // > 0: corner j pulls harder
-        for (int i = 0; i < 4; ++i) {
-            column[i] = selectPositive(worse, c.normalBlockInverse[kEntry[i][j]], column[i]);
-            chosen[i] = selectPositive(worse, i == j ? one : zero, chosen[i]);
-        }
-        worst = min(worst, total[j]);
-    }
-    Pack<N> pivot = zero;  // M_jj
-    for (int i = 0; i < 4; ++i) pivot = pivot + chosen[i] * column[i];
-    const Pack<N> release = -worst / max(pivot, Pack<N>::splat(Real(1e-30)));
-    Pack<N> dropped[4], leastDropped = zero;
-    for (int i = 0; i < 4; ++i) {
-        dropped[i] = selectPositive(chosen[i], -c.point[i].normalImpulse, increment[i] + release * column[i]);
-        leastDropped = min(leastDropped, selectPositive(chosen[i], zero, c.point[i].normalImpulse + dropped[i]));
-    }
-    const Pack<N> useDropped = (one - useBlock) * selectNonNegative(leastDropped, selectNonNegative(release, rigid, zero), zero);
+    // pulls hardest. Skipped where every lane takes the whole block (most of a resting stack's).
+    Pack<N> dropped[4] = {zero, zero, zero, zero}, useDropped = zero;
+    if (anyNegative(useBlock - one)) dropCorner(c, total, increment, useBlock, rigid, dropped, useDropped);
     const Pack<N> blockFails = one - useBlock - useDropped;
 
     Pack<N> pushed = zero;
@@ -554,6 +590,9 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // Otherwise the normal rows one at a time, swept forwards and backwards: a single sweep in one
     // order leaves the first corner pushing harder than the last, a torque that tilts a tall stack;
     // symmetric sweeps bring the corners to nearly the same answer (chapter 6 sweeps 8 times).
+    // Only the lanes whose block failed change (selectPositive on blockFails): a lane's answer
+    // must not depend on which manifolds share its block, so that the scalar solve and wide solves
+    // of any width give the same bits.
     if (anyNegative(-blockFails)) {
         for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
             for (int k = 0; k < 4; ++k) {
@@ -564,12 +603,12 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
                 Pack<N> impulse = -(p.normalMass * massScale[i] * (normalSpeed + bias[i])) - impulseScale[i] * p.normalImpulse;
                 const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
                 impulse = accumulated - p.normalImpulse;
-                p.normalImpulse = accumulated;
-                p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
-                a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
-                a.angularVelocity = a.angularVelocity - impulse * p.turnA;
-                b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
-                b.angularVelocity = b.angularVelocity + impulse * p.turnB;
+                p.normalImpulse = selectPositive(blockFails, accumulated, p.normalImpulse);
+                p.maxNormalImpulse = selectPositive(blockFails, max(p.maxNormalImpulse, impulse), p.maxNormalImpulse);
+                a.linearVelocity = select(blockFails, a.linearVelocity - (c.inverseMassA * impulse) * c.normal, a.linearVelocity);
+                a.angularVelocity = select(blockFails, a.angularVelocity - impulse * p.turnA, a.angularVelocity);
+                b.linearVelocity = select(blockFails, b.linearVelocity + (c.inverseMassB * impulse) * c.normal, b.linearVelocity);
+                b.angularVelocity = select(blockFails, b.angularVelocity + impulse * p.turnB, b.angularVelocity);
             }
         }
     }

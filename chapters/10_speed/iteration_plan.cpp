@@ -170,9 +170,9 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
     }
     // A group's lanes fill wide blocks; a few left over (buildShockBlocks) are one-lane blocks.
     const auto groupBlocks = [](int lanes) {
-        const int leftOver = lanes % kWideLanes;
+        const int leftOver = lanes % kPricedLanes;
         const Real last = leftOver >= kShockWideLanesAtLeast ? Real(1) : kShockLaneBlocks * static_cast<Real>(leftOver);
-        return static_cast<Real>(lanes / kWideLanes) + last;
+        return static_cast<Real>(lanes / kPricedLanes) + last;
     };
     Real shockBlocks = 0;
     for (std::size_t layer = 0; layer < search.layerLanes.size(); ++layer) {
@@ -182,7 +182,7 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
         shockBlocks += static_cast<Real>(groups) * groupBlocks(lanesPerGroup);
     }
     const Real frameLanes = static_cast<Real>(contactOrder.size());
-    const Real frameBlocks = std::max(Real(1), std::ceil(frameLanes / static_cast<Real>(kWideLanes)));
+    const Real frameBlocks = std::max(Real(1), std::ceil(frameLanes / static_cast<Real>(kPricedLanes)));
     return kShockBlockSubsteps * shockBlocks / frameBlocks;
 }
 
@@ -242,7 +242,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const bool likeAndQuiet = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
         // The sweep costs at most every contact a one-lane block: where even that pays, the
         // blocks are not counted (a 40-row pyramid, six substeps against 22).
-        const Real mostSweep = kShockBlockSubsteps * kShockLaneBlocks * static_cast<Real>(kWideLanes);
+        const Real mostSweep = kShockBlockSubsteps * kShockLaneBlocks * static_cast<Real>(kPricedLanes);
         const auto sweepCost = [&] {
             return Real(shocked) + mostSweep < plainForHeldWalk ? mostSweep
                                                                 : shockSweepSubsteps(world, contactOrder, search);

@@ -13,14 +13,22 @@
 
 #include <cmath>
 
-#if defined(__AVX2__)
+#if defined(__AVX__)
 #include <immintrin.h>
 #endif
 
 namespace stepwise {
 
-/// Lanes of the wide solver: as many Reals as one 32-byte (AVX2) register holds.
-constexpr int kWideLanes = static_cast<int>(32 / sizeof(Real));
+// The width of the wide solver's registers: 32 bytes (AVX2), or 64 where the build chose AVX-512
+// (STEPWISE_WIDE_AVX512, chapters/CMakeLists.txt, defines it for every file that sees this header).
+#ifndef STEPWISE_WIDE_BYTES
+#define STEPWISE_WIDE_BYTES 32
+#endif
+/// Lanes of the wide solver: as many Reals as one register holds (8 floats with AVX2, 16 with AVX-512).
+constexpr int kWideLanes = static_cast<int>(STEPWISE_WIDE_BYTES / sizeof(Real));
+/// The lanes of the blocks the planner's prices were measured on (256-bit): every build plans the
+/// same (iteration_plan.h), whatever width it solves at.
+constexpr int kPricedLanes = static_cast<int>(32 / sizeof(Real));
 
 // [ch10-pack]
 #if defined(__GNUC__)
@@ -120,9 +128,25 @@ inline Pack<N> selectPositive(const Pack<N>& test, const Pack<N>& ifPositive, co
     return r;
 }
 #endif
+#if defined(__AVX512F__) && defined(__GNUC__) && !defined(__clang__)
+// GCC 12's AVX-512 header leaves its "undefined" operand uninitialised on purpose, and warns about
+// it wherever _mm512_sqrt_ps is inlined.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 /// Per lane square root (one instruction on AVX2; the friction cone's clamp needs a length).
 template <int N>
 inline Pack<N> sqrt(const Pack<N>& a) {
+#if defined(__AVX512F__) && defined(STEPWISE_VECTOR_PACKS)
+    if constexpr (N * sizeof(Real) == 64) {
+        using Values = typename Pack<N>::Values;
+        if constexpr (sizeof(Real) == 4)
+            return Pack<N>{reinterpret_cast<Values>(_mm512_sqrt_ps(reinterpret_cast<__m512>(a.v)))};
+        else
+            return Pack<N>{reinterpret_cast<Values>(_mm512_sqrt_pd(reinterpret_cast<__m512d>(a.v)))};
+    }
+#endif
 #if defined(__AVX2__) && defined(STEPWISE_VECTOR_PACKS)
     if constexpr (N * sizeof(Real) == 32) {
         using Values = typename Pack<N>::Values;
@@ -136,9 +160,32 @@ inline Pack<N> sqrt(const Pack<N>& a) {
     for (int i = 0; i < N; ++i) r[i] = std::sqrt(a[i]);
     return r;
 }
+#if defined(__AVX512F__) && defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 /// Whether any lane holds a value below zero (a branch over the whole pack).
 template <int N>
 inline bool anyNegative(const Pack<N>& a) {
+#if defined(__AVX512F__) && defined(STEPWISE_VECTOR_PACKS)
+    if constexpr (N * sizeof(Real) == 64) {
+        if constexpr (sizeof(Real) == 4)
+            return _mm512_cmp_ps_mask(reinterpret_cast<__m512>(a.v), _mm512_setzero_ps(), _CMP_LT_OQ) != 0;
+        else
+            return _mm512_cmp_pd_mask(reinterpret_cast<__m512d>(a.v), _mm512_setzero_pd(), _CMP_LT_OQ) != 0;
+    }
+#endif
+#if defined(__AVX__) && defined(STEPWISE_VECTOR_PACKS)
+    // One compare and a mask test, where the loop below compiles to a compare and a branch a lane.
+    if constexpr (N * sizeof(Real) == 32) {
+        if constexpr (sizeof(Real) == 4) {
+            const __m256 values = reinterpret_cast<__m256>(a.v);
+            return _mm256_movemask_ps(_mm256_cmp_ps(values, _mm256_setzero_ps(), _CMP_LT_OQ)) != 0;
+        } else {
+            const __m256d values = reinterpret_cast<__m256d>(a.v);
+            return _mm256_movemask_pd(_mm256_cmp_pd(values, _mm256_setzero_pd(), _CMP_LT_OQ)) != 0;
+        }
+    }
+#endif
     bool negative = false;
     for (int i = 0; i < N; ++i) negative |= a[i] < 0;
     return negative;
@@ -162,6 +209,13 @@ inline Pack<N> dot(const PackVec3<N>& a, const PackVec3<N>& b) { return a.x * b.
 template <int N>
 inline PackVec3<N> cross(const PackVec3<N>& a, const PackVec3<N>& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+/// Per lane: test > 0 ? ifPositive : otherwise, for each component.
+template <int N>
+inline PackVec3<N> select(const Pack<N>& test, const PackVec3<N>& ifPositive, const PackVec3<N>& otherwise) {
+    return {selectPositive(test, ifPositive.x, otherwise.x), selectPositive(test, ifPositive.y, otherwise.y),
+            selectPositive(test, ifPositive.z, otherwise.z)};
 }
 
 /// A symmetric 3x3 matrix per lane (an inverse inertia in world axes): six packs.
