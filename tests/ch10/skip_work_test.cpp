@@ -125,10 +125,10 @@ TEST_CASE("the position step eight at a time is chapter 1's rotation step", "[ch
         expected[slot] = turnRotation(start, angular, Real(1.0 / 600));
     }
     // The wide file's own loop (packs of kWideLanes, then one at a time): the wide kernels are
-    // instantiated only there, built for AVX2; one instantiated here too, built for SSE2, would be a
-    // second definition of the same template with another calling convention. One body in the
-    // first pack spins too fast for the series (10,000 rad/s: 8.3 rad a step), so that pack takes
-    // chapter 1's step lane by lane.
+    // instantiated only there, built for AVX2 or AVX-512; one instantiated here too, built for
+    // SSE2, would be a second definition of the same template with another calling convention. One
+    // body in the first pack spins too fast for the series (10,000 rad/s: 8.3 rad a step): it takes
+    // chapter 1's step, and the other lanes of its pack the series.
     integratePositionsWide(states.data(), static_cast<int>(states.size()), Real(1.0 / 600));
     for (std::size_t slot = 1; slot < states.size(); ++slot) {
         const SolverBodyState& state = states[slot];
