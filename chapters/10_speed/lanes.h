@@ -128,25 +128,9 @@ inline Pack<N> selectPositive(const Pack<N>& test, const Pack<N>& ifPositive, co
     return r;
 }
 #endif
-#if defined(__AVX512F__) && defined(__GNUC__) && !defined(__clang__)
-// GCC 12's AVX-512 header leaves its "undefined" operand uninitialised on purpose, and warns about
-// it wherever _mm512_sqrt_ps is inlined.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
 /// Per lane square root (one instruction on AVX2; the friction cone's clamp needs a length).
 template <int N>
 inline Pack<N> sqrt(const Pack<N>& a) {
-#if defined(__AVX512F__) && defined(STEPWISE_VECTOR_PACKS)
-    if constexpr (N * sizeof(Real) == 64) {
-        using Values = typename Pack<N>::Values;
-        if constexpr (sizeof(Real) == 4)
-            return Pack<N>{reinterpret_cast<Values>(_mm512_sqrt_ps(reinterpret_cast<__m512>(a.v)))};
-        else
-            return Pack<N>{reinterpret_cast<Values>(_mm512_sqrt_pd(reinterpret_cast<__m512d>(a.v)))};
-    }
-#endif
 #if defined(__AVX2__) && defined(STEPWISE_VECTOR_PACKS)
     if constexpr (N * sizeof(Real) == 32) {
         using Values = typename Pack<N>::Values;
@@ -154,15 +138,22 @@ inline Pack<N> sqrt(const Pack<N>& a) {
             return Pack<N>{reinterpret_cast<Values>(_mm256_sqrt_ps(reinterpret_cast<__m256>(a.v)))};
         else
             return Pack<N>{reinterpret_cast<Values>(_mm256_sqrt_pd(reinterpret_cast<__m256d>(a.v)))};
+    } else if constexpr (N * sizeof(Real) == 64) {
+        // AVX-512's sixteen lanes as two halves: as fast as one 512-bit root, which is split in two
+        // inside the core anyway, and GCC 12 warns about its own header's _mm512_sqrt_ps.
+        Pack<N / 2> low, high;
+        for (int i = 0; i < N / 2; ++i) low[i] = a[i], high[i] = a[i + N / 2];
+        low = sqrt(low);
+        high = sqrt(high);
+        Pack<N> root;
+        for (int i = 0; i < N / 2; ++i) root[i] = low[i], root[i + N / 2] = high[i];
+        return root;
     }
 #endif
     Pack<N> r;
     for (int i = 0; i < N; ++i) r[i] = std::sqrt(a[i]);
     return r;
 }
-#if defined(__AVX512F__) && defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 /// Whether any lane holds a value below zero (a branch over the whole pack).
 template <int N>
 inline bool anyNegative(const Pack<N>& a) {
