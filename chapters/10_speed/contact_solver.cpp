@@ -92,33 +92,55 @@ void setLane(PackSym3<N>& pack, int lane, const Mat3& m) {
 }
 
 // [ch10-prepare-contact]
-/// Fills one lane of a block from a contact record: everything the substeps need, computed once.
+/// Fills one lane of a block from a contact record: what the block takes as it is (the bodies'
+/// slots, masses and inertias, the material), and into `inputs` what fillBlockFields turns into
+/// the rest (the arms, the friction basis, the carried impulses) for all lanes at once.
 template <int N>
-void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contactIndex, const SolverBodies& bodies,
-              const ContactSolveParams& params) {
+void fillLane(ManifoldBlock<N>& block, LaneInputs<N>& inputs, int lane, const World& world, int contactIndex,
+              const SolverBodies& bodies, const ContactSolveParams& params) {
     const Contact& contact = world.contacts[static_cast<std::size_t>(contactIndex)];
     const int slotA = bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)];
     const int slotB = bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)];
     const SolverBodyInfo& infoA = bodies.info[static_cast<std::size_t>(slotA)];
     const SolverBodyInfo& infoB = bodies.info[static_cast<std::size_t>(slotB)];
+    const Body& bodyA = world.bodies[static_cast<std::size_t>(contact.bodyA)];
+    const Body& bodyB = world.bodies[static_cast<std::size_t>(contact.bodyB)];
     // A static body's centre is its origin (slot 0 has none): arms only matter for bodies that move.
-    const Vec3 centerA = slotA ? infoA.startCenter : worldCenterOfMass(world, contact.bodyA);
-    const Vec3 centerB = slotB ? infoB.startCenter : worldCenterOfMass(world, contact.bodyB);
-    const Material& materialA = world.bodies[static_cast<std::size_t>(contact.bodyA)].material;
-    const Material& materialB = world.bodies[static_cast<std::size_t>(contact.bodyB)].material;
-    const Vec3& normal = contact.normal;
+    setLane(inputs.centerA, lane, slotA ? infoA.startCenter : worldCenterOfMass(world, contact.bodyA));
+    setLane(inputs.centerB, lane, slotB ? infoB.startCenter : worldCenterOfMass(world, contact.bodyB));
+    setLane(inputs.normal, lane, contact.normal);
+    // The arms reach each body's core: a sphere's centre, a capsule's segment (radius 0 for boxes
+    // and hulls). Along the normal the arms change no row (every use is n . (w x arm) or arm x n),
+    // but pointSeparations turns them with the bodies, and a point on a round surface does not
+    // turn with its body: the ball's lowest point stays lowest as it rolls. Turned with the ball,
+    // the material point rose r (1 - cos w h) a substep, a false gap the solve let the ball fall
+    // into (a ball rolling at 2 m/s kept 8 cm/s of downward speed).
+    inputs.roundA[lane] = roundRadius(bodyA.shape);
+    inputs.roundB[lane] = roundRadius(bodyB.shape);
+    inputs.pointCount[lane] = static_cast<Real>(contact.pointCount);
+    for (int i = 0; i < 4; ++i) {
+        typename LaneInputs<N>::Point& input = inputs.point[i];
+        const bool present = i < contact.pointCount;
+        const ContactPoint& point = contact.points[present ? i : 0];
+        input.present[lane] = present ? Real(1) : Real(0);
+        setLane(input.pointA, lane, point.pointA);
+        setLane(input.pointB, lane, point.pointB);
+        input.depth[lane] = point.depth;
+        input.normalImpulse[lane] = point.normalImpulse;
+        input.tangentImpulse1[lane] = point.tangentImpulse[0];
+        input.tangentImpulse2[lane] = point.tangentImpulse[1];
+    }
 
     block.slotA[lane] = slotA;
     block.slotB[lane] = slotB;
     block.contactIndex[lane] = contactIndex;
     block.pointCount[lane] = contact.pointCount;
-    const Real friction = combinedFriction(materialA, materialB);
-    block.friction[lane] = friction;
-    block.restitution[lane] = combinedRestitution(materialA, materialB);
+    const Real friction = combinedFriction(bodyA.material, bodyB.material);
+    block.friction[lane] = inputs.friction[lane] = friction;
+    block.restitution[lane] = combinedRestitution(bodyA.material, bodyB.material);
     // A rolling ball is held back by a torque of c r N (Box2D v3 takes the larger body's too).
-    block.rollingLength[lane] =
-        std::max(materialA.rollingResistance * roundRadius(world.bodies[static_cast<std::size_t>(contact.bodyA)].shape),
-                 materialB.rollingResistance * roundRadius(world.bodies[static_cast<std::size_t>(contact.bodyB)].shape));
+    block.rollingLength[lane] = std::max(bodyA.material.rollingResistance * inputs.roundA[lane],
+                                         bodyB.material.rollingResistance * inputs.roundB[lane]);
     setLane(block.rollingImpulse, lane, Vec3::Zero());  // not carried between frames
     block.inverseMassA[lane] = infoA.inverseMass;
     block.inverseMassB[lane] = infoB.inverseMass;
@@ -128,72 +150,30 @@ void fillLane(ManifoldBlock<N>& block, int lane, const World& world, int contact
     block.biasRate[lane] = againstStatic ? params.staticBiasRate : params.dynamicBiasRate;
     block.massScale[lane] = againstStatic ? params.staticMassScale : params.dynamicMassScale;
     block.impulseScale[lane] = againstStatic ? params.staticImpulseScale : params.dynamicImpulseScale;
+}
 
-    // The friction directions are the contact's fixed basis (tangentBasis), where every chapter
-    // stores friction impulses: the tangent rows are solved as one 2x2 block against a round cone,
-    // so no direction is special and none has to follow the sliding.
-    Vec3 middle = Vec3::Zero();
-    for (int i = 0; i < contact.pointCount; ++i)
-        middle += Real(0.5) * (contact.points[i].pointA + contact.points[i].pointB);
-    middle /= static_cast<Real>(std::max(1, contact.pointCount));
-    Vec3 tangent1, tangent2;
-    tangentBasis(normal, tangent1, tangent2);
-    setLane(block.normal, lane, normal);
-    setLane(block.tangent1, lane, tangent1);
-    setLane(block.tangent2, lane, tangent2);
-    const Vec3 centerArmA = middle - centerA, centerArmB = middle - centerB;
-    setLane(block.centerArmA, lane, centerArmA);
-    setLane(block.centerArmB, lane, centerArmB);
-
-    const bool warm = world.settings.warmStarting;
-    Real carried1 = 0, carried2 = 0, carriedTwist = 0, carriedLoad = 0, carriedTwistLoad = 0;
-    for (int i = 0; i < 4; ++i) {
-        ManifoldPointPack<N>& p = block.point[i];
-        if (i >= contact.pointCount) {  // an empty point: a zero mass gives a zero impulse
-            setLane(p.armA, lane, Vec3::Zero());
-            setLane(p.armB, lane, Vec3::Zero());
-            p.adjustedSeparation[lane] = p.normalMass[lane] = p.normalImpulse[lane] = p.twistRadius[lane] = 0;
-            p.maxNormalImpulse[lane] = p.offset1[lane] = p.offset2[lane] = 0;
-            continue;
-        }
-        const ContactPoint& point = contact.points[i];
-        const Vec3 at = Real(0.5) * (point.pointA + point.pointB);
-        // The arms reach each body's core: a sphere's centre, a capsule's segment (radius 0 for
-        // boxes and hulls). Along the normal the arms change no row (every use is n . (w x arm) or
-        // arm x n), but pointSeparations turns them with the bodies, and a point on a round
-        // surface does not turn with its body: the ball's lowest point stays lowest as it rolls.
-        // Turned with the ball, the material point rose r (1 - cos w h) a substep, a false gap the
-        // solve let the ball fall into (a ball rolling at 2 m/s kept 8 cm/s of downward speed).
-        const Vec3 armA = at - centerA - roundRadius(world.bodies[static_cast<std::size_t>(contact.bodyA)].shape) * normal;
-        const Vec3 armB = at - centerB + roundRadius(world.bodies[static_cast<std::size_t>(contact.bodyB)].shape) * normal;
-        setLane(p.armA, lane, armA);
-        setLane(p.armB, lane, armB);
-        p.adjustedSeparation[lane] = -point.depth - normal.dot(armB - armA);
-        p.normalMass[lane] = 1;  // a point here; prepareBlock puts the effective mass in its place
-        p.maxNormalImpulse[lane] = 0;
-        const Real offset1 = tangent1.dot(at - middle), offset2 = tangent2.dot(at - middle);
-        const Real radius = std::sqrt(offset1 * offset1 + offset2 * offset2);
-        p.offset1[lane] = offset1;
-        p.offset2[lane] = offset2;
-        p.twistRadius[lane] = radius;
-        // Last frame's impulses: the points' friction summed into the centre's force and twist.
-        const Real carriedNormal = std::max(Real(0), point.normalImpulse) * params.carryScale;
-        const Real carriedTangent1 = point.tangentImpulse[0] * params.carryScale;
-        const Real carriedTangent2 = point.tangentImpulse[1] * params.carryScale;
-        carried1 += carriedTangent1;
-        carried2 += carriedTangent2;
-        carriedTwist += offset1 * carriedTangent2 - offset2 * carriedTangent1;
-        carriedLoad += carriedNormal;
-        carriedTwistLoad += carriedNormal * radius;
-        p.normalImpulse[lane] = warm ? carriedNormal : 0;
+/// A lane of no contact in the inputs: a unit normal and nothing else (emptyLane then writes the
+/// block's lane).
+template <int N>
+void emptyInputs(LaneInputs<N>& inputs, int lane) {
+    setLane(inputs.normal, lane, Vec3::UnitY());
+    setLane(inputs.centerA, lane, Vec3::Zero());
+    setLane(inputs.centerB, lane, Vec3::Zero());
+    inputs.roundA[lane] = inputs.roundB[lane] = inputs.pointCount[lane] = inputs.friction[lane] = 0;
+    for (typename LaneInputs<N>::Point& input : inputs.point) {
+        setLane(input.pointA, lane, Vec3::Zero());
+        setLane(input.pointB, lane, Vec3::Zero());
+        input.depth[lane] = input.normalImpulse[lane] = input.tangentImpulse1[lane] = input.tangentImpulse2[lane] = 0;
+        input.present[lane] = 0;
     }
-    // ...kept inside this frame's friction cone and twist limit of the carried normal impulses.
-    const Real limit = friction * carriedLoad, size = std::sqrt(carried1 * carried1 + carried2 * carried2);
-    const Real shrink = size > limit ? (size > 0 ? limit / size : Real(0)) : Real(1);
-    const Real twistLimit = friction * carriedTwistLoad;
-    block.tangentImpulse1[lane] = warm ? shrink * carried1 : 0;
-    block.tangentImpulse2[lane] = warm ? shrink * carried2 : 0;
-    block.twistImpulse[lane] = warm ? std::clamp(carriedTwist, -twistLimit, twistLimit) : 0;
+}
+
+/// One contact's scalar block, filled whole.
+void fillScalarBlock(ManifoldBlock<1>& block, const World& world, int contactIndex, const SolverBodies& bodies,
+                     const ContactSolveParams& params) {
+    LaneInputs<1> inputs;
+    fillLane(block, inputs, 0, world, contactIndex, bodies, params);
+    fillBlockFields(block, inputs, params.carryScale, world.settings.warmStarting);
 }
 // [ch10-prepare-contact]
 
@@ -426,6 +406,12 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
     scratch.placeOf.resize(order.size());
     for (int colour = 0; colour < kMaxColours; ++colour) {
         if (counts[static_cast<std::size_t>(colour)] == 0) continue;
+        LaneInputs<kWideLanes>& inputs = scratch.laneInputs;
+        const auto finishBlock = [&](int lanes) {  // the lanes' shared arithmetic, then the empty ones
+            for (int lane = lanes; lane < kWideLanes; ++lane) emptyInputs(inputs, lane);
+            fillWide(scratch.wideBlocks.back(), inputs, params.carryScale, world.settings.warmStarting);
+            for (int lane = lanes; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
+        };
         int lane = kWideLanes;
         for (std::size_t i = 0; i < order.size(); ++i) {
             if (scratch.colours[i] != colour) continue;
@@ -434,15 +420,16 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
                 lane = 0;
             }
             scratch.placeOf[i] = LanePlace{static_cast<int>(scratch.wideBlocks.size()) - 1, lane, true};
-            fillLane(scratch.wideBlocks.back(), lane++, world, order[i], scratch.bodies, params);
+            fillLane(scratch.wideBlocks.back(), inputs, lane++, world, order[i], scratch.bodies, params);
+            if (lane == kWideLanes) finishBlock(lane);
         }
-        for (; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
+        if (lane < kWideLanes) finishBlock(lane);
     }
     for (std::size_t i = 0; i < order.size(); ++i) {
         if (scratch.colours[i] >= 0) continue;
         scratch.placeOf[i] = LanePlace{static_cast<int>(scratch.scalarBlocks.size()), 0, false};
         scratch.scalarBlocks.emplace_back();
-        fillLane(scratch.scalarBlocks.back(), 0, world, order[i], scratch.bodies, params);
+        fillScalarBlock(scratch.scalarBlocks.back(), world, order[i], scratch.bodies, params);
     }
 }
 // [ch10-wide-blocks]
@@ -460,7 +447,7 @@ void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const 
     std::size_t next = 0;
     const auto fill = [&](std::size_t i) {
         scratch.placeOf[i] = LanePlace{static_cast<int>(next), 0, false};
-        fillLane(scratch.scalarBlocks[next++], 0, world, order[i], scratch.bodies, params);
+        fillScalarBlock(scratch.scalarBlocks[next++], world, order[i], scratch.bodies, params);
     };
     for (int colour = 0; colour < kMaxColours; ++colour) {
         if (counts[static_cast<std::size_t>(colour)] == 0) continue;

@@ -78,6 +78,7 @@ struct ContactSolverScratch {
     SolverBodies bodies;
     std::vector<ManifoldBlock<1>> scalarBlocks;          // scalar path, and the wide path's overflow
     std::vector<ManifoldBlock<kWideLanes>> wideBlocks;   // grouped by colour
+    LaneInputs<kWideLanes> laneInputs;                   // the block being filled (buildWideBlocks)
     std::vector<int> contactOrder, slotA, slotB, colours;
     std::vector<std::uint64_t> colourBits;
     StackSearch stackSearch;  // the planner's (iteration_plan.h)

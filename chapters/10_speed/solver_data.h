@@ -98,6 +98,20 @@ struct ManifoldBlock {
     Pack<N> normalBlockInverse[10];
 };
 
+/// What filling a block reads of each lane's contact record, gathered lane by lane (fillLane), so
+/// that the arithmetic that turns it into the block's fields runs on all lanes at once
+/// (fillBlockFields). `present` is 1 for each point the contact has, 0 past its count.
+template <int N>
+struct LaneInputs {
+    PackVec3<N> normal, centerA, centerB;  // centres of mass at the frame's start
+    Pack<N> roundA, roundB;                // roundRadius of each shape
+    Pack<N> pointCount, friction;
+    struct Point {
+        PackVec3<N> pointA, pointB;
+        Pack<N> depth, normalImpulse, tangentImpulse1, tangentImpulse2, present;
+    } point[4];
+};
+
 /// The regularisation of the normal block: 0.1% of each row's own effective mass.
 constexpr Real kNormalBlockRegularisation = Real(1e-3);
 

@@ -4,6 +4,10 @@
 
 namespace stepwise {
 
+void fillWide(ManifoldBlock<kWideLanes>& block, const LaneInputs<kWideLanes>& inputs, Real carryScale, bool warm) {
+    fillBlockFields(block, inputs, carryScale, warm);
+}
+
 void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states) {
     for (ManifoldBlock<kWideLanes>& block : blocks) prepareBlock(block, states);
 }

@@ -14,6 +14,8 @@
 
 namespace stepwise {
 
+/// A wide block's fields from its lanes' gathered inputs (fillBlockFields).
+void fillWide(ManifoldBlock<kWideLanes>& block, const LaneInputs<kWideLanes>& inputs, Real carryScale, bool warm);
 /// Once per frame, after the blocks are filled: each block's effective masses (prepareBlock).
 void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states);
 void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states);
