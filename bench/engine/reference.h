@@ -56,7 +56,7 @@ Sidecar loadSidecar(const std::string& path);
 /// start and end worlds (velocities, masses, energy) and the overlap left at the end.
 struct Trajectory {
     double dt = 0;                                  // s between recorded frames
-    std::vector<std::vector<Transform>> poses;      // [frame][body]
+    std::vector<std::vector<Transform>> poses;      // per recorded frame, every body's pose
     World start;
     World end;                                      // final poses and velocities
     double finalPenetration = -1;                   // m; < 0: not measured

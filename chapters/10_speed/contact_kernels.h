@@ -312,7 +312,9 @@ inline void fillBlockFields(ManifoldBlock<N>& c, const LaneInputs<N>& in, Real c
         return PackVec3<N>{half * (p.pointA.x + p.pointB.x), half * (p.pointA.y + p.pointB.y), half * (p.pointA.z + p.pointB.z)};
     };
     PackVec3<N> middle = none;
-    for (const auto& p : in.point) middle = select(p.present, middle + midpoint(p), middle);
+    // > 0 for each point a lane's contact has: its count less the point's index.
+    const auto presence = [&](int i) { return in.pointCount - Pack<N>::splat(static_cast<Real>(i)); };
+    for (int i = 0; i < 4; ++i) middle = select(presence(i), middle + midpoint(in.point[i]), middle);
     const Pack<N> count = max(one, in.pointCount);
     middle = {middle.x / count, middle.y / count, middle.z / count};
     // tangentBasis: anyPerpendicular(n), then n x t1.
@@ -333,7 +335,7 @@ inline void fillBlockFields(ManifoldBlock<N>& c, const LaneInputs<N>& in, Real c
     for (int i = 0; i < 4; ++i) {
         const auto& input = in.point[i];
         ManifoldPointPack<N>& p = c.point[i];
-        const Pack<N>& present = input.present;
+        const Pack<N> present = presence(i);
         const PackVec3<N> at = midpoint(input);
         const PackVec3<N> armA = (at - in.centerA) - in.roundA * n;
         const PackVec3<N> armB = (at - in.centerB) + in.roundB * n;

@@ -118,11 +118,9 @@ void fillLane(ManifoldBlock<N>& block, LaneInputs<N>& inputs, int lane, const Wo
     inputs.roundA[lane] = roundRadius(bodyA.shape);
     inputs.roundB[lane] = roundRadius(bodyB.shape);
     inputs.pointCount[lane] = static_cast<Real>(contact.pointCount);
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < contact.pointCount; ++i) {
         typename LaneInputs<N>::Point& input = inputs.point[i];
-        const bool present = i < contact.pointCount;
-        const ContactPoint& point = contact.points[present ? i : 0];
-        input.present[lane] = present ? Real(1) : Real(0);
+        const ContactPoint& point = contact.points[i];
         setLane(input.pointA, lane, point.pointA);
         setLane(input.pointB, lane, point.pointB);
         input.depth[lane] = point.depth;
@@ -152,7 +150,7 @@ void fillLane(ManifoldBlock<N>& block, LaneInputs<N>& inputs, int lane, const Wo
     block.impulseScale[lane] = againstStatic ? params.staticImpulseScale : params.dynamicImpulseScale;
 }
 
-/// A lane of no contact in the inputs: a unit normal and nothing else (emptyLane then writes the
+/// A lane of no contact in the inputs: a unit normal and no points (emptyLane then writes the
 /// block's lane).
 template <int N>
 void emptyInputs(LaneInputs<N>& inputs, int lane) {
@@ -160,18 +158,12 @@ void emptyInputs(LaneInputs<N>& inputs, int lane) {
     setLane(inputs.centerA, lane, Vec3::Zero());
     setLane(inputs.centerB, lane, Vec3::Zero());
     inputs.roundA[lane] = inputs.roundB[lane] = inputs.pointCount[lane] = inputs.friction[lane] = 0;
-    for (typename LaneInputs<N>::Point& input : inputs.point) {
-        setLane(input.pointA, lane, Vec3::Zero());
-        setLane(input.pointB, lane, Vec3::Zero());
-        input.depth[lane] = input.normalImpulse[lane] = input.tangentImpulse1[lane] = input.tangentImpulse2[lane] = 0;
-        input.present[lane] = 0;
-    }
 }
 
 /// One contact's scalar block, filled whole.
 void fillScalarBlock(ManifoldBlock<1>& block, const World& world, int contactIndex, const SolverBodies& bodies,
                      const ContactSolveParams& params) {
-    LaneInputs<1> inputs;
+    LaneInputs<1> inputs{};  // zeros where the contact has no point
     fillLane(block, inputs, 0, world, contactIndex, bodies, params);
     fillBlockFields(block, inputs, params.carryScale, world.settings.warmStarting);
 }

@@ -100,7 +100,8 @@ struct ManifoldBlock {
 
 /// What filling a block reads of each lane's contact record, gathered lane by lane (fillLane), so
 /// that the arithmetic that turns it into the block's fields runs on all lanes at once
-/// (fillBlockFields). `present` is 1 for each point the contact has, 0 past its count.
+/// (fillBlockFields). A point past a lane's pointCount keeps what an earlier lane left there:
+/// fillBlockFields selects it away in every result.
 template <int N>
 struct LaneInputs {
     PackVec3<N> normal, centerA, centerB;  // centres of mass at the frame's start
@@ -108,7 +109,7 @@ struct LaneInputs {
     Pack<N> pointCount, friction;
     struct Point {
         PackVec3<N> pointA, pointB;
-        Pack<N> depth, normalImpulse, tangentImpulse1, tangentImpulse2, present;
+        Pack<N> depth, normalImpulse, tangentImpulse1, tangentImpulse2;
     } point[4];
 };
 
