@@ -390,38 +390,34 @@ inline void prepareRolling(ManifoldBlock<N>& c) {
 }
 
 // [ch10-normal-block]
-/// Once per frame, after fillLane: everything about the rows that depends only on the frame's
-/// start, for all lanes at once. fillLane marks each point that exists with normalMass = 1; here
-/// it becomes the row's effective mass. The normal block is the inverse of the four normal rows'
-/// effective-mass matrix, K_ij = mA + mB + (rA_i x n) . IA^-1 (rA_j x n) + (rB_i x n) . IB^-1 (rB_j x n),
-/// with a missing point's row and column those of the identity; Gauss-Jordan without pivoting,
-/// since K + eps diag K is symmetric positive definite.
+/// The rows' effective masses for bodies of the given inverse masses and inertias (the frame's, or
+/// the shock sweep's with its held body's zeroed), from the angular parts prepareBlock computed.
+/// The normal block is the inverse of the four normal rows' effective-mass matrix,
+/// K_ij = mA + mB + (rA_i x n) . IA^-1 (rA_j x n) + (rB_i x n) . IB^-1 (rB_j x n), with a missing
+/// point's row and column those of the identity; Gauss-Jordan without pivoting, since
+/// K + eps diag K is symmetric positive definite. `presence`: > 0 where the point exists.
 template <int N>
-inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states) {
+inline void rowMasses(const ManifoldBlock<N>& c, const Pack<N>& inverseMassA, const Pack<N>& inverseMassB,
+                      const PackSym3<N>& inverseInertiaA, const PackSym3<N>& inverseInertiaB, const Pack<N> presence[4],
+                      RowMasses<N>& out) {
     const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
-    const BodyPack<N> a = gatherBodies<N>(states, c.slotA);
-    const BodyPack<N> b = gatherBodies<N>(states, c.slotB);
-    const Pack<N> linearInverse = c.inverseMassA + c.inverseMassB;
-    Pack<N> matrix[4][4], inverse[4][4];
+    const Pack<N> linearInverse = inverseMassA + inverseMassB;
+    PackVec3<N> turnA[4], turnB[4];
     for (int k = 0; k < 4; ++k) {
-        ManifoldPointPack<N>& p = c.point[k];
-        p.angularA = cross(p.armA, c.normal);
-        p.angularB = cross(p.armB, c.normal);
-        p.turnA = c.inverseInertiaA * p.angularA;
-        p.turnB = c.inverseInertiaB * p.angularB;
-        p.approachSpeed = selectPositive(p.normalMass, dot(c.normal, relativeVelocity(a, b, p.armA, p.armB)), zero);
+        turnA[k] = inverseInertiaA * c.point[k].angularA;
+        turnB[k] = inverseInertiaB * c.point[k].angularB;
     }
+    Pack<N> matrix[4][4], inverse[4][4];
     for (int i = 0; i < 4; ++i) {
         for (int j = 0; j < 4; ++j) {
             const ManifoldPointPack<N>& pi = c.point[i];
-            const ManifoldPointPack<N>& pj = c.point[j];
-            const Pack<N> coupling = linearInverse + dot(pi.angularA, pj.turnA) + dot(pi.angularB, pj.turnB);
+            const Pack<N> coupling = linearInverse + dot(pi.angularA, turnA[j]) + dot(pi.angularB, turnB[j]);
             const Pack<N> identity = i == j ? one : zero;
-            const Pack<N> present = min(pi.normalMass, pj.normalMass);  // > 0: both points exist
+            const Pack<N> present = min(presence[i], presence[j]);  // > 0: both points exist
             matrix[i][j] = selectPositive(present, coupling, identity);
             inverse[i][j] = identity;
         }
-        c.point[i].normalMass = selectPositive(c.point[i].normalMass, one / matrix[i][i], zero);
+        out.normalMass[i] = selectPositive(presence[i], one / matrix[i][i], zero);
         matrix[i][i] = matrix[i][i] * Pack<N>::splat(1 + kNormalBlockRegularisation);
     }
     for (int column = 0; column < 4; ++column) {
@@ -441,17 +437,15 @@ inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states) {
     }
     int entry = 0;
     for (int i = 0; i < 4; ++i)
-        for (int j = i; j < 4; ++j) c.normalBlockInverse[entry++] = inverse[i][j];
+        for (int j = i; j < 4; ++j) out.blockInverse[entry++] = inverse[i][j];
 
     // The centre's two tangent rows (t1 . t2 = 0, so the linear parts do not couple) and the twist.
-    const PackVec3<N> tangentA1 = c.frictionAngularA[0] = cross(c.centerArmA, c.tangent1);
-    const PackVec3<N> tangentA2 = c.frictionAngularA[1] = cross(c.centerArmA, c.tangent2);
-    const PackVec3<N> tangentB1 = c.frictionAngularB[0] = cross(c.centerArmB, c.tangent1);
-    const PackVec3<N> tangentB2 = c.frictionAngularB[1] = cross(c.centerArmB, c.tangent2);
-    const PackVec3<N> turnA1 = c.frictionTurnA[0] = c.inverseInertiaA * tangentA1;
-    const PackVec3<N> turnA2 = c.frictionTurnA[1] = c.inverseInertiaA * tangentA2;
-    const PackVec3<N> turnB1 = c.frictionTurnB[0] = c.inverseInertiaB * tangentB1;
-    const PackVec3<N> turnB2 = c.frictionTurnB[1] = c.inverseInertiaB * tangentB2;
+    const PackVec3<N>& tangentA1 = c.frictionAngularA[0];
+    const PackVec3<N>& tangentA2 = c.frictionAngularA[1];
+    const PackVec3<N>& tangentB1 = c.frictionAngularB[0];
+    const PackVec3<N>& tangentB2 = c.frictionAngularB[1];
+    const PackVec3<N> turnA1 = inverseInertiaA * tangentA1, turnA2 = inverseInertiaA * tangentA2;
+    const PackVec3<N> turnB1 = inverseInertiaB * tangentB1, turnB2 = inverseInertiaB * tangentB2;
     const Pack<N> k11 = linearInverse + dot(tangentA1, turnA1) + dot(tangentB1, turnB1);
     const Pack<N> k22 = linearInverse + dot(tangentA2, turnA2) + dot(tangentB2, turnB2);
     const Pack<N> k12 = dot(tangentA1, turnA2) + dot(tangentB1, turnB2);
@@ -459,16 +453,73 @@ inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states) {
     // A lane without a moving body (empty) has K = 0: no friction there.
     const Pack<N> safe = selectPositive(determinant - Pack<N>::splat(Real(1e-12)) * max(one, k11 * k22), determinant, zero);
     const Pack<N> inverseDeterminant = selectPositive(safe, one / max(safe, Pack<N>::splat(Real(1e-30))), zero);
-    c.tangentInverse11 = k22 * inverseDeterminant;
-    c.tangentInverse12 = -k12 * inverseDeterminant;
-    c.tangentInverse22 = k11 * inverseDeterminant;
-    c.twistTurnA = c.inverseInertiaA * c.normal;
-    c.twistTurnB = c.inverseInertiaB * c.normal;
-    const Pack<N> twistInverse = dot(c.normal, c.twistTurnA) + dot(c.normal, c.twistTurnB);
-    c.twistMass = selectPositive(twistInverse, one / max(twistInverse, Pack<N>::splat(Real(1e-30))), zero);
-    if (anyNegative(-c.rollingLength)) prepareRolling(c);
+    out.tangentInverse11 = k22 * inverseDeterminant;
+    out.tangentInverse12 = -k12 * inverseDeterminant;
+    out.tangentInverse22 = k11 * inverseDeterminant;
+    const Pack<N> twistInverse = dot(c.normal, inverseInertiaA * c.normal) + dot(c.normal, inverseInertiaB * c.normal);
+    out.twistMass = selectPositive(twistInverse, one / max(twistInverse, Pack<N>::splat(Real(1e-30))), zero);
 }
 // [ch10-normal-block]
+
+/// The same masses with the shock sweep's held body infinitely heavy (heldA, heldB): its inverse
+/// mass and inertia taken as zero.
+template <int N>
+inline void prepareHeld(ManifoldBlock<N>& c) {
+    const Pack<N> zero = Pack<N>::splat(0);
+    const auto hold = [&](const PackSym3<N>& inertia, const Pack<N>& held) {
+        return PackSym3<N>{selectPositive(held, zero, inertia.xx), selectPositive(held, zero, inertia.yy),
+                           selectPositive(held, zero, inertia.zz), selectPositive(held, zero, inertia.xy),
+                           selectPositive(held, zero, inertia.xz), selectPositive(held, zero, inertia.yz)};
+    };
+    const Pack<N> presence[4] = {c.point[0].normalMass, c.point[1].normalMass, c.point[2].normalMass, c.point[3].normalMass};
+    rowMasses(c, selectPositive(c.heldA, zero, c.inverseMassA), selectPositive(c.heldB, zero, c.inverseMassB),
+              hold(c.inverseInertiaA, c.heldA), hold(c.inverseInertiaB, c.heldB), presence, c.heldMasses);
+}
+
+/// Once per frame, after fillLane: everything about the rows that depends only on the frame's
+/// start, for all lanes at once. fillLane marks each point that exists with normalMass = 1; here
+/// it becomes the row's effective mass (rowMasses). `held`: the frame ends with the shock sweep,
+/// which solves the lanes it takes with one body held still (prepareHeld).
+template <int N>
+inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states, bool held = false) {
+    const Pack<N> zero = Pack<N>::splat(0);
+    const bool bounces = anyNegative(-c.restitution);  // approachSpeed is read only where a lane bounces
+    for (int k = 0; k < 4; ++k) {
+        ManifoldPointPack<N>& p = c.point[k];
+        p.angularA = cross(p.armA, c.normal);
+        p.angularB = cross(p.armB, c.normal);
+        p.turnA = c.inverseInertiaA * p.angularA;
+        p.turnB = c.inverseInertiaB * p.angularB;
+    }
+    if (bounces) {
+        const BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+        const BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+        for (ManifoldPointPack<N>& p : c.point)
+            p.approachSpeed = selectPositive(p.normalMass, dot(c.normal, relativeVelocity(a, b, p.armA, p.armB)), zero);
+    } else {
+        for (ManifoldPointPack<N>& p : c.point) p.approachSpeed = zero;
+    }
+    for (int k = 0; k < 2; ++k) {
+        const PackVec3<N>& tangent = k == 0 ? c.tangent1 : c.tangent2;
+        c.frictionAngularA[k] = cross(c.centerArmA, tangent);
+        c.frictionAngularB[k] = cross(c.centerArmB, tangent);
+        c.frictionTurnA[k] = c.inverseInertiaA * c.frictionAngularA[k];
+        c.frictionTurnB[k] = c.inverseInertiaB * c.frictionAngularB[k];
+    }
+    c.twistTurnA = c.inverseInertiaA * c.normal;
+    c.twistTurnB = c.inverseInertiaB * c.normal;
+    const Pack<N> presence[4] = {c.point[0].normalMass, c.point[1].normalMass, c.point[2].normalMass, c.point[3].normalMass};
+    RowMasses<N> masses;
+    rowMasses(c, c.inverseMassA, c.inverseMassB, c.inverseInertiaA, c.inverseInertiaB, presence, masses);
+    for (int k = 0; k < 4; ++k) c.point[k].normalMass = masses.normalMass[k];
+    for (int entry = 0; entry < 10; ++entry) c.normalBlockInverse[entry] = masses.blockInverse[entry];
+    c.tangentInverse11 = masses.tangentInverse11;
+    c.tangentInverse12 = masses.tangentInverse12;
+    c.tangentInverse22 = masses.tangentInverse22;
+    c.twistMass = masses.twistMass;
+    if (anyNegative(-c.rollingLength)) prepareRolling(c);
+    if (held && std::any_of(c.shockGroup, c.shockGroup + N, [](int group) { return group > 0; })) prepareHeld(c);
+}
 
 // [ch10-rolling]
 /// Rolling resistance: the angular impulse that stops the bodies' relative turn, kept within a
@@ -553,18 +604,19 @@ constexpr int kBlockEntry[4][4] = {{0, 1, 2, 3}, {1, 4, 5, 6}, {2, 5, 7, 8}, {3,
 /// solveBlock's increments with the corner that pulls hardest let go, and the lanes where that
 /// answer holds (useDropped 1: the corner separates, the others still push, the rows are rigid).
 template <int N>
-inline void dropCorner(const ManifoldBlock<N>& c, const Pack<N> total[4], const Pack<N> increment[4],
-                       const Pack<N>& useBlock, const Pack<N>& rigid, Pack<N> dropped[4], Pack<N>& useDropped) {
+inline void dropCorner(const Pack<N> blockInverse[10], const Pack<N> normalImpulse[4], const Pack<N> total[4],
+                       const Pack<N> increment[4], const Pack<N>& useBlock, const Pack<N>& rigid, Pack<N> dropped[4],
+                       Pack<N>& useDropped) {
     const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
     Pack<N> worst = total[0], column[4], chosen[4];
     for (int i = 0; i < 4; ++i) {
-        column[i] = c.normalBlockInverse[kBlockEntry[i][0]];
+        column[i] = blockInverse[kBlockEntry[i][0]];
         chosen[i] = i == 0 ? one : zero;
     }
     for (int j = 1; j < 4; ++j) {
         const Pack<N> worse = worst - total[j];  // > 0: corner j pulls harder
         for (int i = 0; i < 4; ++i) {
-            column[i] = selectPositive(worse, c.normalBlockInverse[kBlockEntry[i][j]], column[i]);
+            column[i] = selectPositive(worse, blockInverse[kBlockEntry[i][j]], column[i]);
             chosen[i] = selectPositive(worse, i == j ? one : zero, chosen[i]);
         }
         worst = min(worst, total[j]);
@@ -574,8 +626,8 @@ inline void dropCorner(const ManifoldBlock<N>& c, const Pack<N> total[4], const 
     const Pack<N> release = -worst / max(pivot, Pack<N>::splat(Real(1e-30)));
     Pack<N> leastDropped = zero;
     for (int i = 0; i < 4; ++i) {
-        dropped[i] = selectPositive(chosen[i], -c.point[i].normalImpulse, increment[i] + release * column[i]);
-        leastDropped = min(leastDropped, selectPositive(chosen[i], zero, c.point[i].normalImpulse + dropped[i]));
+        dropped[i] = selectPositive(chosen[i], -normalImpulse[i], increment[i] + release * column[i]);
+        leastDropped = min(leastDropped, selectPositive(chosen[i], zero, normalImpulse[i] + dropped[i]));
     }
     useDropped = (one - useBlock) * selectNonNegative(leastDropped, selectNonNegative(release, rigid, zero), zero);
 }
@@ -651,7 +703,11 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // when s >= 0 (the corner then separates) and the others still push. j is the corner that
     // pulls hardest. Skipped where every lane takes the whole block (most of a resting stack's).
     Pack<N> dropped[4] = {zero, zero, zero, zero}, useDropped = zero;
-    if (anyNegative(useBlock - one)) dropCorner(c, total, increment, useBlock, rigid, dropped, useDropped);
+    if (anyNegative(useBlock - one)) {
+        const Pack<N> impulses[4] = {c.point[0].normalImpulse, c.point[1].normalImpulse, c.point[2].normalImpulse,
+                                     c.point[3].normalImpulse};
+        dropCorner(c.normalBlockInverse, impulses, total, increment, useBlock, rigid, dropped, useDropped);
+    }
     const Pack<N> blockFails = one - useBlock - useDropped;
 
     Pack<N> pushed = zero;
@@ -660,7 +716,7 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
         ManifoldPointPack<N>& p = c.point[i];
         const Pack<N> impulse = increment[i] * useBlock + dropped[i] * useDropped;
         p.normalImpulse = p.normalImpulse + impulse;
-        p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
+        if (bounces) p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);  // read by restitution only
         pushed = pushed + impulse;
         turnedA = turnedA + impulse * p.turnA;
         turnedB = turnedB + impulse * p.turnB;
@@ -687,7 +743,8 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
                 const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
                 impulse = accumulated - p.normalImpulse;
                 p.normalImpulse = selectPositive(blockFails, accumulated, p.normalImpulse);
-                p.maxNormalImpulse = selectPositive(blockFails, max(p.maxNormalImpulse, impulse), p.maxNormalImpulse);
+                if (bounces)
+                    p.maxNormalImpulse = selectPositive(blockFails, max(p.maxNormalImpulse, impulse), p.maxNormalImpulse);
                 a.linearVelocity = select(blockFails, a.linearVelocity - (c.inverseMassA * impulse) * c.normal, a.linearVelocity);
                 a.angularVelocity = select(blockFails, a.angularVelocity - impulse * p.turnA, a.angularVelocity);
                 b.linearVelocity = select(blockFails, b.linearVelocity + (c.inverseMassB * impulse) * c.normal, b.linearVelocity);
@@ -701,6 +758,119 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     scatterVelocities(states, c.slotB, b);
 }
 // [ch10-solve-block]
+
+// [ch10-shock-solve]
+/// The shock sweep's relax sweep over the lanes of one of its groups (shockGroup == group): each
+/// contact's held body read as at rest where it is now and never written (infinitely heavy: the
+/// masses of prepareHeld), its other body relaxed against it, normal block first, then friction,
+/// as solveBlock does. Lanes of other groups change nothing, nor does the block: the sweep starts
+/// from the impulses the substeps accumulated, and what it adds is not carried to the next frame.
+template <int N>
+inline void solveHeldBlock(const ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, int group) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    const PackVec3<N> still{zero, zero, zero};
+    const RowMasses<N>& m = c.heldMasses;
+    BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+    BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    const auto hold = [&] {  // the held body's velocity stays zero, whatever the rows pushed it by
+        a.linearVelocity = select(c.heldA, still, a.linearVelocity);
+        a.angularVelocity = select(c.heldA, still, a.angularVelocity);
+        b.linearVelocity = select(c.heldB, still, b.linearVelocity);
+        b.angularVelocity = select(c.heldB, still, b.angularVelocity);
+    };
+    hold();
+    Pack<N> separations[4], bias[4], target[4], impulse[4], increment[4], total[4];
+    pointSeparations(c, a, b, separations);
+    const Pack<N> inverseH = Pack<N>::splat(1 / params.substep);
+    const Pack<N> approach = dot(c.normal, b.linearVelocity - a.linearVelocity);
+    for (int k = 0; k < 4; ++k) {
+        bias[k] = selectPositive(separations[k], separations[k] * inverseH, zero);  // relax: gaps only
+        const Pack<N> speed = approach + dot(b.angularVelocity, c.point[k].angularB) -
+                              dot(a.angularVelocity, c.point[k].angularA) + bias[k];
+        target[k] = selectPositive(m.normalMass[k], speed, zero);
+        impulse[k] = c.point[k].normalImpulse;
+    }
+    Pack<N> leastLoad = zero;
+    for (int i = 0; i < 4; ++i) {
+        increment[i] = -(m.blockInverse[kBlockEntry[i][0]] * target[0] + m.blockInverse[kBlockEntry[i][1]] * target[1] +
+                         m.blockInverse[kBlockEntry[i][2]] * target[2] + m.blockInverse[kBlockEntry[i][3]] * target[3]);
+        total[i] = impulse[i] + increment[i];
+        leastLoad = min(leastLoad, total[i]);
+    }
+    const Pack<N> useBlock = selectNonNegative(leastLoad, one, zero);
+    Pack<N> dropped[4] = {zero, zero, zero, zero}, useDropped = zero;
+    if (anyNegative(useBlock - one)) dropCorner(m.blockInverse, impulse, total, increment, useBlock, one, dropped, useDropped);
+    const Pack<N> blockFails = one - useBlock - useDropped;
+    Pack<N> pushed = zero;
+    PackVec3<N> turnedA = still, turnedB = still;
+    for (int i = 0; i < 4; ++i) {
+        const Pack<N> change = increment[i] * useBlock + dropped[i] * useDropped;
+        impulse[i] = impulse[i] + change;
+        pushed = pushed + change;
+        turnedA = turnedA + change * c.point[i].turnA;
+        turnedB = turnedB + change * c.point[i].turnB;
+    }
+    a.linearVelocity = a.linearVelocity - (c.inverseMassA * pushed) * c.normal;
+    a.angularVelocity = a.angularVelocity - turnedA;
+    b.linearVelocity = b.linearVelocity + (c.inverseMassB * pushed) * c.normal;
+    b.angularVelocity = b.angularVelocity + turnedB;
+    hold();
+    if (anyNegative(-blockFails)) {  // the rows one at a time, where the block fails (solveBlock)
+        for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
+            for (int k = 0; k < 4; ++k) {
+                const int i = sweep % 2 == 0 ? k : 3 - k;
+                const ManifoldPointPack<N>& p = c.point[i];
+                const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
+                                            dot(b.angularVelocity, p.angularB) - dot(a.angularVelocity, p.angularA);
+                const Pack<N> accumulated = max(impulse[i] - m.normalMass[i] * (normalSpeed + bias[i]), zero);
+                const Pack<N> change = accumulated - impulse[i];
+                impulse[i] = selectPositive(blockFails, accumulated, impulse[i]);
+                a.linearVelocity = select(blockFails, a.linearVelocity - (c.inverseMassA * change) * c.normal, a.linearVelocity);
+                a.angularVelocity = select(blockFails, a.angularVelocity - change * p.turnA, a.angularVelocity);
+                b.linearVelocity = select(blockFails, b.linearVelocity + (c.inverseMassB * change) * c.normal, b.linearVelocity);
+                b.angularVelocity = select(blockFails, b.angularVelocity + change * p.turnB, b.angularVelocity);
+                hold();
+            }
+        }
+    }
+
+    // Friction at the centre against the loads just found (solveFriction, with the held masses).
+    Pack<N> load = zero, twistLoad = zero;
+    for (int k = 0; k < 4; ++k) {
+        load = load + impulse[k];
+        twistLoad = twistLoad + impulse[k] * c.point[k].twistRadius;
+    }
+    const PackVec3<N> apart = b.linearVelocity - a.linearVelocity;
+    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, c.frictionAngularB[0]) -
+                           dot(a.angularVelocity, c.frictionAngularA[0]);
+    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, c.frictionAngularB[1]) -
+                           dot(a.angularVelocity, c.frictionAngularA[1]);
+    Pack<N> total1 = c.tangentImpulse1 - (m.tangentInverse11 * slide1 + m.tangentInverse12 * slide2);
+    Pack<N> total2 = c.tangentImpulse2 - (m.tangentInverse12 * slide1 + m.tangentInverse22 * slide2);
+    const Pack<N> limit = c.friction * load;
+    const Pack<N> lengthSquared = total1 * total1 + total2 * total2;
+    const Pack<N> scale =
+        selectPositive(lengthSquared - limit * limit, limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), one);
+    applyFriction(c, total1 * scale - c.tangentImpulse1, total2 * scale - c.tangentImpulse2, a, b);
+    hold();
+    const Pack<N> twistLimit = c.friction * twistLoad;
+    const Pack<N> spin = dot(c.normal, b.angularVelocity - a.angularVelocity);
+    const Pack<N> twistChange = max(min(c.twistImpulse - m.twistMass * spin, twistLimit), -twistLimit) - c.twistImpulse;
+    a.angularVelocity = a.angularVelocity - twistChange * c.twistTurnA;
+    b.angularVelocity = b.angularVelocity + twistChange * c.twistTurnB;
+    hold();
+
+    // Only the moving body of each lane of the group is written (slot 0 never is).
+    int slotA[N], slotB[N];
+    for (int lane = 0; lane < N; ++lane) {
+        const bool swept = c.shockGroup[lane] == group;
+        slotA[lane] = swept && !(c.heldA[lane] > 0) ? c.slotA[lane] : 0;
+        slotB[lane] = swept && !(c.heldB[lane] > 0) ? c.slotB[lane] : 0;
+    }
+    scatterVelocities(states, slotA, a);
+    scatterVelocities(states, slotB, b);
+}
+// [ch10-shock-solve]
 
 // [ch10-collide]
 /// Guendelman, Bridson and Fedkiw's collisions before contacts ("Nonconvex rigid bodies with

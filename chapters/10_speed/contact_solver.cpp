@@ -14,6 +14,7 @@
 #include "10_speed/wide_solver.h"
 
 #include <algorithm>
+#include <tuple>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -181,6 +182,8 @@ void emptyLane(ManifoldBlock<N>& block, int lane) {
     setLane(block.inverseInertiaB, lane, Mat3::Zero());
     block.biasRate[lane] = block.impulseScale[lane] = 0;
     block.massScale[lane] = 1;
+    block.shockGroup[lane] = 0;
+    block.heldA[lane] = block.heldB[lane] = 0;
     setLane(block.normal, lane, Vec3::UnitY());
     setLane(block.tangent1, lane, Vec3::UnitX());
     setLane(block.tangent2, lane, Vec3::UnitZ());
@@ -194,61 +197,6 @@ void emptyLane(ManifoldBlock<N>& block, int lane) {
         setLane(p.armB, lane, Vec3::Zero());
         p.adjustedSeparation[lane] = p.normalMass[lane] = p.normalImpulse[lane] = p.twistRadius[lane] = 0;
         p.approachSpeed[lane] = p.maxNormalImpulse[lane] = p.offset1[lane] = p.offset2[lane] = 0;
-    }
-}
-
-/// Copies what fillLane put in a lane (not what prepareBlock derives from it), from a block of M
-/// lanes to one of N: a lane filled again from its contact record costs ten times as much.
-template <int M, int N>
-void copyLaneInputs(const ManifoldBlock<M>& from, int source, ManifoldBlock<N>& to, int lane) {
-    const auto copy3 = [&](const PackVec3<M>& a, PackVec3<N>& b) {
-        b.x[lane] = a.x[source];
-        b.y[lane] = a.y[source];
-        b.z[lane] = a.z[source];
-    };
-    const auto copySym = [&](const PackSym3<M>& a, PackSym3<N>& b) {
-        b.xx[lane] = a.xx[source];
-        b.yy[lane] = a.yy[source];
-        b.zz[lane] = a.zz[source];
-        b.xy[lane] = a.xy[source];
-        b.xz[lane] = a.xz[source];
-        b.yz[lane] = a.yz[source];
-    };
-    to.slotA[lane] = from.slotA[source];
-    to.slotB[lane] = from.slotB[source];
-    to.contactIndex[lane] = from.contactIndex[source];
-    to.pointCount[lane] = from.pointCount[source];
-    to.friction[lane] = from.friction[source];
-    to.restitution[lane] = from.restitution[source];
-    to.rollingLength[lane] = from.rollingLength[source];
-    to.inverseMassA[lane] = from.inverseMassA[source];
-    to.inverseMassB[lane] = from.inverseMassB[source];
-    to.biasRate[lane] = from.biasRate[source];
-    to.massScale[lane] = from.massScale[source];
-    to.impulseScale[lane] = from.impulseScale[source];
-    to.tangentImpulse1[lane] = from.tangentImpulse1[source];
-    to.tangentImpulse2[lane] = from.tangentImpulse2[source];
-    to.twistImpulse[lane] = from.twistImpulse[source];
-    copy3(from.rollingImpulse, to.rollingImpulse);
-    copy3(from.normal, to.normal);
-    copy3(from.tangent1, to.tangent1);
-    copy3(from.tangent2, to.tangent2);
-    copy3(from.centerArmA, to.centerArmA);
-    copy3(from.centerArmB, to.centerArmB);
-    copySym(from.inverseInertiaA, to.inverseInertiaA);
-    copySym(from.inverseInertiaB, to.inverseInertiaB);
-    for (int k = 0; k < 4; ++k) {
-        const ManifoldPointPack<M>& p = from.point[k];
-        ManifoldPointPack<N>& q = to.point[k];
-        copy3(p.armA, q.armA);
-        copy3(p.armB, q.armB);
-        q.adjustedSeparation[lane] = p.adjustedSeparation[source];
-        q.normalMass[lane] = p.normalMass[source] > 0 ? Real(1) : Real(0);  // present or not, as fillLane says
-        q.normalImpulse[lane] = p.normalImpulse[source];
-        q.maxNormalImpulse[lane] = p.maxNormalImpulse[source];
-        q.offset1[lane] = p.offset1[source];
-        q.offset2[lane] = p.offset2[source];
-        q.twistRadius[lane] = p.twistRadius[source];
     }
 }
 
@@ -387,41 +335,76 @@ std::array<int, kMaxColours> colourForBlocks(ContactSolverScratch& scratch) {
     return counts;
 }
 
+/// The coloured contacts in the order their lanes are filled: colour by colour, and within a
+/// colour by the shock sweep's group (0 first: not swept). A colour's lanes share no body, so
+/// their order changes no bit of the solve; it puts a group's lanes side by side, and the sweep
+/// solves each group over the few blocks that hold it (solveHeldBlock). Two stable counting sorts.
+void orderLanes(ContactSolverScratch& scratch) {
+    std::vector<int>& byGroup = scratch.laneScratch;
+    std::vector<int>& lanes = scratch.laneOrder;
+    std::vector<int>& start = scratch.laneBuckets;
+    const auto countingSort = [&](const std::vector<int>& from, std::vector<int>& to, int buckets, const std::vector<int>& key) {
+        start.assign(static_cast<std::size_t>(buckets) + 1, 0);
+        for (const int i : from) ++start[static_cast<std::size_t>(key[static_cast<std::size_t>(i)]) + 1];
+        for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+        to.resize(from.size());
+        for (const int i : from) to[static_cast<std::size_t>(start[static_cast<std::size_t>(key[static_cast<std::size_t>(i)])]++)] = i;
+    };
+    lanes.clear();
+    for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i)
+        if (scratch.colours[i] >= 0) lanes.push_back(static_cast<int>(i));
+    if (scratch.shockGroups > 0) {
+        countingSort(lanes, byGroup, scratch.shockGroups + 1, scratch.shockGroupOf);
+        std::swap(lanes, byGroup);
+    }
+    countingSort(lanes, byGroup, kMaxColours, scratch.colours);
+    std::swap(lanes, byGroup);
+}
+
+/// A lane's place in the shock sweep (groupShockSweep): its group and which body it holds still.
+template <int N>
+void setShockLane(ManifoldBlock<N>& block, int lane, const ContactSolverScratch& scratch, std::size_t i) {
+    const int group = scratch.shockGroups > 0 ? scratch.shockGroupOf[i] : 0;
+    const bool heldIsA = group > 0 && scratch.shockHeldIsA[i] != 0;
+    block.shockGroup[lane] = group;
+    block.heldA[lane] = heldIsA ? Real(1) : Real(0);
+    block.heldB[lane] = group > 0 && !heldIsA ? Real(1) : Real(0);
+}
+
 // [ch10-wide-blocks]
-/// Colours the contacts and packs each colour kWideLanes at a time; the overflow goes to
-/// scratch.scalarBlocks.
+/// Colours the contacts and packs each colour kWideLanes at a time (orderLanes); the overflow goes
+/// to scratch.scalarBlocks.
 void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params) {
     const std::vector<int>& order = scratch.contactOrder;
-    const std::array<int, kMaxColours> counts = colourForBlocks(scratch);
+    colourForBlocks(scratch);
+    orderLanes(scratch);
     scratch.wideBlocks.clear();
     scratch.scalarBlocks.clear();
-    scratch.placeOf.resize(order.size());
-    for (int colour = 0; colour < kMaxColours; ++colour) {
-        if (counts[static_cast<std::size_t>(colour)] == 0) continue;
-        LaneInputs<kWideLanes>& inputs = scratch.laneInputs;
-        const auto finishBlock = [&](int lanes) {  // the lanes' shared arithmetic, then the empty ones
-            for (int lane = lanes; lane < kWideLanes; ++lane) emptyInputs(inputs, lane);
-            fillWide(scratch.wideBlocks.back(), inputs, params.carryScale, world.settings.warmStarting);
-            for (int lane = lanes; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
-        };
-        int lane = kWideLanes;
-        for (std::size_t i = 0; i < order.size(); ++i) {
-            if (scratch.colours[i] != colour) continue;
-            if (lane == kWideLanes) {
-                scratch.wideBlocks.emplace_back();
-                lane = 0;
-            }
-            scratch.placeOf[i] = LanePlace{static_cast<int>(scratch.wideBlocks.size()) - 1, lane, true};
-            fillLane(scratch.wideBlocks.back(), inputs, lane++, world, order[i], scratch.bodies, params);
-            if (lane == kWideLanes) finishBlock(lane);
+    LaneInputs<kWideLanes>& inputs = scratch.laneInputs;
+    const auto finishBlock = [&](int lanes) {  // the lanes' shared arithmetic, then the empty ones
+        for (int lane = lanes; lane < kWideLanes; ++lane) emptyInputs(inputs, lane);
+        fillWide(scratch.wideBlocks.back(), inputs, params.carryScale, world.settings.warmStarting);
+        for (int lane = lanes; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
+    };
+    int lane = kWideLanes, blockColour = -1;
+    for (const int contact : scratch.laneOrder) {
+        const auto i = static_cast<std::size_t>(contact);
+        if (lane == kWideLanes || scratch.colours[i] != blockColour) {  // a block per colour's kWideLanes
+            if (lane < kWideLanes) finishBlock(lane);
+            scratch.wideBlocks.emplace_back();
+            lane = 0;
+            blockColour = scratch.colours[i];
         }
-        if (lane < kWideLanes) finishBlock(lane);
+        setShockLane(scratch.wideBlocks.back(), lane, scratch, i);
+        fillLane(scratch.wideBlocks.back(), inputs, lane++, world, order[i], scratch.bodies, params);
+        if (lane == kWideLanes) finishBlock(lane);
     }
+    if (lane < kWideLanes) finishBlock(lane);
     for (std::size_t i = 0; i < order.size(); ++i) {
         if (scratch.colours[i] >= 0) continue;
-        scratch.placeOf[i] = LanePlace{static_cast<int>(scratch.scalarBlocks.size()), 0, false};
         scratch.scalarBlocks.emplace_back();
         fillScalarBlock(scratch.scalarBlocks.back(), world, order[i], scratch.bodies, params);
+        setShockLane(scratch.scalarBlocks.back(), 0, scratch, i);
     }
 }
 // [ch10-wide-blocks]
@@ -435,10 +418,9 @@ void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const 
     const std::array<int, kMaxColours> counts = colourForBlocks(scratch);
     scratch.wideBlocks.clear();
     scratch.scalarBlocks.resize(order.size());
-    scratch.placeOf.resize(order.size());
     std::size_t next = 0;
     const auto fill = [&](std::size_t i) {
-        scratch.placeOf[i] = LanePlace{static_cast<int>(next), 0, false};
+        setShockLane(scratch.scalarBlocks[next], 0, scratch, i);
         fillScalarBlock(scratch.scalarBlocks[next++], world, order[i], scratch.bodies, params);
     };
     for (int colour = 0; colour < kMaxColours; ++colour) {
@@ -450,45 +432,14 @@ void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const 
         if (scratch.colours[i] < 0) fill(i);
 }
 
-// [ch10-shock-blocks]
-/// One lane of a shock block: the frame's lane for the entry's contact, its lower body swapped for
-/// the still copy (no inverse mass, no restitution: the sweep only relaxes).
-template <int N>
-void fillShockLane(const ContactSolverScratch& scratch, const ShockLane& entry, ManifoldBlock<N>& block, int lane) {
-    const LanePlace& place = scratch.placeOf[entry.contact];
-    if (place.wide)
-        copyLaneInputs(scratch.wideBlocks[static_cast<std::size_t>(place.block)], place.lane, block, lane);
-    else
-        copyLaneInputs(scratch.scalarBlocks[static_cast<std::size_t>(place.block)], 0, block, lane);
-    (entry.lowerIsA ? block.slotA : block.slotB)[lane] = entry.lowerCopy;
-    (entry.lowerIsA ? block.inverseMassA : block.inverseMassB)[lane] = 0;
-    setLane(entry.lowerIsA ? block.inverseInertiaA : block.inverseInertiaB, lane, Mat3::Zero());
-    block.restitution[lane] = block.rollingLength[lane] = 0;
-}
-
-/// Appends a block to the sweep's order: a new run where the kind changes.
-void addShockBlock(ContactSolverScratch& scratch, bool wide) {
-    std::vector<ShockRun>& runs = scratch.shockRuns;
-    if (runs.empty() || runs.back().wide != wide)
-        runs.push_back({wide, wide ? scratch.shockWide.size() : scratch.shockScalar.size(), 0});
-    ++runs.back().count;
-    if (wide)
-        scratch.shockWide.emplace_back();
-    else
-        scratch.shockScalar.emplace_back();
-}
-
-/// The shock sweep's blocks, in its order (orderShockSweep), a group at a time: the contacts whose
-/// two bodies were slow when the frame began (isSlow, the sleep test), each with its lower body
-/// where it is now, at rest and immovable. Built after the substeps, from the frame's blocks and
-/// the impulses they accumulated: the sweep then solves each upper body against its lower one in
-/// full (a push may shrink as well as grow, and friction keeps its cone), and what it adds is not
-/// carried to the next frame. Each lower body gets a slot of its own past the moving ones, its
-/// pose's copy with no velocity, which the sweep reads and never changes (no inverse mass on its
-/// side); the caller removes them after the sweep. `wide`: a group's lanes fill wide blocks, but
-/// for a few left over (kShockWideLanesAtLeast); else every lane is a one-lane block.
-void buildShockBlocks(const World& world, ContactSolverScratch& scratch, bool wide) {
-    SolverBodies& bodies = scratch.bodies;
+// [ch10-shock-groups]
+/// The shock sweep's groups (orderShockSweep, in the sweep's order, numbered from 1) of the
+/// contacts whose two bodies were slow when the frame began (isSlow, the sleep test), and which of
+/// each contact's bodies is the lower one, held still. Set before the blocks are filled: each lane
+/// carries its group (setShockLane), and the blocks are prepared for the sweep as well
+/// (prepareHeld), so that the sweep needs no blocks of its own.
+void groupShockSweep(const World& world, ContactSolverScratch& scratch) {
+    const SolverBodies& bodies = scratch.bodies;
     const std::vector<int>& depth = scratch.stackSearch.depth;  // this frame's (plannedIterations)
     const std::size_t moving = bodies.states.size();
     std::vector<int>& slotDepth = scratch.slotDepth;
@@ -499,48 +450,44 @@ void buildShockBlocks(const World& world, ContactSolverScratch& scratch, bool wi
     }
     const ShockOrder& order = scratch.shockOrder;
     orderShockSweep(scratch.slotA, scratch.slotB, slotDepth, scratch.shockOrder);
-    // The depths are read: from here a slot's entry is its still copy's slot (0: none yet), or -1
-    // when its body was not slow.
-    std::vector<int>& copyOf = slotDepth;
-    for (std::size_t slot = 1; slot < moving; ++slot) copyOf[slot] = isSlow(world, bodies.info[slot].bodyIndex) ? 0 : -1;
-    scratch.shockWide.clear();
-    scratch.shockScalar.clear();
-    scratch.shockRuns.clear();
-    std::vector<ShockLane>& lanes = scratch.shockLanes;
-    constexpr auto N = static_cast<std::size_t>(kWideLanes);
+    std::vector<std::uint8_t>& slow = scratch.slowSlot;
+    slow.assign(moving, 0);
+    for (std::size_t slot = 1; slot < moving; ++slot) slow[slot] = isSlow(world, bodies.info[slot].bodyIndex) ? 1 : 0;
+    scratch.shockGroupOf.assign(scratch.contactOrder.size(), 0);
+    scratch.shockHeldIsA.assign(scratch.contactOrder.size(), 0);
+    scratch.shockGroups = static_cast<int>(order.groupStart.size()) - 1;
     for (std::size_t group = 0; group + 1 < order.groupStart.size(); ++group) {
-        lanes.clear();
         for (int k = order.groupStart[group]; k < order.groupStart[group + 1]; ++k) {
             const auto i = static_cast<std::size_t>(order.entries[static_cast<std::size_t>(k)]);
-            const bool lowerIsA = order.lowerIsA[static_cast<std::size_t>(k)] != 0;
-            const auto lower = static_cast<std::size_t>(lowerIsA ? scratch.slotA[i] : scratch.slotB[i]);
-            const auto upper = static_cast<std::size_t>(lowerIsA ? scratch.slotB[i] : scratch.slotA[i]);
-            if (copyOf[lower] < 0 || copyOf[upper] < 0) continue;
-            if (copyOf[lower] == 0) {
-                copyOf[lower] = static_cast<int>(bodies.states.size());
-                SolverBodyState still = bodies.states[lower];
-                for (int axis = 0; axis < 3; ++axis) still.linearVelocity[axis] = still.angularVelocity[axis] = 0;
-                bodies.states.push_back(still);
-            }
-            lanes.push_back({i, lowerIsA, copyOf[lower]});
+            if (!slow[static_cast<std::size_t>(scratch.slotA[i])] || !slow[static_cast<std::size_t>(scratch.slotB[i])]) continue;
+            scratch.shockGroupOf[i] = static_cast<int>(group) + 1;
+            scratch.shockHeldIsA[i] = order.lowerIsA[static_cast<std::size_t>(k)];
         }
-        const std::size_t leftOver = lanes.size() % N;
-        const bool fewLeft = leftOver < static_cast<std::size_t>(kShockWideLanesAtLeast);
-        const std::size_t inWide = !wide ? 0 : lanes.size() - (fewLeft ? leftOver : 0);
-        for (std::size_t j = 0; j < lanes.size(); ++j) {
-            if (j < inWide) {
-                if (j % N == 0) addShockBlock(scratch, true);
-                fillShockLane(scratch, lanes[j], scratch.shockWide.back(), static_cast<int>(j % N));
-            } else {
-                addShockBlock(scratch, false);
-                fillShockLane(scratch, lanes[j], scratch.shockScalar.back(), 0);
-            }
-        }
-        for (std::size_t lane = inWide % N; inWide % N != 0 && lane < N; ++lane)
-            emptyLane(scratch.shockWide.back(), static_cast<int>(lane));
     }
 }
-// [ch10-shock-blocks]
+
+/// The sweep's visits: every block holding lanes of a group, once per group it holds, in the
+/// groups' order (a stable counting sort; a group's lanes are independent, so the blocks' order
+/// within it changes no bit). A wide block holds one colour's lanes sorted by group (orderLanes).
+void orderShockVisits(ContactSolverScratch& scratch) {
+    std::vector<ShockVisit>& visits = scratch.shockScratch;
+    visits.clear();
+    for (std::size_t b = 0; b < scratch.wideBlocks.size(); ++b) {
+        int last = 0;
+        for (const int group : scratch.wideBlocks[b].shockGroup)
+            if (group > 0 && group != last) visits.push_back({true, b, last = group});
+    }
+    for (std::size_t b = 0; b < scratch.scalarBlocks.size(); ++b)
+        if (const int group = scratch.scalarBlocks[b].shockGroup[0]; group > 0) visits.push_back({false, b, group});
+    std::vector<int>& start = scratch.laneBuckets;
+    start.assign(static_cast<std::size_t>(scratch.shockGroups) + 2, 0);
+    for (const ShockVisit& visit : visits) ++start[static_cast<std::size_t>(visit.group) + 1];
+    for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+    scratch.shockVisits.resize(visits.size());
+    for (const ShockVisit& visit : visits)
+        scratch.shockVisits[static_cast<std::size_t>(start[static_cast<std::size_t>(visit.group)]++)] = visit;
+}
+// [ch10-shock-groups]
 
 template <int N>
 void warmStartAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states) {
@@ -721,6 +668,10 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     if (lastSubsteps > 0 && lastSubsteps != substeps)
         params.carryScale = static_cast<Real>(lastSubsteps) / static_cast<Real>(substeps);
 
+    // The shock sweep's groups first: the blocks carry them (groupShockSweep).
+    const bool shock = world.step.iterationPlan.shockPropagation;
+    scratch.shockGroups = 0;
+    if (shock) groupShockSweep(world, scratch);
     if (path == SolverPath::Wide) {
         buildWideBlocks(world, scratch, params);
     } else {
@@ -730,8 +681,8 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     stats.wideBlocks = static_cast<int>(scratch.wideBlocks.size());
     stats.overflow = path == SolverPath::Wide ? static_cast<int>(scratch.scalarBlocks.size()) : 0;
     SolverBodyState* states = scratch.bodies.states.data();
-    prepareWide(scratch.wideBlocks, states);
-    for (ManifoldBlock<1>& block : scratch.scalarBlocks) prepareBlock(block, states);
+    prepareWide(scratch.wideBlocks, states, shock);
+    for (ManifoldBlock<1>& block : scratch.scalarBlocks) prepareBlock(block, states, shock);
     stats.ms(SolvePhase::Prepare) += clock.lap();
 
     const bool warmStarting = world.settings.warmStarting;
@@ -766,24 +717,15 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         stats.ms(SolvePhase::Relax) += clock.lap();
     }
     // [ch10-shock-sweep]
-    const std::size_t moving = scratch.bodies.states.size();
-    const bool shock = world.step.iterationPlan.shockPropagation;
     if (shock) {
-        buildShockBlocks(world, scratch, path == SolverPath::Wide);
-        states = scratch.bodies.states.data();  // the still copies may have moved the array
-        prepareWide(scratch.shockWide, states);
-        for (ManifoldBlock<1>& block : scratch.shockScalar) prepareBlock(block, states);
-        for (const ShockRun& run : scratch.shockRuns) {
-            if (run.wide) {
-                solveWideRange(scratch.shockWide, run.first, run.count, states, params, /*useBias=*/false);
-            } else {
-                for (std::size_t b = run.first; b < run.first + run.count; ++b)
-                    solveBlock(scratch.shockScalar[b], states, params, false);
-            }
+        orderShockVisits(scratch);
+        for (const ShockVisit& visit : scratch.shockVisits) {
+            if (visit.wide)
+                solveHeldWide(scratch.wideBlocks[visit.block], states, params, visit.group);
+            else
+                solveHeldBlock(scratch.scalarBlocks[visit.block], states, params, visit.group);
         }
     }
-    scratch.bodies.states.resize(moving);  // the lower bodies' still copies go
-    states = scratch.bodies.states.data();
     // [ch10-shock-sweep]
     stats.ms(SolvePhase::Relax) += clock.lap();
     if (collisions) {  // some lane has restitution

@@ -46,29 +46,12 @@ struct FastSolveStats {
 /// total's phase times += frame's; the counts become frame's.
 void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame);
 
-/// Where a contact's lane sits among a solve's blocks: wideBlocks[block] lane `lane`, or
-/// scalarBlocks[block] (lane 0). block -1: nowhere (an empty lane).
-struct LanePlace {
-    int block = -1;
-    int lane = 0;
+/// One block of the shock sweep's order: wideBlocks[block] (or scalarBlocks[block]), its lanes of
+/// one group (solveHeldBlock).
+struct ShockVisit {
     bool wide = false;
-};
-
-/// A stretch of the shock sweep solved by one kind of block: shockWide[first, first + count) or
-/// shockScalar[first, first + count). A group of a few contacts goes into one-lane blocks (a stack
-/// of single boxes would otherwise solve eight lanes, seven of them empty, per layer).
-struct ShockRun {
-    bool wide = false;
-    std::size_t first = 0;
-    std::size_t count = 0;
-};
-
-/// One contact of a shock group: its contact-order index, which of its bodies is held, and the
-/// slot of that body's still copy.
-struct ShockLane {
-    std::size_t contact = 0;
-    bool lowerIsA = false;
-    int lowerCopy = 0;
+    std::size_t block = 0;
+    int group = 0;
 };
 
 /// The buffers a solve works in. Rebuilt from the World every frame and carrying nothing from one
@@ -80,17 +63,18 @@ struct ContactSolverScratch {
     std::vector<ManifoldBlock<kWideLanes>> wideBlocks;   // grouped by colour
     LaneInputs<kWideLanes> laneInputs;                   // the block being filled (buildWideBlocks)
     std::vector<int> contactOrder, slotA, slotB, colours;
+    std::vector<int> laneOrder, laneKeys, laneScratch, laneBuckets;  // the wide blocks' fill order (orderLanes)
     std::vector<std::uint64_t> colourBits;
     StackSearch stackSearch;  // the planner's (iteration_plan.h)
-    // Shock propagation (shock_propagation.h): each contact's place in the blocks above (per
-    // contact-order index), the sweep's order and blocks.
-    std::vector<LanePlace> placeOf;
+    // Shock propagation (shock_propagation.h): the sweep's order, each contact's group in it (per
+    // contact-order index; 0: not swept) and held body, and the blocks it visits in turn.
     std::vector<int> slotDepth;
+    std::vector<std::uint8_t> slowSlot;
     ShockOrder shockOrder;
-    std::vector<ManifoldBlock<kWideLanes>> shockWide;
-    std::vector<ManifoldBlock<1>> shockScalar;
-    std::vector<ShockRun> shockRuns;      // the sweep's order over the two
-    std::vector<ShockLane> shockLanes;    // one group's, while it is built
+    int shockGroups = 0;  // 0: no shock sweep this frame
+    std::vector<int> shockGroupOf;
+    std::vector<std::uint8_t> shockHeldIsA;
+    std::vector<ShockVisit> shockVisits, shockScratch;
     FastSolveStats stats;
     bool shockAllowed = true;  // false: no shock sweep whatever the planner says (the bench's A/B)
     bool timePhases = false;  // fill stats.phaseMs (the bench's profile); off, the solve reads no clock

@@ -168,7 +168,7 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
         ++search.layerLanes[layer];
         search.layerGroups[layer] = std::max(search.layerGroups[layer], search.downward[upper]);
     }
-    // A group's lanes fill wide blocks; a few left over (buildShockBlocks) are one-lane blocks.
+    // Priced as the first sweep built them: a group's lanes in wide blocks, a few left over one-lane blocks.
     const auto groupBlocks = [](int lanes) {
         const int leftOver = lanes % kPricedLanes;
         const Real last = leftOver >= kShockWideLanesAtLeast ? Real(1) : kShockLaneBlocks * static_cast<Real>(leftOver);

@@ -82,9 +82,11 @@ constexpr Real kLikeMassRatio = 2;
 constexpr Real kHeldWalkPerBody = Real(0.000125);  // m
 constexpr Real kShockStackSubsteps = Real(3.34);
 constexpr Real kShockDepthExponent = Real(0.7);
-/// The sweep is not free: each of its blocks is copied from the frame's lanes, prepared and solved
-/// once, about kShockBlockSubsteps substeps' work on one of the frame's blocks, and a one-lane
-/// block (a group of one contact) kShockLaneBlocks of a wide one. Measured: on the 20-row pyramid,
+/// The sweep is not free. Priced as its first version cost, which copied each of its lanes into
+/// blocks of its own, prepared and solved them once: about kShockBlockSubsteps substeps' work on
+/// one of the frame's blocks, and a one-lane block (a group of one contact) kShockLaneBlocks of a
+/// wide one; the sweep now solves the frame's blocks and costs about a third of that, so the price
+/// is conservative (docs/ch10_speed.md, What is left). Measured: on the 20-row pyramid,
 /// where the sweep has about as many blocks as the frame, a sweep cost 2.6 substeps; on the 16-box
 /// column, fifteen layers of one contact against the frame's two blocks, ten. The planner takes
 /// the sweep where its substeps and this cost come to fewer than the substeps that, without it,

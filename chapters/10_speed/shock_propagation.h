@@ -19,9 +19,9 @@
 
 namespace stepwise {
 
-/// A group's contacts left over after its full wide blocks go into one more wide block when at
-/// least this many, else each into a one-lane block: a wide block costs about as much however many
-/// of its lanes are empty, a one-lane block about half as much (prepared and solved without SIMD).
+/// The planner's price of a sweep (iteration_plan.h) counts a group's contacts left over after its
+/// full wide blocks as one more wide block when at least this many, else as one-lane blocks, as the
+/// sweep's first version built them.
 constexpr int kShockWideLanesAtLeast = 2;
 
 /// The order of a shock sweep: groups, layer by layer from the supports up.

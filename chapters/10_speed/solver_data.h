@@ -59,6 +59,16 @@ struct ManifoldPointPack {
     Pack<N> maxNormalImpulse;        // largest this frame: restitution only where the point pushed
 };
 
+/// The rows' effective masses as the solve reads them (prepareBlock): each normal row's alone, the
+/// normal block's inverse (ManifoldBlock::normalBlockInverse), the tangent block's and the twist's.
+template <int N>
+struct RowMasses {
+    Pack<N> normalMass[4];
+    Pack<N> blockInverse[10];
+    Pack<N> tangentInverse11, tangentInverse12, tangentInverse22;
+    Pack<N> twistMass;
+};
+
 /// Up to N manifolds solved side by side, one per lane.
 template <int N>
 struct ManifoldBlock {
@@ -96,6 +106,12 @@ struct ManifoldBlock {
     /// independent directions, four rows), and (K + eps diag K)^-1 picks the least change of load.
     /// Constant over the frame (prepareNormalBlock).
     Pack<N> normalBlockInverse[10];
+    /// The shock sweep's view of the lane (shock_propagation.h), prepared only in a frame that ends
+    /// with it: the sweep's group the lane is solved in (0: not swept), which body is held still
+    /// (1 where it is A or B), and the effective masses with that body infinitely heavy.
+    int shockGroup[N] = {};
+    Pack<N> heldA, heldB;
+    RowMasses<N> heldMasses;
 };
 
 /// What filling a block reads of each lane's contact record, gathered lane by lane (fillLane), so

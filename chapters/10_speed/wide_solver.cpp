@@ -8,8 +8,8 @@ void fillWide(ManifoldBlock<kWideLanes>& block, const LaneInputs<kWideLanes>& in
     fillBlockFields(block, inputs, carryScale, warm);
 }
 
-void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states) {
-    for (ManifoldBlock<kWideLanes>& block : blocks) prepareBlock(block, states);
+void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states, bool held) {
+    for (ManifoldBlock<kWideLanes>& block : blocks) prepareBlock(block, states, held);
 }
 
 void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states) {
@@ -21,9 +21,9 @@ void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* 
     for (ManifoldBlock<kWideLanes>& block : blocks) solveBlock(block, states, params, useBias);
 }
 
-void solveWideRange(std::vector<ManifoldBlock<kWideLanes>>& blocks, std::size_t first, std::size_t count,
-                    SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
-    for (std::size_t b = first; b < first + count && b < blocks.size(); ++b) solveBlock(blocks[b], states, params, useBias);
+void solveHeldWide(const ManifoldBlock<kWideLanes>& block, SolverBodyState* states, const ContactSolveParams& params,
+                   int group) {
+    solveHeldBlock(block, states, params, group);
 }
 
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold) {

@@ -16,14 +16,15 @@ namespace stepwise {
 
 /// A wide block's fields from its lanes' gathered inputs (fillBlockFields).
 void fillWide(ManifoldBlock<kWideLanes>& block, const LaneInputs<kWideLanes>& inputs, Real carryScale, bool warm);
-/// Once per frame, after the blocks are filled: each block's effective masses (prepareBlock).
-void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states);
+/// Once per frame, after the blocks are filled: each block's effective masses (prepareBlock), and
+/// with `held` the shock sweep's too.
+void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states, bool held);
 void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states);
 void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
                bool useBias);
-/// solveWide over blocks[first, first + count) alone (the shock sweep's runs).
-void solveWideRange(std::vector<ManifoldBlock<kWideLanes>>& blocks, std::size_t first, std::size_t count,
-                    SolverBodyState* states, const ContactSolveParams& params, bool useBias);
+/// The shock sweep's solve of one block's lanes in `group` (solveHeldBlock).
+void solveHeldWide(const ManifoldBlock<kWideLanes>& block, SolverBodyState* states, const ContactSolveParams& params,
+                   int group);
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold);
 /// One sweep of collideBlock over the blocks; whether any point was struck.
 bool collideWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params);
