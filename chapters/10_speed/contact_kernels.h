@@ -389,6 +389,28 @@ inline void prepareRolling(ManifoldBlock<N>& c) {
                      scale * adjugate.xy, scale * adjugate.xz, scale * adjugate.yz};
 }
 
+// [ch10-row-angulars]
+/// The angular parts of the rows, arm x direction: each point's normal row (the arm reaches the
+/// point) and the centre's two tangent rows (the centre's arm). Computed where they are read, not
+/// kept in the block: a few cross products cost less than the 36 cache lines they took in a block
+/// of sixteen lanes, read from memory by every sweep of a scene too large for the cache.
+template <int N>
+inline void normalAngulars(const ManifoldBlock<N>& c, PackVec3<N> angularA[4], PackVec3<N> angularB[4]) {
+    for (int k = 0; k < 4; ++k) {
+        angularA[k] = cross(c.point[k].armA, c.normal);
+        angularB[k] = cross(c.point[k].armB, c.normal);
+    }
+}
+template <int N>
+inline void tangentAngulars(const ManifoldBlock<N>& c, PackVec3<N> angularA[2], PackVec3<N> angularB[2]) {
+    for (int k = 0; k < 2; ++k) {
+        const PackVec3<N>& tangent = k == 0 ? c.tangent1 : c.tangent2;
+        angularA[k] = cross(c.centerArmA, tangent);
+        angularB[k] = cross(c.centerArmB, tangent);
+    }
+}
+// [ch10-row-angulars]
+
 // [ch10-normal-block]
 /// The rows' effective masses for bodies of the given inverse masses and inertias (the frame's, or
 /// the shock sweep's with its held body's zeroed), from the angular parts prepareBlock computed.
@@ -402,16 +424,16 @@ inline void rowMasses(const ManifoldBlock<N>& c, const Pack<N>& inverseMassA, co
                       RowMasses<N>& out) {
     const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
     const Pack<N> linearInverse = inverseMassA + inverseMassB;
-    PackVec3<N> turnA[4], turnB[4];
+    PackVec3<N> angularA[4], angularB[4], turnA[4], turnB[4];
+    normalAngulars(c, angularA, angularB);
     for (int k = 0; k < 4; ++k) {
-        turnA[k] = inverseInertiaA * c.point[k].angularA;
-        turnB[k] = inverseInertiaB * c.point[k].angularB;
+        turnA[k] = inverseInertiaA * angularA[k];
+        turnB[k] = inverseInertiaB * angularB[k];
     }
     Pack<N> matrix[4][4], inverse[4][4];
     for (int i = 0; i < 4; ++i) {
         for (int j = 0; j < 4; ++j) {
-            const ManifoldPointPack<N>& pi = c.point[i];
-            const Pack<N> coupling = linearInverse + dot(pi.angularA, turnA[j]) + dot(pi.angularB, turnB[j]);
+            const Pack<N> coupling = linearInverse + dot(angularA[i], turnA[j]) + dot(angularB[i], turnB[j]);
             const Pack<N> identity = i == j ? one : zero;
             const Pack<N> present = min(presence[i], presence[j]);  // > 0: both points exist
             matrix[i][j] = selectPositive(present, coupling, identity);
@@ -440,10 +462,12 @@ inline void rowMasses(const ManifoldBlock<N>& c, const Pack<N>& inverseMassA, co
         for (int j = i; j < 4; ++j) out.blockInverse[entry++] = inverse[i][j];
 
     // The centre's two tangent rows (t1 . t2 = 0, so the linear parts do not couple) and the twist.
-    const PackVec3<N>& tangentA1 = c.frictionAngularA[0];
-    const PackVec3<N>& tangentA2 = c.frictionAngularA[1];
-    const PackVec3<N>& tangentB1 = c.frictionAngularB[0];
-    const PackVec3<N>& tangentB2 = c.frictionAngularB[1];
+    PackVec3<N> frictionA[2], frictionB[2];
+    tangentAngulars(c, frictionA, frictionB);
+    const PackVec3<N>& tangentA1 = frictionA[0];
+    const PackVec3<N>& tangentA2 = frictionA[1];
+    const PackVec3<N>& tangentB1 = frictionB[0];
+    const PackVec3<N>& tangentB2 = frictionB[1];
     const PackVec3<N> turnA1 = inverseInertiaA * tangentA1, turnA2 = inverseInertiaA * tangentA2;
     const PackVec3<N> turnB1 = inverseInertiaB * tangentB1, turnB2 = inverseInertiaB * tangentB2;
     const Pack<N> k11 = linearInverse + dot(tangentA1, turnA1) + dot(tangentB1, turnB1);
@@ -484,12 +508,11 @@ template <int N>
 inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states, bool held = false) {
     const Pack<N> zero = Pack<N>::splat(0);
     const bool bounces = anyNegative(-c.restitution);  // approachSpeed is read only where a lane bounces
+    PackVec3<N> angularA[4], angularB[4];
+    normalAngulars(c, angularA, angularB);
     for (int k = 0; k < 4; ++k) {
-        ManifoldPointPack<N>& p = c.point[k];
-        p.angularA = cross(p.armA, c.normal);
-        p.angularB = cross(p.armB, c.normal);
-        p.turnA = c.inverseInertiaA * p.angularA;
-        p.turnB = c.inverseInertiaB * p.angularB;
+        c.point[k].turnA = c.inverseInertiaA * angularA[k];
+        c.point[k].turnB = c.inverseInertiaB * angularB[k];
     }
     if (bounces) {
         const BodyPack<N> a = gatherBodies<N>(states, c.slotA);
@@ -499,12 +522,11 @@ inline void prepareBlock(ManifoldBlock<N>& c, const SolverBodyState* states, boo
     } else {
         for (ManifoldPointPack<N>& p : c.point) p.approachSpeed = zero;
     }
+    PackVec3<N> frictionA[2], frictionB[2];
+    tangentAngulars(c, frictionA, frictionB);
     for (int k = 0; k < 2; ++k) {
-        const PackVec3<N>& tangent = k == 0 ? c.tangent1 : c.tangent2;
-        c.frictionAngularA[k] = cross(c.centerArmA, tangent);
-        c.frictionAngularB[k] = cross(c.centerArmB, tangent);
-        c.frictionTurnA[k] = c.inverseInertiaA * c.frictionAngularA[k];
-        c.frictionTurnB[k] = c.inverseInertiaB * c.frictionAngularB[k];
+        c.frictionTurnA[k] = c.inverseInertiaA * frictionA[k];
+        c.frictionTurnB[k] = c.inverseInertiaB * frictionB[k];
     }
     c.twistTurnA = c.inverseInertiaA * c.normal;
     c.twistTurnB = c.inverseInertiaB * c.normal;
@@ -555,10 +577,10 @@ inline void solveFriction(ManifoldBlock<N>& c, BodyPack<N>& a, BodyPack<N>& b) {
         twistLoad = twistLoad + p.normalImpulse * p.twistRadius;
     }
     const PackVec3<N> apart = b.linearVelocity - a.linearVelocity;
-    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, c.frictionAngularB[0]) -
-                           dot(a.angularVelocity, c.frictionAngularA[0]);
-    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, c.frictionAngularB[1]) -
-                           dot(a.angularVelocity, c.frictionAngularA[1]);
+    PackVec3<N> frictionA[2], frictionB[2];
+    tangentAngulars(c, frictionA, frictionB);
+    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, frictionB[0]) - dot(a.angularVelocity, frictionA[0]);
+    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, frictionB[1]) - dot(a.angularVelocity, frictionA[1]);
     Pack<N> total1 = c.tangentImpulse1 - (c.tangentInverse11 * slide1 + c.tangentInverse12 * slide2);
     Pack<N> total2 = c.tangentImpulse2 - (c.tangentInverse12 * slide1 + c.tangentInverse22 * slide2);
     const Pack<N> limit = c.friction * load;
@@ -671,11 +693,12 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     // the increments d that make every row's speed its target, d = -K^-1 (J v + bias), kept where
     // they leave every point pushing (lambda + d >= 0) and every row rigid.
     Pack<N> target[4], increment[4];  // target: each row's speed plus bias; increment: the block's change
+    PackVec3<N> angularA[4], angularB[4];
+    normalAngulars(c, angularA, angularB);
     const Pack<N> approach = dot(c.normal, b.linearVelocity - a.linearVelocity);
     const bool bounces = anyNegative(-c.restitution);  // approachSpeed is read only where a lane bounces
     for (int k = 0; k < 4; ++k) {
-        const Pack<N> speed = approach + dot(b.angularVelocity, c.point[k].angularB) -
-                              dot(a.angularVelocity, c.point[k].angularA) + bias[k];
+        const Pack<N> speed = approach + dot(b.angularVelocity, angularB[k]) - dot(a.angularVelocity, angularA[k]) + bias[k];
         target[k] = selectPositive(c.point[k].normalMass, speed, zero);  // a missing point asks for nothing
         if (!bounces) continue;
         // A gap that a substep's motion closes (the relax sweep looks one substep ahead):
@@ -738,7 +761,7 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
                 const int i = sweep % 2 == 0 ? k : 3 - k;
                 ManifoldPointPack<N>& p = c.point[i];
                 const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
-                                            dot(b.angularVelocity, p.angularB) - dot(a.angularVelocity, p.angularA);
+                                            dot(b.angularVelocity, angularB[i]) - dot(a.angularVelocity, angularA[i]);
                 Pack<N> impulse = -(p.normalMass * massScale[i] * (normalSpeed + bias[i])) - impulseScale[i] * p.normalImpulse;
                 const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
                 impulse = accumulated - p.normalImpulse;
@@ -780,13 +803,14 @@ inline void solveHeldBlock(const ManifoldBlock<N>& c, SolverBodyState* states, c
     };
     hold();
     Pack<N> separations[4], bias[4], target[4], impulse[4], increment[4], total[4];
+    PackVec3<N> angularA[4], angularB[4];
+    normalAngulars(c, angularA, angularB);
     pointSeparations(c, a, b, separations);
     const Pack<N> inverseH = Pack<N>::splat(1 / params.substep);
     const Pack<N> approach = dot(c.normal, b.linearVelocity - a.linearVelocity);
     for (int k = 0; k < 4; ++k) {
         bias[k] = selectPositive(separations[k], separations[k] * inverseH, zero);  // relax: gaps only
-        const Pack<N> speed = approach + dot(b.angularVelocity, c.point[k].angularB) -
-                              dot(a.angularVelocity, c.point[k].angularA) + bias[k];
+        const Pack<N> speed = approach + dot(b.angularVelocity, angularB[k]) - dot(a.angularVelocity, angularA[k]) + bias[k];
         target[k] = selectPositive(m.normalMass[k], speed, zero);
         impulse[k] = c.point[k].normalImpulse;
     }
@@ -821,7 +845,7 @@ inline void solveHeldBlock(const ManifoldBlock<N>& c, SolverBodyState* states, c
                 const int i = sweep % 2 == 0 ? k : 3 - k;
                 const ManifoldPointPack<N>& p = c.point[i];
                 const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
-                                            dot(b.angularVelocity, p.angularB) - dot(a.angularVelocity, p.angularA);
+                                            dot(b.angularVelocity, angularB[i]) - dot(a.angularVelocity, angularA[i]);
                 const Pack<N> accumulated = max(impulse[i] - m.normalMass[i] * (normalSpeed + bias[i]), zero);
                 const Pack<N> change = accumulated - impulse[i];
                 impulse[i] = selectPositive(blockFails, accumulated, impulse[i]);
@@ -841,10 +865,10 @@ inline void solveHeldBlock(const ManifoldBlock<N>& c, SolverBodyState* states, c
         twistLoad = twistLoad + impulse[k] * c.point[k].twistRadius;
     }
     const PackVec3<N> apart = b.linearVelocity - a.linearVelocity;
-    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, c.frictionAngularB[0]) -
-                           dot(a.angularVelocity, c.frictionAngularA[0]);
-    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, c.frictionAngularB[1]) -
-                           dot(a.angularVelocity, c.frictionAngularA[1]);
+    PackVec3<N> frictionA[2], frictionB[2];
+    tangentAngulars(c, frictionA, frictionB);
+    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, frictionB[0]) - dot(a.angularVelocity, frictionA[0]);
+    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, frictionB[1]) - dot(a.angularVelocity, frictionA[1]);
     Pack<N> total1 = c.tangentImpulse1 - (m.tangentInverse11 * slide1 + m.tangentInverse12 * slide2);
     Pack<N> total2 = c.tangentImpulse2 - (m.tangentInverse12 * slide1 + m.tangentInverse22 * slide2);
     const Pack<N> limit = c.friction * load;

@@ -48,8 +48,8 @@ struct SolverBodies {
 template <int N>
 struct ManifoldPointPack {
     PackVec3<N> armA, armB;          // contact point minus each centre of mass, at the frame's start, m
-    PackVec3<N> angularA, angularB;  // the normal row's angular parts, arm x normal (prepareNormalBlock)
     PackVec3<N> turnA, turnB;        // what a unit normal impulse does to each angular velocity, I^-1 (arm x n)
+                                     // (arm x n itself is not kept: normalAngulars)
     Pack<N> adjustedSeparation;      // separation at the frame's start minus normal . (armB - armA), m
     Pack<N> normalMass;              // effective mass of the normal row, kg; 0 for a missing point
     Pack<N> normalImpulse;           // accumulated, N s
@@ -90,8 +90,7 @@ struct ManifoldBlock {
     // solved together, and a twist row about the normal. Coulomb's limits are those of the four
     // points sliding together: |tangent impulse| <= mu sum(lambda), |twist| <= mu sum(lambda r).
     PackVec3<N> centerArmA, centerArmB;         // centre minus each centre of mass, frame start, m
-    PackVec3<N> frictionAngularA[2], frictionAngularB[2];  // centre arm x tangent k (prepareBlock)
-    PackVec3<N> frictionTurnA[2], frictionTurnB[2];        // I^-1 (centre arm x tangent k)
+    PackVec3<N> frictionTurnA[2], frictionTurnB[2];        // I^-1 (centre arm x tangent k; tangentAngulars)
     PackVec3<N> twistTurnA, twistTurnB;                    // I^-1 n: what a unit twist does to each body
     Pack<N> tangentInverse11, tangentInverse12, tangentInverse22;  // the 2x2 tangent block's K^-1, kg
     Pack<N> twistMass;                          // 1 / (n . IA^-1 n + n . IB^-1 n), kg m^2
