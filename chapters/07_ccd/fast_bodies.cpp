@@ -51,6 +51,8 @@ CcdPlan planContinuousCollision(const World& world) {
     const std::string setting = std::string("settings.ccd is \"") + toString(world.settings.ccd) + "\"";
     if (world.settings.ccd == CcdMode::Off) return {false, "off: " + setting};
     if (world.settings.ccd == CcdMode::On) return {true, "on: " + setting};
+    // A body alone hits nothing, however fast (a projectile in the air): the sweeps would only cost.
+    if (world.bodies.size() < 2) return {false, "off: auto, one body: nothing to collide with"};
     int bullets = 0;
     int fastest = -1;
     Real fastestTravel = 0;

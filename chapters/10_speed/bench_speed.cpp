@@ -74,36 +74,63 @@ void measurePoses(const World& start, const std::vector<Transform>& poses, Measu
     }
 }
 
-Measurement runEngine(const World& start, SpeedOptions options, long frames, long timedFrom) {
-    World world = start;
-    options.profile = std::make_shared<FastSolveStats>();
-    Pipeline pipeline = makeChapter10Pipeline(world, options);
-    std::vector<double> stepMs;
-    Measurement measured;
-    long stageTimedFrames = 0;
-    for (long frame = 0; frame < frames; ++frame) {
-        if (frame == timedFrom) *options.profile = FastSolveStats{};
-        pipeline.step(world);
-        if (frame < timedFrom) continue;
-        stepMs.push_back(pipeline.lastStepMs());
-        if (!pipeline.lastStepTimedStages()) continue;  // stages are timed one frame in eight
-        for (const Stage& stage : pipeline.stages()) measured.stageMs[stageGroup(stage.name)] += stage.lastMs;
-        ++stageTimedFrames;
+/// Chapter 10 stepping a copy of `start` one frame at a time (so that the peer's frames can
+/// alternate with its own, runBeside), measuring as it goes.
+class EngineRun {
+public:
+    EngineRun(const World& start, SpeedOptions options, long timedFrom)
+        : start_(start), world_(start), options_(withProfile(options)), pipeline_(makeChapter10Pipeline(world_, options_)),
+          timedFrom_(timedFrom) {}
+
+    void step(long frame) {
+        if (frame == timedFrom_) *options_.profile = FastSolveStats{};
+        pipeline_.step(world_);
+        ++frames_;
+        if (frame < timedFrom_) return;
+        stepMs_.push_back(pipeline_.lastStepMs());
+        if (!pipeline_.lastStepTimedStages()) return;  // stages are timed one frame in eight
+        for (const Stage& stage : pipeline_.stages()) measured_.stageMs[stageGroup(stage.name)] += stage.lastMs;
+        ++stageTimedFrames_;
     }
-    const double timed = static_cast<double>(std::max<std::size_t>(1, stepMs.size()));
-    for (auto& [group, ms] : measured.stageMs) ms /= static_cast<double>(std::max<long>(1, stageTimedFrames));
-    FastSolveStats& phases = measured.solvePhases;
-    phases = *options.profile;
-    for (double& ms : phases.phaseMs) ms /= timed;
-    measured.stepMs = spreadOf(stepMs);
-    measured.frames = frames;
-    std::vector<Transform> poses;
-    for (const Body& body : world.bodies) poses.push_back(body.transform);
-    measurePoses(start, poses, measured);
-    for (const Contact& contact : world.contacts)
-        for (int i = 0; i < contact.pointCount; ++i) measured.maxPenetration = std::max(measured.maxPenetration, contact.points[i].depth);
-    for (const Motion& motion : world.motions) measured.sleeping += motion.asleep ? 1 : 0;
-    return measured;
+
+    Measurement finish() {
+        const double timed = static_cast<double>(std::max<std::size_t>(1, stepMs_.size()));
+        for (auto& [group, ms] : measured_.stageMs) ms /= static_cast<double>(std::max<long>(1, stageTimedFrames_));
+        FastSolveStats& phases = measured_.solvePhases;
+        phases = *options_.profile;
+        for (double& ms : phases.phaseMs) ms /= timed;
+        measured_.stepMs = spreadOf(stepMs_);
+        measured_.frames = frames_;
+        std::vector<Transform> poses;
+        for (const Body& body : world_.bodies) poses.push_back(body.transform);
+        measurePoses(start_, poses, measured_);
+        for (const Contact& contact : world_.contacts)
+            for (int i = 0; i < contact.pointCount; ++i)
+                measured_.maxPenetration = std::max(measured_.maxPenetration, contact.points[i].depth);
+        for (const Motion& motion : world_.motions) measured_.sleeping += motion.asleep ? 1 : 0;
+        return measured_;
+    }
+
+private:
+    static SpeedOptions withProfile(SpeedOptions options) {
+        options.profile = std::make_shared<FastSolveStats>();
+        return options;
+    }
+    const World& start_;
+    World world_;
+    SpeedOptions options_;
+    Pipeline pipeline_;
+    long timedFrom_;
+    long frames_ = 0;
+    long stageTimedFrames_ = 0;
+    std::vector<double> stepMs_;
+    Measurement measured_;
+};
+
+Measurement runEngine(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
+    EngineRun run(start, options, timedFrom);
+    for (long frame = 0; frame < frames; ++frame) run.step(frame);
+    return run.finish();
 }
 
 /// Frames until every dynamic body of `start` sleeps, stepped by chapter 10 with sleeping on; at
@@ -121,8 +148,7 @@ long framesUntilAsleep(const World& start, long most) {
     return most;
 }
 
-Measurement runPeer(const World& start, long frames, long timedFrom) {
-    const PeerRun run = peerEngine().run(start, frames);
+Measurement peerMeasurement(const World& start, const PeerRun& run, long frames, long timedFrom) {
     Measurement measured;
     std::vector<double> stepMs(run.stepMs.begin() + std::min<long>(timedFrom, static_cast<long>(run.stepMs.size())),
                                run.stepMs.end());
@@ -131,6 +157,19 @@ Measurement runPeer(const World& start, long frames, long timedFrom) {
     measurePoses(start, run.finalPoses, measured);
     return measured;
 }
+
+// [ch10-bench-beside]
+/// Chapter 10 and the peer on the same scene, their frames alternating: each engine's frame is
+/// timed alone, and the other's runs between two of them. A shared host's speed wanders by a fifth
+/// and more within minutes, and two runs one after the other measured the host as much as the
+/// engines; alternating, both meet it alike (and each starts its frame with the other's data in
+/// the caches, as an engine in a game does).
+std::pair<Measurement, Measurement> runBeside(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
+    EngineRun engine(start, options, timedFrom);
+    const PeerRun peer = peerEngine().run(start, frames, [&engine](long frame) { engine.step(frame); });
+    return {engine.finish(), peerMeasurement(start, peer, frames, timedFrom)};
+}
+// [ch10-bench-beside]
 
 struct BenchScene {
     std::string name;
@@ -167,14 +206,20 @@ void measureSpeed(BenchRun& bench) {
     bench.progress().stage("scenes x configurations", static_cast<long>(scenes.size() * list.size()));
     for (const BenchScene& scene : scenes) {
         const int bodies = scene.world.dynamicBodyCount();
-        std::vector<std::pair<const Configuration*, Measurement>> results;
-        for (const Configuration& configuration : list) {
-            // Chapter 8's solve is slow on thousands of bodies: a second of simulated time measures it.
-            const long frames = configuration.options.fastSolve || configuration.peer ? scene.frames
-                                                                                     : std::min<long>(scene.frames, 60);
-            results.push_back({&configuration, configuration.peer ? runPeer(scene.world, frames, scene.timedFrom)
-                                                                  : runEngine(scene.world, configuration.options,
-                                                                              frames, scene.timedFrom)});
+        std::vector<std::pair<const Configuration*, Measurement>> results(list.size());
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const Configuration& configuration = list[i];
+            if (configuration.peer) continue;  // beside chapter 10 (below)
+            if (i == 0 && withPeer) {
+                auto [engine, peer] = runBeside(scene.world, configuration.options, scene.frames, scene.timedFrom);
+                results[0] = {&configuration, engine};
+                results.back() = {&list.back(), peer};
+                bench.progress().advance();
+            } else {
+                // Chapter 8's solve is slow on thousands of bodies: a second of simulated time measures it.
+                const long frames = configuration.options.fastSolve ? scene.frames : std::min<long>(scene.frames, 60);
+                results[i] = {&configuration, runEngine(scene.world, configuration.options, frames, scene.timedFrom)};
+            }
             bench.progress().advance();
         }
         const FastSolveStats& phases = results.front().second.solvePhases;
@@ -233,26 +278,43 @@ void measureSpeed(BenchRun& bench) {
     plot.integerX = true;
     plot.caption = std::string("Median ms per step (quartiles as whiskers) of pyramids of 10 to ") + (quick ? "30" : "100") +
                    " rows, 120 frames each, single thread, " + realTypeName() +
-                   " build; chapter 10 with sleeping off, its scalar solve, and the peer when the program has one.";
+                   " build; chapter 10 with sleeping off, its scalar solve, and the peer when the program has one "
+                   "(its frames alternating with chapter 10's).";
     const std::vector<int> rowsList = quick ? std::vector<int>{10, 20, 30} : std::vector<int>{10, 20, 40, 60, 80, 100};
     std::vector<Configuration> scalingList = {list[0], list[1]};
     if (withPeer) scalingList.push_back(list.back());
     bench.progress().stage("pyramids of growing size", static_cast<long>(rowsList.size() * scalingList.size()));
-    for (const Configuration& configuration : scalingList) {
-        PlotSeries series(configuration.name);
-        for (int rows : rowsList) {
-            const World pyramid = buildPyramidRow(1, rows);
-            const long frames = quick ? 30 : 120;
-            const Measurement m = configuration.peer ? runPeer(pyramid, frames, 0)
-                                                     : runEngine(pyramid, configuration.options, frames, 0);
-            const int bodies = pyramid.dynamicBodyCount();
-            scaling.addRow({std::to_string(rows), std::to_string(bodies), configuration.name, formatNumber(m.stepMs.median),
-                            formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper)});
+    // Measured row by row (chapter 10 and the peer side by side, runBeside), tabled configuration
+    // by configuration.
+    std::vector<std::vector<Measurement>> measured(scalingList.size());
+    for (int rows : rowsList) {
+        const World pyramid = buildPyramidRow(1, rows);
+        const long frames = quick ? 30 : 120;
+        for (std::size_t c = 0; c < scalingList.size(); ++c) {
+            const Configuration& configuration = scalingList[c];
+            if (configuration.peer) continue;
+            if (c == 0 && withPeer) {
+                auto [engine, peer] = runBeside(pyramid, configuration.options, frames, 0);
+                measured[0].push_back(engine);
+                measured.back().push_back(peer);
+                bench.progress().advance();
+            } else {
+                measured[c].push_back(runEngine(pyramid, configuration.options, frames, 0));
+            }
+            bench.progress().advance();
+        }
+    }
+    for (std::size_t c = 0; c < scalingList.size(); ++c) {
+        PlotSeries series(scalingList[c].name);
+        for (std::size_t r = 0; r < rowsList.size(); ++r) {
+            const Measurement& m = measured[c][r];
+            const int bodies = buildPyramidRow(1, rowsList[r]).dynamicBodyCount();
+            scaling.addRow({std::to_string(rowsList[r]), std::to_string(bodies), scalingList[c].name,
+                            formatNumber(m.stepMs.median), formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper)});
             series.x.push_back(bodies);
             series.y.push_back(m.stepMs.median);
             series.yLow.push_back(m.stepMs.lower);
             series.yHigh.push_back(m.stepMs.upper);
-            bench.progress().advance();
         }
         plot.series.push_back(series);
     }

@@ -17,11 +17,14 @@ struct PeerRun {
     std::vector<Transform> finalPoses;     // per World body
 };
 
+/// Called after each of the peer's frames, outside its timed region (frame: 0, 1, ...).
+using BetweenPeerFrames = std::function<void(long frame)>;
+
 struct PeerEngine {
     std::string name;                      // "bullet 3.24"
-    /// Steps a copy of `world` for `frames` frames at the world's settings; throws
-    /// std::runtime_error naming what it cannot map.
-    std::function<PeerRun(const World& world, long frames)> run;
+    /// Steps a copy of `world` for `frames` frames at the world's settings, calling `between`
+    /// (when set) after each; throws std::runtime_error naming what it cannot map.
+    std::function<PeerRun(const World& world, long frames, const BetweenPeerFrames& between)> run;
 };
 
 void setPeerEngine(PeerEngine engine);

@@ -52,6 +52,15 @@ TEST_CASE("the planner adds CCD for bullets and fast bodies, leaves it out other
     CHECK(planned.enabledStageNames().back() == "ccd:toi");
     CHECK(ccdNote(planned).find("auto: \"shot\" travels") == 0);
 
+    World alone = emptyWorld("alone", Vec3::Zero());  // as fast as the shot, and nothing to hit
+    BodyDef shot;
+    shot.name = "shot";
+    shot.shape = Shape::sphere(Real(0.03));
+    shot.linearVelocity = Vec3(100, 0, 0);
+    addBody(alone, shot);
+    CHECK_FALSE(hasStage(makeChapter07Pipeline(alone), "ccd:toi"));
+    CHECK(ccdNote(makeChapter07Pipeline(alone)) == "off: auto, one body: nothing to collide with");
+
     CHECK(ccdNote(makeChapter07Pipeline(buildShot(fast, CcdMode::Off))) == "off: settings.ccd is \"off\"");
     CHECK(hasStage(makeChapter07Pipeline(buildShot(slow, CcdMode::On)), "ccd:toi"));
     CHECK(ccdNote(makeChapter07Pipeline(buildHeadOnBullets())) == "auto: 2 bullet bodies");
