@@ -564,31 +564,42 @@ inline void solveRolling(ManifoldBlock<N>& c, const Pack<N>& load, BodyPack<N>& 
 // [ch10-rolling]
 
 // [ch10-friction]
+/// The centre's two tangent impulses that stop its slide, as totals, clamped to the friction cone
+/// (a circle of radius mu times the load), through the tangent block's inverse (the frame's, or
+/// the shock sweep's held one).
+template <int N>
+inline void coneImpulses(const ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b, const Pack<N>& load,
+                         const Pack<N>& inverse11, const Pack<N>& inverse12, const Pack<N>& inverse22, Pack<N>& total1,
+                         Pack<N>& total2) {
+    const PackVec3<N> apart = b.linearVelocity - a.linearVelocity;
+    PackVec3<N> frictionA[2], frictionB[2];
+    tangentAngulars(c, frictionA, frictionB);
+    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, frictionB[0]) - dot(a.angularVelocity, frictionA[0]);
+    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, frictionB[1]) - dot(a.angularVelocity, frictionA[1]);
+    total1 = c.tangentImpulse1 - (inverse11 * slide1 + inverse12 * slide2);
+    total2 = c.tangentImpulse2 - (inverse12 * slide1 + inverse22 * slide2);
+    const Pack<N> limit = c.friction * load;
+    const Pack<N> lengthSquared = total1 * total1 + total2 * total2;
+    const Pack<N> scale = selectPositive(lengthSquared - limit * limit,
+                                         limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), Pack<N>::splat(1));
+    total1 = total1 * scale;
+    total2 = total2 * scale;
+}
+
 /// The manifold's friction at its centre, against the normal impulses just found: the two
 /// tangent rows as one 2x2 block clamped to the friction cone (a circle of radius mu sum(lambda)),
 /// then the twist about the normal, clamped to mu sum(lambda r). Three rows where a row per point
 /// and direction would be eight (PhysX's patch friction and Havok's manifold friction do the same).
 template <int N>
 inline void solveFriction(ManifoldBlock<N>& c, BodyPack<N>& a, BodyPack<N>& b) {
-    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    const Pack<N> zero = Pack<N>::splat(0);
     Pack<N> load = zero, twistLoad = zero;
     for (const ManifoldPointPack<N>& p : c.point) {
         load = load + p.normalImpulse;
         twistLoad = twistLoad + p.normalImpulse * p.twistRadius;
     }
-    const PackVec3<N> apart = b.linearVelocity - a.linearVelocity;
-    PackVec3<N> frictionA[2], frictionB[2];
-    tangentAngulars(c, frictionA, frictionB);
-    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, frictionB[0]) - dot(a.angularVelocity, frictionA[0]);
-    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, frictionB[1]) - dot(a.angularVelocity, frictionA[1]);
-    Pack<N> total1 = c.tangentImpulse1 - (c.tangentInverse11 * slide1 + c.tangentInverse12 * slide2);
-    Pack<N> total2 = c.tangentImpulse2 - (c.tangentInverse12 * slide1 + c.tangentInverse22 * slide2);
-    const Pack<N> limit = c.friction * load;
-    const Pack<N> lengthSquared = total1 * total1 + total2 * total2;
-    const Pack<N> scale =
-        selectPositive(lengthSquared - limit * limit, limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), one);
-    total1 = total1 * scale;
-    total2 = total2 * scale;
+    Pack<N> total1, total2;
+    coneImpulses(c, a, b, load, c.tangentInverse11, c.tangentInverse12, c.tangentInverse22, total1, total2);
     const Pack<N> change1 = total1 - c.tangentImpulse1, change2 = total2 - c.tangentImpulse2;
     c.tangentImpulse1 = total1;
     c.tangentImpulse2 = total2;
@@ -864,18 +875,9 @@ inline void solveHeldBlock(const ManifoldBlock<N>& c, SolverBodyState* states, c
         load = load + impulse[k];
         twistLoad = twistLoad + impulse[k] * c.point[k].twistRadius;
     }
-    const PackVec3<N> apart = b.linearVelocity - a.linearVelocity;
-    PackVec3<N> frictionA[2], frictionB[2];
-    tangentAngulars(c, frictionA, frictionB);
-    const Pack<N> slide1 = dot(c.tangent1, apart) + dot(b.angularVelocity, frictionB[0]) - dot(a.angularVelocity, frictionA[0]);
-    const Pack<N> slide2 = dot(c.tangent2, apart) + dot(b.angularVelocity, frictionB[1]) - dot(a.angularVelocity, frictionA[1]);
-    Pack<N> total1 = c.tangentImpulse1 - (m.tangentInverse11 * slide1 + m.tangentInverse12 * slide2);
-    Pack<N> total2 = c.tangentImpulse2 - (m.tangentInverse12 * slide1 + m.tangentInverse22 * slide2);
-    const Pack<N> limit = c.friction * load;
-    const Pack<N> lengthSquared = total1 * total1 + total2 * total2;
-    const Pack<N> scale =
-        selectPositive(lengthSquared - limit * limit, limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), one);
-    applyFriction(c, total1 * scale - c.tangentImpulse1, total2 * scale - c.tangentImpulse2, a, b);
+    Pack<N> total1, total2;
+    coneImpulses(c, a, b, load, m.tangentInverse11, m.tangentInverse12, m.tangentInverse22, total1, total2);
+    applyFriction(c, total1 - c.tangentImpulse1, total2 - c.tangentImpulse2, a, b);
     hold();
     const Pack<N> twistLimit = c.friction * twistLoad;
     const Pack<N> spin = dot(c.normal, b.angularVelocity - a.angularVelocity);
