@@ -63,7 +63,7 @@ struct ContactSolverScratch {
     std::vector<ManifoldBlock<kWideLanes>> wideBlocks;   // grouped by colour
     LaneInputs<kWideLanes> laneInputs;                   // the block being filled (buildWideBlocks)
     std::vector<int> contactOrder, slotA, slotB, colours;
-    std::vector<int> laneOrder, laneKeys, laneScratch, laneBuckets;  // the wide blocks' fill order (orderLanes)
+    std::vector<int> laneOrder, laneScratch, laneBuckets;  // the wide blocks' fill order (orderLanes)
     std::vector<std::uint64_t> colourBits;
     StackSearch stackSearch;  // the planner's (iteration_plan.h)
     // Shock propagation (shock_propagation.h): the sweep's order, each contact's group in it (per
