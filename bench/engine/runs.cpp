@@ -36,23 +36,15 @@ double finalPenetration(const World& world) {
     return probe ? double(probe->measure(world)) : -1.0;
 }
 
-/// A run's cost is its mean step (the whole run, settling and sleeping included: what the user
-/// waits for). Small scenes step in microseconds, where one run is mostly the clock's noise: the
-/// run is repeated (unrecorded) until the runs add up to this much, and the median run taken.
-constexpr double kTimedMsAtLeast = 100;
-constexpr int kMostRepeats = 500;
-
 double total(const std::vector<double>& values) {
     double sum = 0;
     for (double value : values) sum += value;
     return sum;
 }
 
-/// Adds one run's mean step to `means` and returns the run's total ms.
-double addRun(const std::vector<double>& stepMs, std::vector<double>& means) {
-    const double ms = total(stepMs);
-    means.push_back(ms / double(std::max<std::size_t>(1, stepMs.size())));
-    return ms;
+/// A run's time: its mean step (the whole run, settling and sleeping included: what the user waits for).
+double meanStep(const std::vector<double>& stepMs) {
+    return total(stepMs) / double(std::max<std::size_t>(1, stepMs.size()));
 }
 
 }  // namespace
@@ -97,24 +89,33 @@ RunResult runEngine(const World& scene, double seconds) {
         }
     }
     result.trajectory.end = world;
-    std::vector<double> means;
-    double timed = addRun(stepMs, means);
-    for (int repeat = 0; result.failure.empty() && timed < kTimedMsAtLeast && repeat < kMostRepeats; ++repeat) {
-        World again = scene;
-        Pipeline pipelineAgain = chapterRegistry().makePipeline(again);
-        stepMs.clear();
-        for (long frame = 0; frame < result.frames; ++frame) {
-            pipelineAgain.step(again);
-            stepMs.push_back(pipelineAgain.lastStepMs());
-        }
-        timed += addRun(stepMs, means);
-    }
-    result.msPerStep = median(means);
+    result.timedRuns.push_back(meanStep(stepMs));
     if (result.failure.empty()) result.trajectory.finalPenetration = finalPenetration(world);
     return result;
 }
 
+double timeEngine(const World& scene, long frames) {
+    World world = scene;
+    Pipeline pipeline = chapterRegistry().makePipeline(world);
+    double ms = 0;
+    for (long frame = 0; frame < frames; ++frame) {
+        pipeline.step(world);
+        ms += pipeline.lastStepMs();
+    }
+    return ms / double(std::max(1L, frames));
+}
+
 #ifdef STEPWISE_HAVE_BULLET
+namespace {
+peers::BulletOptions bulletOptions(const PeerKnobs& knobs) {
+    peers::BulletOptions options;
+    options.solverIterations = knobs.iterations;
+    options.substeps = knobs.substeps;
+    options.sleeping = true;  // Bullet's own default (the peer's program turns it off to time every body)
+    return options;
+}
+}  // namespace
+
 bool havePeer() { return true; }
 std::string peerName() { return peers::bulletVersion(); }
 
@@ -124,21 +125,13 @@ RunResult runPeer(const World& scene, double seconds, const PeerKnobs& knobs) {
     result.trajectory.dt = double(scene.settings.dt);
     result.trajectory.start = scene;
     result.trajectory.poses.push_back(posesOf(scene));
-    peers::BulletOptions options;
-    options.solverIterations = knobs.iterations;
-    options.substeps = knobs.substeps;
-    options.sleeping = true;  // Bullet's own default (the peer's program turns it off to time every body)
     try {
-        const peers::BulletRun run = peers::runBullet(scene, result.frames, options,
+        const peers::BulletRun run = peers::runBullet(scene, result.frames, bulletOptions(knobs),
                                                       [&](long, const std::vector<Transform>& poses) {
                                                           result.trajectory.poses.push_back(poses);
                                                       });
         result.trajectory.end = peers::worldAfterRun(scene, run);
-        std::vector<double> means;
-        double timed = addRun(run.stepMs, means);
-        for (int repeat = 0; timed < kTimedMsAtLeast && repeat < kMostRepeats; ++repeat)
-            timed += addRun(peers::runBullet(scene, result.frames, options).stepMs, means);
-        result.msPerStep = median(means);
+        result.timedRuns.push_back(meanStep(run.stepMs));
     } catch (const peers::BulletUnsupported& refused) {
         result.failure = std::string("refused: ") + refused.what();
         return result;
@@ -151,6 +144,10 @@ RunResult runPeer(const World& scene, double seconds, const PeerKnobs& knobs) {
     result.trajectory.finalPenetration = finalPenetration(result.trajectory.end);
     return result;
 }
+
+double timePeer(const World& scene, long frames, const PeerKnobs& knobs) {
+    return meanStep(peers::runBullet(scene, frames, bulletOptions(knobs)).stepMs);
+}
 #else
 bool havePeer() { return false; }
 std::string peerName() { return ""; }
@@ -159,6 +156,7 @@ RunResult runPeer(const World&, double, const PeerKnobs&) {
     result.failure = "refused: this program was built without the Bullet peer";
     return result;
 }
+double timePeer(const World&, long, const PeerKnobs&) { return 0; }
 #endif
 
 }  // namespace stepwise::engine_bench

@@ -29,7 +29,8 @@ struct PeerKnobs {
 
 struct RunResult {
     Trajectory trajectory;
-    double msPerStep = 0;        // mean over the run's frames (the median of repeated runs for small scenes)
+    double msPerStep = 0;        // the median of timedRuns (set by the bench once the runs have taken their turns)
+    std::vector<double> timedRuns;  // each timed run's mean ms per step: the recorded run's, then those timed in turns
     long frames = 0;
     std::string failure;         // non-empty: the run could not be scored (a refusal, a blow-up)
 };
@@ -40,8 +41,11 @@ long framesFor(const World& world, double seconds);
 /// The scene with the knobs applied to its settings.
 World withKnobs(const World& scene, const EngineKnobs& knobs);
 
-/// Steps `scene` with the latest chapter's pipeline (what `stepwise run` does) for `seconds`.
+/// Steps `scene` with the latest chapter's pipeline (what `stepwise run` does) for `seconds`,
+/// recording every frame; the run's time is timedRuns' first.
 RunResult runEngine(const World& scene, double seconds);
+/// One more run of `frames` frames for its time alone (nothing recorded): its mean ms per step.
+double timeEngine(const World& scene, long frames);
 
 /// Whether this program has the Bullet peer (libbullet-dev was found at build time).
 bool havePeer();
@@ -49,5 +53,7 @@ bool havePeer();
 std::string peerName();
 /// Steps `scene` with Bullet; failure holds the peer's refusal (a distance joint, ...) verbatim.
 RunResult runPeer(const World& scene, double seconds, const PeerKnobs& knobs);
+/// timeEngine's twin for the peer (0 without it).
+double timePeer(const World& scene, long frames, const PeerKnobs& knobs);
 
 }  // namespace stepwise::engine_bench
