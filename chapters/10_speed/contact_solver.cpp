@@ -616,6 +616,12 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     scratch.contactOrder.clear();
     scratch.slotA.clear();
     scratch.slotB.clear();
+    if (everyBodyAsleep(world)) {  // nothing to gather, solve or move (the fast solve has no kinematic body)
+        stats.bodies = 0;
+        world.step.solver = SolverStats{};
+        world.step.velocitiesBeforeForces.clear();
+        return;
+    }
     const bool allAwakeDynamic = std::all_of(world.motions.begin(), world.motions.end(), [&](const Motion& motion) {
         return !motion.asleep && world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Dynamic;
     });

@@ -169,7 +169,8 @@ int wakeTouchedIslands(World& world, SleepScratch& scratch) {
     // the frame-end stage keep them zero), so any it has now was given to it.
     bool anySleeper = false, anyMover = false, disturbed = false;
     for (const Motion& motion : world.motions) {
-        if (!isSleeper(world, motion.bodyIndex)) {
+        // motion.asleep first: a world asleep reads no Body (the flag is set on dynamic bodies only).
+        if (!motion.asleep || !isDynamicBody(world, motion.bodyIndex)) {
             anyMover = true;  // an awake dynamic body, or a kinematic one
             continue;
         }
@@ -261,6 +262,8 @@ void addSleepStages(Pipeline& pipeline, const World& world) {
         // so what it gave them is dropped here. With chapter 10's fast solve this changes nothing.
         for (Motion& motion : stepWorld.motions)
             if (motion.asleep) holdSleeperAtRest(motion);
+        // Asleep throughout: no timer runs (sleepers keep theirs) and no island is left to sleep.
+        if (everyBodyAsleep(stepWorld)) return;
         updateSleepTimers(stepWorld, stepWorld.settings.dt);
         putIslandsToSleep(stepWorld, *scratch);
     };
