@@ -211,12 +211,13 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
     else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy)
         iterations = std::min(scene, substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep));
-    // Measured on towers of four boxes, masses in geometric steps (docs/ch10_speed.md): 1:300
-    // stands from 15 substeps, 1:1000 from 25, and 1:10, 1:30, 1:100 from 3, 6 and 10. The square
-    // root of the ratio over the plain one gives 18 and 32, and 4, 6 and 10.
-    const int massLaw = static_cast<int>(
-        std::ceil(Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio) * perMeasuredFrame - Real(1e-3)));
-    if (settings.planIterations && plan.massRatio > kPlainMassRatio) iterations = std::max(iterations, std::min(most, massLaw));
+    if (settings.planIterations && plan.massRatio > kPlainMassRatio) {
+        // Measured on towers of four boxes, masses in geometric steps (docs/ch10_speed.md):
+        // 1:300 stands from 15 substeps, 1:1000 from 25. The square root of the ratio over the
+        // plain one gives 18 and 32.
+        const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio) * perMeasuredFrame;
+        iterations = std::max(iterations, std::min(most, static_cast<int>(std::ceil(wanted - Real(1e-3)))));
+    }
     plan.shockPropagation = false;
     if (settings.planIterations && plan.stackDepth > 1) {
         // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 20 rows walk 1.5 mm at ten
@@ -254,13 +255,10 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
         const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
         const int stack = std::min(most, std::max({kFewestStackSubsteps, lengths, wanted}));
-        // A frame in which something arrives bouncing keeps at least the scene's count, and
-        // masses over 100 to 1 the mass-ratio rule above; unlike masses within it take that rule
-        // too, or the stack's count where it is more. A deep stack more, whatever bounces on it.
-        if (touches.bouncy || plan.massRatio > kPlainMassRatio)
-            iterations = std::max(iterations, stack);
-        else
-            iterations = plan.massRatio > kLikeMassRatio ? std::max(stack, std::min(most, massLaw)) : stack;
+        // Unlike masses, and a frame in which something arrives bouncing, keep at least the
+        // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
+        const bool keepScene = touches.bouncy || plan.massRatio > kLikeMassRatio;
+        iterations = keepScene ? std::max(iterations, stack) : stack;
     }
     plan.shockFrames += plan.shockPropagation ? 1 : 0;
     plan.iterations = iterations;

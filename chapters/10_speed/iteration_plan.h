@@ -50,8 +50,8 @@ int substepsFor(Real dt, Real longest);
 /// 30 Hz stands as it does at 60 Hz (at the 60 Hz count it walked 1 cm, and the 1:1000 tower fell).
 constexpr Real kMeasuredFrame = Real(1) / Real(60);
 
-/// Touching mass ratios of this solve at the scene's count: a 100 kg box on 1 kg boxes stands at
-/// ten substeps. Above it and below it the count goes as the square root of the ratio over it.
+/// Touching mass ratios up to this solve at the scene's count: a 100 kg box on 1 kg boxes
+/// stands at ten substeps.
 constexpr Real kPlainMassRatio = 100;
 /// The most the planner multiplies the scene's count by.
 constexpr int kMostIterationFactor = 4;
@@ -94,11 +94,9 @@ constexpr Real kShockDepthExponent = Real(0.7);
 /// pyramid, never on a column of single boxes.
 constexpr Real kShockBlockSubsteps = Real(2.1);
 constexpr Real kShockLaneBlocks = Real(0.65);
-// Stacks of unlike masses take no sweep, and the mass-ratio law below 100 to 1 too (ten times the
-// square root of the ratio over kPlainMassRatio: 4 for 1:10, 6 for 1:30), or the stack's count by
-// depth where it is more. Until 2026-11 they kept the scene's ten, because the speed bench's
-// 2,000-body mixed pile given fewer never put all its bodies to sleep within a minute; at ten it
-// no longer does either (docs/ch10_speed.md), and the towers stand at the law's counts.
+// Stacks of unlike masses keep the scene's count and no sweep: with it, towers of four boxes stand
+// at fewer substeps (docs/ch10_speed.md), but the 2,000-body mixed pile given those counts never
+// settled.
 
 /// Working memory of supportDepth, kept from frame to frame so that the search allocates nothing
 /// once it has run: the contact graph in compressed rows, and the breadth-first search.

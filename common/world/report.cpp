@@ -134,16 +134,16 @@ std::string describeIterationPlan(const World& world) {
         if (deep) why += std::string(heavy ? " and " : "") + "a stack " + std::to_string(plan.deepestStack) + " bodies deep";
         return "auto: up to " + most + ", for " + why + " (over 100 to 1, or a deep stack, asks for more)" + shock;
     }
-    // Chapter 10's iteration_plan.h: the scene's count where something bounces, a count by depth
-    // for a stack and by the mass ratio where touching masses differ, substeps of 1/60 or 1/120 s where
+    // Chapter 10's iteration_plan.h: the scene's count where something bounces or touching masses
+    // differ, a count by depth for a stack of like masses, substeps of 1/60 or 1/120 s where
     // bodies rest or slide on the world alone or nothing touches.
     const std::string plain = std::to_string(plan.plainIterations);
     const std::string range =
         plan.fewestIterations < plan.mostIterations ? std::to_string(plan.fewestIterations) + " to " + most : most;
     return "auto: " + range + " by what touches (" + plain +
-           " where bodies bounce, by depth where bodies carry one another and by the square root of the ratio where "
-           "their masses differ, fewer where they rest on the world alone or nothing touches), "
-           "touching masses at most " + std::string(ratio) + " to 1 (100 to 1 solves at " + plain + ")" + shock;
+           " where bodies bounce or touching masses differ, by depth where like masses carry one another, fewer where they "
+           "rest on the world alone or nothing touches), "
+           "touching masses at most " + std::string(ratio) + " to 1 (up to 100 to 1 solve at " + plain + ")" + shock;
 }
 
 std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {
