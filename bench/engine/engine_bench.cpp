@@ -12,8 +12,8 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <random>
 #include <ostream>
+#include <random>
 
 namespace stepwise::engine_bench {
 
@@ -41,8 +41,6 @@ Outcome runOne(const ReferenceScene& scene, const Configuration& configuration) 
     const World world = withKnobs(scene.world, configuration.knobs);
     outcome.run = configuration.peer ? runPeer(world, scene.sidecar.seconds, configuration.peerKnobs)
                                      : runEngine(world, scene.sidecar.seconds);
-    outcome.run.msPerStep = outcome.run.timedRuns.empty() ? 0 : outcome.run.timedRuns.front();
-    outcome.cost = outcome.run.msPerStep / (60.0 * double(world.settings.dt));
     if (!outcome.run.failure.empty()) {
         outcome.score.worst = std::numeric_limits<double>::infinity();
         return outcome;

@@ -53,7 +53,7 @@ struct EpaContext {
 
 bool containsOrigin(const SupportPoint points[4], Real slack);
 
-// [ch03-seed]
+// [ch03-start-polytope]
 /// The polytope's first faces need a tetrahedron around the origin. GJK often stops earlier:
 /// with a triangle or an edge through the origin (touching or shallow contact) or a single
 /// point. Following Bullet's EncloseOrigin, add support points in directions the current points
@@ -98,7 +98,7 @@ bool growToTetrahedron(EpaContext& context, SupportPoint points[4], int count) {
         }
     }
 }
-// [ch03-seed]
+// [ch03-start-polytope]
 
 /// GJK's points normally seed the tetrahedron directly. When they cannot (four points on one
 /// plane, three on one line), fewer of them can: try the seed with each point left out in turn.
