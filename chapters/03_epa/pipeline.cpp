@@ -118,6 +118,7 @@ ContactSearchStart beginContactSearch(World& world, const std::vector<BodyPair>&
     if (!std::is_sorted(start.pairs.begin(), start.pairs.end())) std::sort(start.pairs.begin(), start.pairs.end());
     start.pairs.erase(std::unique(start.pairs.begin(), start.pairs.end()), start.pairs.end());
     start.previous.swap(world.contacts);
+    world.contacts.reserve(start.previous.size());  // about as many again: one allocation, not a doubling series
     world.step.contactsFoundAtSubstep = world.step.substep;
     world.pairs.clear();
     return start;

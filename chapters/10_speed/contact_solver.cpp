@@ -10,6 +10,7 @@
 #include "06_manifolds/stabilisation.h"
 #include "10_speed/colouring.h"
 #include "10_speed/contact_kernels.h"
+#include "10_speed/gyroscopic_pack.h"
 #include "10_speed/sleep.h"
 #include "10_speed/wide_solver.h"
 
@@ -52,6 +53,7 @@ void prepareBodies(const World& world, SolverBodies& bodies) {
     bodies.states.assign(1, SolverBodyState{});  // slot 0: everything that does not move
     bodies.info.assign(1, SolverBodyInfo{});
     bodies.slotOfBody.assign(world.bodies.size(), 0);
+    bodies.gyroscopic.clear();
     for (const Motion& motion : world.motions) {
         const Body& body = world.bodies[static_cast<std::size_t>(motion.bodyIndex)];
         if (body.type != BodyType::Dynamic || motion.asleep) continue;
@@ -70,6 +72,16 @@ void prepareBodies(const World& world, SolverBodies& bodies) {
         info.startRotation = body.transform.rotation;
         const Mat3& inertia = motion.inertiaLocal;
         info.gyroscopic = !(inertia - Mat3::Identity() * inertia(0, 0)).isZero(0);
+        if (info.gyroscopic) {
+            GyroscopicBody turning;
+            turning.slot = static_cast<int>(bodies.info.size());
+            const Quat& start = info.startRotation;
+            const Real rotation[4] = {start.x(), start.y(), start.z(), start.w()};
+            const Real local[6] = {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)};
+            std::copy(rotation, rotation + 4, turning.startRotation);
+            std::copy(local, local + 6, turning.inertia);
+            bodies.gyroscopic.push_back(turning);
+        }
         bodies.info.push_back(info);
     }
 }
@@ -256,20 +268,19 @@ ContactSolveParams solveParams(const Settings& settings, Real h) {
 }
 
 // [ch10-integrate]
-void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep) {
+void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep, SolverPath path) {
     const Vec3 gravity = world.settings.gravity;
-    const bool implicitGyroscopic = world.settings.gyroscopic == GyroscopicMode::Implicit;
+    // Chapter 1's order: the gyroscopic step, then the torque (each body's own; bodies do not interact here).
+    if (world.settings.gyroscopic == GyroscopicMode::Implicit) {
+        if (path == SolverPath::Wide) {
+            gyroscopicStepWide(bodies.states.data(), bodies.gyroscopic, h);
+        } else {
+            for (const GyroscopicBody& body : bodies.gyroscopic) gyroscopicStepPack<1>(bodies.states.data(), &body, h);
+        }
+    }
     for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
         SolverBodyState& state = bodies.states[slot];
         const SolverBodyInfo& info = bodies.info[slot];
-        // Chapter 1's order: the gyroscopic step, then the torque.
-        if (info.gyroscopic && implicitGyroscopic) {
-            const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
-            const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
-            const Motion& motion = *world.motionOf(info.bodyIndex);
-            const Vec3 turned = gyroscopicStepImplicit(angular, (delta * info.startRotation).normalized(), motion.inertiaLocal, h);
-            for (int k = 0; k < 3; ++k) state.angularVelocity[k] = turned[k];
-        }
         Vec3 acceleration = gravity;
         if (firstSubstep) {  // a user's push, held for the frame's first substep as chapter 6 does
             Motion& motion = *world.motionOf(info.bodyIndex);
@@ -695,7 +706,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     // Scenes without restitution (most) have no collisions to sweep.
     const bool collisions = anyRestitution(scratch.wideBlocks) || anyRestitution(scratch.scalarBlocks);
     for (int substep = 0; substep < substeps; ++substep) {
-        integrateVelocities(world, scratch.bodies, h, substep == 0);
+        integrateVelocities(world, scratch.bodies, h, substep == 0, path);
         // [ch10-collisions-first]
         // Collisions first, on the speeds before the warm start adds last substep's pushes.
         for (int sweep = 0; collisions && sweep < kCollisionSweeps; ++sweep) {

@@ -238,5 +238,17 @@ inline PackVec3<N> rotate(const PackQuat<N>& q, const PackVec3<N>& v) {
     const PackVec3<N> twiceT{t.x + t.x, t.y + t.y, t.z + t.z};
     return v + q.w * twiceT + cross(u, twiceT);
 }
+/// The Hamilton product a b: turn by b, then by a.
+template <int N>
+inline PackQuat<N> multiply(const PackQuat<N>& a, const PackQuat<N>& b) {
+    return {a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y, a.w * b.y + a.y * b.w + a.z * b.x - a.x * b.z,
+            a.w * b.z + a.z * b.w + a.x * b.y - a.y * b.x, a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
+}
+/// q over its length (a unit quaternion drifts off unit length as products round).
+template <int N>
+inline PackQuat<N> normalized(const PackQuat<N>& q) {
+    const Pack<N> length = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    return {q.x / length, q.y / length, q.z / length, q.w / length};
+}
 
 }  // namespace stepwise

@@ -36,12 +36,22 @@ struct SolverBodyInfo {
     bool gyroscopic = false;            // inertia not a multiple of the identity: w x I w can be non-zero
 };
 
+/// What the gyroscopic step reads of a body whose inertia is not a multiple of the identity. Plain
+/// Reals: the wide file reads it, and an Eigen member's alignment (a Quat of doubles) depends on
+/// the instruction set a file is built for, so a struct holding one is laid out differently there.
+struct GyroscopicBody {
+    int slot = 0;
+    Real startRotation[4] = {0, 0, 0, 1};  // x y z w, as SolverBodyInfo::startRotation
+    Real inertia[6] = {0, 0, 0, 0, 0, 0};  // body axes: xx yy zz xy xz yz
+};
+
 /// The solver's bodies. Slot 0 is every static (and sleeping) body at once: zero velocity, zero
 /// inverse mass. Slots 1.. are the awake dynamic bodies.
 struct SolverBodies {
     std::vector<SolverBodyState> states;
     std::vector<SolverBodyInfo> info;
     std::vector<int> slotOfBody;        // per World body; 0 when it does not move in this solve
+    std::vector<GyroscopicBody> gyroscopic;  // the bodies whose info says gyroscopic, in slot order
 };
 
 /// One contact point of a manifold, per lane.

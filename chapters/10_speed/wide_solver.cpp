@@ -1,6 +1,7 @@
 #include "10_speed/wide_solver.h"
 
 #include "10_speed/contact_kernels.h"
+#include "10_speed/gyroscopic_pack.h"
 
 namespace stepwise {
 
@@ -44,6 +45,13 @@ void integratePositionsWide(SolverBodyState* states, int count, Real h) {
         integratePositionsPack<kWideLanes>(states, slots, h);
     }
     for (; slot < count; ++slot) integratePositionsPack<1>(states, &slot, h);
+}
+
+void gyroscopicStepWide(SolverBodyState* states, const std::vector<GyroscopicBody>& bodies, Real h) {
+    const int count = static_cast<int>(bodies.size());
+    int first = 0;
+    for (; first + kWideLanes <= count; first += kWideLanes) gyroscopicStepPack<kWideLanes>(states, &bodies[first], h);
+    for (; first < count; ++first) gyroscopicStepPack<1>(states, &bodies[first], h);
 }
 
 const char* wideInstructionSet() {

@@ -32,6 +32,9 @@ bool collideWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState
 /// Chapter 1's position step for slots 1 to count - 1, kWideLanes bodies at a time.
 void integratePositionsWide(SolverBodyState* states, int count, Real h);
 
+/// Chapter 1's implicit gyroscopic step for these bodies (gyroscopic_pack.h), kWideLanes at a time.
+void gyroscopicStepWide(SolverBodyState* states, const std::vector<GyroscopicBody>& bodies, Real h);
+
 /// The instruction set the wide file was built for: "avx2" or "portable".
 const char* wideInstructionSet();
 

@@ -1,7 +1,8 @@
 // Chapter 10's shortcuts change the cost, not the answer: the sweep on grown boxes returns the pairs
 // chapter 5's sweep returns, a pair kept apart is one chapter 6 would not make a contact of, the
-// position step eight at a time is chapter 1's, and the manifold's friction at its centre holds a
-// box on a gentle ramp, lets it slide on a steep one and stops a spinning box by its twist.
+// position step eight at a time and the gyroscopic step sixteen at a time are chapter 1's, and the
+// manifold's friction at its centre holds a box on a gentle ramp, lets it slide on a steep one and
+// stops a spinning box by its twist.
 #include "01_integrators/rotation.h"
 #include "10_speed/wide_solver.h"
 #include "04_pgs/scenes.h"
@@ -138,6 +139,48 @@ TEST_CASE("the position step eight at a time is chapter 1's rotation step", "[ch
         CHECK(state.deltaPosition[0] == Approx(state.linearVelocity[0] / 600).margin(1e-7));
     }
     CHECK(states[0].deltaRotation[3] == 1);  // slot 0 is never moved
+}
+
+TEST_CASE("the gyroscopic step sixteen bodies at a time is chapter 1's", "[ch10][solve]") {
+    Random random(11);
+    // Two packs and a remainder; full symmetric inertias (a hull's), a body at rest, one spinning
+    // fast enough that the Newton step matters, and one without inertia (chapter 1 keeps its velocity).
+    SolverBodies bodies;
+    bodies.states.resize(1 + 37);
+    std::vector<Vec3> expected(bodies.states.size(), Vec3::Zero());
+    const Real h = Real(1.0 / 120);
+    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
+        SolverBodyState& state = bodies.states[slot];
+        const Real speed = slot == 5 ? Real(0) : slot == 9 ? Real(300) : Real(8);
+        for (int k = 0; k < 3; ++k) state.angularVelocity[k] = speed * random.uniformReal(-1, 1);
+        const Quat delta = random.rotation(), start = random.rotation(), axes = random.rotation();
+        state.deltaRotation[0] = delta.x(), state.deltaRotation[1] = delta.y();
+        state.deltaRotation[2] = delta.z(), state.deltaRotation[3] = delta.w();
+        const Vec3 principal(random.uniformReal(1, 3), random.uniformReal(1, 3), random.uniformReal(1, 3));
+        const Mat3 inertia = slot == 13 ? Mat3::Zero() : Mat3(axes * principal.asDiagonal() * axes.conjugate());
+        GyroscopicBody body;
+        body.slot = static_cast<int>(slot);
+        body.startRotation[0] = start.x(), body.startRotation[1] = start.y();
+        body.startRotation[2] = start.z(), body.startRotation[3] = start.w();
+        body.inertia[0] = inertia(0, 0), body.inertia[1] = inertia(1, 1), body.inertia[2] = inertia(2, 2);
+        body.inertia[3] = inertia(0, 1), body.inertia[4] = inertia(0, 2), body.inertia[5] = inertia(1, 2);
+        bodies.gyroscopic.push_back(body);
+        const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+        expected[slot] = gyroscopicStepImplicit(angular, (delta * start).normalized(), inertia, h);
+    }
+    const Vec3 fastBefore(bodies.states[9].angularVelocity[0], bodies.states[9].angularVelocity[1],
+                          bodies.states[9].angularVelocity[2]);
+    gyroscopicStepWide(bodies.states.data(), bodies.gyroscopic, h);
+    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
+        const SolverBodyState& state = bodies.states[slot];
+        const Vec3 turned(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+        INFO("slot " << slot);
+        CHECK((turned - expected[slot]).norm() <= 1e-5 * std::max(Real(1), expected[slot].norm()));
+    }
+    CHECK(bodies.states[5].angularVelocity[0] == 0);  // at rest stays at rest, exactly
+    // The fast spin's step turned it by far more than the tolerance: the comparison is not of two no-ops.
+    const SolverBodyState& fast = bodies.states[9];
+    CHECK((Vec3(fast.angularVelocity[0], fast.angularVelocity[1], fast.angularVelocity[2]) - fastBefore).norm() > 1);
 }
 
 TEST_CASE("friction at the manifold's centre: a box sticks below atan(mu), slides above, and a spin stops by its twist",
