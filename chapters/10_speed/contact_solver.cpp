@@ -71,16 +71,12 @@ void prepareBodies(const World& world, SolverBodies& bodies) {
         info.startCenter = body.transform.apply(motion.localCenter);
         info.startRotation = body.transform.rotation;
         const Mat3& inertia = motion.inertiaLocal;
-        info.gyroscopic = !(inertia - Mat3::Identity() * inertia(0, 0)).isZero(0);
-        if (info.gyroscopic) {
-            GyroscopicBody turning;
-            turning.slot = static_cast<int>(bodies.info.size());
+        if (!(inertia - Mat3::Identity() * inertia(0, 0)).isZero(0)) {
             const Quat& start = info.startRotation;
-            const Real rotation[4] = {start.x(), start.y(), start.z(), start.w()};
-            const Real local[6] = {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)};
-            std::copy(rotation, rotation + 4, turning.startRotation);
-            std::copy(local, local + 6, turning.inertia);
-            bodies.gyroscopic.push_back(turning);
+            bodies.gyroscopic.push_back(GyroscopicBody{
+                static_cast<int>(bodies.info.size()),
+                {start.x(), start.y(), start.z(), start.w()},
+                {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)}});
         }
         bodies.info.push_back(info);
     }

@@ -33,10 +33,10 @@ struct SolverBodyInfo {
     Mat3 inverseInertia = Mat3::Zero(); // world axes at the frame's start (kept for the frame, as Box3D does)
     Vec3 startCenter = Vec3::Zero();    // centre of mass when the frame began
     Quat startRotation = Quat::Identity();
-    bool gyroscopic = false;            // inertia not a multiple of the identity: w x I w can be non-zero
 };
 
-/// What the gyroscopic step reads of a body whose inertia is not a multiple of the identity. Plain
+/// What the gyroscopic step reads of a body whose inertia is not a multiple of the identity (where
+/// w x I w can be non-zero; the others skip the step). Plain
 /// Reals: the wide file reads it, and an Eigen member's alignment (a Quat of doubles) depends on
 /// the instruction set a file is built for, so a struct holding one is laid out differently there.
 struct GyroscopicBody {
@@ -51,7 +51,7 @@ struct SolverBodies {
     std::vector<SolverBodyState> states;
     std::vector<SolverBodyInfo> info;
     std::vector<int> slotOfBody;        // per World body; 0 when it does not move in this solve
-    std::vector<GyroscopicBody> gyroscopic;  // the bodies whose info says gyroscopic, in slot order
+    std::vector<GyroscopicBody> gyroscopic;  // in slot order
 };
 
 /// One contact point of a manifold, per lane.
