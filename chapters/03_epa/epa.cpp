@@ -1,5 +1,5 @@
 // The Expanding Polytope Algorithm (see epa.h for sources). The file reads top to bottom as the
-// algorithm runs: seed a tetrahedron, then repeatedly pick the closest face and ask for a
+// algorithm runs: a starting tetrahedron around the origin, then repeatedly pick the closest face and ask for a
 // support point beyond it (polytope.cpp cuts the faces that point sees and stitches new ones
 // across the horizon), and finally map the origin's projection on the closest face back to a
 // point on each shape.
@@ -29,9 +29,9 @@ using namespace epa_polytope;
 using tolerance::kCoplanar;
 constexpr Real kTouching = tolerance::kSeedContainment;
 
-// Support points the seed search may spend before it gives up on building a tetrahedron: the
-// search recurses over subsets of GJK's points and over directions, and a pathological input
-// must not turn it into thousands of queries (a normal seed needs none, a shallow one a few).
+// Support points the search for a starting tetrahedron may spend before it gives up: the search
+// recurses over subsets of GJK's points and over directions, and a pathological input must not
+// turn it into thousands of queries (GJK's own points usually need none, a shallow contact a few).
 constexpr int kSeedBudget = 64;
 
 /// A stop by round-off counts as converged within this many tolerances of the boundary.
@@ -100,8 +100,8 @@ bool growToTetrahedron(EpaContext& context, SupportPoint points[4], int count) {
 }
 // [ch03-start-polytope]
 
-/// GJK's points normally seed the tetrahedron directly. When they cannot (four points on one
-/// plane, three on one line), fewer of them can: try the seed with each point left out in turn.
+/// GJK's points are normally the starting tetrahedron itself. When they cannot be (four points on
+/// one plane, three on one line), fewer of them can: try again with each point left out in turn.
 bool seedTetrahedron(EpaContext& context, SupportPoint points[4], int count) {
     SupportPoint trial[4];
     std::copy(points, points + count, trial);

@@ -108,10 +108,10 @@ Expansion tryExpand(EpaPolytope& polytope, int seenFace, const SupportPoint& poi
     scratch.removed.clear();
     const Real slack = kRoundOff * scale;
     // A convex polytope that holds the origin only grows, so no new face may come nearer than the
-    // one it replaces. The seed may leave the origin up to its containment slack outside (GJK's
-    // touching tolerance), most often on an edge or face through the origin when the shapes
-    // share a centre; then a new face through that edge may lie up to that slack on the far
-    // side, and only that is the floor.
+    // one it replaces. The starting tetrahedron may leave the origin up to its containment slack
+    // outside (GJK's touching tolerance), most often on an edge or face through the origin when
+    // the shapes share a centre; then a new face through that edge may lie up to that slack on
+    // the far side, and only that is the floor.
     const Real closestDistance = polytope.faces[seenFace].distance;
     const Real floor = closestDistance >= 0 ? closestDistance : -tolerance::kSeedContainment * scale;
     polytope.faces[seenFace].removed = true;
