@@ -230,11 +230,7 @@ inline void integratePositionsPack(SolverBodyState* states, const int* slots, Re
     q.y = cosine * q.y + along * turning.y;
     q.z = cosine * q.z + along * turning.z;
     q.w = cosine * q.w + along * turningW;
-    const Pack<N> length = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-    q.x = q.x / length;
-    q.y = q.y / length;
-    q.z = q.z / length;
-    q.w = q.w / length;
+    q = normalized(q);
     for (int lane = 0; !seriesHolds && lane < N; ++lane) {
         if (y[lane] <= kTurnSeriesLimit) continue;
         const Quat turned = turnRotation(Quat(start.w[lane], start.x[lane], start.y[lane], start.z[lane]),
