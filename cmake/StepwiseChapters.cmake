@@ -60,15 +60,10 @@ function(stepwise_add_chapter number name)
   endif()
 endfunction()
 
-# After the last chapter: the `stepwise` CLI knows every chapter.
+# After the last chapter: the last chapter's number, for what runs the whole engine (apps/, bench/).
 function(stepwise_finish_chapters)
   get_property(chapters GLOBAL PROPERTY STEPWISE_CHAPTERS)
   list(GET chapters -1 last)
   set(STEPWISE_LAST_CHAPTER ${last} PARENT_SCOPE)
   set_property(GLOBAL PROPERTY STEPWISE_LAST_CHAPTER ${last})
-  if(NOT CMAKE_CROSSCOMPILING)
-    add_executable(stepwise ${CMAKE_SOURCE_DIR}/common/app/stepwise_main.cpp)
-    target_link_libraries(stepwise PRIVATE ch${last}_registry)
-    stepwise_set_warnings(stepwise)
-  endif()
 endfunction()

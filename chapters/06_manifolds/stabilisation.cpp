@@ -95,13 +95,13 @@ const ContactPoint& pointOf(const World& world, const ContactRowRef& ref) {
 }
 
 // Soft step's rows: each normal row of a point deeper than the slop becomes a spring towards the
-// slop, pushing out no faster than kMaxPushOutSpeed; the others stay rigid.
+// slop, pushing out no faster than Settings::maxPushOutSpeed; the others stay rigid.
 std::vector<Softness> softenContactRows(const World& world, ContactRows& contactRows,
                                         const std::vector<SolverBody>& bodies, Real dt) {
     std::vector<Softness> softness(contactRows.rows.size());
-    const Real hertz = std::min(kContactHertz, Real(0.25) / dt);
-    const Softness dynamicSoftness = makeSoftness(hertz, kContactDampingRatio, dt);
-    const Softness staticSoftness = makeSoftness(2 * hertz, kContactDampingRatio, dt);
+    const Real hertz = std::min(world.settings.contactHertz, Real(0.25) / dt);
+    const Softness dynamicSoftness = makeSoftness(hertz, world.settings.contactDampingRatio, dt);
+    const Softness staticSoftness = makeSoftness(2 * hertz, world.settings.contactDampingRatio, dt);
     for (const ContactRowRef& ref : contactRows.points) {
         const Real depth = pointOf(world, ref).depth;
         if (depth <= world.settings.slop) continue;
@@ -109,7 +109,7 @@ std::vector<Softness> softenContactRows(const World& world, ContactRows& contact
         const bool againstStatic = bodies[row.bodyA].inverseMass == 0 || bodies[row.bodyB].inverseMass == 0;
         const Softness& soft = againstStatic ? staticSoftness : dynamicSoftness;
         softness[static_cast<std::size_t>(ref.normalRow)] = soft;
-        row.bias = std::max(row.bias, std::min(soft.biasRate * (depth - world.settings.slop), kMaxPushOutSpeed));
+        row.bias = std::max(row.bias, std::min(soft.biasRate * (depth - world.settings.slop), world.settings.maxPushOutSpeed));
     }
     return softness;
 }
@@ -126,7 +126,8 @@ void capPushOutSpeed(const World& world, ContactRows& contactRows, Real dt) {
         if (depth <= world.settings.slop) continue;
         ConstraintRow& row = contactRows.rows[static_cast<std::size_t>(ref.normalRow)];
         const Real pushOut = world.settings.baumgarte * (depth - world.settings.slop) / dt;
-        if (row.bias > kMaxPushOutSpeed && row.bias <= pushOut) row.bias = kMaxPushOutSpeed;
+        const Real most = world.settings.maxPushOutSpeed;
+        if (row.bias > most && row.bias <= pushOut) row.bias = most;
     }
 }
 

@@ -13,7 +13,7 @@
 //   iteration beat many iterations): each substep integrates the velocities, warm starts, runs
 //   one biased iteration, moves the positions, then one "relax" iteration without the bias,
 //   which takes the push-out speed back out of the velocities. The push-out is capped at
-//   kMaxPushOutSpeed, as soft step's: relax gives the contact points' normal speed back, but
+//   Settings::maxPushOutSpeed, as soft step's: relax gives the contact points' normal speed back, but
 //   with friction and offset points part of a large push stays behind as spin.
 // - soft_step: the same with Box2D v3's soft contacts (a spring-damper of 30 Hz, damping ratio
 //   10, push-out capped at 3 m/s) in the biased iteration (Catto, "Solver2D", 2024; Box2D v3).
@@ -45,12 +45,9 @@ struct Softness {
 /// Box2D v3's b2MakeSoft: stiffness by frequency (Hz) and damping ratio, for a step of h.
 Softness makeSoftness(Real hertz, Real dampingRatio, Real h);
 
-/// Box2D v3's defaults: contact frequency (capped at a quarter of the substep rate), damping
-/// ratio, and the largest speed soft contacts push out at. Contacts with a static body are twice
-/// as stiff.
-constexpr Real kContactHertz = 30;
-constexpr Real kContactDampingRatio = 10;
-constexpr Real kMaxPushOutSpeed = 3;  // m/s
+// The contact frequency (capped at a quarter of the substep rate), damping ratio and the largest
+// speed soft contacts push out at are settings (Settings::contactHertz, contactDampingRatio,
+// maxPushOutSpeed; Box2D v3's defaults). Contacts with a static body are twice as stiff.
 // [ch06-softness]
 
 /// Sweeps over one manifold's rows before the solver moves to the next contact.

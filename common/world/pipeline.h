@@ -28,6 +28,7 @@ constexpr const char* kCcd = "ccd";             // continuous collision: times o
 constexpr const char* kJoints = "joints";       // joint upkeep: which jointed pairs collide (chapter 8)
 constexpr const char* kKinematic = "kinematic"; // kinematic bodies driven along paths (chapter 8)
 constexpr const char* kSleep = "sleep";         // islands at rest sleep, touched ones wake (chapter 10)
+constexpr const char* kPlan = "plan";           // the frame's substeps, right before the solve (chapters 11, 12)
 }  // namespace stage_group
 
 /// "group:variant".

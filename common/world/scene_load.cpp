@@ -20,7 +20,8 @@ const Names<bool> kContactPoints = {{"manifold", true}, {"one_point", false}};
 Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
                          "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation", "contact_points",
-                         "sleeping", "sleep_speed", "time_to_sleep"},
+                         "sleeping", "sleep_speed", "time_to_sleep", "contact_hertz", "contact_damping_ratio",
+                         "max_push_out_speed", "bounds_margin"},
                         &errors);
     Settings settings;
     // Each key on its own: one bad value does not hide the next.
@@ -50,6 +51,10 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     read("sleeping", [&](const JsonCursor& v) { settings.sleeping = v.boolean(); });
     read("sleep_speed", [&](const JsonCursor& v) { settings.sleepSpeed = v.positive(); });
     read("time_to_sleep", [&](const JsonCursor& v) { settings.timeToSleep = v.positive(); });
+    read("contact_hertz", [&](const JsonCursor& v) { settings.contactHertz = v.positive(); });
+    read("contact_damping_ratio", [&](const JsonCursor& v) { settings.contactDampingRatio = v.nonNegative(); });
+    read("max_push_out_speed", [&](const JsonCursor& v) { settings.maxPushOutSpeed = v.positive(); });
+    read("bounds_margin", [&](const JsonCursor& v) { settings.boundsMargin = v.nonNegative(); });
     return settings;
 }
 

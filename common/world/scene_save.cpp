@@ -51,7 +51,11 @@ std::string saveSceneToString(const World& world) {
                          {"contact_points", s.manifoldContacts ? "manifold" : "one_point"},
                          {"sleeping", s.sleeping},
                          {"sleep_speed", tidyNumber(s.sleepSpeed)},
-                         {"time_to_sleep", tidyNumber(s.timeToSleep)}};
+                         {"time_to_sleep", tidyNumber(s.timeToSleep)},
+                         {"contact_hertz", tidyNumber(s.contactHertz)},
+                         {"contact_damping_ratio", tidyNumber(s.contactDampingRatio)},
+                         {"max_push_out_speed", tidyNumber(s.maxPushOutSpeed)},
+                         {"bounds_margin", tidyNumber(s.boundsMargin)}};
     Json bodies = Json::array();
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const Body& body = world.bodies[i];

@@ -46,6 +46,13 @@ struct Settings {
     bool sleeping = true;
     Real sleepSpeed = Real(0.05);                     // m/s: slow below it, at the centre and at the bounding radius
     Real timeToSleep = Real(0.5);                     // s every body of an island must stay slow
+    // Contact stiffness of the soft step (chapter 6): contacts are springs of this frequency and
+    // damping ratio (twice the frequency against a body that cannot move), at most a quarter of
+    // the substep rate (Box2D v3's defaults: 30 Hz, ratio 10).
+    Real contactHertz = Real(30);                     // Hz
+    Real contactDampingRatio = Real(10);              // 1: critically damped
+    Real maxPushOutSpeed = Real(3);                   // m/s: the fastest a penetration is pushed out (chapter 6)
+    Real boundsMargin = Real(0.1);                    // m each box grows before a sweep (chapter 10's grown boxes)
 };
 
 /// A setting and the chapter whose stage first reads it. A scene file may set any of them, but

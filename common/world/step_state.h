@@ -48,7 +48,8 @@ struct CcdState {
 
 /// What chapter 10's planner for solver_iterations "auto" saw and chose (iteration_plan.h).
 struct IterationPlan {
-    int iterations = 0;       // substeps of the last frame's solve
+    int iterations = 0;       // substeps of this frame's solve (the plan stage writes them before the solve)
+    int previousIterations = 0;  // of the frame planned before (0 before the first)
     Real massRatio = 1;       // heaviest over lightest dynamic body touching another, last frame
     int stackDepth = 0;       // dynamic bodies between the top of the deepest stack and its support, last frame
     int plainIterations = 0;  // where bodies carry one another, at the solve's dt (auto), last frame
@@ -56,7 +57,7 @@ struct IterationPlan {
     int fewestIterations = 0; // over every frame so far
     Real largestRatio = 1;
     int deepestStack = 0;     // over every frame so far
-    bool shockPropagation = false;  // the last frame ended with a shock sweep (chapter 10)
+    bool shockPropagation = false;  // the last frame ended with a shock sweep (chapter 12)
     int shockFrames = 0;            // frames that did, so far
 };
 
@@ -73,7 +74,7 @@ struct StepState {
     int manifoldsReused = 0;     // by the last search: records carried without a shape query (chapter 10)
     int manifoldsRebuilt = 0;    // by the last search: pairs the shapes were queried for (chapter 10)
     CcdState ccd;                // continuous collision (chapter 7)
-    IterationPlan iterationPlan; // the fast solve's substep count (chapter 10)
+    IterationPlan iterationPlan; // the fast solve's substep count (chapters 11 and 12)
 };
 
 }  // namespace stepwise

@@ -16,5 +16,12 @@ bool drawFrictionPyramid(const std::string& path);  // chapter 4: friction pyram
 bool drawBaumgarteEnergy(const std::string& path);  // chapter 4: Baumgarte's energy gain
 bool drawSweepIntervals(const std::string& path);   // chapter 5: boxes, intervals, pairs
 bool drawManifoldClipping(const std::string& path); // chapter 6: reference and incident face, clipping
+bool drawGrownBoxes(const std::string& path);      // chapter 10: grown boxes and the pairs kept
+bool drawCacheRule(const std::string& path);       // chapter 10: pairs' motion against the cache rule
+bool drawIslands(const std::string& path);         // chapter 10: islands asleep and waking
+bool drawWideColouring(const std::string& path);   // chapter 11: a pyramid's contacts coloured
+bool drawWideLanes(const std::string& path);       // chapter 11: the contacts in blocks of lanes
+bool drawLoadCrossing(const std::string& path);    // chapter 12: a load crossing a column sweep by sweep
+bool drawShockLayers(const std::string& path);     // chapter 12: a pyramid's depths and shock-sweep groups
 
 }  // namespace figures

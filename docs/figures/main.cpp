@@ -20,7 +20,14 @@ int main(int argc, char** argv) {
                           {"fig-friction-pyramid.svg", figures::drawFrictionPyramid},
                           {"fig-baumgarte-energy.svg", figures::drawBaumgarteEnergy},
                           {"fig-sweep-intervals.svg", figures::drawSweepIntervals},
-                          {"fig-manifold-clipping.svg", figures::drawManifoldClipping}};
+                          {"fig-manifold-clipping.svg", figures::drawManifoldClipping},
+                          {"fig-skip-grown-boxes.svg", figures::drawGrownBoxes},
+                          {"fig-skip-cache-rule.svg", figures::drawCacheRule},
+                          {"fig-skip-islands.svg", figures::drawIslands},
+                          {"fig-wide-colouring.svg", figures::drawWideColouring},
+                          {"fig-wide-lanes.svg", figures::drawWideLanes},
+                          {"fig-planner-load.svg", figures::drawLoadCrossing},
+                          {"fig-planner-shock-layers.svg", figures::drawShockLayers}};
     for (const Figure& figure : all) {
         const std::string path = dir + "/" + figure.file;
         if (!figure.draw(path)) {

@@ -2,8 +2,8 @@
 // for overlapping boxes, a lower bound of the gap for separated ones, and chapter 6 builds the
 // same manifolds from either.
 #include "06_manifolds/manifold.h"
-#include "10_speed/box_box.h"
-#include "10_speed/chapter.h"
+#include "10_skip_work/box_box.h"
+#include "10_skip_work/chapter.h"
 #include "world/scene.h"
 
 #include <catch2/catch.hpp>
@@ -126,7 +126,7 @@ TEST_CASE("chapter 10's narrowphase gives a pile the same contacts with the box-
                   R"(], "orientation": [0, )" + std::to_string(std::sin(0.05 * i)) + ", 0, " + std::to_string(std::cos(0.05 * i)) + "]}";
     const World scene = loadSceneFromString(R"({"name": "heap", "bodies": [)" + bodies + "]}");
     World fast = scene, general = scene;
-    SpeedOptions withSat, without;
+    SkipWorkOptions withSat, without;
     without.boxBoxQuery = false;
     Pipeline fastPipeline = makeChapter10Pipeline(fast, withSat), generalPipeline = makeChapter10Pipeline(general, without);
     for (int frame = 0; frame < 60; ++frame) {

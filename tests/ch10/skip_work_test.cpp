@@ -1,16 +1,10 @@
 // Chapter 10's shortcuts change the cost, not the answer: the sweep on grown boxes returns the pairs
-// chapter 5's sweep returns, a pair kept apart is one chapter 6 would not make a contact of, the
-// position step eight at a time and the gyroscopic step sixteen at a time are chapter 1's, and the
-// manifold's friction at its centre holds a box on a gentle ramp, lets it slide on a steep one and
-// stops a spinning box by its twist.
-#include "01_integrators/rotation.h"
-#include "10_speed/wide_solver.h"
+// chapter 5's sweep returns, and a pair kept apart is one chapter 6 would not make a contact of.
 #include "04_pgs/scenes.h"
 #include "05_sap/chapter.h"
 #include "06_manifolds/manifold.h"
-#include "10_speed/chapter.h"
-#include "10_speed/contact_kernels.h"
-#include "10_speed/scenes.h"
+#include "10_skip_work/chapter.h"
+#include "10_skip_work/scenes.h"
 #include "math/random.h"
 
 #include <catch2/catch.hpp>
@@ -22,13 +16,12 @@ using namespace stepwise;
 namespace {
 
 Pipeline fastPipeline(const World& world) {
-    SpeedOptions options;
+    SkipWorkOptions options;
     options.sleeping = false;
     return makeChapter10Pipeline(world, options);
 }
 
 }  // namespace
-
 TEST_CASE("the sweep on grown boxes finds chapter 5's pairs, and skips the sweep when nothing left its box",
           "[ch10][broadphase]") {
     World world = buildMixedPile(300);
@@ -51,7 +44,7 @@ TEST_CASE("the sweep on grown boxes finds chapter 5's pairs, and skips the sweep
     sweepAndPruneEnlarged(pyramid);
     CHECK(pyramid.broadphase.sweepSkipped);
     // A body moved past the margin: a sweep again, and the moved box's pairs follow it.
-    pyramid.bodies[1].transform.position.x() += 2 * kEnlargedBoundsMargin;
+    pyramid.bodies[1].transform.position.x() += 2 * pyramid.settings.boundsMargin;
     sweepAndPruneEnlarged(pyramid);
     CHECK_FALSE(pyramid.broadphase.sweepSkipped);
     World fresh = pyramid;
@@ -106,124 +99,3 @@ TEST_CASE("a gap shrinks by at most what B moved in A's frame", "[ch10][cache]")
     CHECK(stillApart(gap, movedA, movedB, Real(0.49)));
 }
 
-TEST_CASE("the position step eight at a time is chapter 1's rotation step", "[ch10][solve]") {
-    Random random(7);
-    std::vector<SolverBodyState> states(1 + 19);  // slot 0 and 19 bodies: two packs and a remainder
-    std::vector<Quat> expected(states.size());
-    for (std::size_t slot = 1; slot < states.size(); ++slot) {
-        SolverBodyState& state = states[slot];
-        const Quat start = random.rotation();
-        for (int k = 0; k < 3; ++k) {
-            state.linearVelocity[k] = random.uniformReal(-3, 3);
-            state.angularVelocity[k] = random.uniformReal(-20, 20);
-        }
-        state.deltaRotation[0] = start.x();
-        state.deltaRotation[1] = start.y();
-        state.deltaRotation[2] = start.z();
-        state.deltaRotation[3] = start.w();
-        if (slot == 3) state.angularVelocity[0] = 10000;
-        const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
-        expected[slot] = turnRotation(start, angular, Real(1.0 / 600));
-    }
-    // The wide file's own loop (packs of kWideLanes, then one at a time): the wide kernels are
-    // instantiated only there, built for AVX2 or AVX-512; one instantiated here too, built for
-    // SSE2, would be a second definition of the same template with another calling convention. One
-    // body in the first pack spins too fast for the series (10,000 rad/s: 8.3 rad a step): it takes
-    // chapter 1's step, and the other lanes of its pack the series.
-    integratePositionsWide(states.data(), static_cast<int>(states.size()), Real(1.0 / 600));
-    for (std::size_t slot = 1; slot < states.size(); ++slot) {
-        const SolverBodyState& state = states[slot];
-        const Quat turned(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
-        CHECK(std::abs(std::abs(turned.coeffs().dot(expected[slot].coeffs())) - 1) < 1e-6);
-        CHECK(std::abs(turned.norm() - 1) < 1e-6);
-        CHECK(state.deltaPosition[0] == Approx(state.linearVelocity[0] / 600).margin(1e-7));
-    }
-    CHECK(states[0].deltaRotation[3] == 1);  // slot 0 is never moved
-}
-
-TEST_CASE("the gyroscopic step sixteen bodies at a time is chapter 1's", "[ch10][solve]") {
-    Random random(11);
-    // Two packs and a remainder; full symmetric inertias (a hull's), a body at rest, one spinning
-    // fast enough that the Newton step matters, and one without inertia (chapter 1 keeps its velocity).
-    SolverBodies bodies;
-    bodies.states.resize(1 + 37);
-    std::vector<Vec3> expected(bodies.states.size(), Vec3::Zero());
-    const Real h = Real(1.0 / 120);
-    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
-        SolverBodyState& state = bodies.states[slot];
-        const Real speed = slot == 5 ? Real(0) : slot == 9 ? Real(300) : Real(8);
-        for (int k = 0; k < 3; ++k) state.angularVelocity[k] = speed * random.uniformReal(-1, 1);
-        const Quat delta = random.rotation(), start = random.rotation(), axes = random.rotation();
-        state.deltaRotation[0] = delta.x(), state.deltaRotation[1] = delta.y();
-        state.deltaRotation[2] = delta.z(), state.deltaRotation[3] = delta.w();
-        const Vec3 principal(random.uniformReal(1, 3), random.uniformReal(1, 3), random.uniformReal(1, 3));
-        const Mat3 inertia = slot == 13 ? Mat3::Zero() : Mat3(axes * principal.asDiagonal() * axes.conjugate());
-        GyroscopicBody body;
-        body.slot = static_cast<int>(slot);
-        body.startRotation[0] = start.x(), body.startRotation[1] = start.y();
-        body.startRotation[2] = start.z(), body.startRotation[3] = start.w();
-        body.inertia[0] = inertia(0, 0), body.inertia[1] = inertia(1, 1), body.inertia[2] = inertia(2, 2);
-        body.inertia[3] = inertia(0, 1), body.inertia[4] = inertia(0, 2), body.inertia[5] = inertia(1, 2);
-        bodies.gyroscopic.push_back(body);
-        const Vec3 angular(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
-        expected[slot] = gyroscopicStepImplicit(angular, (delta * start).normalized(), inertia, h);
-    }
-    const Vec3 fastBefore(bodies.states[9].angularVelocity[0], bodies.states[9].angularVelocity[1],
-                          bodies.states[9].angularVelocity[2]);
-    gyroscopicStepWide(bodies.states.data(), bodies.gyroscopic, h);
-    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
-        const SolverBodyState& state = bodies.states[slot];
-        const Vec3 turned(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
-        INFO("slot " << slot);
-        CHECK((turned - expected[slot]).norm() <= 1e-5 * std::max(Real(1), expected[slot].norm()));
-    }
-    CHECK(bodies.states[5].angularVelocity[0] == 0);  // at rest stays at rest, exactly
-    // The fast spin's step turned it by far more than the tolerance: the comparison is not of two no-ops.
-    const SolverBodyState& fast = bodies.states[9];
-    CHECK((Vec3(fast.angularVelocity[0], fast.angularVelocity[1], fast.angularVelocity[2]) - fastBefore).norm() > 1);
-}
-
-TEST_CASE("friction at the manifold's centre: a box sticks below atan(mu), slides above, and a spin stops by its twist",
-          "[ch10][friction]") {
-    const Real mu = Real(0.5);
-    for (const Real tilt : {std::atan(mu) - Real(0.1), std::atan(mu) + Real(0.1)}) {
-        World world;
-        world.settings.sleeping = false;
-        const Quat slope(Eigen::AngleAxis<Real>(tilt, Vec3::UnitZ()));
-        Material ramp;
-        ramp.friction = mu;
-        addStaticBox(world, "ramp", Vec3::Zero(), Vec3(10, Real(0.5), 10), slope, ramp);
-        Material crate;
-        crate.friction = mu;
-        const int box = addCrate(world, "box", slope * Vec3(0, 1, 0), Vec3::Constant(Real(0.5)), 1, crate, slope);
-        Pipeline pipeline = fastPipeline(world);
-        for (int frame = 0; frame < 120; ++frame) pipeline.step(world);
-        const Real moved = (world.bodies[static_cast<std::size_t>(box)].transform.position - slope * Vec3(0, 1, 0)).norm();
-        INFO("tilt " << tilt << " rad, moved " << moved << " m in 2 s");
-        if (tilt < std::atan(mu))
-            CHECK(moved < Real(0.01));
-        else  // slides from rest: g (sin - mu cos) t^2 / 2 in 2 s
-            CHECK(moved == Approx(Real(9.81) * (std::sin(tilt) - mu * std::cos(tilt)) * 2).epsilon(0.05));
-    }
-
-    // A unit box spinning on its face: four corners 0.71 m out, mu m g each quarter: the twist
-    // decelerates it at mu m g 0.71 / I = 20.8 rad/s^2 (I = m / 6), so 5 rad/s stops in 0.24 s.
-    World world;
-    world.settings.sleeping = false;
-    addGroundPlane(world, mu);
-    Material crate;
-    crate.friction = mu;
-    const int box = addCrate(world, "spinner", Vec3(0, Real(0.5), 0), Vec3::Constant(Real(0.5)), 1, crate);
-    Pipeline pipeline = fastPipeline(world);
-    for (int frame = 0; frame < 10; ++frame) pipeline.step(world);
-    world.motionOf(box)->angularVelocity = Vec3(0, 5, 0);
-    int framesToStop = 0;
-    while (world.motionOf(box)->angularVelocity.norm() > Real(0.05) && framesToStop < 120) {
-        pipeline.step(world);
-        ++framesToStop;
-    }
-    INFO("stopped after " << framesToStop << " frames");
-    CHECK(framesToStop >= 11);  // 0.18 s
-    CHECK(framesToStop <= 18);  // 0.30 s
-    CHECK(world.bodies[static_cast<std::size_t>(box)].transform.position.head<2>().norm() < Real(0.52));
-}

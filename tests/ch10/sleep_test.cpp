@@ -3,8 +3,8 @@
 // tests look at what the sleep stages decide (who sleeps, who wakes, and when), and at the
 // functions themselves on hand-made states.
 #include "08_joints/chapter.h"
-#include "10_speed/chapter.h"
-#include "10_speed/sleep.h"
+#include "10_skip_work/chapter.h"
+#include "10_skip_work/sleep.h"
 #include "support/scene_rejection.h"
 #include "world/report.h"
 #include "world/scene.h"

@@ -3,8 +3,8 @@
 // building it every frame, and ends where it ends when every frame builds it; a block whose corner
 // nears the edge of what it slides on is built again.
 #include "03_epa/chapter.h"
-#include "10_speed/chapter.h"
-#include "10_speed/contact_cache.h"
+#include "10_skip_work/chapter.h"
+#include "10_skip_work/contact_cache.h"
 #include "world/scene.h"
 
 #include <catch2/catch.hpp>
@@ -26,9 +26,9 @@ int bodyNamed(const World& world, const std::string& name) {
 TEST_CASE("a block sliding down a ramp keeps its manifold and slides as when it is built every frame", "[ch10][cache]") {
     const World start = loadSceneFile("scenes/reference/ramp.json");
     World cached = start, built = start;
-    SpeedOptions everyFrame;
+    SkipWorkOptions everyFrame;
     everyFrame.contactCache.enabled = false;
-    Pipeline cachedPipeline = makeChapter10Pipeline(cached, SpeedOptions{});
+    Pipeline cachedPipeline = makeChapter10Pipeline(cached, SkipWorkOptions{});
     Pipeline builtPipeline = makeChapter10Pipeline(built, everyFrame);
     int rebuiltFrames = 0;
     for (int frame = 0; frame < 60; ++frame) {
@@ -53,7 +53,7 @@ TEST_CASE("a face contact slides only while its corners stay inside the face it 
         {"name": "slab", "type": "static", "shape": {"box": {"half_extents": [2, 0.5, 2]}}, "position": [0, -0.5, 0]},
         {"name": "box", "shape": {"box": {"half_extents": [0.5, 0.5, 0.5]}}, "position": [0, 0.5, 0], "mass": 1}
       ]})");
-    Pipeline pipeline = makeChapter10Pipeline(world, SpeedOptions{});
+    Pipeline pipeline = makeChapter10Pipeline(world, SkipWorkOptions{});
     pipeline.step(world);
     REQUIRE(world.contacts.size() == 1);
     const Contact built = world.contacts[0];

@@ -1,0 +1,252 @@
+#pragma once
+// A block's sweep: the warm start, the four normal rows solved as one block (a corner that would
+// pull let go), then friction against the loads just found.
+#include "11_wide_solve/friction_patch.h"
+
+namespace stepwise {
+inline namespace STEPWISE_ISA {
+
+/// Pushes the bodies by the impulses the manifold carries (from last frame, then from each
+/// substep): every substep starts from the whole accumulated impulse, as Box3D does. The normal
+/// impulses all point along n, so their turning adds up as one cross product:
+/// sum(lambda_i r_i x n) = (sum(lambda_i r_i)) x n.
+template <int N>
+inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
+    BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+    BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    const Pack<N> zero = Pack<N>::splat(0);
+    Pack<N> pushed = zero;
+    PackVec3<N> leverA{zero, zero, zero}, leverB{zero, zero, zero};
+    for (const ManifoldPointPack<N>& p : c.point) {
+        pushed = pushed + p.normalImpulse;
+        leverA = leverA + p.normalImpulse * p.armA;
+        leverB = leverB + p.normalImpulse * p.armB;
+    }
+    a.linearVelocity = a.linearVelocity - (c.inverseMassA * pushed) * c.normal;
+    a.angularVelocity = a.angularVelocity - c.inverseInertiaA * cross(leverA, c.normal);
+    b.linearVelocity = b.linearVelocity + (c.inverseMassB * pushed) * c.normal;
+    b.angularVelocity = b.angularVelocity + c.inverseInertiaB * cross(leverB, c.normal);
+    applyFriction(c, c.tangentImpulse1, c.tangentImpulse2, a, b);
+    a.angularVelocity = a.angularVelocity - c.twistImpulse * c.twistTurnA;
+    b.angularVelocity = b.angularVelocity + c.twistImpulse * c.twistTurnB;
+    if (anyNegative(-c.rollingLength)) {  // a lane resists rolling
+        a.angularVelocity = a.angularVelocity - c.inverseInertiaA * c.rollingImpulse;
+        b.angularVelocity = b.angularVelocity + c.inverseInertiaB * c.rollingImpulse;
+    }
+    scatterVelocities(states, c.slotA, a);
+    scatterVelocities(states, c.slotB, b);
+}
+/// Each point's separation from where its two material points are now: the separation found at
+/// the frame's start plus how far the bodies have moved and turned since (adjustedSeparation holds
+/// the start's normal . (armB - armA) taken out, so the arms as turned now go in whole).
+template <int N>
+inline void pointSeparations(const ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b, Pack<N> separations[4]) {
+    const Pack<N> movedApart = dot(c.normal, b.deltaPosition - a.deltaPosition);
+    // n . (R arm) = (R^T n) . arm: the normal turned back once per body serves all four points.
+    const PackVec3<N> normalSeenByA = rotate(conjugate(a.deltaRotation), c.normal);
+    const PackVec3<N> normalSeenByB = rotate(conjugate(b.deltaRotation), c.normal);
+    for (int k = 0; k < 4; ++k) {
+        const ManifoldPointPack<N>& p = c.point[k];
+        separations[k] = movedApart + dot(normalSeenByB, p.armB) - dot(normalSeenByA, p.armA) + p.adjustedSeparation;
+    }
+}
+
+/// Entries of the normal block's inverse M = K^-1 by point pair (normalBlockInverse keeps the upper triangle).
+constexpr int kBlockEntry[4][4] = {{0, 1, 2, 3}, {1, 4, 5, 6}, {2, 5, 7, 8}, {3, 6, 8, 9}};
+
+/// solveBlock's increments with the corner that pulls hardest let go, and the lanes where that
+/// answer holds (useDropped 1: the corner separates, the others still push, the rows are rigid).
+template <int N>
+inline void dropCorner(const Pack<N> blockInverse[10], const Pack<N> normalImpulse[4], const Pack<N> total[4],
+                       const Pack<N> increment[4], const Pack<N>& useBlock, const Pack<N>& rigid, Pack<N> dropped[4],
+                       Pack<N>& useDropped) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    Pack<N> worst = total[0], column[4], chosen[4];
+    for (int i = 0; i < 4; ++i) {
+        column[i] = blockInverse[kBlockEntry[i][0]];
+        chosen[i] = i == 0 ? one : zero;
+    }
+    for (int j = 1; j < 4; ++j) {
+        const Pack<N> worse = worst - total[j];  // > 0: corner j pulls harder
+        for (int i = 0; i < 4; ++i) {
+            column[i] = selectPositive(worse, blockInverse[kBlockEntry[i][j]], column[i]);
+            chosen[i] = selectPositive(worse, i == j ? one : zero, chosen[i]);
+        }
+        worst = min(worst, total[j]);
+    }
+    Pack<N> pivot = zero;  // M_jj
+    for (int i = 0; i < 4; ++i) pivot = pivot + chosen[i] * column[i];
+    const Pack<N> release = -worst / max(pivot, Pack<N>::splat(Real(1e-30)));
+    Pack<N> leastDropped = zero;
+    for (int i = 0; i < 4; ++i) {
+        dropped[i] = selectPositive(chosen[i], -normalImpulse[i], increment[i] + release * column[i]);
+        leastDropped = min(leastDropped, selectPositive(chosen[i], zero, normalImpulse[i] + dropped[i]));
+    }
+    useDropped = (one - useBlock) * selectNonNegative(leastDropped, selectNonNegative(release, rigid, zero), zero);
+}
+
+/// Each point's target and softness for this sweep, from where its two material points are now
+/// (pointSeparations). A gap may close by itself within the substep and no faster (speculative);
+/// with `useBias` a point deeper than the slop is pushed out (Baumgarte or a soft spring), at most
+/// maxPushOutSpeed.
+template <int N>
+struct PointTargets {
+    Pack<N> bias[4], massScale[4], impulseScale[4], separations[4];
+};
+
+template <int N>
+inline void pointTargets(const ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b,
+                         const ContactSolveParams& params, bool useBias, PointTargets<N>& t) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    const Pack<N> inverseH = Pack<N>::splat(1 / params.substep);
+    const Pack<N> slop = Pack<N>::splat(params.slop);
+    const Pack<N> maxPush = Pack<N>::splat(-params.maxPushOutSpeed);
+    pointSeparations(c, a, b, t.separations);
+    for (int k = 0; k < 4; ++k) {
+        const Pack<N> separation = t.separations[k];
+        t.bias[k] = separation * inverseH;
+        t.massScale[k] = one;
+        t.impulseScale[k] = zero;
+        if (useBias) {
+            const Pack<N> excess = separation + slop;  // < 0: deeper than the slop
+            const Pack<N> push = max(c.biasRate * excess, maxPush);
+            const Pack<N> deep = -excess;
+            t.bias[k] = selectPositive(separation, t.bias[k], selectPositive(deep, push, zero));
+            t.massScale[k] = selectPositive(deep, c.massScale, one);
+            t.impulseScale[k] = selectPositive(deep, c.impulseScale, zero);
+        } else {
+            t.bias[k] = selectPositive(separation, t.bias[k], zero);
+        }
+    }
+}
+
+/// The four normal rows' change as one block, and where it holds (useBlock) or holds with the
+/// corner that pulls hardest let go (useDropped); blockFails is 1 where neither does.
+template <int N>
+struct BlockStep {
+    Pack<N> increment[4], dropped[4], useBlock, useDropped, blockFails;
+};
+
+// [ch11-normal-block-step]
+/// The increments that make every row's speed its target at once, d = -K^-1 (J v + b) with b each
+/// row's bias, kept where they leave every point pushing (lambda + d >= 0) and every row rigid.
+/// Also keeps each point's fastest closing speed for restitution where a lane bounces.
+template <int N>
+inline void normalBlockStep(ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b, const PointTargets<N>& t,
+                            const PackVec3<N> angularA[4], const PackVec3<N> angularB[4], bool bounces,
+                            BlockStep<N>& s) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    Pack<N> target[4];  // each row's speed plus bias
+    const Pack<N> approach = dot(c.normal, b.linearVelocity - a.linearVelocity);
+    for (int k = 0; k < 4; ++k) {
+        const Pack<N> speed = approach + dot(b.angularVelocity, angularB[k]) - dot(a.angularVelocity, angularA[k]) + t.bias[k];
+        target[k] = selectPositive(c.point[k].normalMass, speed, zero);  // a missing point asks for nothing
+        if (!bounces) continue;
+        // A gap that a substep's motion closes (the relax sweep looks one substep ahead):
+        // restitution reverses the fastest speed it closed at, not the speed at the frame's start,
+        // which the fall has not finished. The fastest: once stopped, a point stays a rounding
+        // error apart and "closes" again at gravity's speed.
+        const Pack<N> closes = min(t.separations[k], -target[k]);  // > 0: apart now, closed within h
+        c.point[k].approachSpeed =
+            selectPositive(closes, min(c.point[k].approachSpeed, speed - t.bias[k]), c.point[k].approachSpeed);
+    }
+    Pack<N> total[4], leastLoad = zero, softness = zero;
+    for (int i = 0; i < 4; ++i) {
+        s.increment[i] = -(c.normalBlockInverse[kBlockEntry[i][0]] * target[0] + c.normalBlockInverse[kBlockEntry[i][1]] * target[1] +
+                           c.normalBlockInverse[kBlockEntry[i][2]] * target[2] + c.normalBlockInverse[kBlockEntry[i][3]] * target[3]);
+        total[i] = c.point[i].normalImpulse + s.increment[i];
+        leastLoad = min(leastLoad, total[i]);
+        softness = max(softness, t.impulseScale[i]);
+    }
+    const Pack<N> rigid = selectPositive(softness, zero, one);
+    s.useBlock = selectNonNegative(leastLoad, rigid, zero);
+    // Where one corner would pull, let it go: its impulse becomes zero and the other rows still
+    // meet their targets. With M = K^-1 that is d + s M e_j, s = -(lambda_j + d_j) / M_jj, exact
+    // when s >= 0 (the corner then separates) and the others still push. j is the corner that
+    // pulls hardest. Skipped where every lane takes the whole block (most of a resting stack's).
+    for (Pack<N>& dropped : s.dropped) dropped = zero;
+    s.useDropped = zero;
+    if (anyNegative(s.useBlock - one)) {
+        const Pack<N> impulses[4] = {c.point[0].normalImpulse, c.point[1].normalImpulse, c.point[2].normalImpulse,
+                                     c.point[3].normalImpulse};
+        dropCorner(c.normalBlockInverse, impulses, total, s.increment, s.useBlock, rigid, s.dropped, s.useDropped);
+    }
+    s.blockFails = one - s.useBlock - s.useDropped;
+}
+// [ch11-normal-block-step]
+
+/// The block's impulses onto the points and the bodies, in the lanes where it held.
+template <int N>
+inline void applyBlockStep(ManifoldBlock<N>& c, const BlockStep<N>& s, bool bounces, BodyPack<N>& a, BodyPack<N>& b) {
+    const Pack<N> zero = Pack<N>::splat(0);
+    Pack<N> pushed = zero;
+    PackVec3<N> turnedA{zero, zero, zero}, turnedB{zero, zero, zero};
+    for (int i = 0; i < 4; ++i) {
+        ManifoldPointPack<N>& p = c.point[i];
+        const Pack<N> impulse = s.increment[i] * s.useBlock + s.dropped[i] * s.useDropped;
+        p.normalImpulse = p.normalImpulse + impulse;
+        if (bounces) p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);  // read by restitution only
+        pushed = pushed + impulse;
+        turnedA = turnedA + impulse * p.turnA;
+        turnedB = turnedB + impulse * p.turnB;
+    }
+    a.linearVelocity = a.linearVelocity - (c.inverseMassA * pushed) * c.normal;
+    a.angularVelocity = a.angularVelocity - turnedA;
+    b.linearVelocity = b.linearVelocity + (c.inverseMassB * pushed) * c.normal;
+    b.angularVelocity = b.angularVelocity + turnedB;
+}
+
+/// Where the block failed, the normal rows one at a time, swept forwards and backwards: a single
+/// sweep in one order leaves the first corner pushing harder than the last, a torque that tilts a
+/// tall stack; symmetric sweeps bring the corners to nearly the same answer. Only the lanes whose
+/// block failed change (selectPositive on blockFails): a lane's answer must not depend on which
+/// manifolds share its block, so that the scalar solve and wide solves of any width give the same bits.
+template <int N>
+inline void sweepNormalRows(ManifoldBlock<N>& c, const PointTargets<N>& t, const PackVec3<N> angularA[4],
+                            const PackVec3<N> angularB[4], const Pack<N>& blockFails, bool bounces, BodyPack<N>& a,
+                            BodyPack<N>& b) {
+    const Pack<N> zero = Pack<N>::splat(0);
+    for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
+        for (int k = 0; k < 4; ++k) {
+            const int i = sweep % 2 == 0 ? k : 3 - k;
+            ManifoldPointPack<N>& p = c.point[i];
+            const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
+                                        dot(b.angularVelocity, angularB[i]) - dot(a.angularVelocity, angularA[i]);
+            Pack<N> impulse = -(p.normalMass * t.massScale[i] * (normalSpeed + t.bias[i])) - t.impulseScale[i] * p.normalImpulse;
+            const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
+            impulse = accumulated - p.normalImpulse;
+            p.normalImpulse = selectPositive(blockFails, accumulated, p.normalImpulse);
+            if (bounces)
+                p.maxNormalImpulse = selectPositive(blockFails, max(p.maxNormalImpulse, impulse), p.maxNormalImpulse);
+            a.linearVelocity = select(blockFails, a.linearVelocity - (c.inverseMassA * impulse) * c.normal, a.linearVelocity);
+            a.angularVelocity = select(blockFails, a.angularVelocity - impulse * p.turnA, a.angularVelocity);
+            b.linearVelocity = select(blockFails, b.linearVelocity + (c.inverseMassB * impulse) * c.normal, b.linearVelocity);
+            b.angularVelocity = select(blockFails, b.angularVelocity + impulse * p.turnB, b.angularVelocity);
+        }
+    }
+}
+
+// [ch11-solve-block]
+/// One sweep over the block's points: the four normal rows as one block (or one at a time where
+/// the block would pull, with position feedback when `useBias`), then friction against the normal
+/// impulses just found.
+template <int N>
+inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
+    BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+    BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    PointTargets<N> targets;
+    pointTargets(c, a, b, params, useBias, targets);
+    PackVec3<N> angularA[4], angularB[4];
+    normalAngulars(c, angularA, angularB);
+    const bool bounces = anyNegative(-c.restitution);  // approachSpeed is read only where a lane bounces
+    BlockStep<N> step;
+    normalBlockStep(c, a, b, targets, angularA, angularB, bounces, step);
+    applyBlockStep(c, step, bounces, a, b);
+    if (anyNegative(-step.blockFails)) sweepNormalRows(c, targets, angularA, angularB, step.blockFails, bounces, a, b);
+    solveFriction(c, a, b);
+    scatterVelocities(states, c.slotA, a);
+    scatterVelocities(states, c.slotB, b);
+}
+// [ch11-solve-block]
+}  // namespace STEPWISE_ISA
+}  // namespace stepwise

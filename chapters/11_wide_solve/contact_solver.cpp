@@ -1,0 +1,322 @@
+// Chapter 11's solve: the frame's contacts as blocks of lanes, solved colour by colour in substeps
+// of one biased and one relax sweep (chapter 6's relax or soft step), warm started.
+#include "11_wide_solve/contact_solver.h"
+
+#include "01_integrators/methods.h"
+#include "03_epa/chapter.h"
+#include "06_manifolds/stabilisation.h"
+#include "10_skip_work/sleep.h"
+#include "11_wide_solve/contact_kernels.h"
+#include "11_wide_solve/solve_steps.h"
+#include "11_wide_solve/wide_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace stepwise {
+
+const char* toString(SolverPath path) { return path == SolverPath::Wide ? "wide" : "scalar"; }
+
+bool fastSolveApplies(const World& world, std::string* why) {
+    auto refuse = [&](const char* reason) {
+        if (why) *why = reason;
+        return false;
+    };
+    const Settings& settings = world.settings;
+    if (!isSubstepped(settings.stabilisation)) return refuse("the stabilisation is not relax or soft_step");
+    if (settings.solver != SolverKind::GaussSeidel) return refuse("the solver is Jacobi");
+    if (settings.gyroscopic == GyroscopicMode::Explicit) return refuse("the gyroscopic term is explicit");
+    if (settings.integrator != IntegratorKind::SemiImplicitEuler) return refuse("the integrator is not semi-implicit Euler");
+    if (!world.joints.empty()) return refuse("the scene has joints");
+    if (!world.springs.empty()) return refuse("the scene has springs");
+    if (!world.dampings.empty()) return refuse("the scene has dampings");
+    for (const Motion& motion : world.motions) {
+        if (motion.integrator && *motion.integrator != IntegratorKind::SemiImplicitEuler)
+            return refuse("a body uses another integrator");
+        if (world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Kinematic)
+            return refuse("the scene has kinematic bodies");
+    }
+    return true;
+}
+
+bool validContactRecord(const World& world, const Contact& contact) {
+    const int count = static_cast<int>(world.bodies.size());
+    if (contact.bodyA < 0 || contact.bodyB < 0 || contact.bodyA >= count || contact.bodyB >= count) return false;
+    if (contact.pointCount <= 0 || contact.pointCount > 4 || contact.bodyA == contact.bodyB) return false;
+    if (!contact.normal.allFinite() || std::abs(contact.normal.norm() - 1) > Real(1e-3)) return false;
+    for (int i = 0; i < contact.pointCount; ++i)
+        if (!contact.points[i].pointA.allFinite() || !contact.points[i].pointB.allFinite() ||
+            !std::isfinite(contact.points[i].depth))
+            return false;
+    return true;
+}
+
+namespace {
+
+bool isAwakeDynamic(const World& world, int bodyIndex) {
+    const Motion* motion = world.motionOf(bodyIndex);
+    return motion && !motion->asleep && world.bodies[static_cast<std::size_t>(bodyIndex)].type == BodyType::Dynamic;
+}
+
+bool allAwakeDynamic(const World& world) {
+    return std::all_of(world.motions.begin(), world.motions.end(), [&](const Motion& motion) {
+        return !motion.asleep && world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Dynamic;
+    });
+}
+
+bool anyAwakeDynamic(const World& world) {
+    return std::any_of(world.motions.begin(), world.motions.end(),
+                       [&](const Motion& motion) { return isAwakeDynamic(world, motion.bodyIndex); });
+}
+
+}  // namespace
+
+bool solvableContact(const World& world, const Contact& contact) {
+    return validContactRecord(world, contact) &&
+           (isAwakeDynamic(world, contact.bodyA) || isAwakeDynamic(world, contact.bodyB));
+}
+
+void collectSolvableContacts(const World& world, std::vector<int>& order) {
+    order.clear();
+    for (std::size_t i = 0; i < world.contacts.size(); ++i)
+        if (solvableContact(world, world.contacts[i])) order.push_back(static_cast<int>(i));
+}
+
+bool fastSolvePlans(const World& world, Real dt) {
+    if (!(dt > 0) || !std::isfinite(dt) || everyBodyAsleep(world)) return false;
+    if (world.contacts.empty() && allAwakeDynamic(world)) return true;  // free flight
+    return anyAwakeDynamic(world);
+}
+
+// [ch11-plan-scene-count]
+void planSceneCount(World& world) {
+    IterationPlan& plan = world.step.iterationPlan;
+    plan.previousIterations = plan.iterations;
+    plan.iterations = std::max(1, world.settings.solverIterations);
+    plan.plainIterations = plan.iterations;
+    plan.shockPropagation = false;
+}
+// [ch11-plan-scene-count]
+
+namespace {
+
+template <int N>
+void warmStartAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states) {
+    for (ManifoldBlock<N>& block : blocks) warmStartBlock(block, states);
+}
+template <int N>
+void solveAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
+              bool useBias) {
+    for (ManifoldBlock<N>& block : blocks) solveBlock(block, states, params, useBias);
+}
+template <int N>
+void restitutionAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, Real threshold) {
+    for (ManifoldBlock<N>& block : blocks) restitutionBlock(block, states, threshold);
+}
+
+template <int N>
+bool collideAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, const ContactSolveParams& params) {
+    bool struck = false;
+    for (ManifoldBlock<N>& block : blocks) struck = collideBlock(block, states, params) || struck;
+    return struck;
+}
+template <int N>
+bool anyRestitution(const std::vector<ManifoldBlock<N>>& blocks) {
+    for (const ManifoldBlock<N>& block : blocks)
+        for (int lane = 0; lane < N; ++lane)
+            if (block.restitution[lane] > 0) return true;
+    return false;
+}
+
+/// Collision sweeps a substep at most: a row of this many touching balls passes an impact on.
+constexpr int kCollisionSweeps = 16;
+
+template <int N>
+void resetImpulses(std::vector<ManifoldBlock<N>>& blocks) {
+    for (ManifoldBlock<N>& block : blocks) {
+        for (ManifoldPointPack<N>& p : block.point) p.normalImpulse = Pack<N>::splat(0);
+        block.tangentImpulse1 = block.tangentImpulse2 = block.twistImpulse = Pack<N>::splat(0);
+        block.rollingImpulse = PackVec3<N>{Pack<N>::splat(0), Pack<N>::splat(0), Pack<N>::splat(0)};
+    }
+}
+
+
+/// The solve's phase times: one clock read per phase, and none unless asked for (a read costs
+/// tens of nanoseconds, and forty a frame would be a large part of a one-ball step).
+class PhaseClock {
+public:
+    explicit PhaseClock(bool on) : on_(on) {
+        if (on_) last_ = std::chrono::steady_clock::now();
+    }
+    /// Milliseconds since the last lap (0 when off).
+    double lap() {
+        if (!on_) return 0;
+        const auto now = std::chrono::steady_clock::now();
+        const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
+        last_ = now;
+        return ms;
+    }
+
+private:
+    bool on_;
+    std::chrono::steady_clock::time_point last_{};
+};
+
+
+
+/// The frame's solve is over: its figures, and no velocities kept for restitution.
+void finishFrame(World& world, const SolverStats& stats) {
+    world.step.solver = stats;
+    world.step.velocitiesBeforeForces.clear();
+}
+
+/// The contacts that involve a moving body, in contact order (canonical: sorted by pair), with their
+/// bodies' slots; counts the records that cannot be solved.
+SolverStats gatherContacts(const World& world, ContactSolverScratch& scratch) {
+    SolverStats solverStats;
+    for (std::size_t i = 0; i < world.contacts.size(); ++i) {
+        const Contact& contact = world.contacts[i];
+        if (!usableContact(world, contact, scratch.bodies)) {
+            if (contact.pointCount > 0 && (contact.bodyA < 0 || contact.bodyB < 0 || contact.pointCount > 4 ||
+                                           !contact.normal.allFinite()))
+                solverStats.invalidSkipped += std::clamp(contact.pointCount, 1, 4);
+            continue;
+        }
+        scratch.contactOrder.push_back(static_cast<int>(i));
+        scratch.slotA.push_back(scratch.bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)]);
+        scratch.slotB.push_back(scratch.bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)]);
+        scratch.stats.points += contact.pointCount;
+    }
+    scratch.stats.manifolds = static_cast<int>(scratch.contactOrder.size());
+    return solverStats;
+}
+
+// [ch11-substeps]
+/// The frame's substeps: integrate the velocities, collide, warm start, one biased sweep, move the
+/// bodies, one relax sweep. Scalar and wide blocks take each pass in turn.
+void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolveParams& params, int substeps,
+                 SolverPath path, bool collisions, PhaseClock& clock) {
+    FastSolveStats& stats = scratch.stats;
+    SolverBodyState* states = scratch.bodies.states.data();
+    const Real h = params.substep;
+    for (int substep = 0; substep < substeps; ++substep) {
+        integrateVelocities(world, scratch.bodies, h, substep == 0, path);
+        // [ch11-collisions-first]
+        // Collisions first, on the speeds before the warm start adds last substep's pushes.
+        for (int sweep = 0; collisions && sweep < kCollisionSweeps; ++sweep) {
+            const bool struckWide = collideWide(scratch.wideBlocks, states, params);
+            const bool struckScalar = collideAll(scratch.scalarBlocks, states, params);
+            if (!struckWide && !struckScalar) break;
+        }
+        // [ch11-collisions-first]
+        stats.ms(SolvePhase::Integrate) += clock.lap();
+        if (!world.settings.warmStarting) {
+            resetImpulses(scratch.wideBlocks);
+            resetImpulses(scratch.scalarBlocks);
+        } else {
+            warmStartWide(scratch.wideBlocks, states);
+            warmStartAll(scratch.scalarBlocks, states);
+        }
+        stats.ms(SolvePhase::WarmStart) += clock.lap();
+        solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
+        solveAll(scratch.scalarBlocks, states, params, true);
+        stats.ms(SolvePhase::Solve) += clock.lap();
+        integratePositions(scratch.bodies, h, path);
+        stats.ms(SolvePhase::Integrate) += clock.lap();
+        solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
+        solveAll(scratch.scalarBlocks, states, params, false);
+        stats.ms(SolvePhase::Relax) += clock.lap();
+    }
+}
+// [ch11-substeps]
+
+/// The blocks of the frame, filled and prepared; with an extension, its groups first (the lanes
+/// carry them) and its preparation after.
+void buildBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params, SolverPath path,
+                 bool extended) {
+    scratch.laneGroups = 0;
+    if (extended) scratch.extension->groupLanes(world, scratch);
+    if (path == SolverPath::Wide)
+        buildWideBlocks(world, scratch, params);
+    else
+        buildScalarBlocks(world, scratch, params);
+    scratch.stats.wideBlocks = static_cast<int>(scratch.wideBlocks.size());
+    scratch.stats.overflow = path == SolverPath::Wide ? static_cast<int>(scratch.scalarBlocks.size()) : 0;
+    const SolverBodyState* states = scratch.bodies.states.data();
+    prepareWide(scratch.wideBlocks, states);
+    for (ManifoldBlock<1>& block : scratch.scalarBlocks) prepareBlock(block, states);
+    if (extended) scratch.extension->prepare(scratch);
+}
+
+}  // namespace
+
+void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame) {
+    total.bodies = frame.bodies;
+    total.manifolds = frame.manifolds;
+    total.points = frame.points;
+    total.wideBlocks = frame.wideBlocks;
+    total.overflow = frame.overflow;
+    for (std::size_t phase = 0; phase < kSolvePhaseCount; ++phase) total.phaseMs[phase] += frame.phaseMs[phase];
+}
+
+
+// [ch11-solve-fast]
+void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scratch) {
+    if (!(dt > 0) || !std::isfinite(dt)) return;
+    scratch.stats = FastSolveStats{};
+    FastSolveStats& stats = scratch.stats;
+    PhaseClock clock(scratch.timePhases);
+    // Contacts found at an earlier substep of the frame (Settings::substeps > 1, collision once per
+    // frame) are where their bodies were then: their points move with the bodies first.
+    if (world.step.substep > 0 && world.step.contactsFoundAtSubstep < world.step.substep) followContactAnchors(world);
+    scratch.contactOrder.clear();
+    scratch.slotA.clear();
+    scratch.slotB.clear();
+    if (everyBodyAsleep(world)) return finishFrame(world, SolverStats{});  // nothing to gather or move
+    const IterationPlan& plan = world.step.iterationPlan;  // this frame's (the plan stage's)
+    const int substeps = std::max(1, plan.iterations);
+    const Real h = dt / static_cast<Real>(substeps);
+    if (world.contacts.empty() && allAwakeDynamic(world)) {
+        // Nothing touches: no solver state to gather, the bodies move on their own.
+        stats.bodies = static_cast<int>(world.motions.size());
+        moveFreeBodies(world, h, substeps);
+        return finishFrame(world, SolverStats{});
+    }
+    prepareBodies(world, scratch.bodies);
+    stats.bodies = static_cast<int>(scratch.bodies.states.size()) - 1;
+    if (stats.bodies == 0) return finishFrame(world, SolverStats{});  // nothing that moves
+    SolverStats solverStats = gatherContacts(world, scratch);
+    // Every body moves in the substeps, touching or not (chapter 6's solve says why); nothing
+    // touches and nothing sleeps: the bodies fly free.
+    if (stats.manifolds == 0 && stats.bodies == static_cast<int>(world.motions.size())) {
+        moveFreeBodies(world, h, substeps);
+        return finishFrame(world, solverStats);
+    }
+    ContactSolveParams params = solveParams(world.settings, h);
+    // Carried impulses were a substep's of the last plan: scaled to this frame's substep.
+    if (plan.previousIterations > 0 && plan.previousIterations != substeps)
+        params.carryScale = static_cast<Real>(plan.previousIterations) / static_cast<Real>(substeps);
+    const bool extended = scratch.extension && plan.shockPropagation;
+    buildBlocks(world, scratch, params, path, extended);
+    stats.ms(SolvePhase::Prepare) += clock.lap();
+    // Scenes without restitution (most) have no collisions to sweep.
+    const bool collisions = anyRestitution(scratch.wideBlocks) || anyRestitution(scratch.scalarBlocks);
+    runSubsteps(world, scratch, params, substeps, path, collisions, clock);
+    if (extended) scratch.extension->finish(scratch, params);
+    stats.ms(SolvePhase::Relax) += clock.lap();
+    SolverBodyState* states = scratch.bodies.states.data();
+    if (collisions) {  // some lane has restitution
+        restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
+        restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
+    }
+    writeBodiesBack(world, scratch.bodies);
+    storeBlocks(scratch, world);
+    stats.ms(SolvePhase::Store) += clock.lap();
+    solverStats.contactPoints = stats.points;
+    solverStats.rows = stats.points + 3 * stats.manifolds;  // normal rows, and three friction rows per manifold
+    finishFrame(world, solverStats);
+}
+// [ch11-solve-fast]
+
+}  // namespace stepwise

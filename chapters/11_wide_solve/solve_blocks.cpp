@@ -1,0 +1,305 @@
+// Chapter 11's blocks: the frame's contacts coloured, packed kWideLanes to a block (or one to a
+// block on the scalar path), and their impulses stored back.
+#include "11_wide_solve/solve_steps.h"
+
+#include "04_pgs/contact_constraints.h"
+#include "06_manifolds/stabilisation.h"
+#include "11_wide_solve/colouring.h"
+#include "11_wide_solve/contact_kernels.h"
+#include "11_wide_solve/wide_solver.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace stepwise {
+
+namespace {
+
+template <int N>
+void setLane(PackVec3<N>& pack, int lane, const Vec3& value) {
+    pack.x[lane] = value.x();
+    pack.y[lane] = value.y();
+    pack.z[lane] = value.z();
+}
+
+template <int N>
+void setLane(PackSym3<N>& pack, int lane, const Mat3& m) {
+    pack.xx[lane] = m(0, 0);
+    pack.yy[lane] = m(1, 1);
+    pack.zz[lane] = m(2, 2);
+    pack.xy[lane] = m(0, 1);
+    pack.xz[lane] = m(0, 2);
+    pack.yz[lane] = m(1, 2);
+}
+
+// [ch11-prepare-contact]
+/// Fills one lane of a block from a contact record: what the block takes as it is (the bodies'
+/// slots, masses and inertias, the material), and into `inputs` what fillBlockFields turns into
+/// the rest (the arms, the friction basis, the carried impulses) for all lanes at once.
+template <int N>
+void fillLane(ManifoldBlock<N>& block, LaneInputs<N>& inputs, int lane, const World& world, int contactIndex,
+              const SolverBodies& bodies, const ContactSolveParams& params) {
+    const Contact& contact = world.contacts[static_cast<std::size_t>(contactIndex)];
+    const int slotA = bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)];
+    const int slotB = bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)];
+    const SolverBodyInfo& infoA = bodies.info[static_cast<std::size_t>(slotA)];
+    const SolverBodyInfo& infoB = bodies.info[static_cast<std::size_t>(slotB)];
+    const Body& bodyA = world.bodies[static_cast<std::size_t>(contact.bodyA)];
+    const Body& bodyB = world.bodies[static_cast<std::size_t>(contact.bodyB)];
+    // A static body's centre is its origin (slot 0 has none): arms only matter for bodies that move.
+    setLane(inputs.centerA, lane, slotA ? infoA.startCenter : worldCenterOfMass(world, contact.bodyA));
+    setLane(inputs.centerB, lane, slotB ? infoB.startCenter : worldCenterOfMass(world, contact.bodyB));
+    setLane(inputs.normal, lane, contact.normal);
+    // The arms reach each body's core: a sphere's centre, a capsule's segment (radius 0 for boxes
+    // and hulls). Along the normal the arms change no row (every use is n . (w x arm) or arm x n),
+    // but pointSeparations turns them with the bodies, and a point on a round surface does not
+    // turn with its body: the ball's lowest point stays lowest as it rolls. Turned with the ball,
+    // the material point would rise r (1 - cos w h) a substep, a false gap the solve would let the
+    // ball fall into, every substep.
+    inputs.roundA[lane] = roundRadius(bodyA.shape);
+    inputs.roundB[lane] = roundRadius(bodyB.shape);
+    inputs.pointCount[lane] = static_cast<Real>(contact.pointCount);
+    for (int i = 0; i < contact.pointCount; ++i) {
+        typename LaneInputs<N>::Point& input = inputs.point[i];
+        const ContactPoint& point = contact.points[i];
+        setLane(input.pointA, lane, point.pointA);
+        setLane(input.pointB, lane, point.pointB);
+        input.depth[lane] = point.depth;
+        input.normalImpulse[lane] = point.normalImpulse;
+        input.tangentImpulse1[lane] = point.tangentImpulse[0];
+        input.tangentImpulse2[lane] = point.tangentImpulse[1];
+    }
+
+    block.slotA[lane] = slotA;
+    block.slotB[lane] = slotB;
+    block.contactIndex[lane] = contactIndex;
+    block.pointCount[lane] = contact.pointCount;
+    const Real friction = combinedFriction(bodyA.material, bodyB.material);
+    block.friction[lane] = inputs.friction[lane] = friction;
+    block.restitution[lane] = combinedRestitution(bodyA.material, bodyB.material);
+    // A rolling ball is held back by a torque of c r N (Box2D v3 takes the larger body's too).
+    block.rollingLength[lane] = std::max(bodyA.material.rollingResistance * inputs.roundA[lane],
+                                         bodyB.material.rollingResistance * inputs.roundB[lane]);
+    setLane(block.rollingImpulse, lane, Vec3::Zero());  // not carried between frames
+    block.inverseMassA[lane] = infoA.inverseMass;
+    block.inverseMassB[lane] = infoB.inverseMass;
+    setLane(block.inverseInertiaA, lane, infoA.inverseInertia);
+    setLane(block.inverseInertiaB, lane, infoB.inverseInertia);
+    const bool againstStatic = slotA == 0 || slotB == 0;
+    block.biasRate[lane] = againstStatic ? params.staticBiasRate : params.dynamicBiasRate;
+    block.massScale[lane] = againstStatic ? params.staticMassScale : params.dynamicMassScale;
+    block.impulseScale[lane] = againstStatic ? params.staticImpulseScale : params.dynamicImpulseScale;
+}
+
+/// A lane of no contact in the inputs: a unit normal and no points (emptyLane then writes the
+/// block's lane).
+template <int N>
+void emptyInputs(LaneInputs<N>& inputs, int lane) {
+    setLane(inputs.normal, lane, Vec3::UnitY());
+    setLane(inputs.centerA, lane, Vec3::Zero());
+    setLane(inputs.centerB, lane, Vec3::Zero());
+    inputs.roundA[lane] = inputs.roundB[lane] = inputs.pointCount[lane] = inputs.friction[lane] = 0;
+}
+
+/// One contact's scalar block, filled whole.
+void fillScalarBlock(ManifoldBlock<1>& block, const World& world, int contactIndex, const SolverBodies& bodies,
+                     const ContactSolveParams& params) {
+    LaneInputs<1> inputs{};  // zeros where the contact has no point
+    fillLane(block, inputs, 0, world, contactIndex, bodies, params);
+    fillBlockFields(block, inputs, params.carryScale, world.settings.warmStarting);
+}
+// [ch11-prepare-contact]
+
+template <int N>
+void emptyLane(ManifoldBlock<N>& block, int lane) {
+    block.slotA[lane] = block.slotB[lane] = 0;
+    block.contactIndex[lane] = -1;
+    block.pointCount[lane] = 0;
+    block.friction[lane] = block.restitution[lane] = block.rollingLength[lane] = 0;
+    setLane(block.rollingImpulse, lane, Vec3::Zero());
+    block.inverseMassA[lane] = block.inverseMassB[lane] = 0;
+    setLane(block.inverseInertiaA, lane, Mat3::Zero());
+    setLane(block.inverseInertiaB, lane, Mat3::Zero());
+    block.biasRate[lane] = block.impulseScale[lane] = 0;
+    block.massScale[lane] = 1;
+    block.shockGroup[lane] = 0;
+    block.heldA[lane] = block.heldB[lane] = 0;
+    setLane(block.normal, lane, Vec3::UnitY());
+    setLane(block.tangent1, lane, Vec3::UnitX());
+    setLane(block.tangent2, lane, Vec3::UnitZ());
+    setLane(block.centerArmA, lane, Vec3::Zero());
+    setLane(block.centerArmB, lane, Vec3::Zero());
+    block.tangentInverse11[lane] = block.tangentInverse12[lane] = block.tangentInverse22[lane] = 0;
+    block.twistMass[lane] = 0;
+    block.tangentImpulse1[lane] = block.tangentImpulse2[lane] = block.twistImpulse[lane] = 0;
+    for (ManifoldPointPack<N>& p : block.point) {
+        setLane(p.armA, lane, Vec3::Zero());
+        setLane(p.armB, lane, Vec3::Zero());
+        p.adjustedSeparation[lane] = p.normalMass[lane] = p.normalImpulse[lane] = p.twistRadius[lane] = 0;
+        p.approachSpeed[lane] = p.maxNormalImpulse[lane] = p.offset1[lane] = p.offset2[lane] = 0;
+    }
+}
+
+
+// [ch11-store]
+/// Writes the impulses back to the contact points, where every chapter keeps them (chapter 6
+/// carries them from point to point, chapter 9 shows them): the centre's friction force F shared
+/// equally, plus the twist tau as forces around the centre, f_i = F / n + tau (n x d_i) / sum |d_i|^2
+/// with d_i the point's offset from the centre, which add up to exactly F and tau again when
+/// fillLane reads them next frame. In the tangent basis, n x d = (-d2, d1).
+template <int N>
+void storeBlock(const ManifoldBlock<N>& block, World& world) {
+    for (int lane = 0; lane < N; ++lane) {
+        if (block.contactIndex[lane] < 0) continue;
+        Contact& contact = world.contacts[static_cast<std::size_t>(block.contactIndex[lane])];
+        const int count = contact.pointCount;
+        Real spread = 0;
+        for (int i = 0; i < count; ++i)
+            spread += block.point[i].offset1[lane] * block.point[i].offset1[lane] +
+                      block.point[i].offset2[lane] * block.point[i].offset2[lane];
+        const Real twist = spread > 0 ? block.twistImpulse[lane] / spread : 0;
+        const Real share1 = block.tangentImpulse1[lane] / static_cast<Real>(count);
+        const Real share2 = block.tangentImpulse2[lane] / static_cast<Real>(count);
+        for (int i = 0; i < count; ++i) {
+            ContactPoint& point = contact.points[i];
+            const ManifoldPointPack<N>& p = block.point[i];
+            point.normalImpulse = p.normalImpulse[lane];
+            point.normalMass = p.normalMass[lane];
+            point.tangentImpulse[0] = share1 - twist * p.offset2[lane];
+            point.tangentImpulse[1] = share2 + twist * p.offset1[lane];
+        }
+    }
+}
+// [ch11-store]
+
+/// Colours the contacts (colourContacts) and counts each colour's. A colour of one contact gives
+/// it to the overflow: a wide block for one contact would gather, solve and scatter kWideLanes
+/// lanes for it, where a scalar block does one (a ball alone on the ground steps faster so); from
+/// two contacts on, the wide block is as fast or faster.
+std::array<int, kMaxColours> colourForBlocks(ContactSolverScratch& scratch) {
+    colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(scratch.bodies.states.size()), scratch.colours,
+                   scratch.colourBits);
+    std::array<int, kMaxColours> counts{};
+    for (const int colour : scratch.colours)
+        if (colour >= 0) ++counts[static_cast<std::size_t>(colour)];
+    for (int& colour : scratch.colours)
+        if (colour >= 0 && counts[static_cast<std::size_t>(colour)] == 1) {
+            counts[static_cast<std::size_t>(colour)] = 0;
+            colour = -1;
+        }
+    return counts;
+}
+
+/// The coloured contacts in the order their lanes are filled: colour by colour, and within a
+/// colour by the shock sweep's group (0 first: not swept). A colour's lanes share no body, so
+/// their order changes no bit of the solve; it puts a group's lanes side by side, and the sweep
+/// solves each group over the few blocks that hold it (solveHeldBlock). Two stable counting sorts.
+void orderLanes(ContactSolverScratch& scratch) {
+    std::vector<int>& byGroup = scratch.laneScratch;
+    std::vector<int>& lanes = scratch.laneOrder;
+    std::vector<int>& start = scratch.laneBuckets;
+    const auto countingSort = [&](const std::vector<int>& from, std::vector<int>& to, int buckets, const std::vector<int>& key) {
+        start.assign(static_cast<std::size_t>(buckets) + 1, 0);
+        for (const int i : from) ++start[static_cast<std::size_t>(key[static_cast<std::size_t>(i)]) + 1];
+        for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+        to.resize(from.size());
+        for (const int i : from) to[static_cast<std::size_t>(start[static_cast<std::size_t>(key[static_cast<std::size_t>(i)])]++)] = i;
+    };
+    lanes.clear();
+    for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i)
+        if (scratch.colours[i] >= 0) lanes.push_back(static_cast<int>(i));
+    if (scratch.laneGroups > 0) {
+        countingSort(lanes, byGroup, scratch.laneGroups + 1, scratch.laneGroupOf);
+        std::swap(lanes, byGroup);
+    }
+    countingSort(lanes, byGroup, kMaxColours, scratch.colours);
+    std::swap(lanes, byGroup);
+}
+
+/// A lane's place in the shock sweep (groupShockSweep): its group and which body it holds still.
+template <int N>
+void setLaneGroup(ManifoldBlock<N>& block, int lane, const ContactSolverScratch& scratch, std::size_t i) {
+    const int group = scratch.laneGroups > 0 ? scratch.laneGroupOf[i] : 0;
+    const bool heldIsA = group > 0 && scratch.laneHeldIsA[i] != 0;
+    block.shockGroup[lane] = group;
+    block.heldA[lane] = heldIsA ? Real(1) : Real(0);
+    block.heldB[lane] = group > 0 && !heldIsA ? Real(1) : Real(0);
+}
+
+
+}  // namespace
+
+bool usableContact(const World& world, const Contact& contact, const SolverBodies& bodies) {
+    return validContactRecord(world, contact) && (bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)] != 0 ||
+                                                   bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)] != 0);
+}
+
+// [ch11-wide-blocks]
+/// Colours the contacts and packs each colour kWideLanes at a time (orderLanes); the overflow goes
+/// to scratch.scalarBlocks.
+void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params) {
+    const std::vector<int>& order = scratch.contactOrder;
+    colourForBlocks(scratch);
+    orderLanes(scratch);
+    scratch.wideBlocks.clear();
+    scratch.scalarBlocks.clear();
+    LaneInputs<kWideLanes>& inputs = scratch.laneInputs;
+    const auto finishBlock = [&](int lanes) {  // the lanes' shared arithmetic, then the empty ones
+        for (int lane = lanes; lane < kWideLanes; ++lane) emptyInputs(inputs, lane);
+        fillWide(scratch.wideBlocks.back(), inputs, params.carryScale, world.settings.warmStarting);
+        for (int lane = lanes; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
+    };
+    int lane = kWideLanes, blockColour = -1;
+    for (const int contact : scratch.laneOrder) {
+        const auto i = static_cast<std::size_t>(contact);
+        if (lane == kWideLanes || scratch.colours[i] != blockColour) {  // a block per colour's kWideLanes
+            if (lane < kWideLanes) finishBlock(lane);
+            scratch.wideBlocks.emplace_back();
+            lane = 0;
+            blockColour = scratch.colours[i];
+        }
+        setLaneGroup(scratch.wideBlocks.back(), lane, scratch, i);
+        fillLane(scratch.wideBlocks.back(), inputs, lane++, world, order[i], scratch.bodies, params);
+        if (lane == kWideLanes) finishBlock(lane);
+    }
+    if (lane < kWideLanes) finishBlock(lane);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (scratch.colours[i] >= 0) continue;
+        scratch.scalarBlocks.emplace_back();
+        fillScalarBlock(scratch.scalarBlocks.back(), world, order[i], scratch.bodies, params);
+        setLaneGroup(scratch.scalarBlocks.back(), 0, scratch, i);
+    }
+}
+// [ch11-wide-blocks]
+
+/// The scalar path's blocks, one contact each, in the wide path's order: colour by colour, then
+/// the overflow. Lanes of a wide block share no body, nor do the blocks of one colour, so the wide
+/// sweep is this sweep done kWideLanes contacts at a time, and the two paths give the same bits (no
+/// lane's answer depends on the lanes beside it): what the scalar solve measures is the lanes alone.
+void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params) {
+    const std::vector<int>& order = scratch.contactOrder;
+    const std::array<int, kMaxColours> counts = colourForBlocks(scratch);
+    scratch.wideBlocks.clear();
+    scratch.scalarBlocks.resize(order.size());
+    std::size_t next = 0;
+    const auto fill = [&](std::size_t i) {
+        setLaneGroup(scratch.scalarBlocks[next], 0, scratch, i);
+        fillScalarBlock(scratch.scalarBlocks[next++], world, order[i], scratch.bodies, params);
+    };
+    for (int colour = 0; colour < kMaxColours; ++colour) {
+        if (counts[static_cast<std::size_t>(colour)] == 0) continue;
+        for (std::size_t i = 0; i < order.size(); ++i)
+            if (scratch.colours[i] == colour) fill(i);
+    }
+    for (std::size_t i = 0; i < order.size(); ++i)
+        if (scratch.colours[i] < 0) fill(i);
+}
+
+
+void storeBlocks(const ContactSolverScratch& scratch, World& world) {
+    for (const ManifoldBlock<kWideLanes>& block : scratch.wideBlocks) storeBlock(block, world);
+    for (const ManifoldBlock<1>& block : scratch.scalarBlocks) storeBlock(block, world);
+}
+
+}  // namespace stepwise

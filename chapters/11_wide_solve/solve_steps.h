@@ -1,0 +1,33 @@
+#pragma once
+// The steps of chapter 11's solve, shared by its files (contact_solver.cpp runs them in order):
+// gathering the moving bodies, filling the blocks, integrating, storing.
+
+#include "11_wide_solve/contact_solver.h"
+
+namespace stepwise {
+
+/// Slot 0 for everything that does not move, then one slot per awake dynamic body, in motion order.
+void prepareBodies(const World& world, SolverBodies& bodies);
+/// The rows' feedback and softness for substeps of h (chapter 6's relax or soft step).
+ContactSolveParams solveParams(const Settings& settings, Real h);
+/// Chapter 1's velocity step for the moving bodies (gravity; the user's force in the first substep).
+void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep, SolverPath path);
+/// Chapter 1's position step for the moving bodies.
+void integratePositions(SolverBodies& bodies, Real h, SolverPath path);
+/// Poses and velocities back into the World.
+void writeBodiesBack(World& world, const SolverBodies& bodies);
+/// Bodies that touch nothing, each through all the substeps at once.
+void moveFreeBodies(World& world, Real h, int substeps);
+
+/// Both bodies named and distinct, one to four finite points, a unit normal.
+bool validContactRecord(const World& world, const Contact& contact);
+/// Whether a contact is one the solve takes, from the slots prepareBodies gave (solvableContact).
+bool usableContact(const World& world, const Contact& contact, const SolverBodies& bodies);
+/// The wide path's blocks: each colour kWideLanes contacts at a time, the overflow one at a time.
+void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params);
+/// The scalar path's blocks, one contact each, in the wide path's order.
+void buildScalarBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params);
+/// Every block's impulses back into its contact points.
+void storeBlocks(const ContactSolverScratch& scratch, World& world);
+
+}  // namespace stepwise

@@ -1,0 +1,377 @@
+// `stepwise bench speed`: what each of chapter 10's optimisations buys, and where the engine stands
+// beside Bullet (when the program was built with the peer), on the scenes of the chapter's targets.
+#include "12_planner/benches.h"
+
+#include "12_planner/chapter.h"
+#include "10_skip_work/scenes.h"
+#include "app/bench_util.h"
+#include "app/peer.h"
+#include "world/state_hash.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <ostream>
+
+namespace stepwise {
+
+namespace {
+
+/// One way to run a scene: the chapter's step with some optimisations off, or the peer.
+struct Configuration {
+    std::string name;
+    SpeedOptions options;
+    bool peer = false;
+};
+
+std::vector<Configuration> configurations(bool withPeer) {
+    std::vector<Configuration> list;
+    SpeedOptions all;
+    all.sleeping = false;  // the targets are timed awake; sleeping has its own measurement
+    list.push_back({"chapter 10", all, false});
+    SpeedOptions scalar = all;
+    scalar.solverPath = SolverPath::Scalar;
+    list.push_back({"scalar solve", scalar, false});
+    SpeedOptions noCache = all;
+    noCache.contactCache.enabled = false;
+    list.push_back({"no contact cache", noCache, false});
+    SpeedOptions noBoxBox = all;
+    noBoxBox.boxBoxQuery = false;
+    list.push_back({"no box-box query", noBoxBox, false});
+    SpeedOptions noShock = all;
+    noShock.shockPropagation = false;
+    list.push_back({"no shock sweep", noShock, false});
+    SpeedOptions reference = all;
+    reference.fastSolve = false;
+    list.push_back({"chapter 8's solve", reference, false});
+    if (withPeer) list.push_back({peerEngine().name, all, true});
+    return list;
+}
+
+/// What one run measured.
+struct Measurement {
+    Spread stepMs;
+    std::map<std::string, double> stageMs;   // mean per frame
+    long frames = 0;
+    Real maxSideways = 0;   // m, largest horizontal move of a dynamic body from its start
+    Real lowest = 0;        // m, lowest centre of a dynamic body (below the ground: tunnelled)
+    Real maxPenetration = 0;
+    int sleeping = 0;
+    FastSolveStats solvePhases;  // ms per timed frame in each phase of the fast solve
+};
+
+Real horizontalMove(const Transform& from, const Transform& to) {
+    const Vec3 moved = to.position - from.position;
+    return std::hypot(moved.x(), moved.z());
+}
+
+void measurePoses(const World& start, const std::vector<Transform>& poses, Measurement& measured) {
+    measured.lowest = kRealMax;
+    for (std::size_t i = 0; i < start.bodies.size(); ++i) {
+        if (start.bodies[i].type != BodyType::Dynamic) continue;
+        measured.maxSideways = std::max(measured.maxSideways, horizontalMove(start.bodies[i].transform, poses[i]));
+        measured.lowest = std::min(measured.lowest, poses[i].position.y());
+    }
+}
+
+/// Chapter 10 stepping a copy of `start` one frame at a time (so that the peer's frames can
+/// alternate with its own, runBeside), measuring as it goes.
+class EngineRun {
+public:
+    EngineRun(const World& start, SpeedOptions options, long timedFrom)
+        : start_(start), world_(start), options_(withProfile(options)), pipeline_(makeChapter12Pipeline(world_, options_)),
+          timedFrom_(timedFrom) {}
+
+    void step(long frame) {
+        if (frame == timedFrom_) *options_.profile = FastSolveStats{};
+        pipeline_.step(world_);
+        ++frames_;
+        if (frame < timedFrom_) return;
+        stepMs_.push_back(pipeline_.lastStepMs());
+        if (!pipeline_.lastStepTimedStages()) return;  // stages are timed one frame in eight
+        for (const Stage& stage : pipeline_.stages()) measured_.stageMs[stageGroup(stage.name)] += stage.lastMs;
+        ++stageTimedFrames_;
+    }
+
+    Measurement finish() {
+        const double timed = static_cast<double>(std::max<std::size_t>(1, stepMs_.size()));
+        for (auto& [group, ms] : measured_.stageMs) ms /= static_cast<double>(std::max<long>(1, stageTimedFrames_));
+        FastSolveStats& phases = measured_.solvePhases;
+        phases = *options_.profile;
+        for (double& ms : phases.phaseMs) ms /= timed;
+        measured_.stepMs = spreadOf(stepMs_);
+        measured_.frames = frames_;
+        std::vector<Transform> poses;
+        for (const Body& body : world_.bodies) poses.push_back(body.transform);
+        measurePoses(start_, poses, measured_);
+        for (const Contact& contact : world_.contacts)
+            for (int i = 0; i < contact.pointCount; ++i)
+                measured_.maxPenetration = std::max(measured_.maxPenetration, contact.points[i].depth);
+        for (const Motion& motion : world_.motions) measured_.sleeping += motion.asleep ? 1 : 0;
+        return measured_;
+    }
+
+private:
+    static SpeedOptions withProfile(SpeedOptions options) {
+        options.profile = std::make_shared<FastSolveStats>();
+        return options;
+    }
+    const World& start_;
+    World world_;
+    SpeedOptions options_;
+    Pipeline pipeline_;
+    long timedFrom_;
+    long frames_ = 0;
+    long stageTimedFrames_ = 0;
+    std::vector<double> stepMs_;
+    Measurement measured_;
+};
+
+Measurement runEngine(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
+    EngineRun run(start, options, timedFrom);
+    for (long frame = 0; frame < frames; ++frame) run.step(frame);
+    return run.finish();
+}
+
+/// Frames until every dynamic body of `start` sleeps, stepped by chapter 10 with sleeping on; at
+/// most `most`.
+long framesUntilAsleep(const World& start, long most) {
+    World world = start;
+    Pipeline pipeline = makeChapter12Pipeline(world, SpeedOptions{});
+    const int bodies = world.dynamicBodyCount();
+    for (long frame = 1; frame <= most; ++frame) {
+        pipeline.step(world);
+        int asleep = 0;
+        for (const Motion& motion : world.motions) asleep += motion.asleep ? 1 : 0;
+        if (asleep == bodies) return frame;
+    }
+    return most;
+}
+
+Measurement peerMeasurement(const World& start, const PeerRun& run, long frames, long timedFrom) {
+    Measurement measured;
+    std::vector<double> stepMs(run.stepMs.begin() + std::min<long>(timedFrom, static_cast<long>(run.stepMs.size())),
+                               run.stepMs.end());
+    measured.stepMs = spreadOf(stepMs);
+    measured.frames = frames;
+    measurePoses(start, run.finalPoses, measured);
+    return measured;
+}
+
+// [ch12-bench-beside]
+/// Chapter 10 and the peer on the same scene, taking turns of kFramesATurn frames: each engine's
+/// frames are timed alone, and the other's turn runs between two of its turns. A shared host's
+/// speed wanders by a fifth and more within minutes, and two whole runs one after the other
+/// measured the host as much as the engines; taking turns, both meet it alike. Frame by frame
+/// would not do: each engine would start every frame with the other's data in the caches, which
+/// cost chapter 10, whose frame touches every contact record, 15% and Bullet nothing measurable.
+constexpr long kFramesATurn = 30;
+
+std::pair<Measurement, Measurement> runBeside(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
+    EngineRun engine(start, options, timedFrom);
+    long engineFrames = 0;
+    const PeerRun peer = peerEngine().run(start, frames, [&](long peerFrame) {
+        if ((peerFrame + 1) % kFramesATurn != 0 && peerFrame + 1 != frames) return;
+        while (engineFrames <= peerFrame) engine.step(engineFrames++);
+    });
+    return {engine.finish(), peerMeasurement(start, peer, frames, timedFrom)};
+}
+// [ch12-bench-beside]
+
+struct BenchScene {
+    std::string name;
+    World world;
+    long frames;
+    long timedFrom;     // frames before it are not timed (the pile's first contacts)
+};
+
+/// Every scene through every configuration (the peer beside the first): the main table and the
+/// solve's profile.
+void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const std::vector<Configuration>& list,
+                   bool withPeer, CsvTable& table, CsvTable& profile) {
+    bench.progress().stage("scenes x configurations", static_cast<long>(scenes.size() * list.size()));
+    for (const BenchScene& scene : scenes) {
+        const int bodies = scene.world.dynamicBodyCount();
+        std::vector<std::pair<const Configuration*, Measurement>> results(list.size());
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const Configuration& configuration = list[i];
+            if (configuration.peer) continue;  // beside chapter 10 (below)
+            if (i == 0 && withPeer) {
+                auto [engine, peer] = runBeside(scene.world, configuration.options, scene.frames, scene.timedFrom);
+                results[0] = {&configuration, engine};
+                results.back() = {&list.back(), peer};
+                bench.progress().advance();
+            } else {
+                // Chapter 8's solve is slow on thousands of bodies: a second of simulated time measures it.
+                const long frames = configuration.options.fastSolve ? scene.frames : std::min<long>(scene.frames, 60);
+                results[i] = {&configuration, runEngine(scene.world, configuration.options, frames, scene.timedFrom)};
+            }
+            bench.progress().advance();
+        }
+        const FastSolveStats& phases = results.front().second.solvePhases;
+        std::vector<std::string> row = {scene.name, std::to_string(phases.manifolds), std::to_string(phases.points)};
+        for (double ms : phases.phaseMs) row.push_back(formatNumber(ms));
+        profile.addRow(std::move(row));
+        const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
+        for (const auto& result : results) {
+            const Configuration* configuration = result.first;
+            const Measurement& m = result.second;
+            auto stage = [&](const char* group) {
+                const auto found = m.stageMs.find(group);
+                return found == m.stageMs.end() ? std::string("") : formatNumber(found->second);
+            };
+            table.addRow({scene.name, std::to_string(bodies), configuration->name, std::to_string(m.frames),
+                          formatNumber(m.stepMs.median), formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper),
+                          stage(stage_group::kBroadphase), stage(stage_group::kNarrowphase), stage(stage_group::kSolve),
+                          formatNumber(1e6 * m.stepMs.median / bodies), formatNumber(m.maxSideways),
+                          formatNumber(m.lowest), configuration->peer ? "" : formatNumber(m.maxPenetration),
+                          withPeer ? formatNumber(peerMs / m.stepMs.median, 3) : ""});
+        }
+    }
+    bench.progress().endStage();
+
+}
+
+/// Settled piles with sleeping on and off.
+void measureSleep(BenchRun& bench, CsvTable& sleepTable) {
+    const bool quick = bench.quick();
+    // [ch12-bench-sleep]
+    // Piles that have settled, stepped until every body sleeps (at most a minute): the step with
+    // sleeping on against the same step awake. The mixed pile's spheres and capsules have a little
+    // rolling resistance: without it they roll, or spin in place on one point, for ever, and one
+    // moving body keeps its whole island awake. The pile of boxes and hulls alone is measured beside
+    // it. A settled pile still has its late slides (a body that creeps, then tips), so the frame at
+    // which it has all slept varies from build to build: it is measured, not assumed.
+    bench.progress().stage("settled piles, asleep and awake", 4);
+    for (bool roundShapes : {true, false}) {
+        const World pile = buildMixedPile(quick ? 300 : 2000, roundShapes);
+        const long settle = framesUntilAsleep(pile, quick ? 600 : 3600);
+        SpeedOptions asleep, awake;
+        awake.sleeping = false;
+        const Measurement sleeping = runEngine(pile, asleep, settle + 60, settle);
+        bench.progress().advance();
+        const Measurement notSleeping = runEngine(pile, awake, settle + 60, settle);
+        bench.progress().advance();
+        const int bodies = pile.dynamicBodyCount();
+        sleepTable.addRow({pile.name, std::to_string(bodies), "on", std::to_string(settle), std::to_string(sleeping.sleeping),
+                           formatNumber(sleeping.stepMs.median),
+                           formatNumber(sleeping.stepMs.median / notSleeping.stepMs.median, 3)});
+        sleepTable.addRow({pile.name, std::to_string(bodies), "off", std::to_string(settle), "0",
+                           formatNumber(notSleeping.stepMs.median), "1"});
+    }
+    bench.progress().endStage();
+    // [ch12-bench-sleep]
+
+}
+
+/// Pyramids of growing size: the fast step, its scalar solve and the peer.
+void measureScaling(BenchRun& bench, const std::vector<Configuration>& list, bool withPeer, CsvTable& scaling,
+                    PlotSpec& plot) {
+    const bool quick = bench.quick();
+    // Scaling: pyramids of growing size.
+    plot.integerX = true;
+    plot.caption = std::string("Median ms per step (quartiles as whiskers) of pyramids of 10 to ") + (quick ? "30" : "100") +
+                   " rows, 120 frames each, single thread, " + realTypeName() +
+                   " build; chapter 10 with sleeping off, its scalar solve, and the peer when the program has one "
+                   "(its frames alternating with chapter 10's).";
+    const std::vector<int> rowsList = quick ? std::vector<int>{10, 20, 30} : std::vector<int>{10, 20, 40, 60, 80, 100};
+    std::vector<Configuration> scalingList = {list[0], list[1]};
+    if (withPeer) scalingList.push_back(list.back());
+    bench.progress().stage("pyramids of growing size", static_cast<long>(rowsList.size() * scalingList.size()));
+    // Measured row by row (chapter 10 and the peer side by side, runBeside), tabled configuration
+    // by configuration.
+    std::vector<std::vector<Measurement>> measured(scalingList.size());
+    for (int rows : rowsList) {
+        const World pyramid = buildPyramidRow(1, rows);
+        const long frames = quick ? 30 : 120;
+        for (std::size_t c = 0; c < scalingList.size(); ++c) {
+            const Configuration& configuration = scalingList[c];
+            if (configuration.peer) continue;
+            if (c == 0 && withPeer) {
+                auto [engine, peer] = runBeside(pyramid, configuration.options, frames, 0);
+                measured[0].push_back(engine);
+                measured.back().push_back(peer);
+                bench.progress().advance();
+            } else {
+                measured[c].push_back(runEngine(pyramid, configuration.options, frames, 0));
+            }
+            bench.progress().advance();
+        }
+    }
+    for (std::size_t c = 0; c < scalingList.size(); ++c) {
+        PlotSeries series(scalingList[c].name);
+        for (std::size_t r = 0; r < rowsList.size(); ++r) {
+            const Measurement& m = measured[c][r];
+            const int bodies = buildPyramidRow(1, rowsList[r]).dynamicBodyCount();
+            scaling.addRow({std::to_string(rowsList[r]), std::to_string(bodies), scalingList[c].name,
+                            formatNumber(m.stepMs.median), formatNumber(m.stepMs.lower), formatNumber(m.stepMs.upper)});
+            series.x.push_back(bodies);
+            series.y.push_back(m.stepMs.median);
+            series.yLow.push_back(m.stepMs.lower);
+            series.yHigh.push_back(m.stepMs.upper);
+        }
+        plot.series.push_back(series);
+    }
+    bench.progress().endStage();
+
+}
+
+void measureSpeed(BenchRun& bench) {
+    const bool quick = bench.quick();
+    const bool withPeer = static_cast<bool>(peerEngine().run);
+    std::ostream& out = bench.out();
+    if (!withPeer)
+        out << "bench speed: no peer engine in this program (the `stepwise` program links the Bullet peer where "
+               "libbullet-dev is found): Bullet skipped\n";
+
+    // [ch12-bench-scenes]
+    std::vector<BenchScene> scenes;
+    scenes.push_back({"pyramid 100 rows", buildPyramidRow(1, quick ? 30 : 100), quick ? 60 : 600, 0});
+    scenes.push_back({"ten 20-row pyramids", buildPyramidRow(quick ? 3 : 10, 20), quick ? 60 : 600, 0});
+    scenes.push_back({"mixed pile", buildMixedPile(quick ? 300 : 2000), quick ? 120 : 600, 0});
+    for (BenchScene& scene : scenes) scene.world.settings.sleeping = false;
+    // [ch12-bench-scenes]
+
+    CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
+                    "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
+                    "x_faster_than_peer"});
+    // [ch12-bench-profile]
+    // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
+    CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
+                      "relax_ms", "store_ms"});
+    // [ch12-bench-profile]
+    const std::vector<Configuration> list = configurations(withPeer);
+    measureScenes(bench, scenes, list, withPeer, table, profile);
+    CsvTable sleepTable({"scene", "bodies", "sleeping", "settle_frames", "bodies_asleep", "ms_median", "fraction_of_awake"});
+    measureSleep(bench, sleepTable);
+    CsvTable scaling({"rows", "bodies", "configuration", "ms_median", "ms_q1", "ms_q3"});
+    PlotSpec plot("ms per step against body count (pyramids)", "boxes", "ms per step");
+    measureScaling(bench, list, withPeer, scaling, plot);
+
+    out << table.toText() << "\n" << profile.toText() << "\n" << sleepTable.toText() << "\n" << scaling.toText();
+    bench.writeCsv(table);
+    bench.writeCsv(profile, "-profile");
+    bench.writeCsv(scaling, "-scaling");
+    bench.writePlot(plot);
+    const std::vector<FigureTable> figures = {
+        {{"Ms per step and per stage, single thread, " + std::string(realTypeName()) + " build."}, &table},
+        {{"Where chapter 10's solve spends its time: ms per step in each phase."}, &profile},
+        {{"A settled pile: the step with sleeping on, as a fraction of the same step awake."}, &sleepTable}};
+    bench.writeTables(figures, "-tables");
+}
+
+}  // namespace
+
+BenchEntry speedBench() {
+    return benchEntry(10, measureSpeed, R"(
+        speed: ms per step and per stage on a 100-row pyramid, ten 20-row pyramids and a
+            2,000-body pile, each optimisation off in turn, Bullet beside it; a settled pile
+            asleep and awake; ms against body count
+        speed.csv          per scene and configuration: ms per step, per stage, drift, penetration
+        speed-profile.csv  chapter 10's solve phase by phase: ms per step in each
+        speed-scaling.csv  pyramids of growing size: ms per step against body count
+        speed.svg          ms per step against body count, chapter 10, scalar, Bullet
+        speed-tables.svg   the tables as a figure for the page)");
+}
+
+}  // namespace stepwise

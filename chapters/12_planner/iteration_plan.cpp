@@ -1,0 +1,307 @@
+// solver_iterations "auto" (iteration_plan.h): the substep count from what touches: free flight,
+// bodies resting on the world alone, bounces, touching mass ratios, stack depth.
+#include "12_planner/iteration_plan.h"
+
+#include "04_pgs/contact_constraints.h"
+#include "11_wide_solve/lanes.h"
+#include "12_planner/shock_propagation.h"
+#include "10_skip_work/sleep.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+// [ch12-support-depth]
+int supportDepth(const World& world, const std::vector<int>& contactOrder, StackSearch& search, bool withJoints) {
+    if (contactOrder.empty() && (!withJoints || world.joints.empty())) return 0;
+    const std::size_t bodyCount = world.bodies.size();
+    const auto isDynamic = [&](int body) { return isDynamicBody(world, body); };
+    // The contact graph as adjacency lists in two flat arrays (compressed rows).
+    std::vector<int>& start = search.start;
+    start.assign(bodyCount + 1, 0);
+    const auto validJoint = [&](const JointDesc& joint) {
+        return withJoints && joint.bodyA >= 0 && joint.bodyB >= 0 && static_cast<std::size_t>(joint.bodyA) < bodyCount &&
+               static_cast<std::size_t>(joint.bodyB) < bodyCount;
+    };
+    for (const int index : contactOrder) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        ++start[static_cast<std::size_t>(contact.bodyA) + 1];
+        ++start[static_cast<std::size_t>(contact.bodyB) + 1];
+    }
+    for (const JointDesc& joint : world.joints) {
+        if (!validJoint(joint)) continue;
+        ++start[static_cast<std::size_t>(joint.bodyA) + 1];
+        ++start[static_cast<std::size_t>(joint.bodyB) + 1];
+    }
+    for (std::size_t body = 0; body < bodyCount; ++body) start[body + 1] += start[body];
+    search.neighbours.resize(static_cast<std::size_t>(start[bodyCount]));
+    search.fill.assign(start.begin(), start.end() - 1);
+    const auto link = [&](int a, int b) {
+        search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(a)]++)] = b;
+        search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(b)]++)] = a;
+    };
+    for (const int index : contactOrder) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        link(contact.bodyA, contact.bodyB);
+    }
+    for (const JointDesc& joint : world.joints)
+        if (validJoint(joint)) link(joint.bodyA, joint.bodyB);
+    // Breadth first from the supports: a body's depth is its layer.
+    std::vector<int>& depth = search.depth;
+    std::vector<int>& queue = search.queue;
+    depth.assign(bodyCount, 0);
+    queue.clear();
+    for (std::size_t body = 0; body < bodyCount; ++body)
+        if (!isDynamic(static_cast<int>(body)) && start[body + 1] > start[body]) queue.push_back(static_cast<int>(body));
+    int deepest = 0;
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+        const int body = queue[next];
+        for (int k = start[static_cast<std::size_t>(body)]; k < start[static_cast<std::size_t>(body) + 1]; ++k) {
+            const int other = search.neighbours[static_cast<std::size_t>(k)];
+            if (!isDynamic(other) || depth[static_cast<std::size_t>(other)] > 0) continue;
+            depth[static_cast<std::size_t>(other)] = depth[static_cast<std::size_t>(body)] + 1;
+            deepest = std::max(deepest, depth[static_cast<std::size_t>(other)]);
+            queue.push_back(other);
+        }
+    }
+    return deepest;
+}
+// [ch12-support-depth]
+
+namespace {
+
+/// What the planner reads off a frame's touching contacts: whether any pair bounces, and the
+/// touching dynamic bodies' mass ratio (heaviest over lightest; 1 when no two dynamic bodies touch).
+struct TouchSummary {
+    bool bouncy = false;   // a pair with restitution closes faster than the restitution threshold
+    bool sliding = false;  // a touching body moves along the surface under friction (accelerates)
+    Real massRatio = 1;
+};
+
+/// Whether a touching pair has a moving body that friction pushes along (last frame's impulses):
+/// sliding, or rolling down a slope. Such a body accelerates, and Euler's step puts it h a t / 2
+/// off its path; a body at rest, or rolling steadily on the level (no friction), does not.
+bool slidesUnderFriction(const World& world, const Contact& contact) {
+    Real normal = 0, tangent = 0;
+    for (int i = 0; i < contact.pointCount; ++i) {
+        normal += contact.points[i].normalImpulse;
+        tangent += std::abs(contact.points[i].tangentImpulse[0]) + std::abs(contact.points[i].tangentImpulse[1]);
+    }
+    if (!(tangent > kFrictionAtRest * normal)) return false;
+    for (const int body : {contact.bodyA, contact.bodyB}) {
+        const Motion* motion = world.motionOf(body);
+        if (motion && motion->linearVelocity.squaredNorm() > kRestingSpeed * kRestingSpeed) return true;
+    }
+    return false;
+}
+
+/// The velocity of `body`'s material point at `point` (world frame); zero for a static body.
+Vec3 velocityAt(const World& world, int body, const Vec3& point) {
+    const Motion* motion = world.motionOf(body);
+    if (!motion) return Vec3::Zero();
+    const Vec3 center = world.bodies[static_cast<std::size_t>(body)].transform.apply(motion->localCenter);
+    return motion->linearVelocity + motion->angularVelocity.cross(point - center);
+}
+
+/// Whether a pair with restitution arrives this frame: one of its points closes faster than the
+/// restitution threshold, so the solve reverses that speed. Balls that rest against one another
+/// (a cradle between strikes) or that part after a bounce do not bounce again.
+bool arrivesBouncing(const World& world, const Contact& contact) {
+    const Real restitution = combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
+                                                 world.bodies[static_cast<std::size_t>(contact.bodyB)].material);
+    if (!(restitution > 0)) return false;
+    for (int i = 0; i < contact.pointCount; ++i) {
+        const Vec3 point = (contact.points[i].pointA + contact.points[i].pointB) * Real(0.5);
+        const Real closing =
+            (velocityAt(world, contact.bodyA, point) - velocityAt(world, contact.bodyB, point)).dot(contact.normal);
+        if (closing > world.settings.restitutionThreshold) return true;
+    }
+    return false;
+}
+
+TouchSummary summarizeTouches(const World& world, const std::vector<int>& contacts) {
+    TouchSummary summary;
+    Real lightest = kRealMax, heaviest = 0;
+    for (const int index : contacts) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        summary.bouncy = summary.bouncy || arrivesBouncing(world, contact);
+        summary.sliding = summary.sliding || slidesUnderFriction(world, contact);
+        const Motion* a = world.motionOf(contact.bodyA);
+        const Motion* b = world.motionOf(contact.bodyB);
+        if (!a || !b || !(a->mass > 0) || !(b->mass > 0)) continue;  // static or kinematic
+        lightest = std::min({lightest, a->mass, b->mass});
+        heaviest = std::max({heaviest, a->mass, b->mass});
+    }
+    if (heaviest > 0) summary.massRatio = heaviest / lightest;
+    return summary;
+}
+
+}  // namespace
+
+Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder, StackSearch& search) {
+    const std::vector<int>& depth = search.depth;
+    const auto isDynamic = [&](int body) { return isDynamicBody(world, body); };
+    // A contact the sweep takes: two dynamic bodies a layer apart (orderShockSweep); its layer is
+    // the lower one's depth, and its upper body's contacts downwards split the layer into groups.
+    const auto swept = [&](const Contact& contact) {
+        return isDynamic(contact.bodyA) && isDynamic(contact.bodyB) &&
+               depth[static_cast<std::size_t>(contact.bodyA)] != depth[static_cast<std::size_t>(contact.bodyB)];
+    };
+    const auto upperOf = [&](const Contact& contact) {
+        const auto a = static_cast<std::size_t>(contact.bodyA), b = static_cast<std::size_t>(contact.bodyB);
+        return depth[a] > depth[b] ? a : b;
+    };
+    search.downward.assign(world.bodies.size(), 0);
+    int deepest = 0;
+    for (const int index : contactOrder) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        if (!swept(contact)) continue;
+        ++search.downward[upperOf(contact)];
+        deepest = std::max(deepest, depth[upperOf(contact)]);
+    }
+    search.layerLanes.assign(static_cast<std::size_t>(deepest) + 1, 0);
+    search.layerGroups.assign(static_cast<std::size_t>(deepest) + 1, 0);
+    for (const int index : contactOrder) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        if (!swept(contact)) continue;
+        const std::size_t upper = upperOf(contact);
+        const auto layer = static_cast<std::size_t>(depth[upper] - 1);
+        ++search.layerLanes[layer];
+        search.layerGroups[layer] = std::max(search.layerGroups[layer], search.downward[upper]);
+    }
+    // Priced as the first sweep built them: a group's lanes in wide blocks, a few left over one-lane blocks.
+    const auto groupBlocks = [](int lanes) {
+        const int leftOver = lanes % kPricedLanes;
+        const Real last = leftOver >= kShockWideLanesAtLeast ? Real(1) : kShockLaneBlocks * static_cast<Real>(leftOver);
+        return static_cast<Real>(lanes / kPricedLanes) + last;
+    };
+    Real shockBlocks = 0;
+    for (std::size_t layer = 0; layer < search.layerLanes.size(); ++layer) {
+        const int groups = search.layerGroups[layer];
+        if (groups == 0) continue;
+        const int lanesPerGroup = (search.layerLanes[layer] + groups - 1) / groups;
+        shockBlocks += static_cast<Real>(groups) * groupBlocks(lanesPerGroup);
+    }
+    const Real frameLanes = static_cast<Real>(contactOrder.size());
+    const Real frameBlocks = std::max(Real(1), std::ceil(frameLanes / static_cast<Real>(kPricedLanes)));
+    return kShockBlockSubsteps * shockBlocks / frameBlocks;
+}
+
+int substepsFor(Real dt, Real longest) {
+    // A hair under the quotient: 1/60 over 1/600 is 10.000001 in float, and means ten.
+    return std::max(1, static_cast<int>(std::ceil(dt / longest - Real(1e-3))));
+}
+
+// [ch12-iteration-plan]
+int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
+                      StackSearch& search, bool shockAllowed) {
+    const Settings& settings = world.settings;
+    // Bodies that carry one another take the scene's count (auto: ten) in every solve: a load
+    // crosses a contact layer a sweep, and a substep is a sweep however long it is.
+    const int scene = std::max(1, settings.solverIterations);
+    const TouchSummary touches = summarizeTouches(world, contactOrder);
+    plan.massRatio = touches.massRatio;
+    plan.stackDepth = supportDepth(world, contactOrder, search);
+    plan.plainIterations = scene;
+    int iterations = scene;
+    // The laws below hold a substep's length (kMeasuredFrame), and so does their ceiling.
+    const Real perMeasuredFrame = dt / kMeasuredFrame;
+    const Real mostAtThisDt = Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame);
+    const int most = static_cast<int>(std::ceil(mostAtThisDt - Real(1e-3)));
+    if (settings.planIterations && contactOrder.empty())
+        iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
+    else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy)
+        iterations = std::min(scene, substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep));
+    if (settings.planIterations && plan.massRatio > kPlainMassRatio) {
+        // Measured on towers of four boxes, masses in geometric steps (docs/ch10_speed.md):
+        // 1:300 stands from 15 substeps, 1:1000 from 25. The square root of the ratio over the
+        // plain one gives 18 and 32.
+        const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio) * perMeasuredFrame;
+        iterations = std::max(iterations, std::min(most, static_cast<int>(std::ceil(wanted - Real(1e-3)))));
+    }
+    plan.shockPropagation = false;
+    if (settings.planIterations && plan.stackDepth > 1) {
+        // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 20 rows walk 1.5 mm at ten
+        // substeps, 9.5 mm at four; 40 rows 2.6 cm at ten, 1.2 cm at 15, 0.6 cm at 20. Only while
+        // they settle was tried and is worse: changing the count changes how deep a resting
+        // contact sits, and a stack switched between counts is pumped into swaying.
+        const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
+        // A stack of like masses into which nothing arrives bouncing: the shock sweep ends the
+        // frame where the walk law with it, plus the sweep's own cost, asks for fewer substeps
+        // than the law without it (a pyramid from about 20 rows; never a column of single boxes).
+        const auto count = [](Real substeps) {
+            return std::max(kFewestStackSubsteps, static_cast<int>(std::ceil(substeps - Real(1e-3))));
+        };
+        const Real plainLaw = Real(scene) * rows * rows * perMeasuredFrame;  // walks kPlainStackDrift
+        const int plain = count(plainLaw * std::sqrt(kPlainStackDrift / kHeldStackDrift));
+        const int shocked = count(kShockStackSubsteps * std::pow(rows, kShockDepthExponent) * perMeasuredFrame);
+        // [ch12-shock-price]
+        // The sweep pays where, for the walk its law allows, it and its substeps cost less than
+        // the substeps without it.
+        const Real heldWalk = kHeldWalkPerBody * static_cast<Real>(plan.stackDepth);
+        const Real plainForHeldWalk = plainLaw * std::sqrt(kPlainStackDrift / heldWalk);
+        const bool likeAndQuiet = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
+        // The sweep costs at most every contact a one-lane block: where even that pays, the
+        // blocks are not counted (a 40-row pyramid, six substeps against 22).
+        const Real mostSweep = kShockBlockSubsteps * kShockLaneBlocks * static_cast<Real>(kPricedLanes);
+        const auto sweepCost = [&] {
+            return Real(shocked) + mostSweep < plainForHeldWalk ? mostSweep
+                                                                : shockSweepSubsteps(world, contactOrder, search);
+        };
+        const bool sweepSaves =
+            likeAndQuiet && Real(shocked) < plainForHeldWalk && Real(shocked) + sweepCost() < plainForHeldWalk;
+        // [ch12-shock-price]
+        plan.shockPropagation = sweepSaves && shockAllowed;
+        const int wanted = sweepSaves ? shocked : plain;
+        // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
+        const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
+        const int stack = std::min(most, std::max({kFewestStackSubsteps, lengths, wanted}));
+        // Unlike masses, and a frame in which something arrives bouncing, keep at least the
+        // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
+        const bool keepScene = touches.bouncy || plan.massRatio > kLikeMassRatio;
+        iterations = keepScene ? std::max(iterations, stack) : stack;
+    }
+    plan.shockFrames += plan.shockPropagation ? 1 : 0;
+    plan.iterations = iterations;
+    plan.mostIterations = std::max(plan.mostIterations, iterations);
+    plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, iterations) : iterations;
+    plan.largestRatio = std::max(plan.largestRatio, plan.massRatio);
+    plan.deepestStack = std::max(plan.deepestStack, plan.stackDepth);
+    return iterations;
+}
+// [ch12-iteration-plan]
+
+int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& contacts, IterationPlan& plan,
+                                StackSearch& search) {
+    const Settings& settings = world.settings;
+    const int scene = std::max(1, settings.solverIterations);
+    const bool substepped =
+        settings.stabilisation == Stabilisation::Relax || settings.stabilisation == Stabilisation::SoftStep;
+    if (!settings.planIterations || world.joints.empty() || !world.springs.empty() || !substepped) return scene;
+    contacts.clear();
+    const auto bodyCount = static_cast<int>(world.bodies.size());
+    for (std::size_t i = 0; i < world.contacts.size(); ++i) {
+        const Contact& contact = world.contacts[i];
+        if (contact.pointCount > 0 && contact.bodyA >= 0 && contact.bodyB >= 0 && contact.bodyA < bodyCount &&
+            contact.bodyB < bodyCount)
+            contacts.push_back(static_cast<int>(i));
+    }
+    const TouchSummary touches = summarizeTouches(world, contacts);
+    plan.shockPropagation = false;  // chapter 8's solve has no shock sweep
+    plan.stackDepth = supportDepth(world, contacts, search, /*withJoints=*/true);
+    plan.plainIterations = scene;
+    plan.massRatio = touches.massRatio;
+    plan.largestRatio = std::max(plan.largestRatio, plan.massRatio);
+    // Hanging alone with nothing touching is free flight on a leash: substeps of free flight's
+    // length; touching the world as well, those of bodies resting on it.
+    const Real longest = contacts.empty() ? kFreeFlightSubstep : touches.sliding ? kSlidingSubstep : kRestingSubstep;
+    const int iterations = plan.stackDepth <= 1 && !touches.bouncy ? std::min(scene, substepsFor(dt, longest)) : scene;
+    plan.iterations = iterations;
+    plan.mostIterations = std::max(plan.mostIterations, iterations);
+    plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, iterations) : iterations;
+    plan.deepestStack = std::max(plan.deepestStack, plan.stackDepth);
+    return iterations;
+}
+
+}  // namespace stepwise
