@@ -93,8 +93,8 @@ World buildMixedPile(int count, bool roundShapes) {
 void addChapter10Scenes(Registry& registry) {
     const char* category = "10 skipping work";
     registry.addScene({"islands-pyramids", 10, category, prose(R"(
-        four 10-row pyramids, four islands: each settles and sleeps on its own; the panel counts
-        the sleepers and the manifolds carried without a query)"),
+        four 10-row pyramids, four islands: all sleep half a second after they come to rest; move
+        a box with the gizmo and only its pyramid wakes)"),
                        [] { return buildPyramidRow(4, 10); }, {}});
 }
 
