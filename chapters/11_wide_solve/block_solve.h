@@ -128,8 +128,10 @@ struct BlockStep {
 };
 
 // [ch11-normal-block-step]
-/// The increments that make every row's speed its target at once, d = -K^-1 (J v + b) with b each
-/// row's bias, kept where they leave every point pushing (lambda + d >= 0) and every row rigid.
+/// The increments that make every row's speed its target at once: chapter 4's row, four rows at a
+/// time, K d = b - J v with b each row's target. The code keeps -b as the row's bias, so
+/// d = -K^-1 (J v + bias). Kept where they leave every point pushing (lambda + d >= 0) and every
+/// row rigid.
 /// Also keeps each point's fastest closing speed for restitution where a lane bounces.
 template <int N>
 inline void normalBlockStep(ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b, const PointTargets<N>& t,
