@@ -7,8 +7,8 @@ namespace stepwise {
 
 void addChapter11Scenes(Registry& registry) {
     registry.addScene({"wide-pyramid", 11, "11 the wide solve", prose(R"(
-        a 30-row pyramid (465 boxes) stands; the panel shows the colours, the wide blocks and the
-        overflow, and the solve's time with the wide path on and off)"),
+        a 30-row pyramid (465 boxes) stands on the wide solve; the performance monitor shows each
+        stage's time, the solve's among them, until the settled pyramid falls asleep)"),
                        [] { return buildPyramidRow(1, 30); }, {}});
 }
 
