@@ -4,7 +4,7 @@
 // reverses the speed a gap closed at.
 #include "04_pgs/scenes.h"
 #include "06_manifolds/scenes.h"
-#include "12_planner/chapter.h"
+#include "11_wide_solve/chapter.h"
 #include "11_wide_solve/colouring.h"
 #include "10_skip_work/scenes.h"
 #include "world/state_hash.h"
@@ -20,11 +20,11 @@ using namespace stepwise;
 namespace {
 
 Pipeline pipelineFor(const World& world, SolverPath path, bool cache = true) {
-    SpeedOptions options;
-    options.fastSolve = true;
-    options.solverPath = path;
-    options.contactCache.enabled = cache;
-    return makeChapter12Pipeline(world, options);
+    SkipWorkOptions skip;
+    skip.contactCache.enabled = cache;
+    WideSolveOptions wide;
+    wide.solverPath = path;
+    return makeChapter11Pipeline(world, skip, wide);
 }
 
 void stepFrames(World& world, Pipeline& pipeline, int frames) {
@@ -52,18 +52,16 @@ TEST_CASE("the fast solve says why it does not apply", "[ch11][solve]") {
     World baumgarte = stack;
     baumgarte.settings.stabilisation = Stabilisation::Baumgarte;
     CHECK_FALSE(fastSolveApplies(baumgarte, &why));
-    SpeedOptions fastOptions;
-    fastOptions.fastSolve = true;
-    const Pipeline pipeline = makeChapter12Pipeline(baumgarte, fastOptions);
-    CHECK(pipeline.planNotes().at(stage_group::kSolve) == "chapter 8's solve: the stabilisation is not relax or soft_step");
-    const Pipeline fast = makeChapter12Pipeline(stack, fastOptions);
+    const Pipeline pipeline = makeChapter11Pipeline(baumgarte);
+    CHECK(pipeline.planNotes().at(stage_group::kSolve) == "chapter 10's solve (chapter 8's rows): the stabilisation is not relax or soft_step");
+    const Pipeline fast = makeChapter11Pipeline(stack);
     CHECK(fast.find(stage_group::kSolve)->name == "solve:wide_relax");
     CHECK(fast.find(stage_group::kNarrowphase)->name == "narrowphase:cached_manifold");
-    const Pipeline registered = makeChapter12Pipeline(stack);
+    const Pipeline registered = makeChapter11Pipeline(stack);
     CHECK(registered.find(stage_group::kSolve)->name == "solve:wide_relax");
-    SpeedOptions reference;
+    WideSolveOptions reference;
     reference.fastSolve = false;
-    CHECK(makeChapter12Pipeline(stack, reference).find(stage_group::kSolve)->name == "solve:relax");
+    CHECK(makeChapter11Pipeline(stack, SkipWorkOptions{}, reference).find(stage_group::kSolve)->name == "solve:relax");
 }
 
 // Chapter 6's promise for the stack of 16 (1 cm), on both paths, and the 20-row pyramid too.

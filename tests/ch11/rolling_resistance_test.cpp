@@ -1,7 +1,7 @@
 // Rolling resistance (Material::rollingResistance, chapter 10's solve): a ball rolling on level
 // ground slows at the closed form's rate and stops, a ball spinning in place stops, and without it
 // both go on for ever, as a perfectly rigid ball on a perfectly rigid floor does.
-#include "12_planner/chapter.h"
+#include "11_wide_solve/chapter.h"
 #include "world/scene.h"
 
 #include <catch2/catch.hpp>
@@ -34,7 +34,7 @@ TEST_CASE("rolling resistance slows a rolling ball at 5/7 c g and stops it", "[c
     // speed then falls at c r m g / (r (m + I / r^2)) = 5/7 c g for a solid sphere.
     const Real resistance = Real(0.05);
     World world = ballOnGround(resistance, 1, 0);
-    Pipeline pipeline = makeChapter12Pipeline(world, SpeedOptions{});
+    Pipeline pipeline = makeChapter11Pipeline(world);
     for (int frame = 0; frame < 60; ++frame) pipeline.step(world);
     const Real expected = 1 - Real(5) / 7 * resistance * Real(9.81) * 1;  // after 1 s: 0.650 m/s
     const Motion& ball = *world.motionOf(1);
@@ -52,8 +52,8 @@ TEST_CASE("rolling resistance stops a ball spinning in place; without it, it spi
     // One contact point has no spread for the twist row to grip: only rolling resistance stops it.
     World resisted = ballOnGround(Real(0.05), 0, 3);
     World free = ballOnGround(0, 0, 3);
-    Pipeline resistedPipeline = makeChapter12Pipeline(resisted, SpeedOptions{});
-    Pipeline freePipeline = makeChapter12Pipeline(free, SpeedOptions{});
+    Pipeline resistedPipeline = makeChapter11Pipeline(resisted);
+    Pipeline freePipeline = makeChapter11Pipeline(free);
     for (int frame = 0; frame < 120; ++frame) {
         resistedPipeline.step(resisted);
         freePipeline.step(free);
@@ -64,7 +64,7 @@ TEST_CASE("rolling resistance stops a ball spinning in place; without it, it spi
 
 TEST_CASE("without rolling resistance a rolling ball keeps its speed", "[ch11][rolling]") {
     World world = ballOnGround(0, 1, 0);
-    Pipeline pipeline = makeChapter12Pipeline(world, SpeedOptions{});
+    Pipeline pipeline = makeChapter11Pipeline(world);
     for (int frame = 0; frame < 120; ++frame) pipeline.step(world);
     CHECK(world.motionOf(1)->linearVelocity.x() == Approx(1).epsilon(1e-3));
 }

@@ -1,4 +1,4 @@
-// Rolling through chapter 10's fast solve: a ball skidding onto rolling ends at 5/7 of its speed,
+// Rolling through chapter 12's fast solve: a ball skidding onto rolling ends at 5/7 of its speed,
 // and a ball rolling down a slope speeds up at 5/7 g sin(theta), both closed forms (a solid
 // sphere's moment of inertia 2/5 m r^2). Chapter 10's arms reach a round body's core, so the
 // separation it tracks between substeps does not turn the ball's bottom point up.
@@ -11,7 +11,7 @@
 
 using namespace stepwise;
 
-TEST_CASE("through chapter 10 a skidding ball ends rolling at 5/7 of its speed, at one substep a frame", "[ch11][rolling]") {
+TEST_CASE("through chapter 12 a skidding ball ends rolling at 5/7 of its speed, at one substep a frame", "[ch12][rolling]") {
     World world = loadSceneFile("scenes/reference/slide-to-roll.json");
     const Real startSpeed = world.motions[0].linearVelocity.x();
     Pipeline pipeline = makeChapter12Pipeline(world, SpeedOptions{});
@@ -22,7 +22,7 @@ TEST_CASE("through chapter 10 a skidding ball ends rolling at 5/7 of its speed, 
     CHECK(world.step.iterationPlan.iterations == 1);         // rolling steadily: one substep
 }
 
-TEST_CASE("through chapter 10 a ball rolls down a 30 degree slope at 5/7 g sin(theta)", "[ch11][rolling]") {
+TEST_CASE("through chapter 12 a ball rolls down a 30 degree slope at 5/7 g sin(theta)", "[ch12][rolling]") {
     // A ramp turned 30 degrees about z; the ball starts on it, 1 m up the slope, at rest.
     World world = loadSceneFromString(R"({
       "format": "stepwise-scene", "version": 1, "name": "rolling-slope",
