@@ -38,6 +38,7 @@ set(ALLOWED_PHRASES
     "(libccd|fcl|bullet|box2d|jolt|github) (issue|pull request)s? #?[0-9]+"  # another project's tracker, cited
     "issues?/[0-9]+"
     "(fuzz|cmake|build|link) targets?"  # libFuzzer's and CMake's own terms
+    "(compiler|gcc|clang|msvc) contracts"  # floating-point contraction (fused multiply-add)
     "--target")
 set(VOICE_RULES  # pairs: regex ; what the report calls it
     "${L}issues?${R}" "'issue' (a project-tracking word)"
