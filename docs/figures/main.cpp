@@ -14,6 +14,10 @@ int main(int argc, char** argv) {
         bool (*draw)(const std::string&);
     };
     const Figure all[] = {{"fig-minkowski.svg", figures::drawMinkowski},
+                          {"fig-integrator-phase.svg", figures::drawIntegratorPhase},
+                          {"fig-integrator-energy.svg", figures::drawIntegratorEnergy},
+                          {"fig-depth-reach.svg", figures::drawDepthReach},
+                          {"fig-box-sphere-cases.svg", figures::drawBoxSphereCases},
                           {"fig-voronoi-regions.svg", figures::drawVoronoiRegions},
                           {"fig-epa-horizon.svg", figures::drawEpaHorizon},
                           {"fig-contact-arms.svg", figures::drawContactArms},
