@@ -16,6 +16,9 @@ bool drawFrictionPyramid(const std::string& path);  // chapter 4: friction pyram
 bool drawBaumgarteEnergy(const std::string& path);  // chapter 4: Baumgarte's energy gain
 bool drawSweepIntervals(const std::string& path);   // chapter 5: boxes, intervals, pairs
 bool drawManifoldClipping(const std::string& path); // chapter 6: reference and incident face, clipping
+bool drawHitTree(const std::string& path);          // chapter 9: the hit result tree of debug-drop
+bool drawRewindTimeline(const std::string& path);   // chapter 9: the history ring, a rewind, a speculative branch
+bool drawRaySlabs(const std::string& path);         // chapter 9: the slab test of a ray against a box
 bool drawIntegratorPhase(const std::string& path);  // chapter 1: the oscillator in phase space
 bool drawIntegratorEnergy(const std::string& path); // chapter 1: the oscillator's energy over time
 bool drawDepthReach(const std::string& path);       // chapter 3: the depth as the smallest reach of A - B

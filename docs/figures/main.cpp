@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
         bool (*draw)(const std::string&);
     };
     const Figure all[] = {{"fig-minkowski.svg", figures::drawMinkowski},
+                          {"fig-hit-tree.svg", figures::drawHitTree},
+                          {"fig-rewind-timeline.svg", figures::drawRewindTimeline},
+                          {"fig-ray-slabs.svg", figures::drawRaySlabs},
                           {"fig-integrator-phase.svg", figures::drawIntegratorPhase},
                           {"fig-integrator-energy.svg", figures::drawIntegratorEnergy},
                           {"fig-depth-reach.svg", figures::drawDepthReach},
