@@ -24,4 +24,8 @@ bool drawIntegratorEnergy(const std::string& path); // chapter 1: the oscillator
 bool drawDepthReach(const std::string& path);       // chapter 3: the depth as the smallest reach of A - B
 bool drawBoxSphereCases(const std::string& path);   // chapter 3: box-sphere, centre outside and inside
 
+bool drawSweepAxisChoice(const std::string& path);  // chapter 5: intervals along x and along y
+bool drawManifoldReduction(const std::string& path); // chapter 6: four of a patch's corners, feature ids
+bool drawImpulseArm(const std::string& path);       // primer: effective mass along a face
+bool drawComplementarity(const std::string& path);  // primer: a contact row and a friction row
 }  // namespace figures

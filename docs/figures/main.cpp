@@ -27,7 +27,11 @@ int main(int argc, char** argv) {
                           {"fig-friction-pyramid.svg", figures::drawFrictionPyramid},
                           {"fig-baumgarte-energy.svg", figures::drawBaumgarteEnergy},
                           {"fig-sweep-intervals.svg", figures::drawSweepIntervals},
-                          {"fig-manifold-clipping.svg", figures::drawManifoldClipping}};
+                          {"fig-manifold-clipping.svg", figures::drawManifoldClipping},
+                          {"fig-sweep-axis.svg", figures::drawSweepAxisChoice},
+                          {"fig-manifold-reduction.svg", figures::drawManifoldReduction},
+                          {"fig-impulse-arm.svg", figures::drawImpulseArm},
+                          {"fig-complementarity.svg", figures::drawComplementarity}};
     for (const Figure& figure : all) {
         const std::string path = dir + "/" + figure.file;
         if (!figure.draw(path)) {
