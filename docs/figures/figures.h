@@ -16,6 +16,10 @@ bool drawFrictionPyramid(const std::string& path);  // chapter 4: friction pyram
 bool drawBaumgarteEnergy(const std::string& path);  // chapter 4: Baumgarte's energy gain
 bool drawSweepIntervals(const std::string& path);   // chapter 5: boxes, intervals, pairs
 bool drawManifoldClipping(const std::string& path); // chapter 6: reference and incident face, clipping
+bool drawCcdAdvancement(const std::string& path);   // chapter 7: conservative advancement's queries and bounds
+bool drawToiLoop(const std::string& path);          // chapter 7: the sorted TOI loop on a timeline
+bool drawHingeFrame(const std::string& path);       // chapter 8: a hinge's anchors, axes and angle
+bool drawSwingTwist(const std::string& path);       // chapter 8: a cone-twist's cone, swing and twist
 bool drawHitTree(const std::string& path);          // chapter 9: the hit result tree of debug-drop
 bool drawRewindTimeline(const std::string& path);   // chapter 9: the history ring, a rewind, a speculative branch
 bool drawRaySlabs(const std::string& path);         // chapter 9: the slab test of a ray against a box

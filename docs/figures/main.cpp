@@ -14,6 +14,10 @@ int main(int argc, char** argv) {
         bool (*draw)(const std::string&);
     };
     const Figure all[] = {{"fig-minkowski.svg", figures::drawMinkowski},
+                          {"fig-ccd-advancement.svg", figures::drawCcdAdvancement},
+                          {"fig-toi-loop.svg", figures::drawToiLoop},
+                          {"fig-hinge-frame.svg", figures::drawHingeFrame},
+                          {"fig-swing-twist.svg", figures::drawSwingTwist},
                           {"fig-hit-tree.svg", figures::drawHitTree},
                           {"fig-rewind-timeline.svg", figures::drawRewindTimeline},
                           {"fig-ray-slabs.svg", figures::drawRaySlabs},
