@@ -44,13 +44,23 @@ Exact distanceAlong(const Ray& ray, const Transform& pose, const Vec3& half, Exa
 }
 
 /// The first t at which the ray is inside the box: march in steps of 1/2048 of the box's
-/// diagonal up to the ray's length, then bisect. None when the march never gets inside.
+/// diagonal through the box's bounding sphere (up to the ray's length), then bisect. None when
+/// the march never gets inside.
 std::optional<Exact> exactEntry(const Ray& ray, const Transform& pose, const Vec3& half) {
     if (distanceAlong(ray, pose, half, 0) <= 0) return Exact(0);
-    const Exact reach = std::min(Exact(ray.maxDistance), Exact(20));
+    const Exact radius = Exact(half.norm()) * Exact(1.01);
+    Exact towards = 0, apart = 0;   // the centre along the ray, and the origin's squared distance from it
+    for (int k = 0; k < 3; ++k) {
+        const Exact offset = Exact(pose.position[k]) - Exact(ray.origin[k]);
+        towards += offset * Exact(ray.direction[k]);
+        apart += offset * offset;
+    }
+    const Exact clearance = radius * radius - (apart - towards * towards);
+    if (clearance < 0) return std::nullopt;
+    const Exact reach = std::min(Exact(ray.maxDistance), towards + std::sqrt(clearance));
     const Exact step = Exact(half.norm()) / 2048;
-    Exact outside = 0, inside = -1;
-    for (Exact t = step; t <= reach; t += step) {
+    Exact outside = std::max(Exact(0), towards - std::sqrt(clearance)), inside = -1;
+    for (Exact t = outside + step; t <= reach + step; t += step) {
         if (distanceAlong(ray, pose, half, t) <= 0) {
             inside = t;
             break;
@@ -62,6 +72,7 @@ std::optional<Exact> exactEntry(const Ray& ray, const Transform& pose, const Vec
         const Exact middle = (outside + inside) / 2;
         (distanceAlong(ray, pose, half, middle) <= 0 ? inside : outside) = middle;
     }
+    if (inside > Exact(ray.maxDistance)) return std::nullopt;   // the box lies beyond the ray's end
     return inside;
 }
 
