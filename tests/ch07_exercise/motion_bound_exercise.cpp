@@ -107,8 +107,9 @@ TEST_CASE("exercise: a rod spinning in place next to a wall is bounded by its tu
     end.rotation = Quat(Eigen::AngleAxis<Real>(Real(1.6), Vec3::UnitZ()));
     const Sweep spin = sweepBetween(start, end, Vec3::Zero());
     const Sweep still = stillSweep(Transform{}, Vec3::Zero());
-    // The rod's far end is sqrt(0.5^2 + 0.01^2) from its centre and turns 1.6 rad in the step.
-    const double expected = 1.6 * std::sqrt(0.25 + 0.0001);
+    // The rod's corners are sqrt(0.01^2 + 0.5^2 + 0.01^2) from its centre; it turns 1.6 rad in the
+    // step: 0.800 m per step (the page's exercise 3).
+    const double expected = 1.6 * std::sqrt(0.25 + 0.0002);
     const double bound = double(closingSpeedBound(spin, rod, still, wall, Vec3::UnitX()));
     INFO("your bound for the spinning rod: " << bound << " m per step, expected " << expected);
     CHECK(std::abs(bound - expected) < 1e-3);
