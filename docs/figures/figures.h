@@ -20,6 +20,7 @@ bool drawCcdAdvancement(const std::string& path);   // chapter 7: conservative a
 bool drawToiLoop(const std::string& path);          // chapter 7: the sorted TOI loop on a timeline
 bool drawHingeFrame(const std::string& path);       // chapter 8: a hinge's anchors, axes and angle
 bool drawSwingTwist(const std::string& path);       // chapter 8: a cone-twist's cone, swing and twist
+bool drawRagdollLimits(const std::string& path);    // chapter 8: the ragdoll's cones and hinge ranges
 bool drawHitTree(const std::string& path);          // chapter 9: the hit result tree of debug-drop
 bool drawRewindTimeline(const std::string& path);   // chapter 9: the history ring, a rewind, a speculative branch
 bool drawRaySlabs(const std::string& path);         // chapter 9: the slab test of a ray against a box

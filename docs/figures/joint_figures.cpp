@@ -192,4 +192,69 @@ bool drawSwingTwist(const std::string& path) {
     return svg.save(path);
 }
 
+bool drawRagdollLimits(const std::string& path) {
+    // addRagdoll's body standing, its joints' limits drawn at the anchors: from the front, the
+    // cones of the spine, neck, shoulders and hips; from the side, the ranges of the elbows and
+    // knees (elbows bend forward, knees back).
+    World world;
+    const Ragdoll ragdoll = addRagdoll(world, RagdollSpec{});
+    Svg svg(900, 560);
+    const Viewport front{0, 40, 450, 520, {0, Real(0.95)}, 260};
+    const Viewport sideView{450, 40, 450, 520, {0, Real(0.95)}, 260};
+    const auto frontOf = [](const Vec3& p) { return Point2{double(p.x()), double(p.y())}; };
+    const auto sideOf = [](const Vec3& p) { return Point2{double(p.z()), double(p.y())}; };
+    for (int panel = 0; panel < 2; ++panel) {
+        const Viewport& view = panel == 0 ? front : sideView;
+        const auto project = [&](const Vec3& p) { return panel == 0 ? frontOf(p) : sideOf(p); };
+        for (int body : ragdoll.bodies) {
+            const Body& part = world.bodies[std::size_t(body)];
+            const Transform& pose = part.transform;
+            if (part.shape.type == ShapeType::Sphere) {
+                svg.circle(view, project(pose.position), double(part.shape.radius), "fill:#ddd;stroke:#999");
+            } else if (part.shape.type == ShapeType::Capsule) {
+                const Vec3 end = Vec3(0, part.shape.halfHeight, 0);
+                svg.line(view, project(pose.apply(-end)), project(pose.apply(end)),
+                         jointText("stroke:#ddd;stroke-linecap:round;stroke-width:%.1f", 2 * double(part.shape.radius) * view.pixelsPerMetre));
+            } else {
+                const Vec3& h = part.shape.halfExtents;
+                const Vec3 u = panel == 0 ? Vec3(h.x(), 0, 0) : Vec3(0, 0, h.z());
+                const Vec3 v(0, h.y(), 0);
+                svg.polygon(view, {project(pose.apply(-u - v)), project(pose.apply(u - v)), project(pose.apply(u + v)), project(pose.apply(-u + v))},
+                            "fill:#ddd;stroke:#999");
+            }
+        }
+        for (int index : ragdoll.joints) {
+            const JointDesc& joint = world.joints[std::size_t(index)];
+            const JointFrame frame = jointFrame(world, joint);
+            const Vec3 child = world.bodies[std::size_t(joint.bodyB)].transform.position;
+            std::vector<Point2> sector = {project(frame.anchorA)};
+            if (joint.type == JointType::ConeTwist && panel == 0) {
+                // The cone's outline in the front plane: the axis turned by the cone angle either way.
+                for (int i = 0; i <= 24; ++i) {
+                    const Real angle = joint.coneAngle * Real(2 * i - 24) / 24;
+                    sector.push_back(project(frame.anchorA + Real(0.16) * (Eigen::AngleAxis<Real>(angle, Vec3::UnitZ()) * frame.axisA)));
+                }
+                svg.polygon(view, sector, "fill:#2ca02c;fill-opacity:0.25;stroke:#2ca02c;stroke-width:1");
+                svg.text(view, project(frame.anchorA + Real(0.19) * frame.axisA),
+                         jointText("%.0f", double(joint.coneAngle * 180 / kPi)), "font-size:11px;fill:#2ca02c");
+            } else if (joint.type == JointType::Hinge && panel == 1 && frame.anchorA.x() > 0) {
+                // The range the child's bone may sweep: its rest direction turned about the axis.
+                const Vec3 rest = (child - frame.anchorA).normalized();
+                for (int i = 0; i <= 24; ++i) {
+                    const Real angle = joint.limits->first + (joint.limits->second - joint.limits->first) * Real(i) / 24;
+                    sector.push_back(project(frame.anchorA + Real(0.16) * (Eigen::AngleAxis<Real>(angle, frame.axisA) * rest)));
+                }
+                svg.polygon(view, sector, "fill:#ff7f0e;fill-opacity:0.25;stroke:#ff7f0e;stroke-width:1");
+                svg.text(view, project(frame.anchorA) , jointText(" [%.0f, %.0f]", double(joint.limits->first * 180 / kPi),
+                                                                  double(joint.limits->second * 180 / kPi)), "font-size:11px;fill:#ff7f0e");
+            }
+            svg.dot(view, project(frame.anchorA), 3, "#000");
+        }
+    }
+    svg.textAt({10, 24}, "addRagdoll's joints, in degrees: cones from the front (green), hinge ranges from the side (orange)", "fill:#333");
+    svg.textAt({20, 540}, "front");
+    svg.textAt({470, 540}, "side (facing right)");
+    return svg.save(path);
+}
+
 }  // namespace figures

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
                           {"fig-toi-loop.svg", figures::drawToiLoop},
                           {"fig-hinge-frame.svg", figures::drawHingeFrame},
                           {"fig-swing-twist.svg", figures::drawSwingTwist},
+                          {"fig-ragdoll-limits.svg", figures::drawRagdollLimits},
                           {"fig-hit-tree.svg", figures::drawHitTree},
                           {"fig-rewind-timeline.svg", figures::drawRewindTimeline},
                           {"fig-ray-slabs.svg", figures::drawRaySlabs},
