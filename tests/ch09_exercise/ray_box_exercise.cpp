@@ -159,6 +159,12 @@ TEST_CASE("exercise: rayBox on rays whose answer is known by hand", "[ch09-exerc
     CHECK(hit.normal.x() == Approx(-1).margin(1e-6));
     // The same ray, 2 m long: the box is out of reach.
     CHECK_FALSE(rayBox(Ray{Vec3(-3, 0, 0), Vec3::UnitX(), 2}, pose, half).hit);
+    // In the plane of the top face, y = 0.5: touching counts, so it enters through the x face at
+    // 3 m (a zero direction component times an infinite reciprocal is NaN: mind it).
+    hit = rayBox(Ray{Vec3(-3, Real(0.5), 0), Vec3::UnitX(), kRealMax}, pose, half);
+    REQUIRE(hit.hit);
+    CHECK(hit.distance == Approx(3).margin(1e-5));
+    CHECK(hit.normal.x() == Approx(-1).margin(1e-6));
     // Pointing away: a miss.
     CHECK_FALSE(rayBox(Ray{Vec3(-3, 0, 0), -Vec3::UnitX(), kRealMax}, pose, half).hit);
     // Down the diagonal (1, -1)/sqrt 2 from (-1, 1.5, 0): the x slab holds it from t = 1.414 (to
