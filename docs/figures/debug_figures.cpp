@@ -116,39 +116,67 @@ bool drawHitTree(const std::string& path) {
     return svg.save(path);
 }
 
-bool drawRewindTimeline(const std::string& path) {
-    // debug-drop under a DebugSession: 150 live frames fill the 120-frame ring with frames 31 to
-    // 150; a rewind to frame 34 lands while the ball still falls; a throw up and 40 speculative
-    // steps leave the ring and the live world alone; resume() brings back frame 150, same hash.
-    using debug_figures::pixelView;
+namespace debug_figures {
+
+/// What the timeline figure shows, from a real DebugSession on debug-drop: the ball's height on
+/// the live frames and on the speculative ones, the ring's span, and what the session answered.
+struct RewindRun {
+    std::vector<Point2> live, speculative;   // (frame, ball height in m)
+    long liveFrames = 150, landing = 34, oldest = -1, newest = -1;
+    int capacity = 0;
+    bool refused = false;         // rewindTo a frame older than the ring returned false
+    bool ringUntouched = false;   // the speculative steps left the ring as it was
+    bool sameBits = false;        // resume() gave back the live frame with its state hash
+};
+
+RewindRun runRewind() {
+    // 150 live frames fill the 120-frame ring with frames 31 to 150; a rewind to frame 34 lands
+    // while the ball still falls; a throw up and 40 speculative steps leave the ring and the live
+    // world alone; resume() brings back frame 150, same hash.
+    RewindRun run;
     World world = buildDebugDrop();
     Pipeline pipeline = makeChapter08Pipeline(world);
     DebugSession session(std::move(world), std::move(pipeline));
-    const int ball = 2;
-    std::vector<Point2> live;
-    live.push_back({0, double(session.world().bodies[ball].transform.position.y())});
-    const long liveFrames = 150;
-    while (session.world().frame < liveFrames) {
+    const int ball = session.world().findBody("ball");
+    const auto sample = [&] {
+        return Point2{double(session.world().frame), double(session.world().bodies[std::size_t(ball)].transform.position.y())};
+    };
+    run.live.push_back(sample());
+    while (session.world().frame < run.liveFrames) {
         session.step();
-        live.push_back({double(session.world().frame), double(session.world().bodies[ball].transform.position.y())});
+        run.live.push_back(sample());
     }
     const History& history = session.history();
-    const long oldest = history.oldestFrame(), newest = history.newestFrame();
+    run.oldest = history.oldestFrame();
+    run.newest = history.newestFrame();
+    run.capacity = history.capacity();
     const std::uint64_t liveHash = session.frameHashes().back();
-    const bool refused = !session.rewindTo(oldest - 1);   // a frame that fell out of the ring
-    const long landing = 34;
-    session.rewindTo(landing);
+    run.refused = !session.rewindTo(run.oldest - 1);
+    session.rewindTo(run.landing);
     BodyEdit push = currentState(session.world(), ball);
     push.linearVelocity.y() = 4;   // an inspector edit while rewound (up at 4 m/s): logged nowhere
     session.edit(push);
-    std::vector<Point2> speculative{{double(landing), double(session.world().bodies[ball].transform.position.y())}};
+    run.speculative.push_back(sample());
     for (int k = 0; k < 40; ++k) {
         session.step();
-        speculative.push_back({double(session.world().frame), double(session.world().bodies[ball].transform.position.y())});
+        run.speculative.push_back(sample());
     }
-    const bool ringUntouched = history.newestFrame() == newest && history.size() == history.capacity();
+    run.ringUntouched = history.newestFrame() == run.newest && history.size() == history.capacity();
     session.resume();
-    const bool sameBits = stateHash(session.world()) == liveHash && session.world().frame == liveFrames;
+    run.sameBits = stateHash(session.world()) == liveHash && session.world().frame == run.liveFrames;
+    return run;
+}
+
+}  // namespace debug_figures
+
+bool drawRewindTimeline(const std::string& path) {
+    // The history ring of debug-drop, a rewind, its speculative branch and the resume (runRewind).
+    using debug_figures::pixelView;
+    const debug_figures::RewindRun run = debug_figures::runRewind();
+    const std::vector<Point2>& live = run.live;
+    const std::vector<Point2>& speculative = run.speculative;
+    const long oldest = run.oldest, newest = run.newest, liveFrames = run.liveFrames, landing = run.landing;
+    const bool refused = run.refused, ringUntouched = run.ringUntouched, sameBits = run.sameBits;
 
     const double width = 960, height = 420, x0 = 60, y0 = 80, sx = 5.6, sy = 70;
     Svg svg(width, height);
@@ -173,7 +201,7 @@ bool drawRewindTimeline(const std::string& path) {
     svg.polyline(page, branch, "stroke:#ff7f0e;stroke-width:2.5;stroke-dasharray:7 4");
 
     char label[200];
-    std::snprintf(label, sizeof label, "history: the last %d frames (%ld to %ld)", history.capacity(), oldest, newest);
+    std::snprintf(label, sizeof label, "history: the last %d frames (%ld to %ld)", run.capacity, oldest, newest);
     svg.text(page, at(double(oldest) + 2, 4.05), label, "fill:#1f77b4");
     std::snprintf(label, sizeof label, "frames 0 to %ld fell out of the ring: rewindTo(%ld) %s", oldest - 1,
                   oldest - 1, refused ? "returns false" : "DID NOT REFUSE");
