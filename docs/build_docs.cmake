@@ -2,6 +2,13 @@
 # include, the snippet check, then Doxygen and MathJax.
 cmake_policy(SET CMP0057 NEW)  # IN_LIST under cmake -P
 file(MAKE_DIRECTORY ${IMAGES})
+# The chapter pages' own rules (voice, exercises, figures, menu, prev/next) first: cheap, and a
+# page that breaks them fails the build before the benches run.
+execute_process(COMMAND ${CMAKE_COMMAND} -DSOURCE=${SOURCE} -P ${SOURCE}/docs/check_pages.cmake
+                RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "page check failed (docs/check_pages.cmake)")
+endif()
 execute_process(COMMAND ${STEPWISE} bench --list OUTPUT_VARIABLE listing RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "stepwise bench --list failed (${status})")
@@ -67,5 +74,11 @@ if(EXISTS ${doxyfile_dir}/warnings.log)
 endif()
 if(NOT status EQUAL 0 OR warnings)
   message(FATAL_ERROR "Doxygen reported warnings (the docs build fails on any):\n${warnings}")
+endif()
+# The side tree: each page's sections under its entry (docs/navtree_sections.cmake).
+execute_process(COMMAND ${CMAKE_COMMAND} -DHTML=${doxyfile_dir}/html -DPAGES=${SOURCE}/docs
+                        -P ${SOURCE}/docs/navtree_sections.cmake RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "navtree_sections.cmake failed (${status})")
 endif()
 message(STATUS "docs: ${doxyfile_dir}/html/index.html")

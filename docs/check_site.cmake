@@ -1,7 +1,8 @@
 # The docs test a reader would run: every page of the built site opened in headless Chromium.
 # Fails on a page whose formulas do not typeset (MathJax missing, a TeX error such as an
 # unloaded AMS macro), an image or figure that is missing, or a link to a local file that
-# does not exist. With -DSCREENSHOTS=<dir> it also saves a screenshot of every page there.
+# does not exist, or a chapter page missing from the menu bar or from the side tree. With
+# -DSCREENSHOTS=<dir> it also saves a screenshot of every page there.
 # Usage: cmake -DCHROMIUM=<exe> -DHTML=<built html dir> [-DSCREENSHOTS=<dir>] -P check_site.cmake
 if(NOT CHROMIUM OR NOT EXISTS "${CHROMIUM}")
   message(FATAL_ERROR "site check: Chromium not found (tools/setup-deps.sh installs Debian's "
@@ -17,6 +18,22 @@ list(FILTER pages EXCLUDE REGEX "\\.sitecheck\\.html$")
 set(chrome_flags --headless --no-sandbox --disable-gpu --disable-dev-shm-usage
     --allow-file-access-from-files --no-first-run --hide-scrollbars --virtual-time-budget=60000)
 set(failures "")
+# The navigation: every chapter page is in the menu bar (menudata.js) and in the side tree with
+# its sections under it (navtreedata.js; build_docs.cmake adds the sections).
+file(READ ${HTML}/menudata.js menu)
+file(READ ${HTML}/navtreedata.js tree)
+foreach(page IN LISTS pages)
+  if(page MATCHES "^ch[0-9][0-9]_[a-z0-9_]+\\.html$")
+    string(FIND "${menu}" "url:\"${page}\"" in_menu)
+    string(FIND "${tree}" "\"${page}#" in_tree)
+    if(in_menu EQUAL -1)
+      string(APPEND failures "  ${page}: not in the menu bar (docs/DoxygenLayout.xml)\n")
+    endif()
+    if(in_tree EQUAL -1)
+      string(APPEND failures "  ${page}: not in the side tree with its sections (docs/navtree_sections.cmake)\n")
+    endif()
+  endif()
+endforeach()
 foreach(page IN LISTS pages)
   file(READ ${HTML}/${page} text)
   # Every local file the page points at must exist (images, figures, scripts, links).

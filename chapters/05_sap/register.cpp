@@ -7,12 +7,17 @@
 #include "05_sap/stress_command.h"
 #include "app/registry.h"
 
+#include <utility>
+
 namespace stepwise {
 
 void registerChapter05(Registry& registry) {
     registry.addChapter({5, addChapter05Scenes, [](const World& world) { return makeChapter05Pipeline(world); },
                          {broadphaseBench()}});
-    registry.addCommand({5, installStressCommand});
+    CommandEntry stress;
+    stress.chapter = 5;
+    stress.installWithRegistry = installStressCommand;
+    registry.addCommand(std::move(stress));
     registry.addGenerator({"stress", [](World& world, const JsonCursor& parameters) {
                                addStressBodies(world, readStressParams(parameters));
                            }});

@@ -14,7 +14,14 @@
 
 namespace stepwise {
 
-int runStressCommand(const StressArgs& args, std::ostream& out, std::ostream& err) {
+int runStressCommand(const StressArgs& args, const Registry& registry, std::ostream& out, std::ostream& err) {
+    // The chapter's engine must be one the program has; by default the latest, as for `run`.
+    const int latest = registry.lastChapter();
+    const int chapter = args.chapter.value_or(latest);
+    if (chapter < 1 || chapter > latest) {
+        err << "error: --chapter " << chapter << ": no such chapter (this program has chapters 1 to " << latest << ")\n";
+        return 2;
+    }
     Settings settings;
     settings.broadphase = args.broadphase == "sap" ? BroadphaseMode::Sap
                           : args.broadphase == "brute" ? BroadphaseMode::Brute
@@ -35,14 +42,15 @@ int runStressCommand(const StressArgs& args, std::ostream& out, std::ostream& er
     }
     World world = buildStressScene(args.params);
     world.settings = settings;
-    Pipeline pipeline = makeChapter05Pipeline(world);
-    // Chapter 3's probe measures the deepest overlap, as `stepwise run` does.
-    Registry probeOnly;
-    probeOnly.addPenetrationProbe(PenetrationProbe{3, measureDeepestPenetration});
+    // The chapter's pipeline, its probe of the deepest overlap and its list of the settings it
+    // does not read yet, all as `stepwise run --chapter` has them.
+    Pipeline pipeline = registry.makePipeline(world, chapter);
     RunOptions options;
     options.frames = args.frames;
+    options.maxChapter = chapter;
     options.progress = true;
-    const RunStats stats = runHeadless(world, pipeline, probeOnly, options);
+    const RunStats stats = runHeadless(world, pipeline, registry, options);
+    out << "engine     chapter " << chapter << (chapter == latest ? " (the latest)" : "") << "\n";
     printSummary(out, world, stats);
     if (!args.reportPath.empty()) {
         writeReport(args.reportPath, world, stats, engineVersion());
@@ -51,7 +59,7 @@ int runStressCommand(const StressArgs& args, std::ostream& out, std::ostream& er
     return stats.frames == args.frames ? 0 : 1;
 }
 
-void installStressCommand(CLI::App& app, int& exitCode) {
+void installStressCommand(CLI::App& app, int& exitCode, const Registry& registry) {
     auto args = std::make_shared<StressArgs>();
     CLI::App* stress = app.add_subcommand(
         "stress", "The stress scene (chapter 5): many bodies dropped dense or sparse, run headless or saved as a scene");
@@ -70,9 +78,16 @@ void installStressCommand(CLI::App& app, int& exitCode) {
     stress->add_option("--seed", args->params.seed, "Seed of the positions' jitter and the orientations");
     stress->add_option("--broadphase", args->broadphase, "auto, sap or brute")->check(CLI::IsMember({"auto", "sap", "brute"}));
     stress->add_option("--frames", args->frames, "Frames to simulate")->check(CLI::Range(0L, 100000000L));
+    // Checked by the command, which names the chapters there are.
+    auto chapter = std::make_shared<int>(0);
+    CLI::Option* chapterOption =
+        stress->add_option("--chapter", *chapter, "Use the engine as of this chapter (default: the latest)");
     stress->add_option("--report", args->reportPath, "Write the run report (JSON) here");
     stress->add_option("--save", args->savePath, "Write a scene file naming the generator instead of running");
-    stress->callback([args, &exitCode] { exitCode = runStressCommand(*args, std::cout, std::cerr); });
+    stress->callback([args, chapter, chapterOption, &exitCode, &registry] {
+        if (chapterOption->count() > 0) args->chapter = *chapter;
+        exitCode = runStressCommand(*args, registry, std::cout, std::cerr);
+    });
 }
 
 }  // namespace stepwise

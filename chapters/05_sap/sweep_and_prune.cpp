@@ -11,19 +11,27 @@
 namespace stepwise {
 
 // [ch05-bounds]
+Real pointSpeedBound(const World& world, int bodyIndex) {
+    const Motion* motion = world.motionOf(bodyIndex);
+    if (!motion) return 0;
+    // v is the centre of mass's velocity and the body turns about that centre, so the arm is
+    // measured from it: the shape's ball about its origin plus the centre's offset.
+    const Shape& shape = world.bodies[static_cast<std::size_t>(bodyIndex)].shape;
+    return motion->linearVelocity.norm() + motion->angularVelocity.norm() * maxLeverArm(shape, motion->localCenter);
+}
+
 Real boundsGrowth(const World& world, int bodyIndex) {
-    // Chapter 3's speculative margin of a body with itself, over every substep of the frame, is
-    // twice this body's share: speed bound times the frame, plus gravity's gain.
-    const int wholeFrame = std::max(1, world.settings.substeps);
-    return speculativeMargin(world, bodyIndex, bodyIndex, wholeFrame) / 2 + kBoundsMargin;
+    // The fastest point's travel over the frame, plus what gravity adds over it.
+    const Real dt = world.settings.dt;
+    return dt * (pointSpeedBound(world, bodyIndex) + world.settings.gravity.norm() * dt) + kBoundsMargin;
 }
 // [ch05-bounds]
 
 namespace {
 
 /// A placed shape's world box, and the radius of the smallest ball about the body's origin that
-/// holds the shape (chapter 2's shapeScale), in one pass over the shape: one rotation matrix,
-/// each hull vertex turned once.
+/// holds the shape (boundingRadius), in one pass over the shape: one rotation matrix, each hull
+/// vertex turned once.
 struct PlacedShape {
     Aabb box;
     Real radius = 0;
@@ -72,7 +80,8 @@ PlacedShape placeShape(const Shape& shape, const Transform& pose) {
 void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std::vector<char>& dynamic) {
     bounds.resize(world.bodies.size());
     dynamic.resize(world.bodies.size());
-    // boundsGrowth, with the shape's radius from the same pass as its box.
+    // boundsGrowth, with the shape's radius from the same pass as its box (maxLeverArm's sum,
+    // radius plus the centre of mass's offset, written out).
     const Real dt = world.settings.dt;
     const Real gravityGain = world.settings.gravity.norm() * dt;
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
@@ -82,8 +91,9 @@ void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std:
         Real speed = 0;  // bound on the speed of the body's points, m/s
         if (body.motionIndex >= 0) {
             const Motion& motion = world.motions[static_cast<std::size_t>(body.motionIndex)];
+            const Real leverArm = placed.radius + motion.localCenter.norm();
             speed = motion.linearVelocity.norm() +
-                    motion.angularVelocity.norm() * std::max(placed.radius, std::numeric_limits<Real>::min());
+                    motion.angularVelocity.norm() * std::max(leverArm, std::numeric_limits<Real>::min());
         }
         const Real grow = dt * (speed + gravityGain) + kBoundsMargin;
         Aabb box = placed.box;

@@ -25,13 +25,19 @@ inline bool needsContact(bool aDynamic, bool bDynamic) { return aDynamic || bDyn
 /// contact the narrowphase would find is never lost to the last bit of a box.
 constexpr Real kBoundsMargin = Real(1e-3);
 
-/// How far the bounds of a body are grown on each side, m: its share of the speculative margin
-/// over a whole frame (chapter 3), i.e. its fastest point's speed times dt plus what gravity adds
-/// over the frame, plus kBoundsMargin. A pair that can touch during the frame overlaps.
+/// An upper bound on how fast any point of the body moves, m/s: |v| + |w| times the lever arm
+/// about the centre of mass (maxLeverArm: the shape's radius about its origin plus the centre's
+/// offset |c|). 0 for a static body.
+Real pointSpeedBound(const World& world, int bodyIndex);
+
+/// How far the bounds of a body are grown on each side, m: its fastest point's speed
+/// (pointSpeedBound) times dt plus what gravity adds over the frame, plus kBoundsMargin; at least
+/// the body's share of chapter 3's speculative margin over the frame. A pair that can touch during
+/// the frame overlaps.
 Real boundsGrowth(const World& world, int bodyIndex);
 
 /// Every body's world box grown by boundsGrowth (computed here in one pass per body, with the
-/// same bound on the speed as chapter 3's speculative margin). A body whose pose is not finite gets an empty
+/// same bound on the speed). A body whose pose is not finite gets an empty
 /// box (min > max) that overlaps nothing. `dynamic` gets 1 per dynamic body, 0 per other: the
 /// sweep reads it from a small array rather than from the bodies, which are large.
 void computeBroadphaseBounds(const World& world, std::vector<Aabb>& bounds, std::vector<char>& dynamic);

@@ -35,8 +35,8 @@ Pipeline makeChapter06Pipeline(const World& world, const ManifoldOptions& option
         narrowphase->run = [search, options, split](World& stepWorld, Real) {
             // Relax and soft_step move the bodies through the whole frame in their own substeps
             // on the contacts found here, so the speculative margin must cover the frame, not only
-            // the substeps after the first: at substeps = 1 it was none, and a ball falling at 6 m/s
-            // went 10 cm into a box before its contact existed.
+            // the substeps after the first: at substeps = 1 those are none, and a ball falling at
+            // 6 m/s would go 10 cm into a box before its contact exists.
             const bool wholeFrame = split && isSubstepped(stepWorld.settings.stabilisation);
             const int ahead = wholeFrame ? std::max(1, stepWorld.settings.substeps) : substepsAhead(stepWorld, search);
             ManifoldOptions now = options;  // Settings::manifoldContacts is read every step (the demo's toggle)

@@ -43,9 +43,9 @@ int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal,
     // 1. The deepest point: it carries the most load and must never be dropped. When several are
     // equally deep (a face resting flat), the one farthest from the patch's centre: a corner of
     // the patch. Clipping two nearly coincident faces leaves points part way along the patch's
-    // edges (an edge lying within round-off of a side plane crosses it anywhere); taking the first
-    // of the tied points made such a point a manifold corner, the real corner was lost, and a
-    // 16-box stack in double precision walked 5 cm.
+    // edges (an edge lying within round-off of a side plane crosses it anywhere); the first of the
+    // tied points may be one of them, and taken as a manifold corner it would leave the real corner
+    // out and carry its load part way along an edge.
     Real deepestDepth = points[0].depth;
     Vec3 centre = Vec3::Zero();
     for (int i = 0; i < count; ++i) {

@@ -33,8 +33,6 @@ Real sweepAngle(const Sweep& sweep) {
     return Real(2) * std::acos(cosine);
 }
 
-Real maxLeverArm(const Shape& shape, const Vec3& localCenter) { return boundingRadius(shape) + localCenter.norm(); }
-
 Real sweepTravel(const Sweep& sweep, const Shape& shape) {
     return (sweep.center1 - sweep.center0).norm() + sweepAngle(sweep) * maxLeverArm(shape, sweep.localCenter);
 }

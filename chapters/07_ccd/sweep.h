@@ -30,11 +30,9 @@ Transform poseAt(const Sweep& sweep, Real t);
 /// Angle the body turns through from alpha0 to 1, in [0, pi].
 Real sweepAngle(const Sweep& sweep);
 
-/// Farthest a point of the shape is from its centre of mass: the lever arm of the rotation bound.
-Real maxLeverArm(const Shape& shape, const Vec3& localCenter);
-
 /// The farthest any point of the body travels over the sweep, m: |centre travel| plus the angle
-/// times the lever arm (an arc is no longer than angle times radius).
+/// times the lever arm about the centre of mass (maxLeverArm, world/shape.h, the rule chapter
+/// 5's bounds use too; an arc is no longer than angle times radius).
 Real sweepTravel(const Sweep& sweep, const Shape& shape);
 
 /// The world box that holds the body at every time of the sweep (start and end boxes, grown by

@@ -1,8 +1,8 @@
 #pragma once
 // Time of impact by conservative advancement (Mirtich, "Impulse-based Dynamic Simulation of
-// Rigid Body Systems", PhD thesis, Berkeley 1996, ch. 4; Zhang, Redon, Lee, Kim, "Continuous
-// collision detection for articulated models using Taylor models and temporal culling",
-// SIGGRAPH 2007, the C2A bound). From a time where the two bodies are a distance d apart, no
+// Rigid Body Systems", PhD thesis, UC Berkeley, 1996; the same bound per link in Zhang, Redon,
+// Lee, Kim, "Continuous Collision Detection for Articulated Models using Taylor Models and
+// Temporal Culling", SIGGRAPH 2007). From a time where the two bodies are a distance d apart, no
 // point of one can close on the other faster than a bound mu, so they cannot touch before
 // d / mu: advance by that much, measure the distance again with chapter 2's GJK, repeat until
 // the distance is within a tolerance of the target.

@@ -36,7 +36,8 @@ Real twistAngle(const Quat& deviation, const Vec3& localAxis) {
 // [ch08-twist]
 
 // atan2 of the sine and cosine, not the arc cosine of the dot product: near 1 the cosine moves
-// by angle^2 / 2, and float resolves no swing below 0.0007 rad that way.
+// by angle^2 / 2, and the arc cosine of the float just below 1 is already 3.45e-4 rad, so no
+// smaller swing can be read that way.
 Real swingAngle(const JointFrame& frame) {
     return std::atan2(frame.axisA.cross(frame.axisB).norm(), frame.axisA.dot(frame.axisB));
 }

@@ -54,8 +54,8 @@ public:
     // C = 0 wanted: the error goes back in by the feedback's rule.
     // The push back is capped (kMaxJointPushOutSpeed, kMaxJointPushOutTurn): a joint that starts
     // 25 cm apart would otherwise ask for 40 m/s, and what a static body pushes back with stays in
-    // the bodies as momentum that no relax pass takes out (the contract's two-box-stack launched
-    // its 65 kg ball 12 m up).
+    // the bodies as momentum that no relax pass takes out (uncapped, scenes/two-box-stack.json's
+    // distance joint throws its 65 kg ball 12 m up).
     void equality(ConstraintRow row, Real error) {
         Softness soft;
         if (feedback_.kind == JointFeedback::Kind::Baumgarte) row.bias = -feedback_.baumgarte * error / h_;

@@ -85,6 +85,7 @@ RayHit raySphere(const Ray& ray, const Vec3& center, Real radius) {
 }
 // [ch09-ray-sphere]
 
+// [ch09-ray-box]
 RayHit rayBox(const Ray& ray, const Transform& pose, const Vec3& halfExtents) {
     const LocalRay local = localRay(ray, pose, halfExtents.norm());
     if (local.misses) return RayHit{};
@@ -113,6 +114,7 @@ RayHit rayBox(const Ray& ray, const Transform& pose, const Vec3& halfExtents) {
     if (entryAxis < 0 || entry > exit || entry < 0) return RayHit{};
     return toWorld(ray, pose, local, entry, entrySign * Vec3::Unit(entryAxis));
 }
+// [ch09-ray-box]
 
 RayHit rayCapsule(const Ray& ray, const Transform& pose, Real radius, Real halfHeight) {
     const LocalRay local = localRay(ray, pose, radius + halfHeight);

@@ -118,7 +118,10 @@ int runCli(int argc, char** argv, const Registry& registry) {
     bench->add_option("--peer", benchOptions.peer, "bench engine: run this peer too (bullet)");
     bench->footer(benchFilesHelp(registry.benches()));
 
-    for (const CommandEntry& command : registry.commands()) command.install(app, exitCode);
+    for (const CommandEntry& command : registry.commands()) {
+        if (command.install) command.install(app, exitCode);
+        if (command.installWithRegistry) command.installWithRegistry(app, exitCode, registry);
+    }
 
     const auto known = app.get_subcommands([&](CLI::App* command) { return argc > 1 && command->check_name(argv[1]); });
     if (argc > 1 && argv[1][0] != '-' && known.empty()) {

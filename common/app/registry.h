@@ -118,10 +118,14 @@ std::string prose(const std::string& paragraph);
 /// every bench's card.
 BenchEntry benchEntry(int chapter, std::function<void(BenchRun&)> measure, const std::string& card);
 
-/// A CLI subcommand a chapter adds (e.g. `collide` in chapter 3).
+class Registry;
+
+/// A CLI subcommand a chapter adds (e.g. `collide` in chapter 3). A command that runs a chapter's
+/// engine (`stress --chapter N`) installs with the program's registry, which knows them all.
 struct CommandEntry {
     int chapter = 0;
     std::function<void(CLI::App& app, int& exitCode)> install;
+    std::function<void(CLI::App& app, int& exitCode, const Registry& registry)> installWithRegistry = nullptr;
 };
 
 /// A scene generator scene files can name ("generator": { "<name>": { ... } }).
@@ -135,8 +139,6 @@ struct PenetrationProbe {
     int chapter = 0;
     std::function<Real(const World&)> measure;
 };
-
-class Registry;
 
 /// What every chapter adds, in one declaration: its demo scenes, its pipeline and its benches.
 /// Commands, scene generators and penetration probes, which few chapters have, are added one

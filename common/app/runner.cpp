@@ -87,9 +87,11 @@ RunStats runHeadless(World& world, Pipeline& pipeline, const Registry& registry,
         stats.warnings.push_back("the scene has " + std::to_string(world.joints.size()) +
                                  " joint(s) but no stage of this engine solves joints yet (chapter 8" +
                                  (registry.lastChapter() < 8 ? ", to come" : "") + "); they are ignored");
+    // The settings no stage of the run's chapter reads. A registry without chapters (a probe
+    // alone) cannot say which chapter runs, so it lists none rather than every one as to come.
     const int chapterInUse = std::min(options.maxChapter, registry.lastChapter());
     for (const SettingUse& use : settingUses())
-        if (use.chapter > chapterInUse)
+        if (chapterInUse > 0 && use.chapter > chapterInUse)
             stats.unusedSettings.push_back(std::string(use.key) + " (chapter " + std::to_string(use.chapter) +
                                            (use.chapter > registry.lastChapter() ? ", to come)" : ")"));
     stats.energyByIntegrator = energyByIntegrator(world);

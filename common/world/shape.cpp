@@ -286,4 +286,6 @@ Real boundingRadius(const Shape& shape) {
     return 0;
 }
 
+Real maxLeverArm(const Shape& shape, const Vec3& localCenter) { return boundingRadius(shape) + localCenter.norm(); }
+
 }  // namespace stepwise

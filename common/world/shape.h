@@ -76,6 +76,13 @@ Aabb computeAabb(const Shape& shape, const Transform& transform);
 /// Radius of the smallest origin-centred sphere holding the shape (for CCD and culling).
 Real boundingRadius(const Shape& shape);
 
+/// Farthest a point of the shape can be from the centre of mass at `localCenter` (body frame):
+/// the origin's ball, boundingRadius, grown by the centre's offset |c|. The lever arm of every
+/// bound on how fast the body's points move: a body's velocity is its centre of mass's, and it
+/// turns about that centre, so an arm measured from the origin alone falls short for a shape
+/// whose mass sits off its origin (most hulls).
+Real maxLeverArm(const Shape& shape, const Vec3& localCenter);
+
 /// Whether the shape is round: a sphere or a capsule, a core (a point, a segment) grown by its
 /// radius. A point on a round surface does not turn with its body (a rolling ball's lowest point
 /// stays lowest).

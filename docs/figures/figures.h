@@ -16,6 +16,18 @@ bool drawFrictionPyramid(const std::string& path);  // chapter 4: friction pyram
 bool drawBaumgarteEnergy(const std::string& path);  // chapter 4: Baumgarte's energy gain
 bool drawSweepIntervals(const std::string& path);   // chapter 5: boxes, intervals, pairs
 bool drawManifoldClipping(const std::string& path); // chapter 6: reference and incident face, clipping
+bool drawCcdAdvancement(const std::string& path);   // chapter 7: conservative advancement's queries and bounds
+bool drawToiLoop(const std::string& path);          // chapter 7: the sorted TOI loop on a timeline
+bool drawHingeFrame(const std::string& path);       // chapter 8: a hinge's anchors, axes and angle
+bool drawSwingTwist(const std::string& path);       // chapter 8: a cone-twist's cone, swing and twist
+bool drawRagdollLimits(const std::string& path);    // chapter 8: the ragdoll's cones and hinge ranges
+bool drawHitTree(const std::string& path);          // chapter 9: the hit result tree of debug-drop
+bool drawRewindTimeline(const std::string& path);   // chapter 9: the history ring, a rewind, a speculative branch
+bool drawRaySlabs(const std::string& path);         // chapter 9: the slab test of a ray against a box
+bool drawIntegratorPhase(const std::string& path);  // chapter 1: the oscillator in phase space
+bool drawIntegratorEnergy(const std::string& path); // chapter 1: the oscillator's energy over time
+bool drawDepthReach(const std::string& path);       // chapter 3: the depth as the smallest reach of A - B
+bool drawBoxSphereCases(const std::string& path);   // chapter 3: box-sphere, centre outside and inside
 bool drawGrownBoxes(const std::string& path);      // chapter 10: grown boxes and the pairs kept
 bool drawCacheRule(const std::string& path);       // chapter 10: pairs' motion against the cache rule
 bool drawIslands(const std::string& path);         // chapter 10: islands asleep and waking
@@ -24,4 +36,8 @@ bool drawWideLanes(const std::string& path);       // chapter 11: the contacts i
 bool drawLoadCrossing(const std::string& path);    // chapter 12: a load crossing a column sweep by sweep
 bool drawShockLayers(const std::string& path);     // chapter 12: a pyramid's depths and shock-sweep groups
 
+bool drawSweepAxisChoice(const std::string& path);  // chapter 5: intervals along x and along y
+bool drawManifoldReduction(const std::string& path); // chapter 6: four of a patch's corners, feature ids
+bool drawImpulseArm(const std::string& path);       // primer: effective mass along a face
+bool drawComplementarity(const std::string& path);  // primer: a contact row and a friction row
 }  // namespace figures

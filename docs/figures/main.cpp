@@ -14,6 +14,18 @@ int main(int argc, char** argv) {
         bool (*draw)(const std::string&);
     };
     const Figure all[] = {{"fig-minkowski.svg", figures::drawMinkowski},
+                          {"fig-ccd-advancement.svg", figures::drawCcdAdvancement},
+                          {"fig-toi-loop.svg", figures::drawToiLoop},
+                          {"fig-hinge-frame.svg", figures::drawHingeFrame},
+                          {"fig-swing-twist.svg", figures::drawSwingTwist},
+                          {"fig-ragdoll-limits.svg", figures::drawRagdollLimits},
+                          {"fig-hit-tree.svg", figures::drawHitTree},
+                          {"fig-rewind-timeline.svg", figures::drawRewindTimeline},
+                          {"fig-ray-slabs.svg", figures::drawRaySlabs},
+                          {"fig-integrator-phase.svg", figures::drawIntegratorPhase},
+                          {"fig-integrator-energy.svg", figures::drawIntegratorEnergy},
+                          {"fig-depth-reach.svg", figures::drawDepthReach},
+                          {"fig-box-sphere-cases.svg", figures::drawBoxSphereCases},
                           {"fig-voronoi-regions.svg", figures::drawVoronoiRegions},
                           {"fig-epa-horizon.svg", figures::drawEpaHorizon},
                           {"fig-contact-arms.svg", figures::drawContactArms},
@@ -27,7 +39,11 @@ int main(int argc, char** argv) {
                           {"fig-wide-colouring.svg", figures::drawWideColouring},
                           {"fig-wide-lanes.svg", figures::drawWideLanes},
                           {"fig-planner-load.svg", figures::drawLoadCrossing},
-                          {"fig-planner-shock-layers.svg", figures::drawShockLayers}};
+                          {"fig-planner-shock-layers.svg", figures::drawShockLayers},
+                          {"fig-sweep-axis.svg", figures::drawSweepAxisChoice},
+                          {"fig-manifold-reduction.svg", figures::drawManifoldReduction},
+                          {"fig-impulse-arm.svg", figures::drawImpulseArm},
+                          {"fig-complementarity.svg", figures::drawComplementarity}};
     for (const Figure& figure : all) {
         const std::string path = dir + "/" + figure.file;
         if (!figure.draw(path)) {

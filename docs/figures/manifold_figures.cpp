@@ -4,6 +4,12 @@
 #include "06_manifolds/clipping.h"
 #include "06_manifolds/manifold.h"
 #include "06_manifolds/polytope_faces.h"
+#include "06_manifolds/polytope_manifold.h"
+#include "06_manifolds/reduction.h"
+#include "03_epa/narrowphase.h"
+
+#include <algorithm>
+#include <cmath>
 
 #include <cstdio>
 
@@ -116,6 +122,79 @@ bool drawManifoldClipping(const std::string& path) {
     std::snprintf(sideCaption, sizeof sideCaption, "from the side, tipped 8 degrees: %d points kept (green)",
                   tippedContact.pointCount);
     svg.textAt({490, 24}, sideCaption, "fill:#333");
+    return svg.save(path);
+}
+
+}  // namespace figures
+
+namespace figures {
+
+bool drawManifoldReduction(const std::string& path) {
+    // A unit box (B) turned 45 degrees about the vertical and tipped by 1.5 degrees, resting 1 cm
+    // deep on a slab (A) a little wider than it. Seen from above: the clipped patch is an octagon;
+    // the engine's reduction keeps four of its corners, in the order of its four rules, and each
+    // point carries the feature id that names it from step to step.
+    const Shape slab = Shape::box(Vec3(Real(0.6), Real(0.25), Real(0.6)));
+    const Shape box = Shape::box(Vec3(Real(0.5), Real(0.5), Real(0.5)));
+    const Transform slabPose{Vec3::Zero(), Quat::Identity()};
+    const Quat turn = Quat(Eigen::AngleAxis<Real>(Real(0.026), Vec3::UnitX())) *
+                      Quat(Eigen::AngleAxis<Real>(Real(0.7853982), Vec3::UnitY()));
+    const Transform boxPose{Vec3(0, Real(0.74), 0), turn};
+    const ContactQuery query = collideShapes(slab, slabPose, box, boxPose);
+    ManifoldCandidates candidates;
+    if (!polytopeManifold(slab, slabPose, box, boxPose, query, Real(0.01), candidates)) return false;
+    int chosen[kMaxManifoldPoints];
+    const int kept = reduceManifold(candidates.points, candidates.normal, chosen);
+
+    Svg svg(940, 560);
+    const Viewport view{0, 50, 940, 510, {0, 0}, 330};
+    std::vector<Point2> slabOutline, boxOutline, patch, quad;
+    for (const Vec3& corner : worldCorners(slab, slabPose, 3)) slabOutline.push_back(topView(corner));
+    for (const Vec3& corner : worldCorners(box, boxPose, 2)) boxOutline.push_back(topView(corner));
+    svg.polygon(view, slabOutline, "fill:#1f77b4;fill-opacity:0.12;stroke:#1f77b4;stroke-width:2");
+    svg.polygon(view, boxOutline, "fill:#d62728;fill-opacity:0.08;stroke:#d62728;stroke-width:2");
+    for (const ManifoldPoint& point : candidates.points) patch.push_back(topView(point.pointA));
+    svg.polygon(view, patch, "fill:#2ca02c;fill-opacity:0.25;stroke:#2ca02c;stroke-width:1.5");
+    for (int k = 0; k < kept; ++k) quad.push_back(topView(candidates.points[static_cast<std::size_t>(chosen[k])].pointA));
+    // The quadrilateral in angular order about its centre, and both areas (shoelace).
+    Point2 middle;
+    for (const Point2& p : quad) middle.x += p.x / kept, middle.y += p.y / kept;
+    std::sort(quad.begin(), quad.end(), [&](Point2 p, Point2 q) {
+        return std::atan2(p.y - middle.y, p.x - middle.x) < std::atan2(q.y - middle.y, q.x - middle.x);
+    });
+    const auto area = [](const std::vector<Point2>& polygon) {
+        double twice = 0;
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const Point2& p = polygon[i];
+            const Point2& q = polygon[(i + 1) % polygon.size()];
+            twice += p.x * q.y - q.x * p.y;
+        }
+        return std::abs(twice) / 2;
+    };
+    svg.polygon(view, quad, "fill:none;stroke:#000;stroke-width:2;stroke-dasharray:6 4");
+    for (const ManifoldPoint& point : candidates.points) {
+        const Point2 at = topView(point.pointA);
+        svg.dot(view, at, 4, "#2ca02c");
+        char depth[32];
+        std::snprintf(depth, sizeof depth, "%.1f mm", double(point.depth) * 1000);
+        svg.text(view, {at.x + 0.02, at.y - 0.06}, depth, "fill:#555;font-size:11px");
+    }
+    const char* const rules[] = {"deepest", "farthest", "largest triangle", "most area added"};
+    for (int k = 0; k < kept; ++k) {
+        const ManifoldPoint& point = candidates.points[static_cast<std::size_t>(chosen[k])];
+        const Point2 at = topView(point.pointA);
+        svg.circle(view, at, 0.035, "fill:none;stroke:#000;stroke-width:2.5");
+        char label[80];
+        std::snprintf(label, sizeof label, "%d %s, id %s", k + 1, rules[k], featureIdLabel(point.featureId).c_str());
+        const bool left = at.x < 0;
+        svg.text(view, {at.x + (left ? -0.06 : 0.06), at.y + 0.045}, label,
+                 std::string("font-weight:bold;font-size:12px") + (left ? ";text-anchor:end" : ""));
+    }
+    char caption[200];
+    std::snprintf(caption, sizeof caption, "%zu clipped corners (green), %d kept: they hold %.0f%% of the patch's area",
+                  candidates.points.size(), kept, 100 * area(quad) / area(patch));
+    svg.textAt({10, 22}, caption, "fill:#333");
+    svg.textAt({10, 42}, "labels: the order of the rules, and A's feature / B's feature", "fill:#333;font-size:12px");
     return svg.save(path);
 }
 

@@ -35,6 +35,10 @@ bool drawFrictionPyramid(const std::string& path) {
     svg.text(view, {0.05, 1.38}, "t2");
     svg.arrow(view, {0, 0}, {bound, bound}, "#c0392b");
     svg.text(view, {0.45, 0.75}, "sqrt(2) mu lambda_n", "fill:#c0392b");
+    // The first tangent follows the slide, so friction against it ends on a face of the
+    // pyramid, at exactly Coulomb's bound.
+    svg.arrow(view, {0, 0}, {-bound, 0}, "#2a8a3e", 3);
+    svg.text(view, {-1.8, 0.1}, "against the slide: mu lambda_n", "fill:#2a8a3e");
     svg.text(view, {-0.85, -0.2}, "cone: |lambda_t| <= mu lambda_n", "fill:#3b6fb6");
     svg.text(view, {-1.05, -1.15}, "pyramid: |lambda_1|, |lambda_2| <= mu lambda_n", "fill:#b0661e");
     char label[200];

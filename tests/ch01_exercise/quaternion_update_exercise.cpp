@@ -1,5 +1,5 @@
 // Exercise check for chapter 1 (`ctest -L ch01-exercise`): rewrite integrateRotation in
-// chapters/01_integrators/rotation.cpp from the page's formula q1 = q0 + h/2 (0, w) q0, then
+// chapters/01_integrators/rotation.h from the page's formula q1 = q0 + h/2 (0, w) q0, then
 // normalise, and run this. It checks what any correct first-order update must do, with a
 // message that says which property your version breaks.
 #include "01_integrators/rotation.h"

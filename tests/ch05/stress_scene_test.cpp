@@ -135,7 +135,7 @@ TEST_CASE("stepwise stress runs the scene, and saves a scene file that regenerat
     args.broadphase = "sap";
     args.reportPath = temporaryPath("ch05_stress_report.json");
     std::ostringstream out, err;
-    REQUIRE(runStressCommand(args, out, err) == 0);
+    REQUIRE(runStressCommand(args, chapterRegistry(), out, err) == 0);
     CHECK(out.str().find("broadphase sap (settings.broadphase is \"sap\")") != std::string::npos);
     std::ifstream report(args.reportPath);
     CHECK(report.good());
@@ -143,7 +143,7 @@ TEST_CASE("stepwise stress runs the scene, and saves a scene file that regenerat
 
     StressArgs save = args;
     save.savePath = temporaryPath("ch05_stress_scene.json");
-    REQUIRE(runStressCommand(save, out, err) == 0);
+    REQUIRE(runStressCommand(save, chapterRegistry(), out, err) == 0);
     Registry registry;
     registerChapters(registry);
     const World loaded = loadSceneOrBuiltin(registry, save.savePath);
@@ -156,6 +156,47 @@ TEST_CASE("stepwise stress runs the scene, and saves a scene file that regenerat
 
     StressArgs bad = args;
     bad.reportPath = "/nonexistent-dir/report.json";
-    CHECK(runStressCommand(bad, out, err) == 2);
+    CHECK(runStressCommand(bad, chapterRegistry(), out, err) == 2);
     CHECK(err.str().find("/nonexistent-dir/report.json: cannot write the file") != std::string::npos);
+}
+
+TEST_CASE("stepwise stress runs the chapter it is asked for, the latest by default", "[ch05][stress]") {
+    StressArgs args;
+    args.params.count = 20;
+    args.params.shape = StressShape::Sphere;
+    args.frames = 3;
+    const Registry& registry = chapterRegistry();
+    auto summary = [&](std::optional<int> chapter) {
+        StressArgs asked = args;
+        asked.chapter = chapter;
+        std::ostringstream out, err;
+        REQUIRE(runStressCommand(asked, registry, out, err) == 0);
+        return out.str();
+    };
+    const std::string latest = summary(std::nullopt);
+    CHECK(latest.find("engine     chapter " + std::to_string(registry.lastChapter()) + " (the latest)") !=
+          std::string::npos);
+    CHECK(summary(registry.lastChapter()).find(" (the latest)") != std::string::npos);
+    // The run reads gravity and dt (chapter 1) and the broadphase setting (chapter 5).
+    for (const char* used : {"gravity", "dt (", "broadphase ("}) {
+        INFO(used << " in\n" << latest);
+        const std::size_t notUsed = latest.find("not used");
+        CHECK((notUsed == std::string::npos || latest.find(used, notUsed) == std::string::npos));
+    }
+    // Chapter 4's engine tests every pair: no broadphase stage, and the broadphase setting unused.
+    const std::string chapter4 = summary(4);
+    CHECK(chapter4.find("engine     chapter 4\n") != std::string::npos);
+    CHECK(chapter4.find("broadphase:") == std::string::npos);
+    CHECK(chapter4.find("broadphase (chapter 5)") != std::string::npos);
+    CHECK(latest.find("broadphase:") != std::string::npos);
+
+    for (int unknown : {0, -1, registry.lastChapter() + 1, 99}) {
+        StressArgs bad = args;
+        bad.chapter = unknown;
+        std::ostringstream out, err;
+        CHECK(runStressCommand(bad, registry, out, err) == 2);
+        CHECK(err.str() == "error: --chapter " + std::to_string(unknown) + ": no such chapter (this program has chapters 1 to " +
+                               std::to_string(registry.lastChapter()) + ")\n");
+        CHECK(out.str().empty());
+    }
 }
