@@ -92,7 +92,10 @@ void drawBroadphasePanel(Svg& svg, const Viewport& view, const World& world, con
         const std::string colour = int(i) == highlight ? "#d62728" : "#1f77b4";
         drawBody(svg, view, world.bodies[i], colour, 0.25);
         drawAabb(svg, view, grown.enlargedBounds[i], "fill:none;stroke:" + colour + ";stroke-dasharray:5 3");
-        if (int(i) == highlight) drawAabb(svg, view, grown.bounds[i], "fill:none;stroke:#d62728;stroke-width:2.5");
+        if (int(i) != highlight) continue;
+        const Aabb& box = grown.bounds[i];
+        drawAabb(svg, view, box, "fill:none;stroke:#d62728;stroke-width:2.5");
+
     }
     for (const BodyPair& pair : pairs) {
         const Point2 a = centreOf(world, pair.bodyB);
@@ -101,6 +104,27 @@ void drawBroadphasePanel(Svg& svg, const Viewport& view, const World& world, con
         svg.line(view, a, b, "stroke:#000;stroke-width:2");
         svg.dot(view, a, 3, "#000");
     }
+}
+
+}  // namespace
+
+namespace {
+
+/// A close-up of one box's lower right corner: its grown box (dashed) and this frame's box (solid).
+void drawCornerInset(Svg& svg, const Aabb& grown, const Aabb& now) {
+    const double reach = 0.12;  // m of each edge drawn from the corner
+    const Viewport inset{620, 385, 320, 150, {double(grown.max.x()) - 0.15, double(grown.min.y()) + 0.07}, 600};
+    svg.rect(inset.left, inset.top, inset.width, inset.height, "#f7f7f7");
+    const auto corner = [&](const Aabb& box, const std::string& style) {
+        const Point2 at{double(box.max.x()), double(box.min.y())};
+        svg.polyline(inset, {{at.x - reach, at.y}, at, {at.x, at.y + reach}}, style);
+    };
+    corner(grown, "stroke:#d62728;stroke-width:1.5;stroke-dasharray:5 3");
+    corner(now, "stroke:#d62728;stroke-width:2.5");
+    char label[120];
+    std::snprintf(label, sizeof label, "red box, lower right corner: %.1f cm out",
+                  100 * double(grown.min.y() - now.min.y()));
+    svg.textAt({inset.left + 8, inset.top + 18}, label, "fill:#d62728;font-size:12px");
 }
 
 }  // namespace
@@ -128,11 +152,13 @@ bool drawGrownBoxes(const std::string& path) {
     BroadphaseState left = before.broadphase;
     left.bounds = world.broadphase.bounds;
 
-    Svg svg(960, 380);
+    Svg svg(960, 545);
     const Viewport first{0, 40, 480, 330, {-0.4, 1.5}, 78};
     const Viewport second{480, 40, 480, 330, {-0.4, 1.5}, 78};
     drawBroadphasePanel(svg, first, swept, swept.broadphase, swept.broadphase.enlargedPairs, -1);
-    drawBroadphasePanel(svg, second, before, left, {}, int(world.bodies.size()) - 1);
+    const std::size_t falling = world.bodies.size() - 1;
+    drawBroadphasePanel(svg, second, before, left, {}, int(falling));
+    drawCornerInset(svg, left.enlargedBounds[falling], left.bounds[falling]);
     char label[200];
     std::snprintf(label, sizeof label, "the sweep: %zu pairs kept (black)", swept.broadphase.enlargedPairs.size());
     svg.textAt({16, 26}, label, "fill:#333");
