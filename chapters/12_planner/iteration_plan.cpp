@@ -214,18 +214,14 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy)
         iterations = std::min(scene, substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep));
     if (settings.planIterations && plan.massRatio > kPlainMassRatio) {
-        // Measured on towers of four boxes, masses in geometric steps (docs/ch10_speed.md):
-        // 1:300 stands from 15 substeps, 1:1000 from 25. The square root of the ratio over the
-        // plain one gives 18 and 32.
+        // The square-root law (plan_constants.h, kPlainMassRatio).
         const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio) * perMeasuredFrame;
         iterations = std::max(iterations, std::min(most, static_cast<int>(std::ceil(wanted - Real(1e-3)))));
     }
     plan.shockPropagation = false;
     if (settings.planIterations && plan.stackDepth > 1) {
-        // Measured on pyramids of 1 m boxes (docs/ch10_speed.md): 20 rows walk 1.5 mm at ten
-        // substeps, 9.5 mm at four; 40 rows 2.6 cm at ten, 1.2 cm at 15, 0.6 cm at 20. Only while
-        // they settle was tried and is worse: changing the count changes how deep a resting
-        // contact sits, and a stack switched between counts is pumped into swaying.
+        // The depth laws (plan_constants.h). The count holds while a stack rests too: changing it
+        // changes how deep a resting contact sits, and a stack switched between counts is pumped.
         const Real rows = static_cast<Real>(plan.stackDepth) / static_cast<Real>(kPlainStackDepth);
         // A stack of like masses into which nothing arrives bouncing: the shock sweep ends the
         // frame where the walk law with it, plus the sweep's own cost, asks for fewer substeps

@@ -20,8 +20,8 @@
 namespace stepwise {
 
 /// The planner's price of a sweep (iteration_plan.h) counts a group's contacts left over after its
-/// full wide blocks as one more wide block when at least this many, else as one-lane blocks, as the
-/// sweep's first version built them.
+/// full wide blocks as one more wide block when at least this many, else as one-lane blocks (the
+/// blocks kShockBlockSubsteps and kShockLaneBlocks price, plan_constants.h).
 constexpr int kShockWideLanesAtLeast = 2;
 
 /// The order of a shock sweep: groups, layer by layer from the supports up.
