@@ -158,7 +158,6 @@ Measurement peerMeasurement(const World& start, const PeerRun& run, long frames,
     return measured;
 }
 
-// [ch12-bench-beside]
 /// Chapter 10 and the peer on the same scene, taking turns of kFramesATurn frames: each engine's
 /// frames are timed alone, and the other's turn runs between two of its turns. A shared host's
 /// speed wanders by a fifth and more within minutes, and two whole runs one after the other
@@ -176,7 +175,6 @@ std::pair<Measurement, Measurement> runBeside(const World& start, const SpeedOpt
     });
     return {engine.finish(), peerMeasurement(start, peer, frames, timedFrom)};
 }
-// [ch12-bench-beside]
 
 struct BenchScene {
     std::string name;
@@ -235,7 +233,6 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
 /// Settled piles with sleeping on and off.
 void measureSleep(BenchRun& bench, CsvTable& sleepTable) {
     const bool quick = bench.quick();
-    // [ch12-bench-sleep]
     // Piles that have settled, stepped until every body sleeps (at most a minute): the step with
     // sleeping on against the same step awake. The mixed pile's spheres and capsules have a little
     // rolling resistance: without it they roll, or spin in place on one point, for ever, and one
@@ -260,7 +257,6 @@ void measureSleep(BenchRun& bench, CsvTable& sleepTable) {
                            formatNumber(notSleeping.stepMs.median), "1"});
     }
     bench.progress().endStage();
-    // [ch12-bench-sleep]
 
 }
 
@@ -335,11 +331,9 @@ void measureSpeed(BenchRun& bench) {
     CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
                     "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
                     "x_faster_than_peer"});
-    // [ch12-bench-profile]
     // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
     CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
                       "relax_ms", "store_ms"});
-    // [ch12-bench-profile]
     const std::vector<Configuration> list = configurations(withPeer);
     measureScenes(bench, scenes, list, withPeer, table, profile);
     CsvTable sleepTable({"scene", "bodies", "sleeping", "settle_frames", "bodies_asleep", "ms_median", "fraction_of_awake"});
