@@ -24,11 +24,14 @@ std::vector<Aabb> bodyBounds(const World& world) {
     return bounds;
 }
 
-/// An upper bound on how fast any point of the body moves, m/s.
+/// An upper bound on how fast any point of the body moves, m/s: the centre of mass's speed plus the
+/// turn times the farthest a point lies from the centre of mass (maxLeverArm: the radius about the
+/// shape's origin plus the centre's offset from it).
 Real speedBound(const World& world, int bodyIndex) {
     const Motion* motion = world.motionOf(bodyIndex);
     if (!motion) return 0;
-    return motion->linearVelocity.norm() + motion->angularVelocity.norm() * shapeScale(world.bodies[bodyIndex].shape);
+    const Real arm = std::max(maxLeverArm(world.bodies[bodyIndex].shape, motion->localCenter), shapeScale(world.bodies[bodyIndex].shape));
+    return motion->linearVelocity.norm() + motion->angularVelocity.norm() * arm;
 }
 
 }  // namespace
