@@ -1,6 +1,8 @@
 // stepwise_figures <output dir>: draws every figure of the course site from the engine's code.
 #include "figures.h"
 
+#include "app/registry.h"
+
 #include <cstdio>
 
 int main(int argc, char** argv) {
@@ -9,6 +11,9 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::string dir = argv[1];
+    // Chapter 9's figures run the debugger, whose library also holds `stepwise record` and
+    // `replay`; those ask for the course's registry, built here first.
+    (void)stepwise::chapterRegistry();
     struct Figure {
         const char* file;
         bool (*draw)(const std::string&);

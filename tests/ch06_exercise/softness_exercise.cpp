@@ -8,7 +8,7 @@
 using namespace stepwise;
 
 TEST_CASE("exercise: the soft step's numbers at 30 Hz, damping ratio 10, h = 1/600 s", "[ch06-exercise]") {
-    const Softness soft = makeSoftness(kContactHertz, kContactDampingRatio, Real(1.0 / 600));
+    const Softness soft = makeSoftness(Settings{}.contactHertz, Settings{}.contactDampingRatio, Real(1.0 / 600));
     CHECK(soft.biasRate == Approx(9.28).epsilon(1e-3));     // 1/s
     CHECK(soft.massScale == Approx(0.865).epsilon(1e-3));
     CHECK(soft.impulseScale == Approx(0.135).epsilon(4e-3));
