@@ -170,8 +170,11 @@ bool measureApartPair(World& world, const BodyPair& pair, Real lookAhead, const 
 
 /// Carries last frame's record of a touching pair into this frame when the pair has not moved
 /// beyond the rule (or slid along a box face): its points ride on their bodies, the normal turns
-/// with A. Returns whether it was carried; a record not carried is left as it was.
-bool carryRecord(World& world, const BodyPair& pair, Contact& record, const ContactCacheRule& rule,
+/// with A. A point that has drifted farther apart than the margin chapter 6 keeps points within
+/// (the bodies slowed, so the margin shrank) sends the pair back to chapter 6, which keeps only
+/// what is in reach. Returns whether it was carried; a record not carried goes to chapter 6 with
+/// its points where they now are (its feature ids and impulses are what chapter 6 matches).
+bool carryRecord(World& world, const BodyPair& pair, Contact& record, const ContactCacheRule& rule, Real lookAhead,
                  ContactCacheStats& stats) {
     const Body& bodyA = world.bodies[static_cast<std::size_t>(pair.bodyA)];
     const Body& bodyB = world.bodies[static_cast<std::size_t>(pair.bodyB)];
@@ -179,13 +182,15 @@ bool carryRecord(World& world, const BodyPair& pair, Contact& record, const Cont
     const bool slides = !still && faceContactSlides(record, bodyA, bodyB, rule);
     if (!still && !slides) return false;
     record.normal = (bodyA.transform.rotation * record.builtLocalNormal).normalized();
-    if (slides) {
+    if (slides)
         slideFaceContact(record, bodyA, bodyB);
-        ++stats.slid;
-    } else {
+    else
         refreshFromAnchors(record, bodyA, bodyB);
-    }
+    const Real keepDistance = manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead) + pointSlack(world);
+    for (int i = 0; i < record.pointCount; ++i)
+        if (record.points[i].depth < -keepDistance) return false;
     for (int i = 0; i < record.pointCount; ++i) record.points[i].persisted = true;
+    stats.slid += slides ? 1 : 0;
     ++stats.reused;
     return true;
 }
@@ -257,7 +262,7 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
             if (measureApartPair(world, pair, lookAhead, options, nextGap, scratch, stats)) scratch.misses.push_back(pair);
             continue;
         } else if (!rule.enabled || !valid || !old || !old->builtPoseKnown || old->pointCount <= 0 ||
-                   old->missedSteps > 0 || !carryRecord(world, pair, *old, rule, stats)) {
+                   old->missedSteps > 0 || !carryRecord(world, pair, *old, rule, lookAhead, stats)) {
             scratch.misses.push_back(pair);
             if (old) scratch.missedRecords.push_back(*old);
             continue;
