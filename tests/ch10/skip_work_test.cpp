@@ -24,7 +24,8 @@ Pipeline fastPipeline(const World& world) {
 }  // namespace
 TEST_CASE("the sweep on grown boxes finds chapter 5's pairs, and skips the sweep when nothing left its box",
           "[ch10][broadphase]") {
-    World world = buildMixedPile(300);
+    // Big enough to settle inside its grown boxes, small enough for chapter 8's solve under the sanitizers.
+    World world = buildMixedPile(120);
     world.settings.sleeping = false;
     Pipeline pipeline = fastPipeline(world);
     int skipped = 0;
@@ -53,7 +54,8 @@ TEST_CASE("the sweep on grown boxes finds chapter 5's pairs, and skips the sweep
 }
 
 TEST_CASE("no pair kept apart by the gap cache is one chapter 6 would make a contact of", "[ch10][cache]") {
-    World world = buildMixedPile(300);
+    // Big enough to settle inside its grown boxes, small enough for chapter 8's solve under the sanitizers.
+    World world = buildMixedPile(120);
     world.settings.sleeping = false;
     Pipeline pipeline = fastPipeline(world);
     long keptApart = 0;
