@@ -186,9 +186,10 @@ bool carryRecord(World& world, const BodyPair& pair, Contact& record, const Cont
         slideFaceContact(record, bodyA, bodyB);
     else
         refreshFromAnchors(record, bodyA, bodyB);
-    const Real keepDistance = manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead) + pointSlack(world);
-    for (int i = 0; i < record.pointCount; ++i)
-        if (record.points[i].depth < -keepDistance) return false;
+    Real shallowest = 0;  // the margin is asked for only where a point lies apart (most carry none)
+    for (int i = 0; i < record.pointCount; ++i) shallowest = std::min(shallowest, record.points[i].depth);
+    if (shallowest < 0 && -shallowest > manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead) + pointSlack(world))
+        return false;
     for (int i = 0; i < record.pointCount; ++i) record.points[i].persisted = true;
     stats.slid += slides ? 1 : 0;
     ++stats.reused;

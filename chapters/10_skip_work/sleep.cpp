@@ -13,11 +13,11 @@ bool isDynamicBody(const World& world, int bodyIndex) {
            world.bodies[std::size_t(bodyIndex)].type == BodyType::Dynamic;
 }
 
-namespace {
-
 bool isAwakeDynamic(const World& world, int bodyIndex) {
     return isDynamicBody(world, bodyIndex) && !world.motionOf(bodyIndex)->asleep;
 }
+
+namespace {
 
 bool isSleeper(const World& world, int bodyIndex) {
     return isDynamicBody(world, bodyIndex) && world.motionOf(bodyIndex)->asleep;

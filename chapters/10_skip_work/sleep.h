@@ -38,6 +38,9 @@ bool isSlow(const World& world, int bodyIndex);
 /// Whether bodyIndex names a dynamic body of the world (false for any other index).
 bool isDynamicBody(const World& world, int bodyIndex);
 
+/// Whether bodyIndex names a dynamic body that is awake.
+bool isAwakeDynamic(const World& world, int bodyIndex);
+
 /// Whether a body is a kinematic body that moves (not slow): it keeps what it touches awake.
 bool isMovingKinematic(const World& world, int bodyIndex);
 

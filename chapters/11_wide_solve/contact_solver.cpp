@@ -54,11 +54,6 @@ bool validContactRecord(const World& world, const Contact& contact) {
 
 namespace {
 
-bool isAwakeDynamic(const World& world, int bodyIndex) {
-    const Motion* motion = world.motionOf(bodyIndex);
-    return motion && !motion->asleep && world.bodies[static_cast<std::size_t>(bodyIndex)].type == BodyType::Dynamic;
-}
-
 bool allAwakeDynamic(const World& world) {
     return std::all_of(world.motions.begin(), world.motions.end(), [&](const Motion& motion) {
         return !motion.asleep && world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Dynamic;
