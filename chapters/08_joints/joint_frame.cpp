@@ -11,13 +11,18 @@ bool jointBodiesValid(const World& world, const JointDesc& joint) {
 }
 
 JointFrame jointFrame(const World& world, const JointDesc& joint) {
-    const Transform& poseA = world.bodies[static_cast<std::size_t>(joint.bodyA)].transform;
-    const Transform& poseB = world.bodies[static_cast<std::size_t>(joint.bodyB)].transform;
+    return jointFrame(joint, world.bodies[static_cast<std::size_t>(joint.bodyA)].transform,
+                      worldCenterOfMass(world, joint.bodyA), world.bodies[static_cast<std::size_t>(joint.bodyB)].transform,
+                      worldCenterOfMass(world, joint.bodyB));
+}
+
+JointFrame jointFrame(const JointDesc& joint, const Transform& poseA, const Vec3& centerA, const Transform& poseB,
+                      const Vec3& centerB) {
     JointFrame frame;
     frame.anchorA = poseA.apply(joint.localAnchorA);
     frame.anchorB = poseB.apply(joint.localAnchorB);
-    frame.armA = frame.anchorA - worldCenterOfMass(world, joint.bodyA);
-    frame.armB = frame.anchorB - worldCenterOfMass(world, joint.bodyB);
+    frame.armA = frame.anchorA - centerA;
+    frame.armB = frame.anchorB - centerB;
     frame.rotationA = poseA.rotation;
     Quat deviation = (poseA.rotation.conjugate() * poseB.rotation) * joint.referenceRotation.conjugate();
     if (deviation.w() < 0) deviation.coeffs() = -deviation.coeffs();  // the shorter way round

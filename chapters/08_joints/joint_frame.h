@@ -25,6 +25,9 @@ struct JointFrame {
 bool jointBodiesValid(const World& world, const JointDesc& joint);
 
 JointFrame jointFrame(const World& world, const JointDesc& joint);
+/// The same with the bodies' poses and centres of mass given (a solve that keeps its own).
+JointFrame jointFrame(const JointDesc& joint, const Transform& poseA, const Vec3& centerA, const Transform& poseB,
+                      const Vec3& centerB);
 
 // [ch08-angles]
 /// The angle B has turned about the joint axis (a hinge's angle; a cone-twist's twist): the twist

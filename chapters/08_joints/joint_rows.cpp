@@ -50,38 +50,13 @@ public:
     // Appends straight to `out`: no vectors of its own to allocate per joint and pass.
     RowBuilder(JointRows& out, const JointFeedback& feedback, Real h) : out_(out), feedback_(feedback), h_(h) {}
 
-    // [ch08-bias]
-    // C = 0 wanted: the error goes back in by the feedback's rule.
-    // The push back is capped (kMaxJointPushOutSpeed, kMaxJointPushOutTurn): a joint that starts
-    // 25 cm apart would otherwise ask for 40 m/s, and what a static body pushes back with stays in
-    // the bodies as momentum that no relax pass takes out (uncapped, scenes/two-box-stack.json's
-    // distance joint throws its 65 kg ball 12 m up).
-    void equality(ConstraintRow row, Real error) {
-        Softness soft;
-        if (feedback_.kind == JointFeedback::Kind::Baumgarte) row.bias = -feedback_.baumgarte * error / h_;
-        if (feedback_.kind == JointFeedback::Kind::Soft) {
-            soft = feedback_.soft;
-            row.bias = -soft.biasRate * error;
-        }
-        const bool linear = !row.linearA.isZero(0) || !row.linearB.isZero(0);
-        const Real cap = linear ? kMaxJointPushOutSpeed : kMaxJointPushOutTurn;
-        row.bias = std::clamp(row.bias, -cap, cap);
-        add(row, soft, /*fedBack=*/true);
-    }
+    void equality(ConstraintRow row, Real error) { add(row, Softness{}, JointRowKind::Equality, error); }
 
-    // C >= 0 wanted (a limit), row J = dC/dt, impulse >= 0. Not reached: speculative, the row
-    // only stops the bodies from closing the gap by more than it is in this step. Passed: fed
-    // back like an equality.
+    // C >= 0 wanted (a limit), row J = dC/dt, impulse >= 0.
     void limit(ConstraintRow row, Real gap) {
         row.lower = 0;
-        if (gap > 0) {
-            row.bias = -gap / h_;
-            add(row, Softness{});
-            return;
-        }
-        equality(row, gap);
+        add(row, Softness{}, JointRowKind::Limit, gap);
     }
-    // [ch08-bias]
 
     // A row that drives J v towards `speed` with an impulse of at most maxForce h either way (a
     // motor; joint friction is a motor of speed zero).
@@ -101,15 +76,15 @@ public:
         add(row, Softness{});
     }
 
-    void spring(ConstraintRow row, Real error, const Softness& soft) {
-        row.bias = -soft.biasRate * error;
-        add(row, soft);
-    }
+    void spring(ConstraintRow row, Real error, const Softness& soft) { add(row, soft, JointRowKind::Spring, error); }
 
-    void add(const ConstraintRow& row, const Softness& soft, bool fedBack = false) {
+    void add(const ConstraintRow& row, const Softness& soft, JointRowKind kind = JointRowKind::Free, Real error = 0) {
         out_.rows.push_back(row);
         out_.softness.push_back(soft);
-        out_.fedBack.push_back(fedBack);
+        out_.fedBack.push_back(false);
+        out_.kind.push_back(kind);
+        out_.error.push_back(error);
+        applyRowFeedback(out_, out_.rows.size() - 1, feedback_, h_);
     }
 
 private:
@@ -239,18 +214,7 @@ void addDistanceRow(RowBuilder& builder, const JointDesc& joint, const JointFram
 }
 // [ch08-distance-row]
 
-}  // namespace
-
-void appendJointRows(JointRows& out, const World& world, int jointIndex, const std::vector<SolverBody>& bodies, Real h,
-                     const JointFeedback& feedback, bool carryImpulses) {
-    const JointDesc& joint = world.joints[static_cast<std::size_t>(jointIndex)];
-    if (!jointBodiesValid(world, joint) || !(h > 0)) {
-        ++out.invalidSkipped;
-        return;
-    }
-    const JointFrame frame = jointFrame(world, joint);
-    const std::size_t first = out.rows.size();
-    RowBuilder builder(out, feedback, h);
+void addRowsOf(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame, Real h) {
     switch (joint.type) {
         case JointType::Distance: addDistanceRow(builder, joint, frame, h); break;
         case JointType::BallSocket: addPointRows(builder, joint, frame); break;
@@ -262,22 +226,101 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
             addWeldRows(builder, joint, frame);
             break;
     }
+}
+
+// The point joints' slots 0-2 as one block, at the frame's arms.
+void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& a, const SolverBody& b) {
+    // [ch08-point-mass]
+    // K = (1/mA + 1/mB) 1 - [rA]x IA^-1 [rA]x - [rB]x IB^-1 [rB]x: how the anchors' relative
+    // velocity answers an impulse at them. A singular K (both bodies fixed) keeps the rows scalar.
+    const Mat3 armA = skew(frame.armA), armB = skew(frame.armB);
+    const Mat3 k = (a.inverseMass + b.inverseMass) * Mat3::Identity() - armA * a.inverseInertia * armA -
+                   armB * b.inverseInertia * armB;
+    // [ch08-point-mass]
+    const Real scale = k.norm();
+    const bool invertible = scale > 0 && std::abs(k.determinant()) > Real(1e-9) * scale * scale * scale;
+    const Mat3 inverse = invertible ? Mat3(k.inverse()) : Mat3::Zero();
+    set.pointBlock = invertible && inverse.allFinite();
+    set.pointMass = set.pointBlock ? inverse : Mat3::Zero();
+    set.pointArmA = frame.armA;
+    set.pointArmB = frame.armB;
+}
+
+}  // namespace
+
+// [ch08-bias]
+// C = 0 wanted: the error goes back in by the feedback's rule. The push back is capped
+// (kMaxJointPushOutSpeed, kMaxJointPushOutTurn): a joint that starts 25 cm apart would otherwise
+// ask for 40 m/s, and what a static body pushes back with stays in the bodies as momentum that no
+// relax pass takes out (uncapped, scenes/two-box-stack.json's distance joint throws its 65 kg ball
+// 12 m up). A limit not reached is speculative: the row only stops the bodies from closing the
+// gap by more than it is in this step. Passed, it is fed back like an equality.
+void applyRowFeedback(JointRows& rows, std::size_t i, const JointFeedback& feedback, Real h) {
+    ConstraintRow& row = rows.rows[i];
+    const Real error = rows.error[i];
+    switch (rows.kind[i]) {
+        case JointRowKind::Free: return;
+        case JointRowKind::Spring: row.bias = -rows.softness[i].biasRate * error; return;
+        case JointRowKind::Limit:
+            if (error > 0) {
+                row.bias = -error / h;
+                rows.softness[i] = Softness{};
+                rows.fedBack[i] = false;
+                return;
+            }
+            break;  // passed: an equality
+        case JointRowKind::Equality: break;
+    }
+    Softness soft;
+    row.bias = 0;
+    if (feedback.kind == JointFeedback::Kind::Baumgarte) row.bias = -feedback.baumgarte * error / h;
+    if (feedback.kind == JointFeedback::Kind::Soft) {
+        soft = feedback.soft;
+        row.bias = -soft.biasRate * error;
+    }
+    const bool linear = !row.linearA.isZero(0) || !row.linearB.isZero(0);
+    const Real cap = linear ? kMaxJointPushOutSpeed : kMaxJointPushOutTurn;
+    row.bias = std::clamp(row.bias, -cap, cap);
+    rows.softness[i] = soft;
+    rows.fedBack[i] = true;
+}
+// [ch08-bias]
+
+void appendJointRows(JointRows& out, const World& world, int jointIndex, const std::vector<SolverBody>& bodies, Real h,
+                     const JointFeedback& feedback, bool carryImpulses) {
+    const JointDesc& joint = world.joints[static_cast<std::size_t>(jointIndex)];
+    if (!jointBodiesValid(world, joint) || !(h > 0)) {
+        ++out.invalidSkipped;
+        return;
+    }
+    const bool carried = carryImpulses && static_cast<std::size_t>(jointIndex) < world.jointImpulses.size();
+    appendJointRows(out, joint, jointIndex, jointFrame(world, joint), joint.bodyA, joint.bodyB, bodies, h, feedback,
+                    carried ? &world.jointImpulses[static_cast<std::size_t>(jointIndex)] : nullptr);
+}
+
+void appendJointRows(JointRows& out, const JointDesc& joint, int jointIndex, const JointFrame& frame, int rowBodyA,
+                     int rowBodyB, const std::vector<SolverBody>& bodies, Real h, const JointFeedback& feedback,
+                     const JointImpulses* carried) {
+    const std::size_t first = out.rows.size();
+    RowBuilder builder(out, feedback, h);
+    addRowsOf(builder, joint, frame, h);
     const auto rows = out.rows.begin() + static_cast<std::ptrdiff_t>(first);
     const std::size_t rowCount = out.rows.size() - first;
     if (!std::all_of(rows, out.rows.end(), finiteRow)) {
         out.rows.resize(first);
         out.softness.resize(first);
         out.fedBack.resize(first);
+        out.kind.resize(first);
+        out.error.resize(first);
         ++out.invalidSkipped;
         return;
     }
-    const bool carried = carryImpulses && static_cast<std::size_t>(jointIndex) < world.jointImpulses.size();
     for (std::size_t slot = 0; slot < rowCount; ++slot) {
         ConstraintRow& row = rows[static_cast<std::ptrdiff_t>(slot)];
+        row.bodyA = rowBodyA;  // the rows name the bodies as the caller's list holds them
+        row.bodyB = rowBodyB;
         row.effectiveMass = effectiveMass(row, bodies);
-        const Real impulse = carried && slot < JointImpulses::kSlots
-                                 ? world.jointImpulses[static_cast<std::size_t>(jointIndex)].slot[slot]
-                                 : Real(0);
+        const Real impulse = carried && slot < JointImpulses::kSlots ? carried->slot[slot] : Real(0);
         row.impulse = std::isfinite(impulse) ? std::clamp(impulse, row.lower, row.upper) : Real(0);
     }
 
@@ -285,25 +328,8 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
     set.joint = jointIndex;
     set.firstRow = static_cast<int>(first);
     set.rowCount = static_cast<int>(rowCount);
-    const bool pointJoint = joint.type != JointType::Distance && joint.type != JointType::Slider;
-    if (pointJoint) {
-        // [ch08-point-mass]
-        // K = (1/mA + 1/mB) 1 - [rA]x IA^-1 [rA]x - [rB]x IB^-1 [rB]x: how the anchors' relative
-        // velocity answers an impulse at them. A singular K (both bodies fixed) keeps the rows scalar.
-        const SolverBody& a = bodies[static_cast<std::size_t>(joint.bodyA)];
-        const SolverBody& b = bodies[static_cast<std::size_t>(joint.bodyB)];
-        const Mat3 armA = skew(frame.armA), armB = skew(frame.armB);
-        const Mat3 k = (a.inverseMass + b.inverseMass) * Mat3::Identity() - armA * a.inverseInertia * armA -
-                       armB * b.inverseInertia * armB;
-        // [ch08-point-mass]
-        const Real scale = k.norm();
-        const bool invertible = scale > 0 && std::abs(k.determinant()) > Real(1e-9) * scale * scale * scale;
-        const Mat3 inverse = invertible ? Mat3(k.inverse()) : Mat3::Zero();
-        set.pointBlock = invertible && inverse.allFinite();
-        set.pointMass = set.pointBlock ? inverse : Mat3::Zero();
-        set.pointArmA = frame.armA;
-        set.pointArmB = frame.armB;
-    }
+    if (joint.type != JointType::Distance && joint.type != JointType::Slider)
+        setPointBlock(set, frame, bodies[static_cast<std::size_t>(rowBodyA)], bodies[static_cast<std::size_t>(rowBodyB)]);
     out.joints.push_back(set);
 }
 

@@ -15,6 +15,7 @@
 
 #include "04_pgs/constraint_row.h"
 #include "06_manifolds/stabilisation.h"
+#include "08_joints/joint_frame.h"
 #include "world/world.h"
 
 #include <vector>
@@ -50,10 +51,20 @@ struct JointRowSet {
     Vec3 pointArmB = Vec3::Zero();
 };
 
+/// What a row's bias is made from (applyRowFeedback).
+enum class JointRowKind : char {
+    Equality,   // C = 0: the error fed back by the feedback's rule
+    Limit,      // C >= 0: speculative while open, fed back like an equality once passed
+    Spring,     // a distance spring: its own softness
+    Free,       // a motor, joint friction or an unused slot: the bias is a speed, not an error
+};
+
 struct JointRows {
     std::vector<ConstraintRow> rows;
     std::vector<Softness> softness;   // one per row
     std::vector<char> fedBack;        // one per row: its bias and softness are the feedback's (an equality)
+    std::vector<JointRowKind> kind;   // one per row
+    std::vector<Real> error;          // one per row: the position error C its bias comes from (0 for Free)
     std::vector<JointRowSet> joints;
     int invalidSkipped = 0;           // joints with bad bodies or non-finite data: left out
 };
@@ -63,6 +74,18 @@ struct JointRows {
 /// this step's bounds), zero otherwise.
 void appendJointRows(JointRows& out, const World& world, int jointIndex, const std::vector<SolverBody>& bodies, Real h,
                      const JointFeedback& feedback, bool carryImpulses);
+
+/// The same for a solve that keeps its own body list and impulses: the rows of `joint`
+/// (World::joints[jointIndex]) at `frame`, between the bodies `bodies` holds at rowBodyA and
+/// rowBodyB, starting from `carried` (nullptr: zero). The joint's bodies must be valid.
+void appendJointRows(JointRows& out, const JointDesc& joint, int jointIndex, const JointFrame& frame, int rowBodyA,
+                     int rowBodyB, const std::vector<SolverBody>& bodies, Real h, const JointFeedback& feedback,
+                     const JointImpulses* carried);
+
+/// Sets row i's bias, softness and fedBack from its kind and rows.error[i] by the feedback's rule
+/// for a step of h (what appendJointRows does for every row; a solve that moves the error without
+/// building the row again calls it too).
+void applyRowFeedback(JointRows& rows, std::size_t i, const JointFeedback& feedback, Real h);
 
 /// One Gauss-Seidel pass over one joint's rows: the point block first, then the scalar rows.
 void solveJointRows(JointRows& rows, const JointRowSet& set, std::vector<SolverBody>& bodies);

@@ -105,6 +105,8 @@ void JointConstraints::prepare(const World& world, const std::vector<SolverBody>
     rows_.rows.clear();
     rows_.softness.clear();
     rows_.fedBack.clear();
+    rows_.kind.clear();
+    rows_.error.clear();
     rows_.joints.clear();
     rows_.invalidSkipped = 0;
     JointFeedback feedback = jointFeedback(world.settings, h, feedback_);
@@ -112,16 +114,12 @@ void JointConstraints::prepare(const World& world, const std::vector<SolverBody>
     // The biased pass starts from last solve's impulses only with warm starting on; the relax pass
     // always starts from the impulses the biased pass applied.
     const bool carry = !positionFeedback || world.settings.warmStarting;
-    // The joints do not change within a solve, and seldom between frames: sorted again only when
-    // a joint's bodies, or whether they move, changed (a hand edit in chapter 9's debugger).
-    if (sweepStale(world)) {
-        sweep_ = jointSolveOrder(world, order_);
-    }
-    for (int jointIndex : sweep_) appendJointRows(rows_, world, jointIndex, bodies, h, feedback, carry);
+    for (int jointIndex : sweep_.order(world, order_))
+        appendJointRows(rows_, world, jointIndex, bodies, h, feedback, carry);
 }
 
-bool JointConstraints::sweepStale(const World& world) {
-    std::vector<int>& key = keyScratch_;
+const std::vector<int>& JointSweep::order(const World& world, JointOrder order) {
+    std::vector<int>& key = scratch_;
     key.clear();
     key.push_back(static_cast<int>(world.bodies.size()));
     const auto moves = [&](int body) {
@@ -130,9 +128,12 @@ bool JointConstraints::sweepStale(const World& world) {
     };
     for (const JointDesc& joint : world.joints)
         key.insert(key.end(), {joint.bodyA, joint.bodyB, moves(joint.bodyA), moves(joint.bodyB)});
-    if (key == sweepKey_) return false;  // never equal before the first: the key holds the body count
-    sweepKey_.swap(key);
-    return true;
+    // Never equal before the first: the key holds the body count.
+    if (key == key_ && order == keyOrder_) return sweep_;
+    key_.swap(key);
+    keyOrder_ = order;
+    sweep_ = jointSolveOrder(world, order);
+    return sweep_;
 }
 
 void JointConstraints::warmStart(std::vector<SolverBody>& bodies) {

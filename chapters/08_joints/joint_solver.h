@@ -35,6 +35,20 @@ constexpr JointOrder kDefaultJointOrder = JointOrder::GroundFirst;
 /// The joints' sweep order (indices into World::joints).
 std::vector<int> jointSolveOrder(const World& world, JointOrder order);
 
+/// jointSolveOrder kept from solve to solve: the joints do not change within a solve, and seldom
+/// between frames, so the order is found again only when a joint's bodies, or whether they move,
+/// changed (a hand edit in chapter 9's debugger).
+class JointSweep {
+public:
+    const std::vector<int>& order(const World& world, JointOrder order);
+
+private:
+    std::vector<int> sweep_;
+    std::vector<int> key_;       // what the order depends on: each joint's bodies, and which move
+    std::vector<int> scratch_;
+    JointOrder keyOrder_ = JointOrder::AsListed;
+};
+
 // [ch08-joint-softness]
 /// Joints are soft in the biased pass, whatever the contacts use: a spring-damper of a quarter of
 /// the (sub)step rate (150 Hz at 60 Hz with 10 substeps), damping ratio 2 (Box2D v3's). Rigid
@@ -68,15 +82,11 @@ public:
     const JointRows& rows() const { return rows_; }
 
 private:
-    bool sweepStale(const World& world);
-
     JointOrder order_;
     JointFeedback::Kind feedback_;
     bool relaxOnBiasedRows_ = false;
     Real biasedStep_ = 0;            // h of the biased prepare whose rows the next relax may take; 0: none
-    std::vector<int> sweep_;         // jointSolveOrder, found again only when sweepKey_ changes
-    std::vector<int> sweepKey_;      // what the order depends on: each joint's bodies, and which move
-    std::vector<int> keyScratch_;
+    JointSweep sweep_;
     JointRows rows_;
 };
 

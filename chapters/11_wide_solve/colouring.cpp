@@ -4,16 +4,16 @@ namespace stepwise {
 
 // [ch11-colouring]
 void colourContacts(const std::vector<int>& slotA, const std::vector<int>& slotB, int slotCount,
-                    std::vector<int>& colours, std::vector<std::uint64_t>& usedScratch) {
+                    std::vector<int>& colours, std::vector<std::uint64_t>& usedScratch, int firstColoured) {
     // One bit per (colour, slot): colour c holds slot s when bit s of row c is set.
     const std::size_t words = (static_cast<std::size_t>(slotCount) + 63) / 64;
     usedScratch.assign(words * kMaxColours, 0);
     colours.resize(slotA.size());
     auto used = [&](int colour, int slot) {
-        return slot != 0 && (usedScratch[colour * words + slot / 64] >> (slot % 64)) & 1u;
+        return slot >= firstColoured && (usedScratch[colour * words + slot / 64] >> (slot % 64)) & 1u;
     };
     auto take = [&](int colour, int slot) {
-        if (slot != 0) usedScratch[colour * words + slot / 64] |= std::uint64_t(1) << (slot % 64);
+        if (slot >= firstColoured) usedScratch[colour * words + slot / 64] |= std::uint64_t(1) << (slot % 64);
     };
     for (std::size_t i = 0; i < slotA.size(); ++i) {
         colours[i] = -1;

@@ -14,9 +14,10 @@ constexpr int kMaxColours = 24;
 
 /// The colour of each contact (greedy, in the given order, lowest free colour first: the same input
 /// always gives the same colours), or -1 for the overflow. `slotA`/`slotB` are the contacts'
-/// solver slots; slot 0 (static, asleep) never blocks a colour, any number of contacts may share it.
+/// solver slots; a slot below `firstColoured` (slot 0: static and asleep; then the kinematic bodies)
+/// never blocks a colour: no row changes its velocity, so any number of contacts may share it.
 /// `usedScratch` keeps the per-colour bit sets between calls, so a steady scene allocates nothing.
 void colourContacts(const std::vector<int>& slotA, const std::vector<int>& slotB, int slotCount,
-                    std::vector<int>& colours, std::vector<std::uint64_t>& usedScratch);
+                    std::vector<int>& colours, std::vector<std::uint64_t>& usedScratch, int firstColoured = 1);
 
 }  // namespace stepwise

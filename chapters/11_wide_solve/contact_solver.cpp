@@ -7,6 +7,7 @@
 #include "06_manifolds/stabilisation.h"
 #include "10_skip_work/sleep.h"
 #include "11_wide_solve/contact_kernels.h"
+#include "11_wide_solve/joint_pass.h"
 #include "11_wide_solve/solve_steps.h"
 #include "11_wide_solve/wide_solver.h"
 
@@ -28,15 +29,9 @@ bool fastSolveApplies(const World& world, std::string* why) {
     if (settings.solver != SolverKind::GaussSeidel) return refuse("the solver is Jacobi");
     if (settings.gyroscopic == GyroscopicMode::Explicit) return refuse("the gyroscopic term is explicit");
     if (settings.integrator != IntegratorKind::SemiImplicitEuler) return refuse("the integrator is not semi-implicit Euler");
-    if (!world.joints.empty()) return refuse("the scene has joints");
-    if (!world.springs.empty()) return refuse("the scene has springs");
-    if (!world.dampings.empty()) return refuse("the scene has dampings");
-    for (const Motion& motion : world.motions) {
+    for (const Motion& motion : world.motions)
         if (motion.integrator && *motion.integrator != IntegratorKind::SemiImplicitEuler)
             return refuse("a body uses another integrator");
-        if (world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Kinematic)
-            return refuse("the scene has kinematic bodies");
-    }
     return true;
 }
 
@@ -54,16 +49,10 @@ bool validContactRecord(const World& world, const Contact& contact) {
 
 namespace {
 
-bool allAwakeDynamic(const World& world) {
-    return std::all_of(world.motions.begin(), world.motions.end(), [&](const Motion& motion) {
-        return !motion.asleep && world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Dynamic;
-    });
+bool noneAsleep(const World& world) {
+    return std::none_of(world.motions.begin(), world.motions.end(), [](const Motion& motion) { return motion.asleep; });
 }
 
-bool anyAwakeDynamic(const World& world) {
-    return std::any_of(world.motions.begin(), world.motions.end(),
-                       [&](const Motion& motion) { return isAwakeDynamic(world, motion.bodyIndex); });
-}
 
 }  // namespace
 
@@ -79,9 +68,8 @@ void collectSolvableContacts(const World& world, std::vector<int>& order) {
 }
 
 bool fastSolvePlans(const World& world, Real dt) {
-    if (!(dt > 0) || !std::isfinite(dt) || everyBodyAsleep(world)) return false;
-    if (world.contacts.empty() && allAwakeDynamic(world)) return true;  // free flight
-    return anyAwakeDynamic(world);
+    // Something awake moves: a dynamic body, or a kinematic one that the substeps carry.
+    return dt > 0 && std::isfinite(dt) && !everyBodyAsleep(world);
 }
 
 // [ch11-plan-scene-count]
@@ -195,8 +183,12 @@ void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolve
     FastSolveStats& stats = scratch.stats;
     SolverBodyState* states = scratch.bodies.states.data();
     const Real h = params.substep;
+    JointPass* joints = scratch.joints && needsJointPass(world) ? scratch.joints.get() : nullptr;
+    const bool forces = joints && (!world.springs.empty() || !world.dampings.empty());
     for (int substep = 0; substep < substeps; ++substep) {
-        integrateVelocities(world, scratch.bodies, h, substep == 0, path);
+        if (forces) evaluateSubstepForces(world, scratch.bodies, *joints);
+        integrateVelocities(world, scratch.bodies, h, substep == 0, path, forces ? &joints->forces : nullptr);
+        if (joints) buildJointRows(world, scratch.bodies, h, *joints);
         // [ch11-collisions-first]
         // Collisions first, on the speeds before the warm start adds last substep's pushes.
         for (int sweep = 0; collisions && sweep < kCollisionSweeps; ++sweep) {
@@ -206,6 +198,11 @@ void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolve
         }
         // [ch11-collisions-first]
         stats.ms(SolvePhase::Integrate) += clock.lap();
+        // [ch11-joints-first]
+        // Joints before contacts in every pass (Box2D v3's order): the contacts, solved last,
+        // have the last word on penetration, which a joint's spring may trade for its own error.
+        if (joints) warmStartJoints(*joints, states, world.settings.warmStarting);
+        // [ch11-joints-first]
         if (!world.settings.warmStarting) {
             resetImpulses(scratch.wideBlocks);
             resetImpulses(scratch.scalarBlocks);
@@ -214,13 +211,16 @@ void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolve
             warmStartAll(scratch.scalarBlocks, states);
         }
         stats.ms(SolvePhase::WarmStart) += clock.lap();
+        if (joints) solveJoints(*joints, states, /*relax=*/false);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
         solveAll(scratch.scalarBlocks, states, params, true);
         stats.ms(SolvePhase::Solve) += clock.lap();
         integratePositions(scratch.bodies, h, path);
         stats.ms(SolvePhase::Integrate) += clock.lap();
+        if (joints) solveJoints(*joints, states, /*relax=*/true);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
         solveAll(scratch.scalarBlocks, states, params, false);
+        if (joints) keepJointImpulses(*joints);
         stats.ms(SolvePhase::Relax) += clock.lap();
     }
 }
@@ -272,19 +272,21 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     const IterationPlan& plan = world.step.iterationPlan;  // this frame's (the plan stage's)
     const int substeps = std::max(1, plan.iterations);
     const Real h = dt / static_cast<Real>(substeps);
-    if (world.contacts.empty() && allAwakeDynamic(world)) {
-        // Nothing touches: no solver state to gather, the bodies move on their own.
+    const bool linked = needsJointPass(world);  // joints, springs or drag
+    if (world.contacts.empty() && noneAsleep(world) && !linked) {
+        // Nothing touches: no solver state to gather, the bodies move on their own (kinematic
+        // ones by chapter 1's step).
         stats.bodies = static_cast<int>(world.motions.size());
         moveFreeBodies(world, h, substeps);
         return finishFrame(world, SolverStats{});
     }
     prepareBodies(world, scratch.bodies);
-    stats.bodies = static_cast<int>(scratch.bodies.states.size()) - 1;
-    if (stats.bodies == 0) return finishFrame(world, SolverStats{});  // nothing that moves
+    stats.bodies = static_cast<int>(scratch.bodies.states.size()) - scratch.bodies.firstDynamic;
+    if (stats.bodies == 0 && scratch.bodies.firstDynamic == 1) return finishFrame(world, SolverStats{});  // nothing moves
     SolverStats solverStats = gatherContacts(world, scratch);
     // Every body moves in the substeps, touching or not (chapter 6's solve says why); nothing
     // touches and nothing sleeps: the bodies fly free.
-    if (stats.manifolds == 0 && stats.bodies == static_cast<int>(world.motions.size())) {
+    if (stats.manifolds == 0 && !linked && stats.bodies == static_cast<int>(world.motions.size())) {
         moveFreeBodies(world, h, substeps);
         return finishFrame(world, solverStats);
     }
@@ -294,6 +296,10 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         params.carryScale = static_cast<Real>(plan.previousIterations) / static_cast<Real>(substeps);
     const bool extended = scratch.extension && plan.shockPropagation;
     buildBlocks(world, scratch, params, path, extended);
+    if (linked) {
+        if (!scratch.joints) scratch.joints = std::make_shared<JointPass>();
+        prepareJointPass(world, scratch.bodies, params.carryScale, *scratch.joints);
+    }
     stats.ms(SolvePhase::Prepare) += clock.lap();
     // Scenes without restitution (most) have no collisions to sweep.
     const bool collisions = anyRestitution(scratch.wideBlocks) || anyRestitution(scratch.scalarBlocks);
@@ -307,6 +313,11 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     }
     writeBodiesBack(world, scratch.bodies);
     storeBlocks(scratch, world);
+    if (linked) {
+        storeJointImpulses(*scratch.joints, world);
+        solverStats.jointRows = static_cast<int>(scratch.joints->rows.rows.size());
+        solverStats.jointsSkipped = scratch.joints->rows.invalidSkipped;
+    }
     stats.ms(SolvePhase::Store) += clock.lap();
     solverStats.contactPoints = stats.points;
     solverStats.rows = stats.points + 3 * stats.manifolds;  // normal rows, and three friction rows per manifold

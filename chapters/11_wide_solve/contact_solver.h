@@ -49,6 +49,7 @@ struct FastSolveStats {
 void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame);
 
 struct ContactSolverScratch;
+struct JointPass;
 
 /// What a later stage adds to a frame's solve (chapter 12's shock sweep): a pass over some of the
 /// frame's lanes after the substeps. The solve calls it only in a frame whose plan asks for it
@@ -82,13 +83,14 @@ struct ContactSolverScratch {
     std::vector<int> laneGroupOf;
     std::vector<std::uint8_t> laneHeldIsA;
     std::shared_ptr<SolveExtension> extension;  // none: the plain solve
+    std::shared_ptr<JointPass> joints;          // joints, springs and drag (joint_pass.h); made when a scene has them
     FastSolveStats stats;
     bool timePhases = false;  // fill stats.phaseMs (the bench's profile); off, the solve reads no clock
 };
 
 /// Whether the fast solve can take this world, solving what chapter 6/8's solve would: relax or soft
-/// step with Gauss-Seidel, semi-implicit Euler everywhere, no springs, dampings, joints or kinematic
-/// bodies, gyroscopic off or implicit. Otherwise `why` says what stands in the way.
+/// step with Gauss-Seidel, semi-implicit Euler everywhere, gyroscopic off or implicit. Joints,
+/// springs, drag and kinematic bodies it takes. Otherwise `why` says what stands in the way.
 bool fastSolveApplies(const World& world, std::string* why = nullptr);
 
 /// Whether a contact record is one the solve can use: both bodies named, one to four finite points,
@@ -99,8 +101,7 @@ bool solvableContact(const World& world, const Contact& contact);
 /// contact order: what the planner reads (chapter 12), the same list the solve builds.
 void collectSolvableContacts(const World& world, std::vector<int>& order);
 
-/// Whether a fast solve of `dt` has anything to plan this frame: not everything asleep, and
-/// some body awake and dynamic (or nothing at all to solve and nothing to move).
+/// Whether a fast solve of `dt` has anything to plan this frame: not everything asleep.
 bool fastSolvePlans(const World& world, Real dt);
 
 /// The plan stage of a solve without a planner: the scene's count, every frame.

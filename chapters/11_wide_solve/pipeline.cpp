@@ -36,8 +36,12 @@ Pipeline makeChapter11Pipeline(const World& world, const SkipWorkOptions& skip, 
         solveFast(stepWorld, dt, path, *scratch);
         if (profile) addPhaseTimes(*profile, scratch->stats);
     };
-    pipeline.setPlanNote(stage_group::kSolve, std::string(toString(wide.solverPath)) +
-                                                  ": no joints, springs, dampings or kinematic bodies");
+    std::string rows = std::string(toString(wide.solverPath)) + ": contacts coloured, " +
+                       (wide.solverPath == SolverPath::Wide ? std::to_string(kWideLanes) + " at a time" : std::string("one at a time"));
+    if (!world.joints.empty())
+        rows += "; " + std::to_string(world.joints.size()) + " joint(s) one at a time in the same substeps (chapter 8's rows)";
+    if (!world.springs.empty() || !world.dampings.empty()) rows += "; springs and drag as forces every substep";
+    pipeline.setPlanNote(stage_group::kSolve, rows);
     // The solve skips sleepers itself (they take slot 0, with everything that does not move).
     pipeline.remove(stageName(stage_group::kSleep, "hold"));
     pipeline.remove(stageName(stage_group::kSleep, "release"));

@@ -86,7 +86,7 @@ void fillLane(ManifoldBlock<N>& block, LaneInputs<N>& inputs, int lane, const Wo
     block.inverseMassB[lane] = infoB.inverseMass;
     setLane(block.inverseInertiaA, lane, infoA.inverseInertia);
     setLane(block.inverseInertiaB, lane, infoB.inverseInertia);
-    const bool againstStatic = slotA == 0 || slotB == 0;
+    const bool againstStatic = slotA < bodies.firstDynamic || slotB < bodies.firstDynamic;  // static or kinematic
     block.biasRate[lane] = againstStatic ? params.staticBiasRate : params.dynamicBiasRate;
     block.massScale[lane] = againstStatic ? params.staticMassScale : params.dynamicMassScale;
     block.impulseScale[lane] = againstStatic ? params.staticImpulseScale : params.dynamicImpulseScale;
@@ -179,7 +179,7 @@ void storeBlock(const ManifoldBlock<N>& block, World& world) {
 /// two contacts on, the wide block is as fast or faster.
 std::array<int, kMaxColours> colourForBlocks(ContactSolverScratch& scratch) {
     colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(scratch.bodies.states.size()), scratch.colours,
-                   scratch.colourBits);
+                   scratch.colourBits, scratch.bodies.firstDynamic);
     std::array<int, kMaxColours> counts{};
     for (const int colour : scratch.colours)
         if (colour >= 0) ++counts[static_cast<std::size_t>(colour)];
@@ -231,8 +231,9 @@ void setLaneGroup(ManifoldBlock<N>& block, int lane, const ContactSolverScratch&
 }  // namespace
 
 bool usableContact(const World& world, const Contact& contact, const SolverBodies& bodies) {
-    return validContactRecord(world, contact) && (bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)] != 0 ||
-                                                   bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)] != 0);
+    return validContactRecord(world, contact) &&
+           (bodies.slotOfBody[static_cast<std::size_t>(contact.bodyA)] >= bodies.firstDynamic ||
+            bodies.slotOfBody[static_cast<std::size_t>(contact.bodyB)] >= bodies.firstDynamic);
 }
 
 // [ch11-wide-blocks]

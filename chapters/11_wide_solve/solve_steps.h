@@ -2,16 +2,23 @@
 // The steps of chapter 11's solve, shared by its files (contact_solver.cpp runs them in order):
 // gathering the moving bodies, filling the blocks, integrating, storing.
 
+#include "01_integrators/forces.h"
 #include "11_wide_solve/contact_solver.h"
+
+#include <vector>
 
 namespace stepwise {
 
-/// Slot 0 for everything that does not move, then one slot per awake dynamic body, in motion order.
+/// Slot 0 for everything that does not move, then one slot per kinematic body and one per awake
+/// dynamic body, each in motion order.
 void prepareBodies(const World& world, SolverBodies& bodies);
 /// The rows' feedback and softness for substeps of h (chapter 6's relax or soft step).
 ContactSolveParams solveParams(const Settings& settings, Real h);
-/// Chapter 1's velocity step for the moving bodies (gravity; the user's force in the first substep).
-void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep, SolverPath path);
+/// Chapter 1's velocity step for the dynamic bodies (gravity; the user's force in the first
+/// substep). With `forces` (per motion: chapter 1's evaluateForces at this substep's state, which
+/// a scene with springs or drag needs), their force and torque instead of gravity alone.
+void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep, SolverPath path,
+                         const std::vector<Wrench>* forces = nullptr);
 /// Chapter 1's position step for the moving bodies.
 void integratePositions(SolverBodies& bodies, Real h, SolverPath path);
 /// Poses and velocities back into the World.

@@ -17,37 +17,50 @@
 namespace stepwise {
 
 // [ch11-prepare-bodies]
+namespace {
+
+void addSlot(const World& world, const Motion& motion, SolverBodies& bodies) {
+    const Body& body = world.bodies[static_cast<std::size_t>(motion.bodyIndex)];
+    const bool dynamic = body.type == BodyType::Dynamic;
+    bodies.slotOfBody[static_cast<std::size_t>(motion.bodyIndex)] = static_cast<int>(bodies.states.size());
+    SolverBodyState state;
+    for (int k = 0; k < 3; ++k) {
+        state.linearVelocity[k] = motion.linearVelocity[k];
+        state.angularVelocity[k] = motion.angularVelocity[k];
+    }
+    bodies.states.push_back(state);
+    SolverBodyInfo info;
+    info.bodyIndex = motion.bodyIndex;
+    info.inverseMass = dynamic ? motion.inverseMass : Real(0);  // a kinematic body: infinitely heavy
+    info.inverseInertia = dynamic ? worldInverseInertia(body, motion) : Mat3::Zero();
+    info.startCenter = body.transform.apply(motion.localCenter);
+    info.startRotation = body.transform.rotation;
+    const Mat3& inertia = motion.inertiaLocal;
+    if (dynamic && !(inertia - Mat3::Identity() * inertia(0, 0)).isZero(0)) {
+        const Quat& start = info.startRotation;
+        bodies.gyroscopic.push_back(GyroscopicBody{
+            static_cast<int>(bodies.info.size()),
+            {start.x(), start.y(), start.z(), start.w()},
+            {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)}});
+    }
+    bodies.info.push_back(info);
+}
+
+}  // namespace
+
 void prepareBodies(const World& world, SolverBodies& bodies) {
     bodies.states.assign(1, SolverBodyState{});  // slot 0: everything that does not move
     bodies.info.assign(1, SolverBodyInfo{});
     bodies.slotOfBody.assign(world.bodies.size(), 0);
     bodies.gyroscopic.clear();
-    for (const Motion& motion : world.motions) {
-        const Body& body = world.bodies[static_cast<std::size_t>(motion.bodyIndex)];
-        if (body.type != BodyType::Dynamic || motion.asleep) continue;
-        bodies.slotOfBody[static_cast<std::size_t>(motion.bodyIndex)] = static_cast<int>(bodies.states.size());
-        SolverBodyState state;
-        for (int k = 0; k < 3; ++k) {
-            state.linearVelocity[k] = motion.linearVelocity[k];
-            state.angularVelocity[k] = motion.angularVelocity[k];
-        }
-        bodies.states.push_back(state);
-        SolverBodyInfo info;
-        info.bodyIndex = motion.bodyIndex;
-        info.inverseMass = motion.inverseMass;
-        info.inverseInertia = worldInverseInertia(body, motion);
-        info.startCenter = body.transform.apply(motion.localCenter);
-        info.startRotation = body.transform.rotation;
-        const Mat3& inertia = motion.inertiaLocal;
-        if (!(inertia - Mat3::Identity() * inertia(0, 0)).isZero(0)) {
-            const Quat& start = info.startRotation;
-            bodies.gyroscopic.push_back(GyroscopicBody{
-                static_cast<int>(bodies.info.size()),
-                {start.x(), start.y(), start.z(), start.w()},
-                {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)}});
-        }
-        bodies.info.push_back(info);
-    }
+    // The kinematic bodies first: below firstDynamic, a slot is one no row can push.
+    for (const Motion& motion : world.motions)
+        if (world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Kinematic && !motion.asleep)
+            addSlot(world, motion, bodies);
+    bodies.firstDynamic = static_cast<int>(bodies.states.size());
+    for (const Motion& motion : world.motions)
+        if (world.bodies[static_cast<std::size_t>(motion.bodyIndex)].type == BodyType::Dynamic && !motion.asleep)
+            addSlot(world, motion, bodies);
 }
 // [ch11-prepare-bodies]
 
@@ -75,7 +88,8 @@ ContactSolveParams solveParams(const Settings& settings, Real h) {
     return params;
 }
 
-void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep, SolverPath path) {
+void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep, SolverPath path,
+                         const std::vector<Wrench>* forces) {
     const Vec3 gravity = world.settings.gravity;
     // Chapter 1's order: the gyroscopic step, then the torque (each body's own; bodies do not interact here).
     if (world.settings.gyroscopic == GyroscopicMode::Implicit) {
@@ -85,10 +99,16 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
             for (const GyroscopicBody& body : bodies.gyroscopic) gyroscopicStepPack<1>(bodies.states.data(), &body, h);
         }
     }
-    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
+    for (std::size_t slot = static_cast<std::size_t>(bodies.firstDynamic); slot < bodies.states.size(); ++slot) {
         SolverBodyState& state = bodies.states[slot];
         const SolverBodyInfo& info = bodies.info[slot];
         Vec3 acceleration = gravity;
+        if (forces) {  // springs and drag too: chapter 1's forces at this substep's state, gravity among them
+            const Wrench& wrench = (*forces)[world.bodies[static_cast<std::size_t>(info.bodyIndex)].motionIndex];
+            acceleration = info.inverseMass * wrench.force;
+            const Vec3 spin = h * (info.inverseInertia * wrench.torque);
+            for (int k = 0; k < 3; ++k) state.angularVelocity[k] += spin[k];
+        }
         if (firstSubstep) {  // a user's push, held for the frame's first substep as chapter 6 does
             Motion& motion = *world.motionOf(info.bodyIndex);
             acceleration += info.inverseMass * motion.force;

@@ -48,8 +48,11 @@ struct GyroscopicBody {
 };
 
 /// The solver's bodies. Slot 0 is every static (and sleeping) body at once: zero velocity, zero
-/// inverse mass. Slots 1.. are the awake dynamic bodies.
+/// inverse mass. Slots 1 to firstDynamic - 1 are the kinematic bodies: zero inverse mass, but
+/// their own velocity, which the rows read and the substeps move them by. Slots from firstDynamic
+/// on are the awake dynamic bodies.
 struct SolverBodies {
+    int firstDynamic = 1;
     std::vector<SolverBodyState> states;
     std::vector<SolverBodyInfo> info;
     std::vector<int> slotOfBody;        // per World body; 0 when it does not move in this solve

@@ -3,7 +3,10 @@
 #include "12_planner/benches.h"
 
 #include "12_planner/chapter.h"
+#include "08_joints/builders.h"
+#include "08_joints/scenes.h"
 #include "10_skip_work/scenes.h"
+#include "11_wide_solve/scenes.h"
 #include "app/bench_util.h"
 #include "app/peer.h"
 #include "world/state_hash.h"
@@ -11,6 +14,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <stdexcept>
 #include <ostream>
 
 namespace stepwise {
@@ -28,7 +33,7 @@ std::vector<Configuration> configurations(bool withPeer) {
     std::vector<Configuration> list;
     SpeedOptions all;
     all.sleeping = false;  // the targets are timed awake; sleeping has its own measurement
-    list.push_back({"chapter 10", all, false});
+    list.push_back({"fast step", all, false});
     SpeedOptions scalar = all;
     scalar.solverPath = SolverPath::Scalar;
     list.push_back({"scalar solve", scalar, false});
@@ -56,6 +61,7 @@ struct Measurement {
     Real maxSideways = 0;   // m, largest horizontal move of a dynamic body from its start
     Real lowest = 0;        // m, lowest centre of a dynamic body (below the ground: tunnelled)
     Real maxPenetration = 0;
+    JointErrorSummary jointError;  // largest over the last second (scenes with joints)
     int sleeping = 0;
     FastSolveStats solvePhases;  // ms per timed frame in each phase of the fast solve
 };
@@ -78,14 +84,21 @@ void measurePoses(const World& start, const std::vector<Transform>& poses, Measu
 /// alternate with its own, runBeside), measuring as it goes.
 class EngineRun {
 public:
-    EngineRun(const World& start, SpeedOptions options, long timedFrom)
+    EngineRun(const World& start, SpeedOptions options, long frames, long timedFrom)
         : start_(start), world_(start), options_(withProfile(options)), pipeline_(makeChapter12Pipeline(world_, options_)),
-          timedFrom_(timedFrom) {}
+          timedFrom_(timedFrom), lastFrame_(frames - 1), allJoints_(start.joints.size()) {
+        std::iota(allJoints_.begin(), allJoints_.end(), 0);
+    }
 
     void step(long frame) {
         if (frame == timedFrom_) *options_.profile = FastSolveStats{};
         pipeline_.step(world_);
         ++frames_;
+        if (!world_.joints.empty() && frame + 60 >= lastFrame_) {  // the last second: settled joints
+            const JointErrorSummary error = largestJointError(world_, allJoints_);
+            measured_.jointError.position = std::max(measured_.jointError.position, error.position);
+            measured_.jointError.angle = std::max(measured_.jointError.angle, error.angle);
+        }
         if (frame < timedFrom_) return;
         stepMs_.push_back(pipeline_.lastStepMs());
         if (!pipeline_.lastStepTimedStages()) return;  // stages are timed one frame in eight
@@ -121,6 +134,8 @@ private:
     SpeedOptions options_;
     Pipeline pipeline_;
     long timedFrom_;
+    long lastFrame_;
+    std::vector<int> allJoints_;
     long frames_ = 0;
     long stageTimedFrames_ = 0;
     std::vector<double> stepMs_;
@@ -128,7 +143,7 @@ private:
 };
 
 Measurement runEngine(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
-    EngineRun run(start, options, timedFrom);
+    EngineRun run(start, options, frames, timedFrom);
     for (long frame = 0; frame < frames; ++frame) run.step(frame);
     return run.finish();
 }
@@ -167,7 +182,7 @@ Measurement peerMeasurement(const World& start, const PeerRun& run, long frames,
 constexpr long kFramesATurn = 30;
 
 std::pair<Measurement, Measurement> runBeside(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
-    EngineRun engine(start, options, timedFrom);
+    EngineRun engine(start, options, frames, timedFrom);
     long engineFrames = 0;
     const PeerRun peer = peerEngine().run(start, frames, [&](long peerFrame) {
         if ((peerFrame + 1) % kFramesATurn != 0 && peerFrame + 1 != frames) return;
@@ -181,6 +196,7 @@ struct BenchScene {
     World world;
     long frames;
     long timedFrom;     // frames before it are not timed (the pile's first contacts)
+    bool joints = false;  // timed by the fast step, its scalar solve and chapter 8's solve only
 };
 
 /// Every scene through every configuration (the peer beside the first): the main table and the
@@ -193,17 +209,26 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
         std::vector<std::pair<const Configuration*, Measurement>> results(list.size());
         for (std::size_t i = 0; i < list.size(); ++i) {
             const Configuration& configuration = list[i];
-            if (configuration.peer) continue;  // beside chapter 10 (below)
+            if (configuration.peer) continue;  // beside the fast step (below)
+            const bool jointScene = configuration.options.fastSolve && configuration.options.solverPath == SolverPath::Wide;
+            if (scene.joints && i > 0 && jointScene) continue;  // the contact optimisations: the contact scenes'
             if (i == 0 && withPeer) {
-                auto [engine, peer] = runBeside(scene.world, configuration.options, scene.frames, scene.timedFrom);
-                results[0] = {&configuration, engine};
-                results.back() = {&list.back(), peer};
+                try {
+                    auto [engine, peer] = runBeside(scene.world, configuration.options, scene.frames, scene.timedFrom);
+                    results[0] = {&configuration, engine};
+                    results.back() = {&list.back(), peer};
+                } catch (const std::runtime_error& refused) {  // a joint or spring the peer has not
+                    bench.out() << "bench speed: " << scene.name << ": the peer refuses the scene: " << refused.what() << "\n";
+                    results[0] = {&configuration, runEngine(scene.world, configuration.options, scene.frames, scene.timedFrom)};
+                }
                 bench.progress().advance();
-            } else {
-                // Chapter 8's solve is slow on thousands of bodies: a second of simulated time measures it.
-                const long frames = configuration.options.fastSolve ? scene.frames : std::min<long>(scene.frames, 60);
-                results[i] = {&configuration, runEngine(scene.world, configuration.options, frames, scene.timedFrom)};
+                bench.progress().advance();
+                continue;
             }
+            // Chapter 8's solve is slow on thousands of bodies: a second of simulated time measures it
+            // (all of a joint scene's: its error is measured over the last second).
+            const long frames = configuration.options.fastSolve || scene.joints ? scene.frames : std::min<long>(scene.frames, 60);
+            results[i] = {&configuration, runEngine(scene.world, configuration.options, frames, scene.timedFrom)};
             bench.progress().advance();
         }
         const FastSolveStats& phases = results.front().second.solvePhases;
@@ -213,6 +238,7 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
         const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
         for (const auto& result : results) {
             const Configuration* configuration = result.first;
+            if (!configuration) continue;  // not run on this scene
             const Measurement& m = result.second;
             auto stage = [&](const char* group) {
                 const auto found = m.stageMs.find(group);
@@ -223,7 +249,9 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
                           stage(stage_group::kBroadphase), stage(stage_group::kNarrowphase), stage(stage_group::kSolve),
                           formatNumber(1e6 * m.stepMs.median / bodies), formatNumber(m.maxSideways),
                           formatNumber(m.lowest), configuration->peer ? "" : formatNumber(m.maxPenetration),
-                          withPeer ? formatNumber(peerMs / m.stepMs.median, 3) : ""});
+                          scene.joints && !configuration->peer ? formatNumber(m.jointError.position) : "",
+                          scene.joints && !configuration->peer ? formatNumber(m.jointError.angle) : "",
+                          peerMs > 0 ? formatNumber(peerMs / m.stepMs.median, 3) : ""});
         }
     }
     bench.progress().endStage();
@@ -239,9 +267,11 @@ void measureSleep(BenchRun& bench, CsvTable& sleepTable) {
     // moving body keeps its whole island awake. The pile of boxes and hulls alone is measured beside
     // it. A settled pile still has its late slides (a body that creeps, then tips), so the frame at
     // which it has all slept varies from build to build: it is measured, not assumed.
-    bench.progress().stage("settled piles, asleep and awake", 4);
-    for (bool roundShapes : {true, false}) {
-        const World pile = buildMixedPile(quick ? 300 : 2000, roundShapes);
+    bench.progress().stage("settled piles, asleep and awake", 6);
+    // The ragdolls with their joint friction, as the chapter builds them.
+    const std::vector<World> piles = {buildMixedPile(quick ? 300 : 2000, true), buildMixedPile(quick ? 300 : 2000, false),
+                                      buildRagdollField(quick ? 20 : 100)};
+    for (const World& pile : piles) {
         const long settle = framesUntilAsleep(pile, quick ? 600 : 3600);
         SpeedOptions asleep, awake;
         awake.sleeping = false;
@@ -325,12 +355,23 @@ void measureSpeed(BenchRun& bench) {
     scenes.push_back({"pyramid 100 rows", buildPyramidRow(1, quick ? 30 : 100), quick ? 60 : 600, 0});
     scenes.push_back({"ten 20-row pyramids", buildPyramidRow(quick ? 3 : 10, 20), quick ? 60 : 600, 0});
     scenes.push_back({"mixed pile", buildMixedPile(quick ? 300 : 2000), quick ? 120 : 600, 0});
+    // Joints, springs and kinematic bodies: chapter 8's scenes, and a field of ragdolls without
+    // joint friction (the peer's cone-twist has none).
+    scenes.push_back({"ragdoll pile", buildRagdollPile(10), quick ? 120 : 600, 0, true});
+    World chain;
+    ChainSpec swinging;
+    swinging.direction = Vec3(1, 0, 0);
+    addChain(chain, swinging);
+    chain.name = "chain-20";
+    scenes.push_back({"20-link chain", chain, quick ? 120 : 600, 0, true});
+    scenes.push_back({"joints sandbox", buildJointsSandbox(), quick ? 120 : 600, 0, true});
+    scenes.push_back({"100 ragdolls", buildRagdollField(quick ? 20 : 100, 0), quick ? 120 : 600, 0, true});
     for (BenchScene& scene : scenes) scene.world.settings.sleeping = false;
     // [ch12-bench-scenes]
 
     CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
                     "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
-                    "x_faster_than_peer"});
+                    "joint_error_m", "joint_error_rad", "x_faster_than_peer"});
     // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
     CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
                       "relax_ms", "store_ms"});

@@ -300,4 +300,56 @@ int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& c
     return iterations;
 }
 
+// [ch12-linked-plan]
+int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
+                            StackSearch& search) {
+    const bool linked = !world.joints.empty();
+    const int contacts = plannedIterations(world, dt, contactOrder, plan, search, /*shockAllowed=*/!linked);
+    const Settings& settings = world.settings;
+    if (!linked || !settings.planIterations) return contacts;
+    const int scene = std::max(1, settings.solverIterations);
+    const Real perMeasuredFrame = dt / kMeasuredFrame;
+    const int most = static_cast<int>(std::ceil(Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame) - Real(1e-3)));
+    // What hangs from the world by joints sags by its springs' give, which goes as the substep's
+    // square (the spring is at most a quarter of the substep rate) and as the chain's depth: the
+    // count that holds a chain of that depth to kHeldChainSag.
+    int wanted = 1;
+    static const std::vector<int> noContacts;
+    const int hanging = supportDepth(world, noContacts, search, /*withJoints=*/true);
+    if (hanging > 0) {
+        const Real depths = static_cast<Real>(hanging) / static_cast<Real>(kPlainChainDepth);
+        const Real substeps = Real(scene) * std::sqrt(depths * kPlainChainSag / kHeldChainSag) * perMeasuredFrame;
+        wanted = static_cast<int>(std::ceil(substeps - Real(1e-3)));
+    }
+    Real ratio = 1;
+    bool bodyToBody = false;  // a joint between two dynamic bodies
+    for (const JointDesc& joint : world.joints) {
+        const Motion* a = joint.bodyA >= 0 ? world.motionOf(joint.bodyA) : nullptr;
+        const Motion* b = joint.bodyB >= 0 ? world.motionOf(joint.bodyB) : nullptr;
+        if (!a || !b || !(a->mass > 0) || !(b->mass > 0)) continue;
+        if (world.bodies[static_cast<std::size_t>(joint.bodyA)].type != BodyType::Dynamic ||
+            world.bodies[static_cast<std::size_t>(joint.bodyB)].type != BodyType::Dynamic)
+            continue;
+        bodyToBody = bodyToBody || !a->asleep || !b->asleep;
+        ratio = std::max(ratio, std::max(a->mass, b->mass) / std::min(a->mass, b->mass));
+    }
+    if (ratio > kPlainMassRatio)
+        wanted = std::max(wanted, static_cast<int>(std::ceil(Real(scene) * std::sqrt(ratio / kPlainMassRatio) *
+                                                              perMeasuredFrame - Real(1e-3))));
+    // Bodies joined to bodies pass loads through their joints as a stack does, in the air as on
+    // the ground (a ragdoll's limbs swing its trunk): the scene's count.
+    const int depth = supportDepth(world, contactOrder, search, /*withJoints=*/true);
+    if (bodyToBody || depth > 1) wanted = std::max(wanted, scene);
+    const int iterations = std::max(contacts, std::min(most, wanted));
+    plan.massRatio = std::max(plan.massRatio, ratio);
+    plan.largestRatio = std::max(plan.largestRatio, plan.massRatio);
+    plan.stackDepth = std::max(plan.stackDepth, depth);
+    plan.deepestStack = std::max(plan.deepestStack, plan.stackDepth);
+    plan.iterations = iterations;
+    plan.mostIterations = std::max(plan.mostIterations, iterations);
+    plan.fewestIterations = std::min(plan.fewestIterations, iterations);
+    return iterations;
+}
+// [ch12-linked-plan]
+
 }  // namespace stepwise

@@ -45,6 +45,15 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
 int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
                       StackSearch& search, bool shockAllowed = true);
 
+/// plannedIterations for a scene with joints, solved in the same substeps as the contacts
+/// (chapter 11's joint pass): the contacts' count, and no fewer than the joints need: as many as
+/// hold what hangs from the world by joints to kHeldChainSag, the scene's count where a joint joins
+/// two awake dynamic bodies or joints and contacts stack bodies on one another (a chain carries
+/// its load link by link, as a stack does), and the mass-ratio law over jointed pairs too (a chain
+/// under a heavy body). No shock sweep: it holds contacts only.
+int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
+                            StackSearch& search);
+
 /// The substep count for chapter 8's solve, which chapters 10 to 12 keep for scenes with joints: where
 /// every dynamic body hangs or rests on the world alone, through a joint or a contact, and nothing
 /// bounces, substeps of kFreeFlightSubstep if nothing touches (a pendulum: one at 60 Hz), else of

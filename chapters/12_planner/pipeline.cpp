@@ -26,7 +26,10 @@ void planWideSolve(Stage& plan, const std::shared_ptr<PlanScratch>& scratch, boo
         collectSolvableContacts(world, scratch->contacts);
         IterationPlan& frame = world.step.iterationPlan;
         frame.previousIterations = frame.iterations;
-        plannedIterations(world, dt, scratch->contacts, frame, scratch->search, shockAllowed);
+        if (world.joints.empty())
+            plannedIterations(world, dt, scratch->contacts, frame, scratch->search, shockAllowed);
+        else
+            plannedLinkedIterations(world, dt, scratch->contacts, frame, scratch->search);
     };
 }
 // [ch12-plan-stage]

@@ -58,4 +58,15 @@ constexpr Real kShockDepthExponent = Real(0.7);
 constexpr Real kShockBlockSubsteps = Real(2.1);
 constexpr Real kShockLaneBlocks = Real(0.65);
 
+/// A chain hanging from the world sags by its joints' springs: each joint gives F / (m_eff w^2),
+/// with w at most a quarter of the substep rate (chapter 11), so the sag goes as the substep's
+/// square and, over a chain of like links, as its depth. A 20-link chain of 25 cm links sags
+/// kPlainChainSag of its length at the scene's count (ten substeps at 60 Hz: springs of 150 Hz;
+/// docs/ch08_joints.md derives it, tests/ch12/joint_plan_test.cpp measures it). The planner holds
+/// a chain of depth d to kHeldChainSag: scene sqrt(d / kPlainChainDepth x kPlainChainSag /
+/// kHeldChainSag) substeps.
+constexpr int kPlainChainDepth = 20;
+constexpr Real kPlainChainSag = Real(0.000884);
+constexpr Real kHeldChainSag = Real(0.0003);
+
 }  // namespace stepwise

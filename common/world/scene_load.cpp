@@ -21,7 +21,7 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
                          "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation", "contact_points",
                          "sleeping", "sleep_speed", "time_to_sleep", "contact_hertz", "contact_damping_ratio",
-                         "max_push_out_speed", "bounds_margin"},
+                         "joint_hertz", "joint_damping_ratio", "max_push_out_speed", "bounds_margin"},
                         &errors);
     Settings settings;
     // Each key on its own: one bad value does not hide the next.
@@ -53,6 +53,8 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     read("time_to_sleep", [&](const JsonCursor& v) { settings.timeToSleep = v.positive(); });
     read("contact_hertz", [&](const JsonCursor& v) { settings.contactHertz = v.positive(); });
     read("contact_damping_ratio", [&](const JsonCursor& v) { settings.contactDampingRatio = v.nonNegative(); });
+    read("joint_hertz", [&](const JsonCursor& v) { settings.jointHertz = v.positive(); });
+    read("joint_damping_ratio", [&](const JsonCursor& v) { settings.jointDampingRatio = v.nonNegative(); });
     read("max_push_out_speed", [&](const JsonCursor& v) { settings.maxPushOutSpeed = v.positive(); });
     read("bounds_margin", [&](const JsonCursor& v) { settings.boundsMargin = v.nonNegative(); });
     return settings;

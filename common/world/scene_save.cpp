@@ -54,6 +54,8 @@ std::string saveSceneToString(const World& world) {
                          {"time_to_sleep", tidyNumber(s.timeToSleep)},
                          {"contact_hertz", tidyNumber(s.contactHertz)},
                          {"contact_damping_ratio", tidyNumber(s.contactDampingRatio)},
+                         {"joint_hertz", tidyNumber(s.jointHertz)},
+                         {"joint_damping_ratio", tidyNumber(s.jointDampingRatio)},
                          {"max_push_out_speed", tidyNumber(s.maxPushOutSpeed)},
                          {"bounds_margin", tidyNumber(s.boundsMargin)}};
     Json bodies = Json::array();

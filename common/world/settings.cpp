@@ -9,6 +9,7 @@ const std::vector<SettingUse>& settingUses() {
         {"slop", 4},           {"restitution_threshold", 4},                {"broadphase", 5},
         {"warm_starting", 6},  {"stabilisation", 6},     {"contact_points", 6},  {"ccd", 7},
         {"contact_hertz", 6},  {"contact_damping_ratio", 6},                {"max_push_out_speed", 6},
+        {"joint_hertz", 11},   {"joint_damping_ratio", 11},
         {"sleeping", 10},      {"sleep_speed", 10},      {"time_to_sleep", 10},  {"bounds_margin", 10},
     };
     return uses;

@@ -268,26 +268,26 @@ TEST_CASE("solver_iterations auto keeps ten substeps for the frame a cradle is s
     CHECK(cradle.motionOf(0)->linearVelocity.norm() < Real(0.02));
 }
 
-TEST_CASE("solver_iterations auto hands chapter 8's solve one substep for a pendulum, ten for a chain", "[ch12][solve]") {
+TEST_CASE("solver_iterations auto holds what hangs by joints to its sag: four substeps for a pendulum, 18 for a chain", "[ch12][solve]") {
     World pendulum = sceneFile("hinge-pendulum.json");
     Pipeline pendulumPipeline = makeChapter12Pipeline(pendulum, SpeedOptions{});
     for (int frame = 0; frame < 30; ++frame) pendulumPipeline.step(pendulum);
     CHECK(pendulum.step.iterationPlan.stackDepth == 1);  // the bob hangs from the static pivot
-    // Nothing touches: free flight's substeps (one a frame at 60 Hz).
-    CHECK(pendulum.step.iterationPlan.mostIterations == 1);
+    // 10 sqrt(1/20 x 0.000884 / 0.0003) = 3.8: four substeps.
+    CHECK(pendulum.step.iterationPlan.mostIterations == 4);
     CHECK(pendulum.settings.solverIterations == 10);     // the scene's setting, as it was
 
     World chain = sceneFile("hanging-chain.json");
     Pipeline chainPipeline = makeChapter12Pipeline(chain, SpeedOptions{});
     chainPipeline.step(chain);
     CHECK(chain.step.iterationPlan.stackDepth == 20);    // twenty links below the anchor
-    CHECK(chain.step.iterationPlan.iterations == 10);
+    CHECK(chain.step.iterationPlan.iterations == 18);    // 10 sqrt(0.000884 / 0.0003) = 17.2
 
     World fixed = sceneFile("hinge-pendulum.json");
     fixed.settings.planIterations = false;
     Pipeline fixedPipeline = makeChapter12Pipeline(fixed, SpeedOptions{});
     fixedPipeline.step(fixed);
-    CHECK(fixed.step.iterationPlan.iterations == 0);      // a number in the scene: not planned
+    CHECK(fixed.step.iterationPlan.iterations == 10);     // a number in the scene: the scene's count
 }
 
 TEST_CASE("a body in free flight follows its parabola exactly in one substep", "[ch12][solve]") {

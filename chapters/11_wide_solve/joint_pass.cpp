@@ -1,0 +1,212 @@
+// Joints, springs and drag in chapter 11's substeps, on the solve's own bodies.
+#include "11_wide_solve/joint_pass.h"
+
+#include "01_integrators/integrate.h"
+#include "08_joints/joint_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stepwise {
+
+// [ch11-joint-feedback]
+JointFeedback fastJointFeedback(const Settings& settings, Real h) {
+    JointFeedback feedback;
+    feedback.kind = JointFeedback::Kind::Soft;
+    const Real hertz = std::min(settings.jointHertz, kJointHertzPerSubstepRate / h);
+    feedback.soft = makeSoftness(hertz, settings.jointDampingRatio, h);
+    return feedback;
+}
+// [ch11-joint-feedback]
+
+bool needsJointPass(const World& world) {
+    return !world.joints.empty() || !world.springs.empty() || !world.dampings.empty();
+}
+
+namespace {
+
+/// Where a slot's body stands now: its start moved by the substeps so far.
+struct SlotPose {
+    Vec3 center;
+    Quat rotation;
+};
+
+SlotPose slotPose(const SolverBodies& bodies, int slot) {
+    const SolverBodyState& state = bodies.states[static_cast<std::size_t>(slot)];
+    const SolverBodyInfo& info = bodies.info[static_cast<std::size_t>(slot)];
+    const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
+    return {info.startCenter + Vec3(state.deltaPosition[0], state.deltaPosition[1], state.deltaPosition[2]),
+            (delta * info.startRotation).normalized()};
+}
+
+int entryFor(const World& world, const SolverBodies& bodies, int body, JointPass& pass) {
+    int& entry = pass.entryOfBody[static_cast<std::size_t>(body)];
+    if (entry >= 0) return entry;
+    entry = static_cast<int>(pass.bodies.size());
+    const int slot = bodies.slotOfBody[static_cast<std::size_t>(body)];
+    pass.worldBody.push_back(body);
+    pass.slot.push_back(slot);
+    SolverBody solverBody;  // slot 0: zero mass and velocity, as the contacts see it
+    const SolverBodyInfo& info = bodies.info[static_cast<std::size_t>(slot)];
+    solverBody.inverseMass = info.inverseMass;
+    solverBody.inverseInertia = info.inverseInertia;  // the frame's start, as the contacts take it
+    solverBody.center = slot ? info.startCenter : worldCenterOfMass(world, body);
+    pass.bodies.push_back(solverBody);
+    return entry;
+}
+
+void loadVelocities(JointPass& pass, const SolverBodyState* states) {
+    for (std::size_t e = 0; e < pass.bodies.size(); ++e) {
+        const SolverBodyState& state = states[pass.slot[e]];
+        SolverBody& body = pass.bodies[e];
+        body.linearVelocity = Vec3(state.linearVelocity[0], state.linearVelocity[1], state.linearVelocity[2]);
+        body.angularVelocity = Vec3(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
+    }
+}
+
+void storeVelocities(const JointPass& pass, SolverBodyState* states) {
+    for (std::size_t e = 0; e < pass.bodies.size(); ++e) {
+        if (pass.slot[e] == 0) continue;  // nothing moves slot 0 (zero inverse mass); kinematic alike
+        SolverBodyState& state = states[pass.slot[e]];
+        const SolverBody& body = pass.bodies[e];
+        for (int k = 0; k < 3; ++k) {
+            state.linearVelocity[k] = body.linearVelocity[k];
+            state.angularVelocity[k] = body.angularVelocity[k];
+        }
+    }
+}
+
+}  // namespace
+
+void prepareJointPass(const World& world, const SolverBodies& bodies, Real carryScale, JointPass& pass) {
+    pass.joints.clear();
+    pass.entryA.clear();
+    pass.entryB.clear();
+    pass.worldBody.clear();
+    pass.slot.clear();
+    pass.bodies.clear();
+    pass.carried.clear();
+    pass.entryOfBody.assign(world.bodies.size(), -1);
+    if (world.joints.empty()) return;
+    for (const int jointIndex : pass.sweep.order(world, kDefaultJointOrder)) {
+        const JointDesc& joint = world.joints[static_cast<std::size_t>(jointIndex)];
+        if (!jointBodiesValid(world, joint)) continue;
+        const int slotA = bodies.slotOfBody[static_cast<std::size_t>(joint.bodyA)];
+        const int slotB = bodies.slotOfBody[static_cast<std::size_t>(joint.bodyB)];
+        if (slotA < bodies.firstDynamic && slotB < bodies.firstDynamic) continue;  // nothing it holds moves
+        pass.joints.push_back(jointIndex);
+        pass.entryA.push_back(entryFor(world, bodies, joint.bodyA, pass));
+        pass.entryB.push_back(entryFor(world, bodies, joint.bodyB, pass));
+        JointImpulses carried;
+        if (world.settings.warmStarting && static_cast<std::size_t>(jointIndex) < world.jointImpulses.size())
+            for (int k = 0; k < JointImpulses::kSlots; ++k)
+                carried.slot[k] = carryScale * world.jointImpulses[static_cast<std::size_t>(jointIndex)].slot[k];
+        pass.carried.push_back(carried);
+    }
+}
+
+// [ch11-joint-rows]
+void buildJointRows(const World& world, const SolverBodies& bodies, Real h, JointPass& pass) {
+    JointRows& rows = pass.rows;
+    rows.rows.clear();
+    rows.softness.clear();
+    rows.fedBack.clear();
+    rows.kind.clear();
+    rows.error.clear();
+    rows.joints.clear();
+    rows.invalidSkipped = 0;
+    if (pass.joints.empty()) return;
+    const JointFeedback feedback = fastJointFeedback(world.settings, h);
+    // Where each body stands now: its start moved by the substeps so far (slot 0 does not move).
+    pass.poses.resize(pass.bodies.size());
+    for (std::size_t e = 0; e < pass.bodies.size(); ++e) {
+        const int slot = pass.slot[e];
+        const int body = pass.worldBody[e];
+        JointPass::BodyPose& pose = pass.poses[e];
+        if (slot == 0) {
+            pose.transform = world.bodies[static_cast<std::size_t>(body)].transform;
+            pose.center = pass.bodies[e].center;
+            continue;
+        }
+        const SlotPose now = slotPose(bodies, slot);
+        pose.transform.rotation = now.rotation;
+        pose.transform.position = now.center - now.rotation * world.motionOf(body)->localCenter;
+        pose.center = now.center;
+    }
+    for (std::size_t i = 0; i < pass.joints.size(); ++i) {
+        const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
+        const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
+        const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
+        const JointFrame frame = jointFrame(joint, a.transform, a.center, b.transform, b.center);
+        const std::size_t before = rows.joints.size();
+        appendJointRows(rows, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i], pass.bodies, h, feedback,
+                        &pass.carried[i]);
+        // A joint whose rows came out non-finite is left out this substep (rows.invalidSkipped).
+        if (rows.joints.size() > before) rows.joints.back().joint = static_cast<int>(i);  // the pass's index
+    }
+}
+// [ch11-joint-rows]
+
+
+void warmStartJoints(JointPass& pass, SolverBodyState* states, bool warmStarting) {
+    if (pass.rows.rows.empty()) return;
+    if (!warmStarting) {  // every substep from zero, as the contacts
+        for (ConstraintRow& row : pass.rows.rows) row.impulse = 0;
+        return;
+    }
+    loadVelocities(pass, states);
+    for (const ConstraintRow& row : pass.rows.rows)
+        if (row.impulse != 0) applyRowImpulse(row, row.impulse, pass.bodies);
+    storeVelocities(pass, states);
+}
+
+void solveJoints(JointPass& pass, SolverBodyState* states, bool relax) {
+    JointRows& rows = pass.rows;
+    if (rows.rows.empty()) return;
+    if (relax) {  // the biased pass's rows with the feedback taken out (chapter 8's relax on the same rows)
+        for (std::size_t i = 0; i < rows.rows.size(); ++i) {
+            if (!rows.fedBack[i]) continue;
+            rows.rows[i].bias = 0;
+            rows.softness[i] = Softness{};
+        }
+    }
+    loadVelocities(pass, states);
+    for (const JointRowSet& set : rows.joints) solveJointRows(rows, set, pass.bodies);
+    storeVelocities(pass, states);
+}
+
+void keepJointImpulses(JointPass& pass) {
+    for (const JointRowSet& set : pass.rows.joints) {
+        JointImpulses& carried = pass.carried[static_cast<std::size_t>(set.joint)];
+        for (int slot = 0; slot < set.rowCount && slot < JointImpulses::kSlots; ++slot)
+            carried.slot[slot] = pass.rows.rows[static_cast<std::size_t>(set.firstRow + slot)].impulse;
+    }
+}
+
+void storeJointImpulses(const JointPass& pass, World& world) {
+    world.jointImpulses.resize(world.joints.size());
+    for (std::size_t i = 0; i < pass.joints.size(); ++i)
+        world.jointImpulses[static_cast<std::size_t>(pass.joints[i])] = pass.carried[i];
+}
+
+void evaluateSubstepForces(const World& world, const SolverBodies& bodies, JointPass& pass) {
+    pass.forceStates.resize(world.motions.size());
+    for (std::size_t i = 0; i < world.motions.size(); ++i) {
+        const Motion& motion = world.motions[i];
+        const int slot = bodies.slotOfBody[static_cast<std::size_t>(motion.bodyIndex)];
+        MotionState& state = pass.forceStates[i];
+        if (slot == 0) {
+            state = readMotionState(world, motion);
+            continue;
+        }
+        const SlotPose now = slotPose(bodies, slot);
+        const SolverBodyState& velocity = bodies.states[static_cast<std::size_t>(slot)];
+        state.center = now.center;
+        state.rotation = now.rotation;
+        state.linearVelocity = Vec3(velocity.linearVelocity[0], velocity.linearVelocity[1], velocity.linearVelocity[2]);
+        state.angularVelocity = Vec3(velocity.angularVelocity[0], velocity.angularVelocity[1], velocity.angularVelocity[2]);
+    }
+    evaluateForces(world, pass.forceStates, pass.forces);
+}
+
+}  // namespace stepwise

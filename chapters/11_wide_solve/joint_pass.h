@@ -1,0 +1,89 @@
+#pragma once
+// Joints, springs and drag in the fast solve. The contacts are coloured and solved many at a
+// time; a joint needs more than a contact row does (up to ten rows, limits that switch on and
+// off, motors), and a scene has far fewer of them, so they are solved one at a time, with chapter
+// 8's rows, in the same substeps as the contacts and on the same bodies: warm started, the soft
+// step's biased pass, the relax pass, every substep (Box2D v3 and Box3D solve joints and contacts
+// in one graph the same way). What makes them fast is what makes the contacts fast: one pass
+// over everything per substep, no second solve.
+//
+// A joint's rows are built every substep where its bodies stand then (their moves since the frame
+// began, SolverBodyState), with the frame's inverse inertia, as the contacts take it; the relax
+// pass takes the same rows with the feedback taken out. Building them once a frame and moving
+// only their errors to first order does not do: a chain's link swinging 8 cm across its
+// neighbour in a frame stretches by 1.3 cm to first order. Moving the Jacobians and keeping the
+// effective masses does not either: the arms turn, the frame's inertia does not, and a row's mass
+// can fall to half of what it answers with (a ragdoll's shin spun up and blew apart). Chapter 8's rules build them and solve them
+// (appendJointRows, applyRowFeedback, solveJointRows): one physics, whichever solve runs it.
+
+#include "01_integrators/forces.h"
+#include "08_joints/joint_solver.h"
+#include "11_wide_solve/solver_data.h"
+#include "world/world.h"
+
+#include <vector>
+
+namespace stepwise {
+
+// [ch11-joint-softness]
+/// The joints' spring is at most this fraction of the substep rate, whatever Settings::jointHertz
+/// asks: chapter 8 measured a quarter as the stiffest a chain resolves with one biased sweep a
+/// substep (at a half, a 10-link chain diverges).
+constexpr Real kJointHertzPerSubstepRate = Real(0.25);
+// [ch11-joint-softness]
+
+/// The joints' feedback in substeps of h: Settings::jointHertz and jointDampingRatio, the hertz
+/// capped at kJointHertzPerSubstepRate / h.
+JointFeedback fastJointFeedback(const Settings& settings, Real h);
+
+/// What the fast solve keeps for the frame's joints and forces: rebuilt from the World every
+/// frame, carrying nothing between frames (the impulses go back into World::jointImpulses).
+struct JointPass {
+    std::vector<int> joints;           // into World::joints: those with a moving body, in sweep order
+    std::vector<int> entryA, entryB;   // per listed joint: its bodies' entries in `bodies`
+    std::vector<int> worldBody;        // per entry: the World body
+    std::vector<int> slot;             // per entry: its solver slot (0: static or asleep)
+    std::vector<int> entryOfBody;      // per World body: its entry, or -1
+    std::vector<SolverBody> bodies;    // chapter 4's view of the joints' bodies, this substep
+    std::vector<JointImpulses> carried;  // per listed joint: its impulses from substep to substep
+    struct BodyPose {
+        Transform transform;
+        Vec3 center = Vec3::Zero();
+    };
+    std::vector<BodyPose> poses;       // per entry: where it stands this substep
+    JointRows rows;                    // this substep's
+    JointSweep sweep;
+    // Springs and drag: chapter 1's forces at each substep's state, per motion.
+    std::vector<MotionState> forceStates;
+    std::vector<Wrench> forces;
+};
+
+/// Whether the world has anything the pass solves: joints, springs or drag.
+bool needsJointPass(const World& world);
+
+/// The frame's joints with at least one moving body, their bodies, and their impulses from
+/// World::jointImpulses times `carryScale` (the substep count changed).
+void prepareJointPass(const World& world, const SolverBodies& bodies, Real carryScale, JointPass& pass);
+
+/// The rows for a substep of h, where the bodies stand now, from the carried impulses.
+void buildJointRows(const World& world, const SolverBodies& bodies, Real h, JointPass& pass);
+
+/// The carried impulses applied to the bodies (the warm start); without warm starting, every
+/// substep's impulses start from zero.
+void warmStartJoints(JointPass& pass, SolverBodyState* states, bool warmStarting);
+
+/// One Gauss-Seidel sweep over the joints: biased, or (`relax`) the same rows without feedback.
+void solveJoints(JointPass& pass, SolverBodyState* states, bool relax);
+
+
+/// The impulses the substep ended with, carried to the next one.
+void keepJointImpulses(JointPass& pass);
+
+/// The carried impulses back into World::jointImpulses.
+void storeJointImpulses(const JointPass& pass, World& world);
+
+/// Chapter 1's forces (gravity, springs, drag) at the substep's state of every body, into
+/// pass.forces (per motion).
+void evaluateSubstepForces(const World& world, const SolverBodies& bodies, JointPass& pass);
+
+}  // namespace stepwise

@@ -1,0 +1,83 @@
+// The planner with joints in the solve: what hangs from the world by joints gets the substeps that
+// hold its sag, a chain under a heavy body the mass-ratio law, and a field of ragdolls settles and
+// sleeps with every joint holding.
+#include "08_joints/builders.h"
+#include "11_wide_solve/scenes.h"
+#include "12_planner/chapter.h"
+#include "12_planner/plan_constants.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+using namespace stepwise;
+
+// [ch12-chain-sag-test]
+TEST_CASE("a 20-link chain hanging at rest sags at most 0.03% at the defaults", "[ch12][joints]") {
+    World world = emptyWorld("hanging-chain-20");
+    const Chain chain = addChain(world, ChainSpec{});  // 20 links of 1 kg, 25 cm apart, hanging straight down
+    world.settings.sleeping = false;
+    Pipeline pipeline = makeChapter12Pipeline(world);
+    for (int frame = 0; frame < 600; ++frame) pipeline.step(world);
+    // 10 sqrt(20 / 20 x 0.000884 / 0.0003) = 17.2: 18 substeps, springs of 270 Hz.
+    CHECK(world.step.iterationPlan.iterations == 18);
+    const Real stretch = chainStretch(world, chain);
+    INFO("stretch at rest " << stretch * 100 << "%");
+    CHECK(stretch > 0);
+    CHECK(stretch <= kHeldChainSag);
+}
+// [ch12-chain-sag-test]
+
+TEST_CASE("a chain under a heavy body gets the substeps its mass ratio asks for", "[ch12][joints]") {
+    const auto run = [](bool planned, IterationPlan& plan) {
+        World world = emptyWorld("heavy-end-chain");
+        ChainSpec spec;
+        spec.links = 10;
+        spec.endMass = 400;  // 400 to 1 against the links
+        const Chain chain = addChain(world, spec);
+        world.settings.sleeping = false;
+        world.settings.planIterations = planned;
+        Pipeline pipeline = makeChapter12Pipeline(world);
+        Real largest = 0;
+        for (int frame = 0; frame < 300; ++frame) {
+            pipeline.step(world);
+            largest = std::max(largest, chainStretch(world, chain));
+        }
+        plan = world.step.iterationPlan;
+        return largest;
+    };
+    IterationPlan plan, scene;
+    const Real planned = run(true, plan), atSceneCount = run(false, scene);
+    CHECK(plan.massRatio == Approx(400));
+    // The square-root law: 10 sqrt(400 / 100) = 20 substeps (the chain's own sag asks for 13).
+    CHECK(plan.iterations == 20);
+    INFO("largest stretch " << planned * 100 << "%, at the scene's ten substeps " << atSceneCount * 100 << "%");
+    CHECK(planned < Real(0.03));  // chapter 8's promise for a heavy end
+    CHECK(planned < Real(0.5) * atSceneCount);
+}
+
+TEST_CASE("a field of forty ragdolls settles with every joint holding, and sleeps within 10 s", "[ch12][joints]") {
+    World world = buildRagdollField(40);
+    std::vector<int> joints(world.joints.size());
+    std::iota(joints.begin(), joints.end(), 0);
+    Pipeline pipeline = makeChapter12Pipeline(world);
+    int asleepAt = -1;
+    JointErrorSummary largest;
+    for (int frame = 0; frame < 600 && asleepAt < 0; ++frame) {
+        pipeline.step(world);
+        int asleep = 0;
+        for (const Motion& motion : world.motions) asleep += motion.asleep ? 1 : 0;
+        if (asleep == world.dynamicBodyCount()) asleepAt = frame;
+        if (frame >= 240) {  // once landed
+            const JointErrorSummary error = largestJointError(world, joints);
+            largest.position = std::max(largest.position, error.position);
+        }
+    }
+    INFO("asleep at frame " << asleepAt << "; joint error once landed " << largest.position * 1000 << " mm");
+    CHECK(asleepAt > 0);
+    CHECK(largest.position < Real(0.01));
+    const JointErrorSummary asleep = largestJointError(world, joints);
+    CHECK(asleep.position < Real(0.01));
+}
