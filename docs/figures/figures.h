@@ -33,6 +33,7 @@ bool drawCacheRule(const std::string& path);       // chapter 10: pairs' motion 
 bool drawIslands(const std::string& path);         // chapter 10: islands asleep and waking
 bool drawWideColouring(const std::string& path);   // chapter 11: a pyramid's contacts coloured
 bool drawWideLanes(const std::string& path);       // chapter 11: the contacts in blocks of lanes
+bool drawWideJoints(const std::string& path);      // chapter 11: ragdolls on a pile, contacts coloured, joints apart
 bool drawLoadCrossing(const std::string& path);    // chapter 12: a load crossing a column sweep by sweep
 bool drawShockLayers(const std::string& path);     // chapter 12: a pyramid's depths and shock-sweep groups
 

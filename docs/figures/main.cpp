@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
                           {"fig-skip-islands.svg", figures::drawIslands},
                           {"fig-wide-colouring.svg", figures::drawWideColouring},
                           {"fig-wide-lanes.svg", figures::drawWideLanes},
+                          {"fig-wide-joints.svg", figures::drawWideJoints},
                           {"fig-planner-load.svg", figures::drawLoadCrossing},
                           {"fig-planner-shock-layers.svg", figures::drawShockLayers},
                           {"fig-sweep-axis.svg", figures::drawSweepAxisChoice},
