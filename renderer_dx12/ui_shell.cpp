@@ -64,6 +64,9 @@ void settingsSection(World& world, int chapter, int lastChapter) {
     if (reads("baumgarte") && ImGui::SliderFloat("baumgarte", &baumgarte, 0.0f, 1.0f)) s.baumgarte = static_cast<Real>(baumgarte);
     if (reads("slop") && ImGui::SliderFloat("slop (m)", &slop, 0.0f, 0.05f, "%.4f")) s.slop = static_cast<Real>(slop);
     if (reads("warm_starting")) ImGui::Checkbox("warm starting", &s.warmStarting);
+    float jointHertz = static_cast<float>(s.jointHertz);
+    if (reads("joint_hertz") && ImGui::SliderFloat("joint hertz", &jointHertz, 5.0f, 600.0f, "%.0f"))
+        s.jointHertz = static_cast<Real>(jointHertz);
     float gravity = static_cast<float>(s.gravity.y());
     if (reads("gravity") && ImGui::SliderFloat("gravity y", &gravity, -30.0f, 30.0f)) s.gravity.y() = static_cast<Real>(gravity);
     for (const SettingUse& use : settingUses())

@@ -31,20 +31,20 @@ std::string colourOf(int colour) {
 
 Point2 side(const Vec3& p) { return {static_cast<double>(p.x()), static_cast<double>(p.y())}; }
 
-/// A 3-row pyramid with two ragdolls dropped across it, after a second of chapter 11's step.
+/// A 3-row pyramid with two ragdolls dropped across it, after two seconds of chapter 11's step.
 World ragdollsOnAPile() {
     World world = buildPyramidRow(1, 3);
     for (int i = 0; i < 2; ++i) {
         RagdollSpec spec;
         spec.prefix = "ragdoll" + std::to_string(i);
-        spec.pelvis = Vec3(Real(0.4) - Real(0.8) * static_cast<Real>(i), Real(3.6) + Real(0.8) * static_cast<Real>(i), 0);
-        spec.orientation = Quat(Eigen::AngleAxis<Real>(kPi / 2, Vec3::UnitZ())) *
-                           Quat(Eigen::AngleAxis<Real>(kPi / 2, Vec3::UnitX()));
+        // Lying across the pyramid in the picture's plane, one above the other.
+        spec.pelvis = Vec3(Real(0.3) - Real(0.6) * static_cast<Real>(i), Real(3.4) + Real(0.7) * static_cast<Real>(i), 0);
+        spec.orientation = Quat(Eigen::AngleAxis<Real>(i == 0 ? kPi / 2 : -kPi / 2, Vec3::UnitZ()));
         addRagdoll(world, spec);
     }
     world.settings.sleeping = false;
     Pipeline pipeline = makeChapter11Pipeline(world);
-    for (int frame = 0; frame < 60; ++frame) pipeline.step(world);
+    for (int frame = 0; frame < 120; ++frame) pipeline.step(world);
     return world;
 }
 
