@@ -47,7 +47,7 @@ function(stepwise_add_chapter number name)
   add_library(${lib}_registry STATIC ${generated})
   target_link_libraries(${lib}_registry PUBLIC ${lib} stepwise_app)
 
-  if(NOT CMAKE_CROSSCOMPILING AND NOT STEPWISE_RENDERER)
+  if(STEPWISE_HEADLESS_DEMOS AND NOT CMAKE_CROSSCOMPILING AND NOT STEPWISE_RENDERER)
     # Headless demo: runs the chapter's scenes without a window (the DX12 shell is the mingw /
     # Windows build of renderer_dx12, which defines its own ${lib}_demo target there).
     add_executable(${lib}_demo ${CMAKE_SOURCE_DIR}/common/app/demo_main.cpp)

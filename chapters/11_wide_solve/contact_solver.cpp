@@ -53,7 +53,6 @@ bool noneAsleep(const World& world) {
     return std::none_of(world.motions.begin(), world.motions.end(), [](const Motion& motion) { return motion.asleep; });
 }
 
-
 }  // namespace
 
 bool solvableContact(const World& world, const Contact& contact) {
