@@ -67,6 +67,17 @@ struct JointRows {
     std::vector<Real> error;          // one per row: the position error C its bias comes from (0 for Free)
     std::vector<JointRowSet> joints;
     int invalidSkipped = 0;           // joints with bad bodies or non-finite data: left out
+
+    /// Empty, keeping the vectors' room (a solve builds its rows again every substep).
+    void clear() {
+        rows.clear();
+        softness.clear();
+        fedBack.clear();
+        kind.clear();
+        error.clear();
+        joints.clear();
+        invalidSkipped = 0;
+    }
 };
 
 /// Appends the rows of World::joints[jointIndex] for a step of h, effective masses filled in,

@@ -102,13 +102,7 @@ void JointConstraints::prepare(const World& world, const std::vector<SolverBody>
     }
     biasedStep_ = positionFeedback ? h : Real(0);
     // Cleared, not replaced: the vectors keep their room for the solve's other substeps and passes.
-    rows_.rows.clear();
-    rows_.softness.clear();
-    rows_.fedBack.clear();
-    rows_.kind.clear();
-    rows_.error.clear();
-    rows_.joints.clear();
-    rows_.invalidSkipped = 0;
+    rows_.clear();
     JointFeedback feedback = jointFeedback(world.settings, h, feedback_);
     if (!positionFeedback) feedback.kind = JointFeedback::Kind::None;
     // The biased pass starts from last solve's impulses only with warm starting on; the relax pass

@@ -4,9 +4,8 @@
 // bits: the wide one solves kWideLanes contacts of a colour at once (colouring.h) and the overflow
 // after them; the scalar one solves the same contacts one after another in the same order.
 
-#include "12_planner/iteration_plan.h"
-#include "12_planner/shock_propagation.h"
 #include "11_wide_solve/solver_data.h"
+#include "world/step_state.h"
 #include "world/world.h"
 
 #include <array>

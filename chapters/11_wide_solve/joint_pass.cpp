@@ -3,6 +3,7 @@
 
 #include "01_integrators/integrate.h"
 #include "08_joints/joint_frame.h"
+#include "11_wide_solve/solve_steps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,20 +25,6 @@ bool needsJointPass(const World& world) {
 }
 
 namespace {
-
-/// Where a slot's body stands now: its start moved by the substeps so far.
-struct SlotPose {
-    Vec3 center;
-    Quat rotation;
-};
-
-SlotPose slotPose(const SolverBodies& bodies, int slot) {
-    const SolverBodyState& state = bodies.states[static_cast<std::size_t>(slot)];
-    const SolverBodyInfo& info = bodies.info[static_cast<std::size_t>(slot)];
-    const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
-    return {info.startCenter + Vec3(state.deltaPosition[0], state.deltaPosition[1], state.deltaPosition[2]),
-            (delta * info.startRotation).normalized()};
-}
 
 int entryFor(const World& world, const SolverBodies& bodies, int body, JointPass& pass) {
     int& entry = pass.entryOfBody[static_cast<std::size_t>(body)];
@@ -108,13 +95,7 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
 // [ch11-joint-rows]
 void buildJointRows(const World& world, const SolverBodies& bodies, Real h, JointPass& pass) {
     JointRows& rows = pass.rows;
-    rows.rows.clear();
-    rows.softness.clear();
-    rows.fedBack.clear();
-    rows.kind.clear();
-    rows.error.clear();
-    rows.joints.clear();
-    rows.invalidSkipped = 0;
+    rows.clear();
     if (pass.joints.empty()) return;
     const JointFeedback feedback = fastJointFeedback(world.settings, h);
     // Where each body stands now: its start moved by the substeps so far (slot 0 does not move).

@@ -21,6 +21,13 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
                          const std::vector<Wrench>* forces = nullptr);
 /// Chapter 1's position step for the moving bodies.
 void integratePositions(SolverBodies& bodies, Real h, SolverPath path);
+/// Where a slot's body stands now: its centre of mass and rotation at the frame's start moved by
+/// the substeps so far (what writeBodiesBack stores, and what joints and springs are built at).
+struct SlotPose {
+    Vec3 center;
+    Quat rotation;
+};
+SlotPose slotPose(const SolverBodies& bodies, int slot);
 /// Poses and velocities back into the World.
 void writeBodiesBack(World& world, const SolverBodies& bodies);
 /// Bodies that touch nothing, each through all the substeps at once.

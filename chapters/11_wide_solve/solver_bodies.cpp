@@ -126,16 +126,23 @@ void integratePositions(SolverBodies& bodies, Real h, SolverPath path) {
     for (int slot = 1; slot < count; ++slot) integratePositionsPack<1>(bodies.states.data(), &slot, h);
 }
 
+SlotPose slotPose(const SolverBodies& bodies, int slot) {
+    const SolverBodyState& state = bodies.states[static_cast<std::size_t>(slot)];
+    const SolverBodyInfo& info = bodies.info[static_cast<std::size_t>(slot)];
+    const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
+    return {info.startCenter + Vec3(state.deltaPosition[0], state.deltaPosition[1], state.deltaPosition[2]),
+            (delta * info.startRotation).normalized()};
+}
+
 void writeBodiesBack(World& world, const SolverBodies& bodies) {
     for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
         const SolverBodyState& state = bodies.states[slot];
         const SolverBodyInfo& info = bodies.info[slot];
         Motion& motion = *world.motionOf(info.bodyIndex);
         Transform& pose = world.bodies[static_cast<std::size_t>(info.bodyIndex)].transform;
-        const Quat delta(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
-        const Vec3 center = info.startCenter + Vec3(state.deltaPosition[0], state.deltaPosition[1], state.deltaPosition[2]);
-        pose.rotation = (delta * info.startRotation).normalized();
-        pose.position = center - pose.rotation * motion.localCenter;
+        const SlotPose now = slotPose(bodies, static_cast<int>(slot));
+        pose.rotation = now.rotation;
+        pose.position = now.center - pose.rotation * motion.localCenter;
         motion.linearVelocity = Vec3(state.linearVelocity[0], state.linearVelocity[1], state.linearVelocity[2]);
         motion.angularVelocity = Vec3(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
     }

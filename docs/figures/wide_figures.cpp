@@ -1,8 +1,10 @@
 // Figures for chapter 11, computed by the engine's own colouring and block building: a small
 // pyramid stepped by chapter 11's pipeline, its contacts coloured by colourContacts and packed into
-// blocks by buildWideBlocks, as the solve does every frame.
+// blocks by buildWideBlocks, as the solve does every frame; two ragdolls fallen on such a pyramid,
+// their joints beside the colours.
 #include "figures.h"
 
+#include "08_joints/builders.h"
 #include "10_skip_work/scenes.h"
 #include "11_wide_solve/chapter.h"
 #include "11_wide_solve/colouring.h"
@@ -84,6 +86,38 @@ void contactEnds(const World& world, const Contact& contact, Point2& from, Point
 
 std::string boxLabel(const World& world, int body) { return isStatic(world, body) ? "G" : std::to_string(body); }
 
+/// The colours' key from (x, y) down, a line of `step` pixels each; returns the last line's y.
+double drawColourLegend(Svg& svg, double x, double y, double step, const std::vector<int>& counts) {
+    svg.textAt({x, y}, "colour: contacts", "font-weight:bold");
+    for (std::size_t colour = 0; colour < counts.size(); ++colour) {
+        y += step;
+        svg.rect(x, y - 12, 26, 12, colourOf(static_cast<int>(colour)));
+        char line[80];
+        std::snprintf(line, sizeof line, "colour %zu: %d", colour, counts[colour]);
+        svg.textAt({x + 36, y}, line);
+    }
+    return y;
+}
+
+/// Each contact the solve takes as an edge in its colour (dashed black: the overflow); the count
+/// of contacts in each colour.
+std::vector<int> drawColouredContacts(Svg& svg, const Viewport& view, const World& world,
+                                      const ContactSolverScratch& scratch, int width) {
+    std::vector<int> counts;
+    for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(scratch.contactOrder[i])];
+        const int colour = scratch.colours[i];
+        if (colour >= static_cast<int>(counts.size())) counts.resize(static_cast<std::size_t>(colour) + 1, 0);
+        if (colour >= 0) ++counts[static_cast<std::size_t>(colour)];
+        Point2 from, to;
+        contactEnds(world, contact, from, to);
+        svg.line(view, from, to,
+                 "stroke:" + colourOf(colour) + ";stroke-width:" + std::to_string(width) + ";stroke-linecap:round" +
+                     (colour < 0 ? ";stroke-dasharray:6 4" : ""));
+    }
+    return counts;
+}
+
 
 bool colouringFigure(const std::string& path) {
     // A 5-row pyramid's contact graph: nodes are the boxes, edges their contacts, each edge in the
@@ -97,18 +131,7 @@ bool colouringFigure(const std::string& path) {
     Svg svg(960, 490);
     const Viewport view{0, 45, 640, 440, {0, 2.35}, 80};
     drawPyramid(svg, view, world);
-    std::vector<int> counts;
-    for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i) {
-        const Contact& contact = world.contacts[static_cast<std::size_t>(scratch.contactOrder[i])];
-        const int colour = scratch.colours[i];
-        if (colour >= static_cast<int>(counts.size())) counts.resize(static_cast<std::size_t>(colour) + 1, 0);
-        if (colour >= 0) ++counts[static_cast<std::size_t>(colour)];
-        Point2 from, to;
-        contactEnds(world, contact, from, to);
-        svg.line(view, from, to,
-                 "stroke:" + colourOf(colour) + ";stroke-width:5;stroke-linecap:round" +
-                     (colour < 0 ? ";stroke-dasharray:6 4" : ""));
-    }
+    const std::vector<int> counts = drawColouredContacts(svg, view, world, scratch, 5);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         if (isStatic(world, static_cast<int>(i))) continue;
         const Point2 at = side(world.bodies[i].transform.position);
@@ -120,14 +143,7 @@ bool colouringFigure(const std::string& path) {
                   static_cast<int>(scratch.bodies.states.size()) - 1, scratch.contactOrder.size(), counts.size());
     svg.textAt({10, 24}, caption, "fill:#333");
     double y = 80;
-    svg.textAt({660, y}, "colour: contacts", "font-weight:bold");
-    for (std::size_t colour = 0; colour < counts.size(); ++colour) {
-        y += 28;
-        svg.rect(660, y - 12, 26, 12, colourOf(static_cast<int>(colour)));
-        char line[80];
-        std::snprintf(line, sizeof line, "colour %zu: %d", colour, counts[colour]);
-        svg.textAt({696, y}, line);
-    }
+    y = drawColourLegend(svg, 660, y, 28, counts);
     y += 44;
     svg.textAt({660, y}, "No two edges of one colour", "fill:#555");
     svg.textAt({660, y + 20}, "meet at a box: a colour's", "fill:#555");
@@ -189,9 +205,75 @@ bool lanesFigure(const std::string& path) {
     return svg.save(path);
 }
 
+/// A 3-row pyramid with two ragdolls dropped across it, after two seconds of chapter 11's step.
+World ragdollsOnAPile() {
+    World world = buildPyramidRow(1, 3);
+    for (int i = 0; i < 2; ++i) {
+        RagdollSpec spec;
+        spec.prefix = "ragdoll" + std::to_string(i);
+        // Lying across the pyramid in the picture's plane, one above the other.
+        spec.pelvis = Vec3(Real(0.3) - Real(0.6) * static_cast<Real>(i), Real(3.4) + Real(0.7) * static_cast<Real>(i), 0);
+        spec.orientation = Quat(Eigen::AngleAxis<Real>(i == 0 ? kPi / 2 : -kPi / 2, Vec3::UnitZ()));
+        addRagdoll(world, spec);
+    }
+    world.settings.sleeping = false;
+    Pipeline pipeline = makeChapter11Pipeline(world);
+    for (int frame = 0; frame < 120; ++frame) pipeline.step(world);
+    return world;
+}
+
+
+bool jointsFigure(const std::string& path) {
+    const World world = ragdollsOnAPile();
+    ContactSolverScratch scratch;
+    gatherForSolve(world, scratch);
+    const SolverBodies& bodies = scratch.bodies;
+    colourContacts(scratch.slotA, scratch.slotB, static_cast<int>(bodies.states.size()), scratch.colours,
+                   scratch.colourBits, bodies.firstDynamic);
+
+    Svg svg(980, 520);
+    Real lowX = 0, highX = 0, highY = 0;
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        if (isStatic(world, static_cast<int>(i))) continue;
+        const Vec3& p = world.bodies[i].transform.position;
+        lowX = std::min(lowX, p.x());
+        highX = std::max(highX, p.x());
+        highY = std::max(highY, p.y());
+    }
+    const double pixels = std::min(600.0 / std::max(1.0, double(highX - lowX) + 0.6), 420.0 / (double(highY) + 0.6));
+    const Viewport view{0, 40, 680, 460, {double(lowX + highX) / 2, double(highY) / 2}, pixels};
+    svg.polygon(view, {{double(lowX) - 0.5, 0}, {double(highX) + 0.5, 0}, {double(highX) + 0.5, -0.15}, {double(lowX) - 0.5, -0.15}},
+                "fill:#ddd;stroke:#999");
+    const std::vector<int> counts = drawColouredContacts(svg, view, world, scratch, 4);
+    for (const JointDesc& joint : world.joints)
+        svg.line(view, side(world.bodies[static_cast<std::size_t>(joint.bodyA)].transform.position),
+                 side(world.bodies[static_cast<std::size_t>(joint.bodyB)].transform.position),
+                 "stroke:#222;stroke-width:2;stroke-dasharray:3 3");
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        if (isStatic(world, static_cast<int>(i))) continue;
+        const bool box = world.bodies[i].name.rfind("ragdoll", 0) != 0;
+        svg.circle(view, side(world.bodies[i].transform.position), box ? 0.12 : 0.06,
+                   box ? "fill:#fff;stroke:#333;stroke-width:1.5" : "fill:#333;stroke:none");
+    }
+    char caption[200];
+    std::snprintf(caption, sizeof caption, "two ragdolls on a 3-row pyramid: %d moving bodies, %zu contacts in %zu colours, %zu joints",
+                  static_cast<int>(bodies.states.size()) - bodies.firstDynamic, scratch.contactOrder.size(), counts.size(), world.joints.size());
+    svg.textAt({10, 24}, caption, "fill:#333");
+    double y = 80;
+    y = drawColourLegend(svg, 700, y, 26, counts);
+    y += 34;
+    svg.textAt({700, y}, "- - -  a joint: swept one at a", "fill:#222");
+    svg.textAt({700, y + 20}, "time, before the colours, in", "fill:#555");
+    svg.textAt({700, y + 40}, "every pass of every substep", "fill:#555");
+    svg.textAt({700, y + 70}, "open circles: boxes; dots:", "fill:#555");
+    svg.textAt({700, y + 90}, "the ragdolls' limbs", "fill:#555");
+    return svg.save(path);
+}
+
 }  // namespace wide_figures
 
 bool drawWideColouring(const std::string& path) { return wide_figures::colouringFigure(path); }
 bool drawWideLanes(const std::string& path) { return wide_figures::lanesFigure(path); }
+bool drawWideJoints(const std::string& path) { return wide_figures::jointsFigure(path); }
 
 }  // namespace figures
