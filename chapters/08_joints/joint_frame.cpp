@@ -18,18 +18,29 @@ JointFrame jointFrame(const World& world, const JointDesc& joint) {
 
 JointFrame jointFrame(const JointDesc& joint, const Transform& poseA, const Vec3& centerA, const Transform& poseB,
                       const Vec3& centerB) {
+    JointFrame frame = jointRowFrame(joint, poseA, centerA, poseB, centerB);
+    if (turnsFreely(joint.type)) addTurn(frame, joint, poseA, poseB);
+    return frame;
+}
+
+JointFrame jointRowFrame(const JointDesc& joint, const Transform& poseA, const Vec3& centerA, const Transform& poseB,
+                         const Vec3& centerB) {
     JointFrame frame;
     frame.anchorA = poseA.apply(joint.localAnchorA);
     frame.anchorB = poseB.apply(joint.localAnchorB);
     frame.armA = frame.anchorA - centerA;
     frame.armB = frame.anchorB - centerB;
+    if (!turnsFreely(joint.type)) addTurn(frame, joint, poseA, poseB);
+    return frame;
+}
+
+void addTurn(JointFrame& frame, const JointDesc& joint, const Transform& poseA, const Transform& poseB) {
     frame.rotationA = poseA.rotation;
     Quat deviation = (poseA.rotation.conjugate() * poseB.rotation) * joint.referenceRotation.conjugate();
     if (deviation.w() < 0) deviation.coeffs() = -deviation.coeffs();  // the shorter way round
     frame.deviation = deviation.normalized();
     frame.axisA = poseA.rotation * joint.axis;
     frame.axisB = poseA.rotation * (frame.deviation * joint.axis);
-    return frame;
 }
 
 // [ch08-twist]

@@ -29,6 +29,19 @@ JointFrame jointFrame(const World& world, const JointDesc& joint);
 JointFrame jointFrame(const JointDesc& joint, const Transform& poseA, const Vec3& centerA, const Transform& poseB,
                       const Vec3& centerB);
 
+/// Whether a joint's rows leave the bodies' relative turn free (a distance joint, a ball socket):
+/// its rows read only the anchors and arms of its frame.
+constexpr bool turnsFreely(JointType type) { return type == JointType::Distance || type == JointType::BallSocket; }
+
+/// What the joint's rows read of its frame: the anchors and arms, and the turn (axes, deviation)
+/// only where the type locks or limits it. A solve that builds rows every substep calls this:
+/// the turn is a third of the frame's arithmetic.
+JointFrame jointRowFrame(const JointDesc& joint, const Transform& poseA, const Vec3& centerA, const Transform& poseB,
+                         const Vec3& centerB);
+
+/// The turn part of `frame`: A's rotation, B's deviation from rest in A's frame, the axes.
+void addTurn(JointFrame& frame, const JointDesc& joint, const Transform& poseA, const Transform& poseB);
+
 // [ch08-angles]
 /// The angle B has turned about the joint axis (a hinge's angle; a cone-twist's twist): the twist
 /// part of the deviation, 2 atan2(v . axis, w), in (-pi, pi].

@@ -39,9 +39,12 @@ ConstraintRow negated(ConstraintRow row) {
     return row;
 }
 
+// x - x is 0 for every finite x and NaN for an infinity or a NaN, so one sum of them says whether
+// all thirteen numbers are finite (one branch a row instead of thirteen).
 bool finiteRow(const ConstraintRow& row) {
-    return row.linearA.allFinite() && row.angularA.allFinite() && row.linearB.allFinite() &&
-           row.angularB.allFinite() && std::isfinite(row.bias);
+    const Real sum = (row.linearA - row.linearA).sum() + (row.angularA - row.angularA).sum() +
+                     (row.linearB - row.linearB).sum() + (row.angularB - row.angularB).sum() + (row.bias - row.bias);
+    return sum == 0;
 }
 
 // Collects one joint's rows, slot by slot.
@@ -315,21 +318,24 @@ void appendJointRows(JointRows& out, const JointDesc& joint, int jointIndex, con
         ++out.invalidSkipped;
         return;
     }
-    for (std::size_t slot = 0; slot < rowCount; ++slot) {
-        ConstraintRow& row = rows[static_cast<std::ptrdiff_t>(slot)];
-        row.bodyA = rowBodyA;  // the rows name the bodies as the caller's list holds them
-        row.bodyB = rowBodyB;
-        row.effectiveMass = effectiveMass(row, bodies);
-        const Real impulse = carried && slot < JointImpulses::kSlots ? carried->slot[slot] : Real(0);
-        row.impulse = std::isfinite(impulse) ? std::clamp(impulse, row.lower, row.upper) : Real(0);
-    }
-
     JointRowSet set;
     set.joint = jointIndex;
     set.firstRow = static_cast<int>(first);
     set.rowCount = static_cast<int>(rowCount);
     if (joint.type != JointType::Distance && joint.type != JointType::Slider)
         setPointBlock(set, frame, bodies[static_cast<std::size_t>(rowBodyA)], bodies[static_cast<std::size_t>(rowBodyB)]);
+    for (std::size_t slot = 0; slot < rowCount; ++slot) {
+        ConstraintRow& row = rows[static_cast<std::ptrdiff_t>(slot)];
+        row.bodyA = rowBodyA;  // the rows name the bodies as the caller's list holds them
+        row.bodyB = rowBodyB;
+        // The block solves slots 0-2 by its own mass; an unused slot has no Jacobian (mass 0).
+        const bool inBlock = set.pointBlock && slot < 3;
+        const bool unused = out.kind[first + slot] == JointRowKind::Free && row.angularA.isZero(0) &&
+                            row.angularB.isZero(0) && row.linearA.isZero(0) && row.linearB.isZero(0);
+        row.effectiveMass = inBlock || unused ? Real(0) : effectiveMass(row, bodies);
+        const Real impulse = carried && slot < JointImpulses::kSlots ? carried->slot[slot] : Real(0);
+        row.impulse = std::isfinite(impulse) ? std::clamp(impulse, row.lower, row.upper) : Real(0);
+    }
     out.joints.push_back(set);
 }
 

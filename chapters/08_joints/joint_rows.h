@@ -45,7 +45,7 @@ struct JointRowSet {
     int joint = -1;
     int firstRow = 0;
     int rowCount = 0;
-    bool pointBlock = false;      // slots 0-2 are solved together with pointMass
+    bool pointBlock = false;      // slots 0-2 are solved together with pointMass (their rows' own mass is 0)
     Mat3 pointMass = Mat3::Zero();  // K^-1 of the point block
     Vec3 pointArmA = Vec3::Zero();  // the block's arms from the centres of mass to the anchors
     Vec3 pointArmB = Vec3::Zero();

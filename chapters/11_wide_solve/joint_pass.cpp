@@ -42,27 +42,6 @@ int entryFor(const World& world, const SolverBodies& bodies, int body, JointPass
     return entry;
 }
 
-void loadVelocities(JointPass& pass, const SolverBodyState* states) {
-    for (std::size_t e = 0; e < pass.bodies.size(); ++e) {
-        const SolverBodyState& state = states[pass.slot[e]];
-        SolverBody& body = pass.bodies[e];
-        body.linearVelocity = Vec3(state.linearVelocity[0], state.linearVelocity[1], state.linearVelocity[2]);
-        body.angularVelocity = Vec3(state.angularVelocity[0], state.angularVelocity[1], state.angularVelocity[2]);
-    }
-}
-
-void storeVelocities(const JointPass& pass, SolverBodyState* states) {
-    for (std::size_t e = 0; e < pass.bodies.size(); ++e) {
-        if (pass.slot[e] == 0) continue;  // nothing moves slot 0 (zero inverse mass); kinematic alike
-        SolverBodyState& state = states[pass.slot[e]];
-        const SolverBody& body = pass.bodies[e];
-        for (int k = 0; k < 3; ++k) {
-            state.linearVelocity[k] = body.linearVelocity[k];
-            state.angularVelocity[k] = body.angularVelocity[k];
-        }
-    }
-}
-
 }  // namespace
 
 void prepareJointPass(const World& world, const SolverBodies& bodies, Real carryScale, JointPass& pass) {
@@ -118,13 +97,14 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, Join
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
         const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
-        const JointFrame frame = jointFrame(joint, a.transform, a.center, b.transform, b.center);
+        const JointFrame frame = jointRowFrame(joint, a.transform, a.center, b.transform, b.center);
         const std::size_t before = rows.joints.size();
         appendJointRows(rows, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i], pass.bodies, h, feedback,
                         &pass.carried[i]);
         // A joint whose rows came out non-finite is left out this substep (rows.invalidSkipped).
         if (rows.joints.size() > before) rows.joints.back().joint = static_cast<int>(i);  // the pass's index
     }
+    packJointRows(rows, pass.bodies, pass.slot, pass.packed);
 }
 // [ch11-joint-rows]
 
@@ -133,30 +113,17 @@ void warmStartJoints(JointPass& pass, SolverBodyState* states, bool warmStarting
     if (pass.rows.rows.empty()) return;
     if (!warmStarting) {  // every substep from zero, as the contacts
         for (ConstraintRow& row : pass.rows.rows) row.impulse = 0;
+        for (PackedPointBlock& block : pass.packed.blocks) block.impulse = Vec3::Zero();
+        for (PackedJointRow& row : pass.packed.rows) row.impulse = 0;
         return;
     }
-    loadVelocities(pass, states);
-    for (const ConstraintRow& row : pass.rows.rows)
-        if (row.impulse != 0) applyRowImpulse(row, row.impulse, pass.bodies);
-    storeVelocities(pass, states);
+    warmStartPacked(pass.packed, states);
 }
 
-void solveJoints(JointPass& pass, SolverBodyState* states, bool relax) {
-    JointRows& rows = pass.rows;
-    if (rows.rows.empty()) return;
-    if (relax) {  // the biased pass's rows with the feedback taken out (chapter 8's relax on the same rows)
-        for (std::size_t i = 0; i < rows.rows.size(); ++i) {
-            if (!rows.fedBack[i]) continue;
-            rows.rows[i].bias = 0;
-            rows.softness[i] = Softness{};
-        }
-    }
-    loadVelocities(pass, states);
-    for (const JointRowSet& set : rows.joints) solveJointRows(rows, set, pass.bodies);
-    storeVelocities(pass, states);
-}
+void solveJoints(JointPass& pass, SolverBodyState* states, bool relax) { solvePacked(pass.packed, states, relax); }
 
 void keepJointImpulses(JointPass& pass) {
+    unpackImpulses(pass.packed, pass.rows);
     for (const JointRowSet& set : pass.rows.joints) {
         JointImpulses& carried = pass.carried[static_cast<std::size_t>(set.joint)];
         for (int slot = 0; slot < set.rowCount && slot < JointImpulses::kSlots; ++slot)

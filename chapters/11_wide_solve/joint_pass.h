@@ -13,11 +13,14 @@
 // only their errors to first order does not do: a chain's link swinging 8 cm across its
 // neighbour in a frame stretches by 1.3 cm to first order. Moving the Jacobians and keeping the
 // effective masses does not either: the arms turn, the frame's inertia does not, and a row's mass
-// can fall to half of what it answers with (a ragdoll's shin spun up and blew apart). Chapter 8's rules build them and solve them
-// (appendJointRows, applyRowFeedback, solveJointRows): one physics, whichever solve runs it.
+// can fall to half of what it answers with (a ragdoll's shin spun up and blew apart). Chapter 8's
+// rules build them (appendJointRows, applyRowFeedback); the three sweeps take them packed
+// (packed_joint_rows.h: chapter 8's sweep, with M^-1 J^T made once a substep), one physics,
+// whichever solve runs it.
 
 #include "01_integrators/forces.h"
 #include "08_joints/joint_solver.h"
+#include "11_wide_solve/packed_joint_rows.h"
 #include "11_wide_solve/solver_data.h"
 #include "world/world.h"
 
@@ -52,6 +55,7 @@ struct JointPass {
     };
     std::vector<BodyPose> poses;       // per entry: where it stands this substep
     JointRows rows;                    // this substep's
+    PackedJointRows packed;            // the same rows, as the sweeps take them
     JointSweep sweep;
     // Springs and drag: chapter 1's forces at each substep's state, per motion.
     std::vector<MotionState> forceStates;

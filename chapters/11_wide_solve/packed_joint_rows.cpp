@@ -1,0 +1,163 @@
+#include "11_wide_solve/packed_joint_rows.h"
+
+#include <algorithm>
+
+namespace stepwise {
+
+namespace {
+
+Vec3 linearOf(const SolverBodyState& s) { return Vec3(s.linearVelocity[0], s.linearVelocity[1], s.linearVelocity[2]); }
+Vec3 angularOf(const SolverBodyState& s) { return Vec3(s.angularVelocity[0], s.angularVelocity[1], s.angularVelocity[2]); }
+
+// Slot 0 never moves: every push on it is zero (its inverse mass is), and it is not written, so
+// that a static body's velocity stays exactly zero.
+void push(SolverBodyState* states, int slot, const Vec3& linear, const Vec3& angular) {
+    if (slot == 0) return;
+    SolverBodyState& s = states[slot];
+    for (int k = 0; k < 3; ++k) {
+        s.linearVelocity[k] += linear[k];
+        s.angularVelocity[k] += angular[k];
+    }
+}
+
+PackedJointRow packRow(const ConstraintRow& row, std::size_t index, const JointRows& rows,
+                       const std::vector<SolverBody>& bodies, const std::vector<int>& slotOfEntry) {
+    const SolverBody& a = bodies[static_cast<std::size_t>(row.bodyA)];
+    const SolverBody& b = bodies[static_cast<std::size_t>(row.bodyB)];
+    PackedJointRow packed;
+    packed.slotA = slotOfEntry[static_cast<std::size_t>(row.bodyA)];
+    packed.slotB = slotOfEntry[static_cast<std::size_t>(row.bodyB)];
+    packed.row = static_cast<int>(index);
+    packed.fedBack = rows.fedBack[index] != 0;
+    packed.linearA = row.linearA;
+    packed.angularA = row.angularA;
+    packed.linearB = row.linearB;
+    packed.angularB = row.angularB;
+    packed.moveLinearA = a.inverseMass * row.linearA;
+    packed.moveAngularA = a.inverseInertia * row.angularA;
+    packed.moveLinearB = b.inverseMass * row.linearB;
+    packed.moveAngularB = b.inverseInertia * row.angularB;
+    packed.effectiveMass = row.effectiveMass;
+    packed.bias = row.bias;
+    packed.lower = row.lower;
+    packed.upper = row.upper;
+    packed.impulse = row.impulse;
+    packed.soft = rows.softness[index];
+    return packed;
+}
+
+PackedPointBlock packBlock(const JointRowSet& set, const JointRows& rows, const std::vector<SolverBody>& bodies,
+                           const std::vector<int>& slotOfEntry) {
+    const std::size_t first = static_cast<std::size_t>(set.firstRow);
+    const ConstraintRow& row = rows.rows[first];
+    const SolverBody& a = bodies[static_cast<std::size_t>(row.bodyA)];
+    const SolverBody& b = bodies[static_cast<std::size_t>(row.bodyB)];
+    PackedPointBlock block;
+    block.slotA = slotOfEntry[static_cast<std::size_t>(row.bodyA)];
+    block.slotB = slotOfEntry[static_cast<std::size_t>(row.bodyB)];
+    block.row = set.firstRow;
+    block.armA = set.pointArmA;
+    block.armB = set.pointArmB;
+    block.mass = set.pointMass;
+    block.inverseMassA = a.inverseMass;
+    block.inverseMassB = b.inverseMass;
+    block.inverseInertiaA = a.inverseInertia;
+    block.inverseInertiaB = b.inverseInertia;
+    for (int axis = 0; axis < 3; ++axis) {
+        block.fedBack[axis] = rows.fedBack[first + static_cast<std::size_t>(axis)] != 0;
+        block.bias[axis] = rows.rows[first + static_cast<std::size_t>(axis)].bias;
+        block.impulse[axis] = rows.rows[first + static_cast<std::size_t>(axis)].impulse;
+    }
+    block.soft = rows.softness[first];
+    return block;
+}
+
+// The block's impulse: the anchors' relative velocity to the bias, softened (chapter 8's
+// solveJointRows).
+void solveBlock(PackedPointBlock& block, SolverBodyState* states, bool relax) {
+    const SolverBodyState& a = states[block.slotA];
+    const SolverBodyState& b = states[block.slotB];
+    const Vec3 relative = linearOf(b) + angularOf(b).cross(block.armB) - linearOf(a) - angularOf(a).cross(block.armA);
+    Vec3 bias = block.bias;
+    for (int axis = 0; axis < 3; ++axis)
+        if (relax && block.fedBack[axis]) bias[axis] = 0;
+    const Softness soft = relax && block.fedBack[0] ? Softness{} : block.soft;
+    const Vec3 impulse = soft.massScale * (block.mass * (bias - relative)) - soft.impulseScale * block.impulse;
+    block.impulse += impulse;
+    push(states, block.slotA, -block.inverseMassA * impulse, -(block.inverseInertiaA * block.armA.cross(impulse)));
+    push(states, block.slotB, block.inverseMassB * impulse, block.inverseInertiaB * block.armB.cross(impulse));
+}
+
+// [ch11-packed-sweep]
+void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
+    const SolverBodyState& a = states[row.slotA];
+    const SolverBodyState& b = states[row.slotB];
+    const Real velocity = row.linearA.dot(linearOf(a)) + row.angularA.dot(angularOf(a)) + row.linearB.dot(linearOf(b)) +
+                          row.angularB.dot(angularOf(b));
+    const bool plain = relax && row.fedBack;  // the relax pass: no bias, rigid
+    const Softness soft = plain ? Softness{} : row.soft;
+    const Real bias = plain ? Real(0) : row.bias;
+    const Real previous = row.impulse;
+    const Real increment = soft.massScale * row.effectiveMass * (bias - velocity) - soft.impulseScale * previous;
+    row.impulse = std::clamp(previous + increment, row.lower, row.upper);
+    const Real applied = row.impulse - previous;
+    push(states, row.slotA, applied * row.moveLinearA, applied * row.moveAngularA);
+    push(states, row.slotB, applied * row.moveLinearB, applied * row.moveAngularB);
+}
+// [ch11-packed-sweep]
+
+}  // namespace
+
+void packJointRows(const JointRows& rows, const std::vector<SolverBody>& bodies, const std::vector<int>& slotOfEntry,
+                   PackedJointRows& packed) {
+    packed.joints.clear();
+    packed.blocks.clear();
+    packed.rows.clear();
+    for (const JointRowSet& set : rows.joints) {
+        PackedJoint joint;
+        int begin = set.firstRow;
+        if (set.pointBlock) {
+            joint.block = static_cast<int>(packed.blocks.size());
+            packed.blocks.push_back(packBlock(set, rows, bodies, slotOfEntry));
+            begin += 3;
+        }
+        joint.firstRow = static_cast<int>(packed.rows.size());
+        for (int i = begin; i < set.firstRow + set.rowCount; ++i) {
+            const ConstraintRow& row = rows.rows[static_cast<std::size_t>(i)];
+            if (row.effectiveMass == 0) continue;  // chapter 8's sweep skips it too
+            packed.rows.push_back(packRow(row, static_cast<std::size_t>(i), rows, bodies, slotOfEntry));
+        }
+        joint.rowCount = static_cast<int>(packed.rows.size()) - joint.firstRow;
+        packed.joints.push_back(joint);
+    }
+}
+
+void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
+    for (const PackedPointBlock& block : packed.blocks) {
+        const Vec3& impulse = block.impulse;
+        push(states, block.slotA, -block.inverseMassA * impulse, -(block.inverseInertiaA * block.armA.cross(impulse)));
+        push(states, block.slotB, block.inverseMassB * impulse, block.inverseInertiaB * block.armB.cross(impulse));
+    }
+    for (const PackedJointRow& row : packed.rows) {
+        if (row.impulse == 0) continue;
+        push(states, row.slotA, row.impulse * row.moveLinearA, row.impulse * row.moveAngularA);
+        push(states, row.slotB, row.impulse * row.moveLinearB, row.impulse * row.moveAngularB);
+    }
+}
+
+void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
+    for (const PackedJoint& joint : packed.joints) {
+        if (joint.block >= 0) solveBlock(packed.blocks[static_cast<std::size_t>(joint.block)], states, relax);
+        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i)
+            solveRow(packed.rows[static_cast<std::size_t>(i)], states, relax);
+    }
+}
+
+void unpackImpulses(const PackedJointRows& packed, JointRows& rows) {
+    for (const PackedPointBlock& block : packed.blocks)
+        for (int axis = 0; axis < 3; ++axis)
+            rows.rows[static_cast<std::size_t>(block.row + axis)].impulse = block.impulse[axis];
+    for (const PackedJointRow& row : packed.rows) rows.rows[static_cast<std::size_t>(row.row)].impulse = row.impulse;
+}
+
+}  // namespace stepwise

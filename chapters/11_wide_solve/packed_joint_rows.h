@@ -1,0 +1,68 @@
+#pragma once
+// A substep's joint rows, as the fast solve sweeps them three times (warm start, biased pass,
+// relax pass). Chapter 8's rows name their bodies and carry the Jacobian J; every sweep then
+// multiplies J by the bodies' inverse mass and inertia again (M^-1 J^T, two 3x3 products a row).
+// The inertia is the frame's for the whole substep, so the product is made once, when the rows
+// are packed, and the sweeps read and write the solve's body states by slot. Rows without a
+// Jacobian's effect (an unused slot, a joint whose bodies cannot both move it) are left out: the
+// sweeps skip them anyway. The rules (bias, softness, clamping, the point block) are chapter 8's.
+
+#include "08_joints/joint_rows.h"
+#include "11_wide_solve/solver_data.h"
+
+#include <vector>
+
+namespace stepwise {
+
+/// One scalar row of a joint, ready to sweep.
+struct PackedJointRow {
+    int slotA = 0, slotB = 0;   // the bodies' solver slots (0: does not move)
+    int row = 0;                // into JointRows::rows: where its impulse goes back
+    bool fedBack = false;       // the relax pass takes its bias and softness out
+    Vec3 linearA = Vec3::Zero(), angularA = Vec3::Zero(), linearB = Vec3::Zero(), angularB = Vec3::Zero();  // J
+    Vec3 moveLinearA = Vec3::Zero(), moveAngularA = Vec3::Zero();  // M^-1 J^T: the velocity one unit of impulse adds
+    Vec3 moveLinearB = Vec3::Zero(), moveAngularB = Vec3::Zero();
+    Real effectiveMass = 0, bias = 0, lower = 0, upper = 0, impulse = 0;
+    Softness soft;
+};
+
+/// A ball socket's three point rows, solved as chapter 8's 3x3 block.
+struct PackedPointBlock {
+    int slotA = 0, slotB = 0;
+    int row = 0;                       // the first of its three rows in JointRows::rows
+    bool fedBack[3] = {false, false, false};
+    Vec3 armA = Vec3::Zero(), armB = Vec3::Zero();
+    Mat3 mass = Mat3::Zero();          // K^-1
+    Real inverseMassA = 0, inverseMassB = 0;
+    Mat3 inverseInertiaA = Mat3::Zero(), inverseInertiaB = Mat3::Zero();
+    Vec3 bias = Vec3::Zero(), impulse = Vec3::Zero();
+    Softness soft;
+};
+
+/// One joint: its block (if any), then its rows, in chapter 8's order.
+struct PackedJoint {
+    int block = -1;               // into PackedJointRows::blocks, or -1
+    int firstRow = 0, rowCount = 0;  // into PackedJointRows::rows
+};
+
+struct PackedJointRows {
+    std::vector<PackedJoint> joints;
+    std::vector<PackedPointBlock> blocks;
+    std::vector<PackedJointRow> rows;
+};
+
+/// Packs `rows` (built over the solver bodies `bodies`, entries `slotOfEntry` in the solve's
+/// slots) for the sweeps.
+void packJointRows(const JointRows& rows, const std::vector<SolverBody>& bodies, const std::vector<int>& slotOfEntry,
+                   PackedJointRows& packed);
+
+/// The carried impulses applied to the bodies.
+void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states);
+
+/// One Gauss-Seidel sweep, joint after joint: biased, or (`relax`) without the feedback.
+void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax);
+
+/// The sweeps' impulses back into `rows` (which holds the rows left out as they were).
+void unpackImpulses(const PackedJointRows& packed, JointRows& rows);
+
+}  // namespace stepwise
