@@ -145,6 +145,12 @@ void checkSupported(const World& world) {
     if (!world.springs.empty())
         throw BulletUnsupported("springs[0] (\"" + world.bodies[std::size_t(world.springs[0].bodyA)].name +
                                 "\"): unsupported: Bullet has no damped spring between two anchors");
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        const ShapeType type = world.bodies[i].shape.type;
+        if (type == ShapeType::Compound || type == ShapeType::Mesh || type == ShapeType::HeightField)
+            throw BulletUnsupported(bodyLabel(world, static_cast<int>(i)) + ".shape (" + toString(type) +
+                                    "): unsupported by this peer yet");
+    }
     for (std::size_t i = 0; i < world.joints.size(); ++i) {
         const JointDesc& joint = world.joints[i];
         if (joint.type == JointType::Distance)
@@ -215,6 +221,14 @@ btCollisionShape* makeShape(BulletScene& scene, const Body& body, const Principa
             scene.shapes.push_back(std::move(hull));
             return scene.shapes.back().get();
         }
+        // The engine's cylinder runs along +Y, as btCylinderShape's does (half extents r, h, r).
+        case ShapeType::Cylinder:
+            made = std::make_unique<btCylinderShape>(btVector3(btScalar(shape.radius), btScalar(shape.halfHeight),
+                                                               btScalar(shape.radius)));
+            break;
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: return nullptr;  // refused by checkSupported
     }
     btCollisionShape* child = made.get();
     scene.shapes.push_back(std::move(made));

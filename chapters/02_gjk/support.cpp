@@ -57,6 +57,22 @@ Vec3 capsuleSupport(Real radius, Real halfHeight, const Vec3& d) {
 }
 // [ch02-support-round]
 
+}  // namespace
+
+// [ch13-cylinder-support]
+// A cylinder (axis +Y) is a disc swept along its axis, so its support is the end of the axis
+// segment on d's side plus the disc's support: the rim point in the direction of d's part across
+// the axis. With no such part (d along the axis) every rim point ties: the centre of the cap,
+// which is on the surface, comes back.
+Vec3 cylinderSupport(Real radius, Real halfHeight, const Vec3& d) {
+    const Real across = std::hypot(d.x(), d.z());
+    const Vec3 rim = across > 0 ? Vec3(radius * d.x() / across, 0, radius * d.z() / across) : Vec3::Zero();
+    return rim + Vec3(0, d.y() >= 0 ? halfHeight : -halfHeight, 0);
+}
+// [ch13-cylinder-support]
+
+namespace {
+
 // A hull's support is its vertex of largest dot product: a linear function over a polytope is
 // maximised at a vertex. O(n); hill climbing over vertex neighbours is the usual speed-up for
 // large hulls, not needed for game-sized ones.
@@ -84,6 +100,10 @@ Vec3 localSupport(const Shape& shape, const Vec3& localDirection, SupportMode mo
         case ShapeType::Sphere: return sphereSupport(shape.radius, localDirection);
         case ShapeType::Capsule: return capsuleSupport(shape.radius, shape.halfHeight, localDirection);
         case ShapeType::Convex: return hullSupport(shape.hull.get(), localDirection);
+        case ShapeType::Cylinder: return cylinderSupport(shape.radius, shape.halfHeight, localDirection);
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // not one convex set: chapter 13 collides their parts
     }
     return Vec3::Zero();
 }

@@ -19,6 +19,10 @@ enum class SupportMode { Extents, Vertices };
 /// comes back (never NaN).
 Vec3 localSupport(const Shape& shape, const Vec3& localDirection, SupportMode mode = SupportMode::Extents);
 
+/// The support of a cylinder of axis +Y (the shape chapter 13 adds; every convex kind's support
+/// map lives here, where GJK asks for it).
+Vec3 cylinderSupport(Real radius, Real halfHeight, const Vec3& localDirection);
+
 /// A shape placed in the world.
 struct ConvexProxy {
     const Shape* shape = nullptr;

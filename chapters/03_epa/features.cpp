@@ -12,7 +12,11 @@ int supportVertexIndex(const Shape& shape, const Vec3& localPoint) {
             // Support points of a box are corners: the signs of the coordinates say which.
             return (localPoint.x() > 0 ? 1 : 0) | (localPoint.y() > 0 ? 2 : 0) | (localPoint.z() > 0 ? 4 : 0);
         case ShapeType::Capsule: return localPoint.y() > 0 ? 1 : 0;
-        case ShapeType::Sphere: return -1;
+        case ShapeType::Sphere:
+        case ShapeType::Cylinder:  // a rim point: no vertex names it
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: return -1;
         case ShapeType::Convex: {
             if (!shape.hull) return -1;
             int nearest = -1;

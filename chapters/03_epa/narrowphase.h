@@ -34,7 +34,8 @@ struct CollideOptions {
 /// True when the pair has a closed-form routine (it never needs GJK or EPA).
 bool hasClosedForm(ShapeType a, ShapeType b);
 
-/// False for shapes no routine can answer: non-finite or non-positive sizes, a missing hull.
+/// False for shapes no routine can answer: non-finite or non-positive sizes, a missing hull, and
+/// the kinds that are not one convex set (compounds, meshes, height fields: chapter 13's).
 bool isValidShape(const Shape& shape);
 
 /// Contact between two placed shapes. Invalid input (bad shape, non-finite pose) gives

@@ -68,6 +68,13 @@ PlacedShape placeShape(const Shape& shape, const Transform& pose) {
             placed.radius = shape.hull->vertexRadius;
             return placed;
         }
+        case ShapeType::Cylinder:
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField:  // chapter 13's kinds: the shape's own box
+            placed.box = computeAabb(shape, pose);
+            placed.radius = boundingRadius(shape);
+            return placed;
     }
     placed.box.min = pose.position - reach;
     placed.box.max = pose.position + reach;

@@ -106,6 +106,31 @@ bool collideManifold(const Shape& a, const Transform& ta, const Shape& b, const 
     return buildManifold(a, ta, b, tb, query, keepDistance, options, contact, previous);
 }
 
+namespace {
+
+/// A pair's record into World::contacts: the manifold just built, matched to last step's, or, for
+/// a pair out of reach this search whose bounds still overlap, last step's record a few searches
+/// more, its points riding on their bodies, so a contact that opens for a step does not lose what
+/// it carried (no flicker).
+void keepManifold(World& world, const BodyPair& pair, bool built, bool intersect, const Contact* old, Contact& contact,
+                  const ManifoldOptions& options) {
+    if (built) {
+        if (intersect) world.pairs.push_back(pair);
+        if (old) matchContactPoints(contact, *old, options.matchDistance);
+        world.contacts.push_back(contact);
+        return;
+    }
+    if (old && keepsMissedRecord(*old, options.keepSteps)) {
+        Contact kept = *old;
+        ++kept.missedSteps;
+        refreshFromAnchors(kept, world.bodies[static_cast<std::size_t>(pair.bodyA)],
+                           world.bodies[static_cast<std::size_t>(pair.bodyB)]);
+        world.contacts.push_back(kept);
+    }
+}
+
+}  // namespace
+
 // [ch06-update-manifolds]
 int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options) {
     const auto [ordered, previous] = beginContactSearch(world, world.candidatePairs);
@@ -123,6 +148,21 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
         const Body& bodyB = world.bodies[static_cast<std::size_t>(pair.bodyB)];
         if (!canCollide(bodyA, bodyB)) continue;
         ++queries;
+        const Contact* old = findContact(previous, pair);
+        Contact contact;
+        contact.bodyA = pair.bodyA;
+        contact.bodyB = pair.bodyB;
+        // A later chapter's shapes first: its manifold, kept and matched as chapter 3's are.
+        const PairManifold custom = options.pairManifold
+                                        ? options.pairManifold(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform,
+                                                               manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead) +
+                                                                   pointSlack(world),
+                                                               old, contact)
+                                        : PairManifold{};
+        if (custom.handled) {
+            keepManifold(world, pair, custom.built, custom.intersect, old, contact, options);
+            continue;
+        }
         const ContactQuery query = options.query
                                        ? options.query(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide)
                                        : collideShapes(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, collide);
@@ -130,27 +170,9 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
         const Real margin = manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead);
         const Real keepDistance = margin + pointSlack(world);
         const bool close = query.intersect || -query.depth < keepDistance;
-        const Contact* old = findContact(previous, pair);
-
-        Contact contact;
-        contact.bodyA = pair.bodyA;
-        contact.bodyB = pair.bodyB;
-        if (close && buildManifold(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, query, keepDistance,
-                                   options, contact, old)) {
-            if (query.intersect) world.pairs.push_back(pair);
-            if (old) matchContactPoints(contact, *old, options.matchDistance);
-            world.contacts.push_back(contact);
-            continue;
-        }
-        // The pair's bounds still overlap but it is out of reach this search: its record lives on
-        // a few searches, its points riding on their bodies, so a contact that opens for a step
-        // does not lose what it carried (no flicker).
-        if (old && keepsMissedRecord(*old, options.keepSteps)) {
-            Contact kept = *old;
-            ++kept.missedSteps;
-            refreshFromAnchors(kept, bodyA, bodyB);
-            world.contacts.push_back(kept);
-        }
+        const bool built = close && buildManifold(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, query,
+                                                  keepDistance, options, contact, old);
+        keepManifold(world, pair, built, query.intersect, old, contact, options);
     }
     return queries;
 }

@@ -9,6 +9,7 @@
 #include "world/world.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace stepwise {
@@ -17,11 +18,29 @@ namespace stepwise {
 using ContactQueryFunction = ContactQuery (*)(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
                                               const CollideOptions& options);
 
+/// What a later chapter's manifold function says of a pair (ManifoldOptions::pairManifold).
+struct PairManifold {
+    bool handled = false;    // false: the pair is chapter 3's and buildManifold's
+    bool built = false;      // a contact within keepDistance was built into the record
+    bool intersect = false;  // the shapes overlap (the pair counts in World::pairs)
+};
+
+/// The manifold of a pair of shapes that chapter 3's query cannot answer as one convex pair
+/// (chapter 13: compounds, meshes, height fields; cylinders' faces). Fills `contact`'s normal and
+/// points (bodies are set by the caller) from the shapes at their poses, keeping points within
+/// keepDistance; `previous` is the pair's last record, if any.
+/// A std::function: the chapter's stage keeps what its shapes need from frame to frame (a mesh's
+/// tree) in what the function holds.
+using PairManifoldFunction = std::function<PairManifold(const Shape& a, const Transform& ta, const Shape& b,
+                                                        const Transform& tb, Real keepDistance, const Contact* previous,
+                                                        Contact& contact)>;
+
 struct ManifoldOptions {
     bool multiPoint = true;          // false: chapter 3's one point per pair (for A/B in tests, bench, demo)
     ContactQueryFunction query = nullptr;  // null: collideShapes; chapter 10 hands its box-box query here
     Real matchDistance = Real(0.01); // m: fallback match of body-local anchors when feature ids differ (Jolt uses 1 cm)
     int keepSteps = 3;               // steps a pair whose bounds still overlap keeps its manifold within the speculative margin
+    PairManifoldFunction pairManifold = nullptr;  // a later chapter's shapes (chapter 13); asked first
 };
 
 /// The narrowphase stage of chapter 6: for each candidate pair (World::candidatePairs, canonical

@@ -19,6 +19,15 @@ Real smallestExtent(const Shape& shape) {
             }
             return thinnest == kRealMax ? Real(0) : thinnest;
         }
+        case ShapeType::Cylinder: return Real(2) * std::min(shape.radius, shape.halfHeight);
+        case ShapeType::Compound: {  // a thin child can tunnel on its own
+            Real thinnest = kRealMax;
+            for (const CompoundChild& child : shape.compound->children)
+                thinnest = std::min(thinnest, smallestExtent(child.shape));
+            return thinnest == kRealMax ? Real(0) : thinnest;
+        }
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: return 0;  // static: never fast
     }
     return 0;
 }

@@ -248,12 +248,72 @@ RayHit rayConvex(const Ray& ray, const ConvexProxy& proxy, int maxIterations) {
 }
 // [ch09-ray-gjk]
 
+namespace {
+
+// A ray against one triangle (Moller and Trumbore, "Fast, minimum storage ray-triangle
+// intersection", 1997), from either side: a picked surface, not a solid.
+void rayTriangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, RayHit& nearest) {
+    const Vec3 edge1 = b - a, edge2 = c - a;
+    const Vec3 p = ray.direction.cross(edge2);
+    const Real determinant = edge1.dot(p);
+    if (std::abs(determinant) < Real(1e-12)) return;  // parallel to the plane
+    const Vec3 s = ray.origin - a;
+    const Real u = s.dot(p) / determinant;
+    if (u < 0 || u > 1) return;
+    const Vec3 q = s.cross(edge1);
+    const Real v = ray.direction.dot(q) / determinant;
+    if (v < 0 || u + v > 1) return;
+    const Real t = edge2.dot(q) / determinant;
+    if (t < 0 || t > ray.maxDistance || (nearest.hit && t >= nearest.distance)) return;
+    Vec3 normal = edge1.cross(edge2).normalized();
+    if (normal.dot(ray.direction) > 0) normal = -normal;
+    nearest = RayHit{true, t, ray.origin + t * ray.direction, normal, false, 0};
+}
+
+RayHit rayMesh(const Ray& ray, const TriangleMesh& mesh, const Transform& pose) {
+    RayHit nearest;
+    for (const auto& corners : mesh.triangles)
+        rayTriangle(ray, pose.apply(mesh.vertices[static_cast<std::size_t>(corners[0])]),
+                    pose.apply(mesh.vertices[static_cast<std::size_t>(corners[1])]),
+                    pose.apply(mesh.vertices[static_cast<std::size_t>(corners[2])]), nearest);
+    return nearest;
+}
+
+RayHit rayHeightField(const Ray& ray, const HeightField& field, const Transform& pose) {
+    RayHit nearest;
+    const auto at = [&](int row, int column) {
+        return pose.apply(Vec3(Real(column) * field.cellSize,
+                               field.heights[static_cast<std::size_t>(row * field.columns + column)], Real(row) * field.cellSize));
+    };
+    for (int row = 0; row + 1 < field.rows; ++row)
+        for (int column = 0; column + 1 < field.columns; ++column) {
+            const Vec3 a = at(row, column), b = at(row, column + 1), c = at(row + 1, column), d = at(row + 1, column + 1);
+            if (!a.allFinite() || !b.allFinite() || !c.allFinite() || !d.allFinite()) continue;  // a hole
+            rayTriangle(ray, a, d, b, nearest);
+            rayTriangle(ray, a, c, d, nearest);
+        }
+    return nearest;
+}
+
+}  // namespace
+
 RayHit castRay(const Ray& ray, const Shape& shape, const Transform& pose) {
     switch (shape.type) {
         case ShapeType::Sphere: return raySphere(ray, pose.position, shape.radius);
         case ShapeType::Box: return rayBox(ray, pose, shape.halfExtents);
         case ShapeType::Capsule: return rayCapsule(ray, pose, shape.radius, shape.halfHeight);
         case ShapeType::Convex: return shape.hull ? rayConvex(ray, ConvexProxy{&shape, pose}) : RayHit{};
+        case ShapeType::Cylinder: return rayConvex(ray, ConvexProxy{&shape, pose});
+        case ShapeType::Compound: {
+            RayHit nearest;
+            for (const CompoundChild& child : shape.compound->children) {
+                const RayHit hit = castRay(ray, child.shape, compose(pose, child.transform));
+                if (hit.hit && (!nearest.hit || hit.distance < nearest.distance)) nearest = hit;
+            }
+            return nearest;
+        }
+        case ShapeType::Mesh: return rayMesh(ray, *shape.mesh, pose);
+        case ShapeType::HeightField: return rayHeightField(ray, *shape.heightField, pose);
     }
     return RayHit{};
 }

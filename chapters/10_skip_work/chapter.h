@@ -20,6 +20,7 @@ struct SkipWorkOptions {
     bool sleeping = true;           // with Settings::sleeping; false: never (the bench's A/B)
     bool enlargedBounds = true;     // sweep only when a body leaves its grown box; false: every step
     bool boxBoxQuery = true;        // two boxes by separating axes (box_box.h); false: GJK and EPA
+    PairManifoldFunction pairManifold = nullptr;  // a later chapter's shapes (ManifoldOptions::pairManifold)
 };
 
 Pipeline makeChapter10Pipeline(const World& world);

@@ -32,10 +32,11 @@ void cacheContacts(Pipeline& pipeline, const World& world, const SkipWorkOptions
     const bool split = chooseStepOrder(world) == StepOrder::SplitIntegration;
     const ContactSearch search = chooseContactSearch(world);
     narrowphase->name = stageName(stage_group::kNarrowphase, "cached_manifold");
-    narrowphase->run = [cache, rule = options.contactCache, boxBox = options.boxBoxQuery, split,
-                        search](World& stepWorld, Real) {
+    narrowphase->run = [cache, rule = options.contactCache, boxBox = options.boxBoxQuery, split, search,
+                        pairManifold = options.pairManifold](World& stepWorld, Real) {
         ManifoldOptions manifold;
         manifold.multiPoint = stepWorld.settings.manifoldContacts;
+        manifold.pairManifold = pairManifold;
         if (boxBox) manifold.query = fastContactQuery;
         const bool wholeFrame = split && isSubstepped(stepWorld.settings.stabilisation);
         const int ahead = wholeFrame ? std::max(1, stepWorld.settings.substeps) : substepsAhead(stepWorld, search);

@@ -23,6 +23,7 @@ struct SpeedOptions {
     bool boxBoxQuery = true;           // two boxes by separating axes (box_box.h); false: GJK and EPA
     bool shockPropagation = true;      // the planner's shock sweep; false: never
     std::shared_ptr<FastSolveStats> profile;  // when set, every fast solve adds its phase times here
+    PairManifoldFunction pairManifold = nullptr;  // a later chapter's shapes (ManifoldOptions::pairManifold)
 };
 
 Pipeline makeChapter12Pipeline(const World& world);

@@ -65,6 +65,7 @@ Pipeline makeChapter12Pipeline(const World& world, const SpeedOptions& options) 
     skip.sleeping = options.sleeping;
     skip.enlargedBounds = options.enlargedBounds;
     skip.boxBoxQuery = options.boxBoxQuery;
+    skip.pairManifold = options.pairManifold;
     WideSolveOptions wide;
     wide.fastSolve = options.fastSolve;
     wide.solverPath = options.solverPath;

@@ -7,15 +7,74 @@
 
 namespace stepwise {
 
-void drawBody(DebugDraw& draw, const Body& body, Color color, Fill fill) {
-    const Shape& shape = body.shape;
-    switch (shape.type) {
-        case ShapeType::Box: draw.box(body.transform, shape.halfExtents, color, fill); break;
-        case ShapeType::Sphere: draw.sphere(body.transform.position, shape.radius, color, fill); break;
-        case ShapeType::Capsule: draw.capsule(body.transform, shape.radius, shape.halfHeight, color, fill); break;
-        case ShapeType::Convex: draw.hull(body.transform, *shape.hull, color, fill); break;
+namespace {
+
+// A cylinder as a prism of kCylinderSides sides: triangles for the surface, lines for the rims.
+constexpr int kCylinderSides = 24;
+
+void drawCylinder(DebugDraw& draw, const Transform& pose, Real radius, Real halfHeight, Color color, Fill fill) {
+    Vec3 previousTop, previousBottom;
+    for (int i = 0; i <= kCylinderSides; ++i) {
+        const Real angle = Real(2) * kPi * Real(i) / Real(kCylinderSides);
+        const Vec3 rim(radius * std::cos(angle), 0, radius * std::sin(angle));
+        const Vec3 top = pose.apply(rim + Vec3(0, halfHeight, 0)), bottom = pose.apply(rim - Vec3(0, halfHeight, 0));
+        if (i > 0) {
+            draw.line(previousTop, top, color);
+            draw.line(previousBottom, bottom, color);
+            if (fill == Fill::Solid) {
+                draw.triangle(previousBottom, bottom, top, color);
+                draw.triangle(previousBottom, top, previousTop, color);
+                draw.triangle(pose.apply(Vec3(0, halfHeight, 0)), top, previousTop, color);
+                draw.triangle(pose.apply(Vec3(0, -halfHeight, 0)), previousBottom, bottom, color);
+            }
+        }
+        if (i % (kCylinderSides / 4) == 0) draw.line(bottom, top, color);
+        previousTop = top;
+        previousBottom = bottom;
     }
 }
+
+void drawMesh(DebugDraw& draw, const Transform& pose, const TriangleMesh& mesh, Color color) {
+    for (const auto& corners : mesh.triangles)
+        draw.triangle(pose.apply(mesh.vertices[static_cast<std::size_t>(corners[0])]),
+                      pose.apply(mesh.vertices[static_cast<std::size_t>(corners[1])]),
+                      pose.apply(mesh.vertices[static_cast<std::size_t>(corners[2])]), color);
+}
+
+void drawHeightField(DebugDraw& draw, const Transform& pose, const HeightField& field, Color color) {
+    const auto at = [&](int row, int column) {
+        const Real height = field.heights[static_cast<std::size_t>(row) * static_cast<std::size_t>(field.columns) +
+                                          static_cast<std::size_t>(column)];
+        return Vec3(Real(column) * field.cellSize, height, Real(row) * field.cellSize);
+    };
+    for (int row = 0; row + 1 < field.rows; ++row)
+        for (int column = 0; column + 1 < field.columns; ++column) {
+            const Vec3 a = at(row, column), b = at(row, column + 1), c = at(row + 1, column), d = at(row + 1, column + 1);
+            if (std::isnan(a.y()) || std::isnan(b.y()) || std::isnan(c.y()) || std::isnan(d.y())) continue;  // a hole
+            draw.triangle(pose.apply(a), pose.apply(d), pose.apply(b), color);
+            draw.triangle(pose.apply(a), pose.apply(c), pose.apply(d), color);
+        }
+}
+
+}  // namespace
+
+void drawShape(DebugDraw& draw, const Shape& shape, const Transform& pose, Color color, Fill fill) {
+    switch (shape.type) {
+        case ShapeType::Box: draw.box(pose, shape.halfExtents, color, fill); break;
+        case ShapeType::Sphere: draw.sphere(pose.position, shape.radius, color, fill); break;
+        case ShapeType::Capsule: draw.capsule(pose, shape.radius, shape.halfHeight, color, fill); break;
+        case ShapeType::Convex: draw.hull(pose, *shape.hull, color, fill); break;
+        case ShapeType::Cylinder: drawCylinder(draw, pose, shape.radius, shape.halfHeight, color, fill); break;
+        case ShapeType::Compound:
+            for (const CompoundChild& child : shape.compound->children)
+                drawShape(draw, child.shape, compose(pose, child.transform), color, fill);
+            break;
+        case ShapeType::Mesh: drawMesh(draw, pose, *shape.mesh, color); break;
+        case ShapeType::HeightField: drawHeightField(draw, pose, *shape.heightField, color); break;
+    }
+}
+
+void drawBody(DebugDraw& draw, const Body& body, Color color, Fill fill) { drawShape(draw, body.shape, body.transform, color, fill); }
 
 Color bodyColor(int bodyIndex) {
     // Golden-ratio hue steps keep neighbouring indices apart; fixed saturation and value

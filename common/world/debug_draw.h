@@ -10,6 +10,7 @@
 namespace stepwise {
 
 struct ConvexHull;
+struct Shape;
 struct Body;
 struct World;
 
@@ -46,6 +47,8 @@ public:
 };
 
 /// Draws one body's shape at its pose.
+/// A shape at a pose (a compound draws its children; meshes and height fields as triangles).
+void drawShape(DebugDraw& draw, const Shape& shape, const Transform& pose, Color color, Fill fill = Fill::Solid);
 void drawBody(DebugDraw& draw, const Body& body, Color color, Fill fill = Fill::Solid);
 
 /// Draws every body: statics grey, kinematics blue, dynamics in a colour picked by index.

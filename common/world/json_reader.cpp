@@ -166,7 +166,7 @@ Json parseStrictJson(const std::string& text, const std::string& source) {
     return Json::parse(text);  // well-formed, no duplicate keys, bounded: the checker saw to it
 }
 
-BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors) {
+BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors, const std::string& baseDirectory) {
     cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
                          "density", "friction", "restitution", "rolling_resistance", "bullet", "integrator", "path"},
                         &errors);
@@ -179,7 +179,13 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
         if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypeNames);
     });
     // A placeholder keeps the body, so joints and forces that name it can still be checked.
-    if (!errors.attempt([&] { def.shape = readShape(cursor.child("shape")); })) def.shape = Shape::sphere(1);
+    if (!errors.attempt([&] { def.shape = readShape(cursor.child("shape"), baseDirectory); })) def.shape = Shape::sphere(1);
+    // The ground of chapter 13 never moves: a mesh or a height field is static.
+    if (!canMove(def.shape) && def.type != BodyType::Static)
+        errors.attempt([&] {
+            cursor.child("shape").fail(std::string("a ") + toString(def.shape.type) +
+                                       " is static only: give its body \"type\": \"static\"");
+        });
     errors.attempt([&] {
         if (auto v = cursor.optional("position")) def.transform.position = v->vec3Within(kMaxCoordinate);
     });
@@ -246,13 +252,14 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
     return def;
 }
 
-Shape readShape(const JsonCursor& cursor) {
-    const std::vector<const char*> kinds = {"box", "sphere", "capsule", "convex"};
+Shape readShape(const JsonCursor& cursor, const std::string& baseDirectory) {
+    const std::vector<const char*> kinds = {"box", "sphere", "capsule", "convex", "cylinder", "compound", "mesh", "heightfield"};
+    const char* accepted = "box, sphere, capsule, convex, cylinder, compound, mesh, heightfield";
     if (!cursor.json().is_object() || cursor.json().size() != 1)
-        cursor.fail("must hold exactly one of box, sphere, capsule, convex");
+        cursor.fail(std::string("must hold exactly one of ") + accepted);
     const std::string kind = cursor.json().begin().key();
     if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
-        cursor.fail("unknown shape kind \"" + kind + "\" (accepted: box, sphere, capsule, convex)");
+        cursor.fail("unknown shape kind \"" + kind + "\" (accepted: " + accepted + ")");
     const JsonCursor params = cursor.child(kind.c_str());
     if (kind == "box") {
         params.expectObject({"half_extents"});
@@ -270,6 +277,10 @@ Shape readShape(const JsonCursor& cursor) {
         const Real radius = params.child("radius").positiveBetween(kMinShapeSize, kMaxShapeSize);
         return Shape::capsule(radius, params.child("half_height").positiveBetween(kMinShapeSize, kMaxShapeSize));
     }
+    if (kind == "cylinder") return readCylinder(params);
+    if (kind == "compound") return readCompound(params, baseDirectory);
+    if (kind == "mesh") return readMesh(params, baseDirectory);
+    if (kind == "heightfield") return readHeightField(params);
     params.expectObject({"vertices"});
     const JsonCursor list = params.child("vertices");
     std::vector<Vec3> points(list.arraySizeAtMost(std::size_t(kMaxHullPoints)));

@@ -221,10 +221,24 @@ Json parseStrictJson(const std::string& text, const std::string& source);
 /// Reads a body object of a scene (collide queries share it): every key, checked, with the
 /// rules of its type (no mass on a static body, ...). Errors go to `errors`; a shape that cannot
 /// be read becomes a placeholder, so the rest of the file can still be checked.
-BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors);
+/// `baseDirectory`: where a mesh's "obj" file is looked for (the scene file's folder).
+BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors, const std::string& baseDirectory = "");
 
-/// Reads `{ "box": {...} }`, `{ "sphere": {...} }`, `{ "capsule": {...} }` or `{ "convex": {...} }`.
-Shape readShape(const JsonCursor& cursor);
+/// Reads `{ "<kind>": {...} }` for every shape kind (docs/scene-format.md, "Shapes"): box, sphere,
+/// capsule, convex, cylinder, compound, mesh, heightfield. A mesh's "obj" file is named relative
+/// to `baseDirectory`.
+Shape readShape(const JsonCursor& cursor, const std::string& baseDirectory = "");
+
+/// The kinds of chapter 13 (shape_reader.cpp): `params` is the object under the kind's key.
+Shape readCylinder(const JsonCursor& params);
+Shape readCompound(const JsonCursor& params, const std::string& baseDirectory);
+Shape readMesh(const JsonCursor& params, const std::string& baseDirectory);
+Shape readHeightField(const JsonCursor& params);
+
+/// A Wavefront OBJ file's vertices ("v x y z") and faces ("f a b c ...", fanned into triangles;
+/// "a/t/n" and negative indices as the format has them); everything else is skipped. Throws
+/// SceneError naming the file and line of a bad vertex or face.
+void readObjFile(const std::string& path, std::vector<Vec3>& vertices, std::vector<std::array<int, 3>>& triangles);
 
 /// The shortest decimal that reads back as the same Real; whole numbers as integers.
 Json tidyNumber(Real value);

@@ -29,6 +29,7 @@ constexpr const char* kJoints = "joints";       // joint upkeep: which jointed p
 constexpr const char* kKinematic = "kinematic"; // kinematic bodies driven along paths (chapter 8)
 constexpr const char* kSleep = "sleep";         // islands at rest sleep, touched ones wake (chapter 10)
 constexpr const char* kPlan = "plan";           // the frame's substeps, right before the solve (chapters 11, 12)
+constexpr const char* kWorldShapes = "worlds";  // contacts with compounds, meshes and height fields (chapter 13)
 }  // namespace stage_group
 
 /// "group:variant".

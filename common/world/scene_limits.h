@@ -40,6 +40,12 @@ constexpr std::size_t kMaxJoints = 100000;
 constexpr std::size_t kMaxForces = 100000;
 constexpr std::size_t kMaxQueryPairs = 1000000;
 constexpr std::size_t kMaxFileBytes = std::size_t(64) << 20;
+/// A mesh's vertices and triangles, a height field's samples and a compound's children: a
+/// 2000 x 2000 terrain, or a level of two million triangles.
+constexpr std::size_t kMaxMeshVertices = 2000000;
+constexpr std::size_t kMaxMeshTriangles = 2000000;
+constexpr std::size_t kMaxHeightSamples = 4000000;
+constexpr std::size_t kMaxCompoundChildren = 1000;
 constexpr std::size_t kMaxJsonValues = 4000000;
 
 }  // namespace stepwise

@@ -193,7 +193,7 @@ void readForce(const JsonCursor& cursor, World& world) {
 }
 
 // The bodies, each key checked on its own (readBodyDef); names must be unique.
-void readBodies(const JsonCursor& bodies, World& world, ErrorList& errors) {
+void readBodies(const JsonCursor& bodies, World& world, ErrorList& errors, const std::string& baseDirectory) {
     std::map<std::string, std::size_t> firstUse;
     for (std::size_t i = 0; i < bodies.arraySizeAtMost(kMaxBodies); ++i) {
         const JsonCursor cursor = bodies.element(i);
@@ -202,7 +202,7 @@ void readBodies(const JsonCursor& bodies, World& world, ErrorList& errors) {
             continue;
         }
         const std::size_t errorsBefore = errors.size();
-        const BodyDef def = readBodyDef(cursor, i, errors);
+        const BodyDef def = readBodyDef(cursor, i, errors, baseDirectory);
         if (auto [it, fresh] = firstUse.emplace(def.name, i); !fresh) {
             const std::string other = "bodies[" + std::to_string(it->second) + "]";
             errors.attempt([&] {
@@ -271,7 +271,9 @@ World loadScene(const std::string& jsonText, const std::string& source, const st
     });
     // Joints and forces name bodies: without the body list they could only add false alarms.
     const bool bodiesRead = errors.attempt([&] {
-        if (auto bodies = root.optional("bodies")) readBodies(*bodies, world, errors);
+        // A mesh's "obj" file is named relative to the scene file's folder.
+        const std::string baseDirectory = std::filesystem::path(source).parent_path().string();
+        if (auto bodies = root.optional("bodies")) readBodies(*bodies, world, errors, baseDirectory);
     });
     if (bodiesRead) {
         // Generated bodies come after the listed ones, so joints and forces can name either.

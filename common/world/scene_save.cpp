@@ -8,12 +8,42 @@
 namespace stepwise {
 namespace {
 
+Json meshToJson(const TriangleMesh& mesh) {
+    Json vertices = Json::array(), triangles = Json::array();
+    for (const Vec3& vertex : mesh.vertices) vertices.push_back(toJson(vertex));
+    for (const auto& corners : mesh.triangles) triangles.push_back({corners[0], corners[1], corners[2]});
+    return {{"mesh", {{"vertices", vertices}, {"triangles", triangles}}}};  // an OBJ's mesh is saved inline
+}
+
+Json heightFieldToJson(const HeightField& field) {
+    Json heights = Json::array();
+    for (const Real height : field.heights) heights.push_back(std::isnan(height) ? Json(nullptr) : tidyNumber(height));
+    return {{"heightfield",
+             {{"rows", field.rows}, {"columns", field.columns}, {"cell_size", tidyNumber(field.cellSize)}, {"heights", heights}}}};
+}
+
+Json shapeToJson(const Shape& shape);
+
+Json compoundToJson(const CompoundShape& compound) {
+    Json children = Json::array();
+    for (const CompoundChild& child : compound.children)
+        children.push_back({{"shape", shapeToJson(child.shape)},
+                            {"position", toJson(child.transform.position)},
+                            {"orientation", toJson(child.transform.rotation)}});
+    return {{"compound", {{"children", children}}}};
+}
+
 Json shapeToJson(const Shape& shape) {
     switch (shape.type) {
     case ShapeType::Box: return {{"box", {{"half_extents", toJson(shape.halfExtents)}}}};
     case ShapeType::Sphere: return {{"sphere", {{"radius", tidyNumber(shape.radius)}}}};
     case ShapeType::Capsule:
         return {{"capsule", {{"radius", tidyNumber(shape.radius)}, {"half_height", tidyNumber(shape.halfHeight)}}}};
+    case ShapeType::Cylinder:
+        return {{"cylinder", {{"radius", tidyNumber(shape.radius)}, {"half_height", tidyNumber(shape.halfHeight)}}}};
+    case ShapeType::Compound: return compoundToJson(*shape.compound);
+    case ShapeType::Mesh: return meshToJson(*shape.mesh);
+    case ShapeType::HeightField: return heightFieldToJson(*shape.heightField);
     case ShapeType::Convex: break;
     }
     Json vertices = Json::array();

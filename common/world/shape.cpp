@@ -150,7 +150,9 @@ Shape Shape::convex(const std::vector<Vec3>& points) {
 
 const char* toString(ShapeType type) {
     static const Names<ShapeType> names = {
-        {"box", ShapeType::Box}, {"sphere", ShapeType::Sphere}, {"capsule", ShapeType::Capsule}, {"convex", ShapeType::Convex}};
+        {"box", ShapeType::Box},           {"sphere", ShapeType::Sphere},   {"capsule", ShapeType::Capsule},
+        {"convex", ShapeType::Convex},     {"cylinder", ShapeType::Cylinder}, {"compound", ShapeType::Compound},
+        {"mesh", ShapeType::Mesh},         {"heightfield", ShapeType::HeightField}};
     return nameOf(names, type);
 }
 
@@ -206,6 +208,10 @@ Real shapeVolume(const Shape& shape) {
         case ShapeType::Capsule:
             return kPi * shape.radius * shape.radius * (2 * shape.halfHeight + Real(4.0 / 3.0) * shape.radius);
         case ShapeType::Convex: return static_cast<Real>(integrateHull(*shape.hull).volume);
+        case ShapeType::Cylinder: return 2 * kPi * shape.radius * shape.radius * shape.halfHeight;
+        case ShapeType::Compound: return compoundVolume(*shape.compound);
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: return 0;  // a surface, not a solid: static only
     }
     return 0;
 }
@@ -245,6 +251,18 @@ MassProperties computeMassProperties(const Shape& shape, Real density) {
             props.inertia = (covariance.trace() * Mat3d::Identity() - covariance).cast<Real>();
             break;
         }
+        case ShapeType::Cylinder: {
+            // I_axis = m r^2 / 2, I_across = m (3 r^2 + (2h)^2) / 12.
+            const double radius = shape.radius, height = 2.0 * shape.halfHeight;
+            const double mass = density * 3.14159265358979323846 * radius * radius * height;
+            const double across = mass * (3 * radius * radius + height * height) / 12;
+            props.mass = static_cast<Real>(mass);
+            props.inertia.diagonal() = Vec3d(across, mass * radius * radius / 2, across).cast<Real>();
+            break;
+        }
+        case ShapeType::Compound: return compoundMassProperties(*shape.compound, density);
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // no mass: static only
     }
     return props;
 }
@@ -272,6 +290,21 @@ Aabb computeAabb(const Shape& shape, const Transform& transform) {
         case ShapeType::Convex:
             for (const Vec3& vertex : shape.hull->vertices) box.grow(transform.apply(vertex));
             break;
+        case ShapeType::Cylinder: {
+            // Along world axis i the disc of radius r reaches r sqrt(1 - a_i^2), a the axis.
+            const Vec3 axis = transform.rotate(Vec3::UnitY());
+            const Vec3 disc = (Vec3::Ones() - axis.cwiseProduct(axis)).cwiseMax(Real(0)).cwiseSqrt();
+            const Vec3 reach = shape.halfHeight * axis.cwiseAbs() + shape.radius * disc;
+            box.min = transform.position - reach;
+            box.max = transform.position + reach;
+            break;
+        }
+        case ShapeType::Compound:
+            for (const CompoundChild& child : shape.compound->children)
+                box.grow(computeAabb(child.shape, compose(transform, child.transform)));
+            break;
+        case ShapeType::Mesh: box = transformedBox(shape.mesh->bounds, transform); break;
+        case ShapeType::HeightField: box = transformedBox(heightFieldBounds(*shape.heightField), transform); break;
     }
     return box;
 }
@@ -282,6 +315,14 @@ Real boundingRadius(const Shape& shape) {
         case ShapeType::Sphere: return shape.radius;
         case ShapeType::Capsule: return shape.halfHeight + shape.radius;
         case ShapeType::Convex: return shape.hull ? shape.hull->vertexRadius : 0;
+        case ShapeType::Cylinder: return std::hypot(shape.radius, shape.halfHeight);
+        case ShapeType::Compound: return shape.compound ? shape.compound->vertexRadius : 0;
+        case ShapeType::Mesh: return shape.mesh ? shape.mesh->vertexRadius : 0;
+        case ShapeType::HeightField: {
+            if (!shape.heightField) return 0;
+            const Aabb bounds = heightFieldBounds(*shape.heightField);
+            return bounds.min.cwiseAbs().cwiseMax(bounds.max.cwiseAbs()).norm();
+        }
     }
     return 0;
 }

@@ -52,6 +52,15 @@ Exact signedDistance(const Shape& shape, const ExactVec& p) {
                 largest = std::max(largest, ExactVec(face.normal).dot(p) - Exact(face.offset));
             return largest;   // exact on the surface and inside; a lower bound outside, enough to find the entry
         }
+        case ShapeType::Cylinder: {
+            const Exact radial = std::sqrt(p.x * p.x + p.z * p.z) - Exact(shape.radius);
+            const Exact axial = std::fabs(p.y) - Exact(shape.halfHeight);
+            const Exact outsideR = std::max(radial, Exact(0)), outsideA = std::max(axial, Exact(0));
+            return std::sqrt(outsideR * outsideR + outsideA * outsideA) + std::min(std::max(radial, axial), Exact(0));
+        }
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // not drawn by this test
     }
     return 0;
 }

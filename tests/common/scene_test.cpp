@@ -209,7 +209,7 @@ TEST_CASE("Bad scenes are rejected with the exact path and one clear message", "
         {sceneWith(R"({"name": "a"})"), "bodies[0]", "missing required key \"shape\""},
         {sceneWith(R"({"shape": {}})"), "bodies[0].shape", "must hold exactly one of box, sphere, capsule, convex"},
         {sceneWith(R"({"shape": {"box": {"half_extents": [1, 1, 1]}, "sphere": {"radius": 1}}})"), "bodies[0].shape", "must hold exactly one of"},
-        {sceneWith(R"({"shape": {"cylinder": {"radius": 1}}})"), "bodies[0].shape", "unknown shape kind \"cylinder\""},
+        {sceneWith(R"({"shape": {"cone": {"radius": 1}}})"), "bodies[0].shape", "unknown shape kind \"cone\""},
         {sceneWith(kBall + R"(, {"shape": {"box": {"half_extents": [1, 0, 1]}}})"), "bodies[1].shape.box.half_extents[1]", "must be > 0"},
         {sceneWith(R"({"shape": {"box": {"hlaf_extents": [1, 1, 1]}}})"), "bodies[0].shape.box", "unknown key \"hlaf_extents\"; did you mean \"half_extents\"? (accepted: half_extents)"},
         {sceneWith(R"({"shape": {"sphere": {"radius": -1}}})"), "bodies[0].shape.sphere.radius", "must be > 0"},
