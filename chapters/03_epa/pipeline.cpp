@@ -233,8 +233,8 @@ Pipeline makeChapter03Pipeline(const World& world, ContactSearch search) {
 bool allPairsClosedForm(const World& world) {
     // By shape type, not pair by pair: a plan for 100,000 bodies must not cost n^2. A pair of
     // types occurs when a moving body has the first and another body the second.
-    constexpr int kTypes = 4;
-    int moving[kTypes] = {0, 0, 0, 0}, all[kTypes] = {0, 0, 0, 0};
+    constexpr int kTypes = kShapeTypeCount;
+    int moving[kTypes] = {}, all[kTypes] = {};
     for (const Body& body : world.bodies) {
         const int type = static_cast<int>(body.shape.type);
         ++all[type];

@@ -7,6 +7,7 @@
 #include "11_wide_solve/colouring.h"
 #include "11_wide_solve/contact_kernels.h"
 #include "11_wide_solve/wide_solver.h"
+#include "world/contact_round.h"
 
 #include <algorithm>
 #include <array>
@@ -51,14 +52,14 @@ void fillLane(ManifoldBlock<N>& block, LaneInputs<N>& inputs, int lane, const Wo
     setLane(inputs.centerA, lane, slotA ? infoA.startCenter : worldCenterOfMass(world, contact.bodyA));
     setLane(inputs.centerB, lane, slotB ? infoB.startCenter : worldCenterOfMass(world, contact.bodyB));
     setLane(inputs.normal, lane, contact.normal);
-    // The arms reach each body's core: a sphere's centre, a capsule's segment (radius 0 for boxes
-    // and hulls). Along the normal the arms change no row (every use is n . (w x arm) or arm x n),
+    // The arms reach each body's core: a sphere's centre, a capsule's segment, a lying cylinder's
+    // axis (radius 0 for boxes, hulls and a cylinder's caps). Along the normal the arms change no row (every use is n . (w x arm) or arm x n),
     // but pointSeparations turns them with the bodies, and a point on a round surface does not
     // turn with its body: the ball's lowest point stays lowest as it rolls. Turned with the ball,
     // the material point would rise r (1 - cos w h) a substep, a false gap the solve would let the
     // ball fall into, every substep.
-    inputs.roundA[lane] = roundRadius(bodyA.shape);
-    inputs.roundB[lane] = roundRadius(bodyB.shape);
+    inputs.roundA[lane] = contactRoundRadius(bodyA.shape, bodyA.transform, contact.normal);
+    inputs.roundB[lane] = contactRoundRadius(bodyB.shape, bodyB.transform, contact.normal);
     inputs.pointCount[lane] = static_cast<Real>(contact.pointCount);
     for (int i = 0; i < contact.pointCount; ++i) {
         typename LaneInputs<N>::Point& input = inputs.point[i];

@@ -16,6 +16,8 @@ namespace stepwise {
 /// compound is a rigid set of convex children; meshes and height fields are the static ground
 /// (chapter 13), never on a body that moves.
 enum class ShapeType { Box, Sphere, Capsule, Convex, Cylinder, Compound, Mesh, HeightField };
+/// How many kinds there are (tables indexed by ShapeType).
+constexpr int kShapeTypeCount = static_cast<int>(ShapeType::HeightField) + 1;
 
 /// One face of a convex hull: a planar polygon, counter-clockwise seen from outside.
 struct HullFace {

@@ -1,6 +1,7 @@
 // The shapes of worlds to stand on (chapter 13): cylinders, compounds, triangle meshes and height
 // fields, as data: how they are built and checked, their mass properties and their boxes. How
 // bodies collide with them is chapter 13's.
+#include "world/contact_round.h"
 #include "world/shape.h"
 
 #include <algorithm>
@@ -162,5 +163,11 @@ MassProperties compoundMassProperties(const CompoundShape& compound, Real densit
     return props;
 }
 // [common-compound-mass]
+
+Real contactRoundRadius(const Shape& shape, const Transform& pose, const Vec3& normal) {
+    if (isRound(shape)) return shape.radius;
+    if (shape.type != ShapeType::Cylinder) return 0;
+    return std::abs(pose.rotate(Vec3::UnitY()).dot(normal)) < kRollingSideCosine ? shape.radius : Real(0);
+}
 
 }  // namespace stepwise

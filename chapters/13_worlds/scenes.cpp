@@ -1,0 +1,139 @@
+// Chapter 13's scenes.
+#include "13_worlds/scenes.h"
+
+#include "04_pgs/scenes.h"
+#include "math/random.h"
+
+#include <cmath>
+
+namespace stepwise {
+
+namespace {
+
+CompoundChild boxChild(const Vec3& halfExtents, const Vec3& position) {
+    CompoundChild child;
+    child.shape = Shape::box(halfExtents);
+    child.transform.position = position;
+    return child;
+}
+
+int addBodyWith(World& world, const std::string& name, const Shape& shape, const Vec3& position,
+                BodyType type = BodyType::Dynamic, const Quat& rotation = Quat::Identity()) {
+    BodyDef def;
+    def.name = name;
+    def.type = type;
+    def.shape = shape;
+    def.transform.position = position;
+    def.transform.rotation = rotation;
+    return addBody(world, def);
+}
+
+}  // namespace
+
+Shape tableShape(Real width, Real depth, Real height, Real thickness, Real leg) {
+    std::vector<CompoundChild> children;
+    children.push_back(boxChild(Vec3(width / 2, thickness / 2, depth / 2), Vec3(0, height - thickness / 2, 0)));
+    const Real legHeight = height - thickness;
+    for (const Real x : {-1, 1})
+        for (const Real z : {-1, 1})
+            children.push_back(boxChild(Vec3(leg / 2, legHeight / 2, leg / 2),
+                                        Vec3(x * (width - leg) / 2, legHeight / 2, z * (depth - leg) / 2)));
+    return Shape::compoundOf(std::move(children));
+}
+
+Shape chairShape() {
+    Shape seat = tableShape(Real(0.45), Real(0.45), Real(0.45), Real(0.04), Real(0.04));
+    std::vector<CompoundChild> children = seat.compound->children;
+    children.push_back(boxChild(Vec3(Real(0.225), Real(0.25), Real(0.02)), Vec3(0, Real(0.7), Real(-0.205))));
+    return Shape::compoundOf(std::move(children));
+}
+
+Shape tiledFloor(int tiles, Real size) {
+    std::vector<Vec3> vertices;
+    std::vector<std::array<int, 3>> triangles;
+    for (int row = 0; row <= tiles; ++row)
+        for (int column = 0; column <= tiles; ++column)
+            vertices.emplace_back(Real(column) * size, 0, Real(row) * size);
+    const auto at = [tiles](int row, int column) { return row * (tiles + 1) + column; };
+    for (int row = 0; row < tiles; ++row)
+        for (int column = 0; column < tiles; ++column) {
+            // Counter-clockwise seen from +y: (r, c), (r + 1, c + 1), (r, c + 1) and (r, c), (r + 1, c), (r + 1, c + 1).
+            triangles.push_back({at(row, column), at(row + 1, column + 1), at(row, column + 1)});
+            triangles.push_back({at(row, column), at(row + 1, column), at(row + 1, column + 1)});
+        }
+    return Shape::triangleMesh(std::move(vertices), std::move(triangles));
+}
+
+Shape flatHeightField(int tiles, Real size) {
+    return Shape::heightFieldOf(tiles + 1, tiles + 1, size,
+                                std::vector<Real>(static_cast<std::size_t>((tiles + 1) * (tiles + 1)), Real(0)));
+}
+
+World buildTerrain(int cells, Real size, Real amplitude) {
+    World world = emptyWorld("terrain-" + std::to_string(cells));
+    std::vector<Real> heights;
+    for (int row = 0; row <= cells; ++row)
+        for (int column = 0; column <= cells; ++column) {
+            const Real x = Real(column) * size, z = Real(row) * size;
+            heights.push_back(amplitude * (std::sin(Real(0.21) * x) * std::cos(Real(0.17) * z) +
+                                           Real(0.4) * std::sin(Real(0.53) * x + Real(0.31) * z)));
+        }
+    const Real half = Real(cells) * size / 2;
+    addBodyWith(world, "hills", Shape::heightFieldOf(cells + 1, cells + 1, size, std::move(heights)), Vec3(-half, 0, -half),
+                BodyType::Static);
+    return world;
+}
+
+World buildCylinderScene() {
+    World world = emptyWorld("worlds-cylinders");
+    addGroundPlane(world, Real(0.8));
+    // A can lying on its side, its axis along z, set rolling along x at 2 m/s.
+    const int rolling = addBodyWith(world, "rolling-can", Shape::cylinder(Real(0.3), Real(0.6)), Vec3(-4, Real(0.301), 0),
+                                    BodyType::Dynamic, Quat(Eigen::AngleAxis<Real>(kPi / 2, Vec3::UnitX())));
+    Motion& roll = world.motions[static_cast<std::size_t>(world.bodies[static_cast<std::size_t>(rolling)].motionIndex)];
+    roll.linearVelocity = Vec3(2, 0, 0);
+    roll.angularVelocity = Vec3(0, 0, Real(-2) / Real(0.3));  // rolling without slipping
+    // Cans standing, and three stacked.
+    for (int i = 0; i < 3; ++i)
+        addBodyWith(world, "can" + std::to_string(i), Shape::cylinder(Real(0.25), Real(0.4)),
+                    Vec3(Real(1.5) * Real(i), Real(0.41), -2));
+    for (int level = 0; level < 3; ++level)
+        addBodyWith(world, "stacked" + std::to_string(level), Shape::cylinder(Real(0.3), Real(0.25)),
+                    Vec3(4, Real(0.26) + Real(0.51) * Real(level), -2));
+    addBodyWith(world, "table", tableShape(Real(1.6), Real(0.9), Real(0.75), Real(0.05), Real(0.06)), Vec3(1, Real(0.01), 2));
+    addBodyWith(world, "chair", chairShape(), Vec3(1, Real(0.01), Real(3.1)));
+    return world;
+}
+
+World buildTerrainPile(int bodies, unsigned seed) {
+    World world = buildTerrain(64, 1, Real(1.5));
+    world.name = "terrain-pile-" + std::to_string(bodies);
+    Random random(seed);
+    const Shape shapes[] = {Shape::box(Vec3(Real(0.3), Real(0.3), Real(0.3))), Shape::sphere(Real(0.3)),
+                            Shape::capsule(Real(0.2), Real(0.3)), Shape::cylinder(Real(0.3), Real(0.3)),
+                            tableShape(Real(0.8), Real(0.6), Real(0.5), Real(0.05), Real(0.05))};
+    const int perSide = std::max(1, static_cast<int>(std::ceil(std::cbrt(static_cast<double>(bodies)))));
+    for (int i = 0; i < bodies; ++i) {
+        const int x = i % perSide, z = (i / perSide) % perSide, level = i / (perSide * perSide);
+        const Vec3 position(Real(1.2) * (Real(x) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)),
+                            Real(4) + Real(1.2) * Real(level),
+                            Real(1.2) * (Real(z) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)));
+        const Quat turn(Eigen::AngleAxis<Real>(random.uniformReal(0, 2 * kPi), Vec3(1, 2, 3).normalized()));
+        addBodyWith(world, "body" + std::to_string(i), shapes[i % 5], position, BodyType::Dynamic, turn);
+    }
+    return world;
+}
+
+void addChapter13Scenes(Registry& registry) {
+    const char* category = "13 worlds to stand on";
+    registry.addScene({"worlds-cylinders", 13, category, prose(R"(
+        the cans stand on their faces and the stack of three holds; the can on its side rolls
+        straight on; the table and the chair (compounds of boxes) stand on their legs)"),
+                       [] { return buildCylinderScene(); }, {}});
+    registry.addScene({"worlds-terrain", 13, category, prose(R"(
+        200 boxes, balls, capsules, cans and tables fall onto a height field of rolling hills and
+        come to rest in its hollows; none sinks into the ground)"),
+                       [] { return buildTerrainPile(200); }, {}});
+}
+
+}  // namespace stepwise
