@@ -16,6 +16,10 @@ namespace {
 /// Points of two part contacts this close (m) are one point (a tenth of chapter 6's slop).
 constexpr Real kSamePoint = Real(0.0005);
 
+/// A triangle contact whose normal is more than 60 degrees from the triangle's front came out of
+/// its prism's side face: an edge contact on a ridge up to 60 degrees stays within it.
+constexpr Real kPrismSideCosine = Real(0.5);
+
 /// One convex piece of a shape, placed in the world: a compound's child, a triangle's prism, or a
 /// whole convex shape (key 0).
 struct ConvexPart {
@@ -119,7 +123,10 @@ void correctInternalEdge(const ConvexPart& triangle, const ConvexPart& body, boo
     const Vec3 onPrism = triangleIsA ? deepest.pointA : deepest.pointB;
     const Vec3 onTriangle = onPrism - (front.dot(onPrism - triangle.corners[0])) * front;
     const Vec3 corrected = correctedNormal(triangle.corners, triangle.active, onTriangle, outOfTriangle);
-    if (corrected.dot(front) < kSameNormalCos || outOfTriangle.dot(front) >= kSameNormalCos) return;
+    // A prism's side face is no surface of the ground (the next triangle's prism lies beyond it, or
+    // nothing does): a normal that far from the front is the side's, whatever the edge.
+    const bool side = outOfTriangle.dot(front) < kPrismSideCosine;
+    if ((corrected.dot(front) < kSameNormalCos && !side) || outOfTriangle.dot(front) >= kSameNormalCos) return;
     const Real offset = front.dot(triangle.corners[0]);
     candidates.normal = triangleIsA ? front : Vec3(-front);
     for (ManifoldPoint& point : candidates.points) {

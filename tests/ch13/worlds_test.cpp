@@ -192,3 +192,21 @@ TEST_CASE("a ball rolls down a height-field ramp to the closed-form speed", "[ch
     CHECK(drop > 1);
     CHECK(std::abs(speed - expected) < Real(0.01) * expected);
 }
+
+TEST_CASE("a pile dropped on hills lands on them: no body passes through the ground", "[ch13][heightfield]") {
+    World world = buildTerrainPile(40);
+    Pipeline pipeline = makeChapter13Pipeline(world);
+    const Real lowestGround = world.bodies[0].shape.heightField->lowest;
+    Real lowest = kRealMax;
+    for (int frame = 0; frame < 240; ++frame) {
+        pipeline.step(world);
+        for (const Body& body : world.bodies)
+            if (body.type == BodyType::Dynamic) lowest = std::min(lowest, body.transform.position.y());
+    }
+    Real deepest = 0;
+    for (const Contact& contact : world.contacts)
+        for (int i = 0; i < contact.pointCount; ++i) deepest = std::max(deepest, contact.points[i].depth);
+    INFO("lowest body centre " << lowest << " m over ground down to " << lowestGround << " m; deepest contact " << deepest << " m");
+    CHECK(lowest > lowestGround);
+    CHECK(deepest < Real(0.03));
+}
