@@ -135,27 +135,27 @@ Real compoundVolume(const CompoundShape& compound) {
 MassProperties compoundMassProperties(const CompoundShape& compound, Real density) {
     // In double: a table's legs are a thousandth of its top's inertia about its own centre, and
     // the sum should be exact to float rounding once cast back.
-    using Vec3d = Eigen::Vector3d;
-    using Mat3d = Eigen::Matrix3d;
+    using Vector = Eigen::Vector3d;  // not Vec3d: shape.cpp's alias, and unity builds join the files
+    using Matrix = Eigen::Matrix3d;
     double mass = 0;
-    Vec3d weighted = Vec3d::Zero();
+    Vector weighted = Vector::Zero();
     std::vector<MassProperties> parts;
     for (const CompoundChild& child : compound.children) {
         parts.push_back(computeMassProperties(child.shape, density));
-        const Vec3d center = child.transform.apply(parts.back().localCenter).cast<double>();
+        const Vector center = child.transform.apply(parts.back().localCenter).cast<double>();
         mass += parts.back().mass;
         weighted += double(parts.back().mass) * center;
     }
     MassProperties props;
     if (!(mass > 0)) return props;
-    const Vec3d centerOfMass = weighted / mass;
-    Mat3d inertia = Mat3d::Zero();
+    const Vector centerOfMass = weighted / mass;
+    Matrix inertia = Matrix::Zero();
     for (std::size_t i = 0; i < parts.size(); ++i) {
         const CompoundChild& child = compound.children[i];
-        const Mat3d rotation = child.transform.rotation.toRotationMatrix().cast<double>();
-        const Vec3d offset = child.transform.apply(parts[i].localCenter).cast<double>() - centerOfMass;
+        const Matrix rotation = child.transform.rotation.toRotationMatrix().cast<double>();
+        const Vector offset = child.transform.apply(parts[i].localCenter).cast<double>() - centerOfMass;
         inertia += rotation * parts[i].inertia.cast<double>() * rotation.transpose() +
-                   double(parts[i].mass) * (offset.squaredNorm() * Mat3d::Identity() - offset * offset.transpose());
+                   double(parts[i].mass) * (offset.squaredNorm() * Matrix::Identity() - offset * offset.transpose());
     }
     props.mass = static_cast<Real>(mass);
     props.localCenter = centerOfMass.cast<Real>();
