@@ -52,6 +52,10 @@ struct GjkDistanceResult {
     Real distance = 0;                // 0 when not separated
     Vec3 pointA = Vec3::Zero();       // closest point on A (world)
     Vec3 pointB = Vec3::Zero();       // closest point on B (world)
+    /// Unit axis from A's core towards B's (the last search direction): the contact normal of
+    /// shapes that touch within round-off, where pointB - pointA is too short to have one. Zero
+    /// when the cores themselves overlap.
+    Vec3 axis = Vec3::Zero();
     /// The final simplex; for spheres and capsules it is that of their cores (a point, a
     /// segment), which the walk uses instead of the round shapes (gjk_distance.cpp).
     Simplex simplex;

@@ -97,6 +97,7 @@ GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int ma
     const Vec3 axisAToB = coreDistance > 0 ? Vec3(-walk.v / coreDistance) : Vec3::Zero();
     result.pointA = coreA + radiusA * axisAToB + pair.offset;
     result.pointB = coreB - radiusB * axisAToB + pair.offset;
+    result.axis = axisAToB;
     const Real gap = coreDistance - radiusA - radiusB;
     result.separated = gap > tolerances.touching;
     result.distance = result.separated ? gap : Real(0);

@@ -63,18 +63,26 @@ ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, 
     const ConvexProxy proxyB{&b, tb, options.supportMode};
     const GjkResult gjk = gjkIntersect(proxyA, proxyB);
     query.gjkIterations = gjk.iterations;
+    Vec3 touchingNormal = Vec3::Zero();  // EPA's guess where it found no volume around the origin
     if (gjk.intersect) {
         const EpaResult epa = epaPenetration(proxyA, proxyB, gjk.simplex, options.epa);
-        query.intersect = true;
-        query.depth = epa.depth;
-        query.normal = epa.normal;
-        query.pointA = epa.pointA;
-        query.pointB = epa.pointB;
         query.epaIterations = epa.iterations;
-        query.featureId = epaFeatureId(proxyA, proxyB, epa.closestFace);
-        return query;
+        if (epa.exit != EpaExit::Degenerate) {
+            query.intersect = true;
+            query.depth = epa.depth;
+            query.normal = epa.normal;
+            query.pointA = epa.pointA;
+            query.pointB = epa.pointB;
+            query.featureId = epaFeatureId(proxyA, proxyB, epa.closestFace);
+            return query;
+        }
+        // A - B has no volume around the origin: the shapes touch, or GJK's tolerance took a gap of
+        // a fraction of a millimetre for contact (a cylinder's rim, a flat simplex). EPA's depth
+        // is then only the least reach along a few trial directions, centimetres off; the distance
+        // query below says which it is.
+        touchingNormal = epa.normal;
     }
-    if (!options.separationDistance) return query;
+    if (!options.separationDistance && !gjk.intersect) return query;
     // Separated: the contract reports minus the distance, with the closest points.
     const GjkDistanceResult distance = gjkDistance(proxyA, proxyB);
     query.gjkIterations += distance.iterations;
@@ -83,8 +91,16 @@ ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, 
     if (distance.separated && length > 0 && isFinite(length)) {
         query.depth = -distance.distance;
         query.normal = gap / length;
+    } else if (distance.axis.squaredNorm() > 0) {
+        // Within round-off of touching the closest points coincide and give no direction; the
+        // axis between the cores still does (for a sphere or a capsule it is exact). The line of
+        // centres would not: a capsule lying on a box's face has its centre off to one side, and
+        // a normal along it makes the round body's surface point along that normal (chapter 3's
+        // followContactPoint) read centimetres deep where the shapes only touch.
+        query.normal = distance.axis;
+    } else if (touchingNormal.squaredNorm() > 0) {
+        query.normal = touchingNormal;
     } else {
-        // GJK's two answers disagree only for shapes within round-off of touching.
         const Vec3 centres = tb.position - ta.position;
         query.normal = centres.norm() > 0 ? Vec3(centres.normalized()) : Vec3(Vec3::UnitY());
     }

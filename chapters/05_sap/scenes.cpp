@@ -118,9 +118,10 @@ void StressView::panel(World& world, Panel& panel) {
     const char* const densities[] = {"sparse", "dense"};
     int density = params_.density == StressDensity::Dense ? 1 : 0;
     if (panel.combo("density", density, densities, 2)) params_.density = density == 1 ? StressDensity::Dense : StressDensity::Sparse;
-    const char* const shapes[] = {"sphere", "diamond", "box", "mixed"};
+    // The combo lists the kinds in StressShape's order, which is the order of its names.
+    const char* const shapes[] = {"sphere", "diamond", "box", "mixed", "capsule", "cylinder", "all"};
     int shape = static_cast<int>(params_.shape);
-    if (panel.combo("shape", shape, shapes, 4)) params_.shape = static_cast<StressShape>(shape);
+    if (panel.combo("shape", shape, shapes, 7)) params_.shape = static_cast<StressShape>(shape);
     float height = static_cast<float>(params_.dropHeight);
     if (panel.sliderFloat("drop height (m)", height, 0.0f, 50.0f)) params_.dropHeight = static_cast<Real>(height);
     if (panel.button("regenerate")) {

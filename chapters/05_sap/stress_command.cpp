@@ -64,14 +64,12 @@ void installStressCommand(CLI::App& app, int& exitCode, const Registry& registry
     CLI::App* stress = app.add_subcommand(
         "stress", "The stress scene (chapter 5): many bodies dropped dense or sparse, run headless or saved as a scene");
     const std::map<std::string, StressDensity> densities = {{"sparse", StressDensity::Sparse}, {"dense", StressDensity::Dense}};
-    const std::map<std::string, StressShape> shapes = {{"sphere", StressShape::Sphere},
-                                                       {"diamond", StressShape::Diamond},
-                                                       {"box", StressShape::Box},
-                                                       {"mixed", StressShape::Mixed}};
+    std::map<std::string, StressShape> shapes;
+    for (const auto& [name, shape] : stressShapeNames()) shapes[name] = shape;
     stress->add_option("--count", args->params.count, "Dynamic bodies")->check(CLI::Range(1, kStressMaxCount));
     stress->add_option("--density", args->params.density, "sparse (3 m apart) or dense (5 cm apart)")
         ->transform(CLI::CheckedTransformer(densities, CLI::ignore_case));
-    stress->add_option("--shape", args->params.shape, "sphere, diamond (convex hull), box or mixed")
+    stress->add_option("--shape", args->params.shape, "sphere, diamond (convex hull), box, capsule, cylinder, mixed (the first three) or all")
         ->transform(CLI::CheckedTransformer(shapes, CLI::ignore_case));
     stress->add_option("--height", args->params.dropHeight, "Drop height of the lowest bodies, m")
         ->check(CLI::Range(Real(0), kStressMaxDropHeight));

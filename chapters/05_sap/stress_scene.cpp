@@ -17,7 +17,10 @@ const Names<StressDensity> kDensities = {{"sparse", StressDensity::Sparse}, {"de
 const Names<StressShape> kShapes = {{"sphere", StressShape::Sphere},
                                     {"diamond", StressShape::Diamond},
                                     {"box", StressShape::Box},
-                                    {"mixed", StressShape::Mixed}};
+                                    {"mixed", StressShape::Mixed},
+                                    {"capsule", StressShape::Capsule},
+                                    {"cylinder", StressShape::Cylinder},
+                                    {"all", StressShape::All}};
 
 /// Each kind of body fits in a ball of radius 0.5 m about its origin, so turned any way it stays
 /// inside its 1 m cell.
@@ -28,13 +31,22 @@ struct StressShapes {
     Shape diamond = Shape::convex({Vec3(Real(0.35), 0, 0), Vec3(Real(-0.35), 0, 0), Vec3(0, Real(0.5), 0),
                                    Vec3(0, Real(-0.5), 0), Vec3(0, 0, Real(0.35)), Vec3(0, 0, Real(-0.35))});
     Shape box = Shape::box(Vec3(Real(0.35), Real(0.25), Real(0.25)));  // corner 0.497 m out
+    Shape capsule = Shape::capsule(Real(0.2), Real(0.3));                // tip 0.5 m out
+    // Cap rim at sqrt(0.3^2 + 0.35^2) = 0.461 m: a can a little wider than tall rests on either.
+    Shape cylinder = Shape::cylinder(Real(0.3), Real(0.35));
 
     const Shape& pick(StressShape kind, int index) const {
         switch (kind) {
             case StressShape::Sphere: return sphere;
             case StressShape::Diamond: return diamond;
             case StressShape::Box: return box;
+            case StressShape::Capsule: return capsule;
+            case StressShape::Cylinder: return cylinder;
             case StressShape::Mixed: break;
+            case StressShape::All: {
+                const Shape* const every[] = {&sphere, &diamond, &box, &capsule, &cylinder};
+                return *every[index % 5];
+            }
         }
         const int which = index % 3;
         return which == 0 ? sphere : which == 1 ? diamond : box;
@@ -64,6 +76,8 @@ Grid layoutFor(const StressParams& params) {
 const char* toString(StressDensity density) { return nameOf(kDensities, density); }
 
 const char* toString(StressShape shape) { return nameOf(kShapes, shape); }
+
+const Names<StressShape>& stressShapeNames() { return kShapes; }
 
 Real stressSpacing(StressDensity density) { return density == StressDensity::Dense ? Real(1) : Real(4); }
 

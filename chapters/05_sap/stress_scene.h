@@ -1,7 +1,7 @@
 #pragma once
 // The stress scene: many bodies dropped on one large ground, packed tightly (dense) or spread
-// out (sparse), as spheres (closed-form contacts), "diamonds" (convex hulls: GJK and EPA), boxes
-// or a mix. One generator for the demo, the benches, the tests, `stepwise stress` and scene
+// out (sparse), as spheres (closed-form contacts), "diamonds" (convex hulls: GJK and EPA), boxes,
+// capsules, cylinders, or a mix. One generator for the demo, the benches, the tests, `stepwise stress` and scene
 // files ({ "generator": { "stress": { ... } } }, docs/scene-format.md).
 
 #include "world/scene_limits.h"
@@ -15,7 +15,8 @@ namespace stepwise {
 class JsonCursor;
 
 enum class StressDensity { Sparse, Dense };
-enum class StressShape { Sphere, Diamond, Box, Mixed };
+/// Mixed: spheres, diamonds and boxes in turn; All: every kind in turn (capsules and cylinders too).
+enum class StressShape { Sphere, Diamond, Box, Mixed, Capsule, Cylinder, All };
 
 const char* toString(StressDensity density);
 const char* toString(StressShape shape);
@@ -43,6 +44,9 @@ void addStressBodies(World& world, const StressParams& params);
 
 /// A world named "sap-stress" (or `name`) with the default settings and addStressBodies.
 World buildStressScene(const StressParams& params, const std::string& name = "sap-stress");
+
+/// The shape kinds' names in scene files and on the command line ("sphere", ..., "all").
+const Names<StressShape>& stressShapeNames();
 
 /// Reads the generator's parameters from a scene file ({ "count": 1000, "density": "sparse",
 /// "shape": "mixed", "drop_height": 2, "seed": 5 }, every key optional). Throws SceneError

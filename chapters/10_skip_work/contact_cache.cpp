@@ -130,6 +130,17 @@ void markBuiltPose(Contact& contact, const Transform& transformA, const Transfor
     contact.builtLocalNormal = inverseA * contact.normal;
 }
 
+// [ch10-anchors-reproduce]
+bool anchorsReproduce(const Contact& contact, const Body& bodyA, const Body& bodyB) {
+    if (!isRound(bodyA.shape) && !isRound(bodyB.shape)) return true;  // material points: exact
+    Contact followed = contact;
+    refreshFromAnchors(followed, bodyA, bodyB);
+    for (int i = 0; i < contact.pointCount; ++i)
+        if (std::abs(followed.points[i].depth - contact.points[i].depth) > kAnchorTolerance) return false;
+    return true;
+}
+// [ch10-anchors-reproduce]
+
 namespace {
 
 /// A pair without a record: apart (or new). Known apart and unable to have closed the gap: nothing
@@ -207,9 +218,12 @@ void buildMissesAndMerge(World& world, Real lookAhead, const ManifoldOptions& op
     world.candidatePairs.swap(scratch.misses);  // the full list waits in scratch.misses
     updateManifolds(world, lookAhead, options);
     world.candidatePairs.swap(scratch.misses);
-    for (Contact& contact : world.contacts)
-        markBuiltPose(contact, world.bodies[static_cast<std::size_t>(contact.bodyA)].transform,
-                      world.bodies[static_cast<std::size_t>(contact.bodyB)].transform);
+    for (Contact& contact : world.contacts) {
+        const Body& bodyA = world.bodies[static_cast<std::size_t>(contact.bodyA)];
+        const Body& bodyB = world.bodies[static_cast<std::size_t>(contact.bodyB)];
+        markBuiltPose(contact, bodyA.transform, bodyB.transform);
+        if (contact.builtPoseKnown && !anchorsReproduce(contact, bodyA, bodyB)) contact.builtPoseKnown = false;
+    }
     scratch.merged.clear();
     scratch.merged.reserve(world.contacts.size() + scratch.kept.size());
     std::size_t rebuilt = 0;

@@ -36,7 +36,8 @@ std::string sceneError(const std::string& text) {
 
 TEST_CASE("the stress scene lays its bodies out sparse or dense, above the ground, apart", "[ch05][stress]") {
     for (StressDensity density : {StressDensity::Sparse, StressDensity::Dense}) {
-        for (StressShape shape : {StressShape::Sphere, StressShape::Diamond, StressShape::Box, StressShape::Mixed}) {
+        for (StressShape shape : {StressShape::Sphere, StressShape::Diamond, StressShape::Box, StressShape::Mixed,
+                                  StressShape::Capsule, StressShape::Cylinder, StressShape::All}) {
             INFO(toString(density) << ", " << toString(shape));
             StressParams params;
             params.count = 300;
@@ -49,7 +50,7 @@ TEST_CASE("the stress scene lays its bodies out sparse or dense, above the groun
             CHECK(world.dynamicBodyCount() == 300);
             const Aabb ground = computeAabb(world.bodies[0].shape, world.bodies[0].transform);
             CHECK(ground.max.y() == Approx(0).margin(1e-6));
-            int shapes[4] = {0, 0, 0, 0};
+            int shapes[kShapeTypeCount] = {};
             for (std::size_t i = 1; i < world.bodies.size(); ++i) {
                 const Aabb box = computeAabb(world.bodies[i].shape, world.bodies[i].transform);
                 CHECK(box.min.y() >= -1e-5);                                        // nothing starts in the ground
@@ -59,6 +60,11 @@ TEST_CASE("the stress scene lays its bodies out sparse or dense, above the groun
             if (shape == StressShape::Mixed)
                 CHECK((shapes[static_cast<int>(ShapeType::Sphere)] == 100 && shapes[static_cast<int>(ShapeType::Convex)] == 100 &&
                        shapes[static_cast<int>(ShapeType::Box)] == 100));
+            if (shape == StressShape::All)
+                for (ShapeType kind : {ShapeType::Sphere, ShapeType::Convex, ShapeType::Box, ShapeType::Capsule, ShapeType::Cylinder})
+                    CHECK(shapes[static_cast<int>(kind)] == 60);
+            if (shape == StressShape::Capsule) CHECK(shapes[static_cast<int>(ShapeType::Capsule)] == 300);
+            if (shape == StressShape::Cylinder) CHECK(shapes[static_cast<int>(ShapeType::Cylinder)] == 300);
             // No two bodies start inside each other (dense spheres may start exactly touching).
             world.settings.broadphase = BroadphaseMode::Sap;
             Pipeline pipeline = makeChapter05Pipeline(world);
