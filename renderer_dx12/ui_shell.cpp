@@ -64,6 +64,7 @@ void settingsSection(World& world, int chapter, int lastChapter) {
     if (reads("baumgarte") && ImGui::SliderFloat("baumgarte", &baumgarte, 0.0f, 1.0f)) s.baumgarte = static_cast<Real>(baumgarte);
     if (reads("slop") && ImGui::SliderFloat("slop (m)", &slop, 0.0f, 0.05f, "%.4f")) s.slop = static_cast<Real>(slop);
     if (reads("warm_starting")) ImGui::Checkbox("warm starting", &s.warmStarting);
+    if (reads("active_edges")) ImGui::Checkbox("active edges (no bump at triangle seams)", &s.activeEdges);
     float jointHertz = static_cast<float>(s.jointHertz);
     if (reads("joint_hertz") && ImGui::SliderFloat("joint hertz", &jointHertz, 5.0f, 600.0f, "%.0f"))
         s.jointHertz = static_cast<Real>(jointHertz);

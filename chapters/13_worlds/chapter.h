@@ -13,7 +13,8 @@ namespace stepwise {
 /// Chapter 13's switches over chapter 12's.
 struct WorldOptions {
     SpeedOptions speed;
-    bool internalEdgeFix = true;  // false: triangle contacts keep the normals of inactive edges (A/B)
+    bool internalEdgeFix = true;  // false: triangle contacts keep the normals of inactive edges (A/B),
+                                  // whatever Settings::activeEdges says
 };
 
 Pipeline makeChapter13Pipeline(const World& world);

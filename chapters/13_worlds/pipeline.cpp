@@ -37,20 +37,23 @@ Pipeline makeChapter13Pipeline(const World& world, const WorldOptions& options) 
         return pipeline;
     }
     auto cache = std::make_shared<WorldShapesCache>();
-    cache->internalEdgeFix = options.internalEdgeFix;
+    cache->internalEdgeFix = options.internalEdgeFix && world.settings.activeEdges;
     SpeedOptions speed = options.speed;
     speed.pairManifold = worldManifoldFunction(cache);
     Pipeline pipeline = makeChapter12Pipeline(world, speed);
     // The meshes' trees, built before the first narrowphase needs them (once: a mesh never changes).
     Stage trees;
     trees.name = stageName(stage_group::kWorldShapes, "parts");
-    trees.run = [cache](World& stepWorld, Real) {
+    // Settings::activeEdges is read every step, so the demo's checkbox takes effect at once.
+    const bool edgeFix = options.internalEdgeFix;
+    trees.run = [cache, edgeFix](World& stepWorld, Real) {
+        cache->internalEdgeFix = edgeFix && stepWorld.settings.activeEdges;
         for (const Body& body : stepWorld.bodies)
             if (body.shape.type == ShapeType::Mesh) cache->entry(body.shape.mesh);
     };
     pipeline.insertBefore(stage_group::kNarrowphase, std::move(trees));
     pipeline.setPlanNote(stage_group::kWorldShapes,
-                         note + (options.internalEdgeFix ? "; internal edges corrected" : "; internal edges not corrected"));
+                         note + (cache->internalEdgeFix ? "; internal edges corrected" : "; internal edges not corrected"));
     return pipeline;
 }
 // [ch13-pipeline]

@@ -105,6 +105,36 @@ World buildCylinderScene() {
     return world;
 }
 
+World buildSeamScene() {
+    World world = emptyWorld("worlds-seams");
+    world.settings.sleeping = false;  // the boxes slide without friction; nothing should rest
+    const Shape box = Shape::box(Vec3::Constant(Real(0.5)));
+    const struct {
+        const char* floor;
+        const char* slider;
+        Shape shape;
+        Real z;
+    } lanes[] = {{"tiles", "box-on-tiles", tiledFloor(30, 1), 0}, {"height-field", "box-on-height-field", flatHeightField(30, 1), 5}};
+    for (const auto& lane : lanes) {
+        BodyDef floor;
+        floor.name = lane.floor;
+        floor.type = BodyType::Static;
+        floor.shape = lane.shape;
+        floor.transform.position = Vec3(0, 0, lane.z);
+        floor.material.friction = 0;
+        addBody(world, floor);
+        BodyDef slider;
+        slider.name = lane.slider;
+        slider.shape = box;
+        slider.transform.position = Vec3(2, Real(0.5), lane.z + Real(2.3));  // off the tiles' diagonals
+        slider.material.friction = 0;
+        const int index = addBody(world, slider);
+        world.motions[static_cast<std::size_t>(world.bodies[static_cast<std::size_t>(index)].motionIndex)].linearVelocity =
+            Vec3(5, 0, 0);
+    }
+    return world;
+}
+
 World buildTerrainPile(int bodies, unsigned seed) {
     World world = buildTerrain(64, 1, Real(1.5));
     world.name = "terrain-pile-" + std::to_string(bodies);
@@ -130,6 +160,10 @@ void addChapter13Scenes(Registry& registry) {
         the cans stand on their faces and the stack of three holds; the can on its side rolls
         straight on; the table and the chair (compounds of boxes) stand on their legs)"),
                        [] { return buildCylinderScene(); }, {}});
+    registry.addScene({"worlds-seams", 13, category, prose(R"(
+        two frictionless boxes slide at 5 m/s over 30 m of 1 m tiles, a mesh floor and a height
+        field: neither bumps nor slows at a seam; untick "active edges" and both hop at the seams)"),
+                       [] { return buildSeamScene(); }, {}});
     registry.addScene({"worlds-terrain", 13, category, prose(R"(
         200 boxes, balls, capsules, cans and tables fall onto a height field of rolling hills and
         come to rest in its hollows; none sinks into the ground)"),

@@ -28,6 +28,10 @@ World buildTerrain(int cells, Real size, Real amplitude);
 /// Cylinders standing, stacked and one rolling on its side, a table and a chair, on a floor.
 World buildCylinderScene();
 
+/// Two frictionless boxes sliding at 5 m/s over 30 m of 1 m tiles: one on a mesh floor, one on a
+/// height field beside it (the seam scene; Settings::activeEdges false shows the bump).
+World buildSeamScene();
+
 /// A mixed pile of `bodies` boxes, spheres, capsules, cylinders and tables dropped onto hills.
 World buildTerrainPile(int bodies, unsigned seed = 13);
 

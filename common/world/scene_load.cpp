@@ -21,7 +21,8 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     cursor.expectObject({"gravity", "dt", "substeps", "solver_iterations", "baumgarte", "slop", "warm_starting",
                          "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation", "contact_points",
                          "sleeping", "sleep_speed", "time_to_sleep", "contact_hertz", "contact_damping_ratio",
-                         "joint_hertz", "joint_damping_ratio", "max_push_out_speed", "bounds_margin"},
+                         "joint_hertz", "joint_damping_ratio", "max_push_out_speed", "bounds_margin",
+                         "active_edges"},
                         &errors);
     Settings settings;
     // Each key on its own: one bad value does not hide the next.
@@ -57,6 +58,7 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
     read("joint_damping_ratio", [&](const JsonCursor& v) { settings.jointDampingRatio = v.nonNegative(); });
     read("max_push_out_speed", [&](const JsonCursor& v) { settings.maxPushOutSpeed = v.positive(); });
     read("bounds_margin", [&](const JsonCursor& v) { settings.boundsMargin = v.nonNegative(); });
+    read("active_edges", [&](const JsonCursor& v) { settings.activeEdges = v.boolean(); });
     return settings;
 }
 

@@ -87,7 +87,8 @@ std::string saveSceneToString(const World& world) {
                          {"joint_hertz", tidyNumber(s.jointHertz)},
                          {"joint_damping_ratio", tidyNumber(s.jointDampingRatio)},
                          {"max_push_out_speed", tidyNumber(s.maxPushOutSpeed)},
-                         {"bounds_margin", tidyNumber(s.boundsMargin)}};
+                         {"bounds_margin", tidyNumber(s.boundsMargin)},
+                         {"active_edges", s.activeEdges}};
     Json bodies = Json::array();
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const Body& body = world.bodies[i];

@@ -59,6 +59,9 @@ struct Settings {
     Real jointDampingRatio = Real(2);                 // 1: critically damped
     Real maxPushOutSpeed = Real(3);                   // m/s: the fastest a penetration is pushed out (chapter 6)
     Real boundsMargin = Real(0.1);                    // m each box grows before a sweep (chapter 10's grown boxes)
+    // Chapter 13: a contact on a mesh or height field triangle takes only normals the triangle's
+    // neighbours allow (no bump at a seam between triangles); false shows the bump (the A/B).
+    bool activeEdges = true;
 };
 
 /// A setting and the chapter whose stage first reads it. A scene file may set any of them, but

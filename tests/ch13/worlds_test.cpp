@@ -210,3 +210,33 @@ TEST_CASE("a pile dropped on hills lands on them: no body passes through the gro
     CHECK(lowest > lowestGround);
     CHECK(deepest < Real(0.1));  // still settling at 4 s (a few cm); passing through is decimetres
 }
+
+TEST_CASE("worlds-seams: the active_edges setting is the seam's A/B, read every step", "[ch13][mesh]") {
+    const auto run = [](bool activeEdges, bool switchMidway) {
+        World world = buildSeamScene();
+        world.settings.activeEdges = switchMidway ? !activeEdges : activeEdges;
+        Pipeline pipeline = makeChapter13Pipeline(world);
+        Real bump = 0, slowest = 5;
+        for (int frame = 0; frame < 240; ++frame) {
+            if (switchMidway && frame == 60) world.settings.activeEdges = activeEdges;  // as the demo's checkbox
+            pipeline.step(world);
+            if (frame < 60 && switchMidway) continue;
+            for (const char* name : {"box-on-tiles", "box-on-height-field"}) {
+                const Motion* motion = world.motionOf(world.findBody(name));
+                bump = std::max(bump, std::abs(motion->linearVelocity.y()));
+                slowest = std::min(slowest, motion->linearVelocity.x());
+            }
+        }
+        return std::pair<Real, Real>(bump, slowest);
+    };
+    const auto [bumpOn, slowestOn] = run(true, false);
+    const auto [bumpOff, slowestOff] = run(false, false);
+    const auto [bumpSwitchedOn, slowestSwitchedOn] = run(true, true);
+    INFO("vertical speed up to " << bumpOn << " m/s on, " << bumpOff << " off, " << bumpSwitchedOn
+                                 << " after switching on; slowest " << slowestOn << ", " << slowestOff << ", " << slowestSwitchedOn);
+    CHECK(bumpOn < Real(0.01));
+    CHECK(slowestOn > Real(5 * 0.995));
+    CHECK(bumpOff > Real(0.1));
+    CHECK(slowestOff <= slowestOn);
+    CHECK(bumpSwitchedOn < Real(0.01));  // a world whose setting changes between steps gets it at once
+}
