@@ -12,14 +12,7 @@
 
 int main(int argc, char** argv) {
 #ifdef STEPWISE_HAVE_BULLET
-    stepwise::setPeerEngine(
-        {stepwise::peers::bulletVersion(),
-         [](const stepwise::World& world, long frames, const stepwise::BetweenPeerFrames& between) {
-             stepwise::peers::BulletFrameCallback afterFrame;
-             if (between) afterFrame = [&between](long frame, const std::vector<stepwise::Transform>&) { between(frame); };
-             const stepwise::peers::BulletRun run = stepwise::peers::runBullet(world, frames, {}, afterFrame);
-             return stepwise::PeerRun{run.stepMs, run.finalPoses};
-         }});
+    stepwise::setPeerEngine(stepwise::peers::bulletPeerEngine());
 #endif
     stepwise::Registry registry;
     stepwise::registerChapters(registry);

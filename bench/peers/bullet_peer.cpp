@@ -2,10 +2,7 @@
 // btDiscreteDynamicsWorld with the engine's own masses, inertias, materials and joints.
 
 #include "peers/bullet_peer.h"
-
-#include <btBulletDynamicsCommon.h>
-
-#include <Eigen/Eigenvalues>
+#include "peers/bullet_shapes.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,56 +12,12 @@
 namespace stepwise::peers {
 namespace {
 
-/// A hull's collision margin, m. btConvexHullShape rounds its hull outward by the margin, so the
-/// default 0.04 would make every hull 4 cm fatter than the engine's; 1 mm keeps the geometry
-/// within a millimetre. Boxes keep Bullet's default: btBoxShape puts its margin inside the
-/// extents (the corners are rounded by 4 cm, the faces are where the engine has them).
-constexpr btScalar kHullMargin = btScalar(0.001);
-
-btVector3 btVec(const Vec3& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
-Vec3 vec(const btVector3& v) { return Vec3(Real(v.x()), Real(v.y()), Real(v.z())); }
-btMatrix3x3 btMat(const Mat3& m) {
-    return btMatrix3x3(btScalar(m(0, 0)), btScalar(m(0, 1)), btScalar(m(0, 2)), btScalar(m(1, 0)), btScalar(m(1, 1)),
-                       btScalar(m(1, 2)), btScalar(m(2, 0)), btScalar(m(2, 1)), btScalar(m(2, 2)));
-}
-Mat3 mat(const btMatrix3x3& m) {
-    Mat3 out;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) out(r, c) = Real(m[r][c]);
-    return out;
-}
-btTransform btPose(const Mat3& basis, const Vec3& origin) { return btTransform(btMat(basis), btVec(origin)); }
-
-/// Bullet's body frame in the shape's frame: the centre of mass, and the principal axes as the
-/// columns of a rotation. Bullet takes a diagonal inertia only, so its body frame must be the
-/// principal frame (the same choice Bullet's own btCompoundShape::calculatePrincipalAxisTransform
-/// makes).
-struct PrincipalFrame {
-    Vec3 center = Vec3::Zero();
-    Mat3 axes = Mat3::Identity();
-    Vec3 inertia = Vec3::Zero();
-    bool identity() const { return center.isZero(0) && axes.isIdentity(0); }
-};
-
-PrincipalFrame principalFrame(const Motion* motion) {
-    PrincipalFrame frame;
-    if (!motion) return frame;
-    frame.center = motion->localCenter;
-    if (motion->mass <= 0) return frame;
-    const Mat3 inertia = Real(0.5) * (motion->inertiaLocal + motion->inertiaLocal.transpose());
-    const Real offDiagonal = std::max({std::abs(inertia(0, 1)), std::abs(inertia(0, 2)), std::abs(inertia(1, 2))});
-    if (offDiagonal <= Real(1e-6) * inertia.trace()) {
-        frame.inertia = inertia.diagonal();
-        return frame;
-    }
-    // Eigen-decomposition in double: the principal moments and axes of a symmetric tensor.
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(inertia.cast<double>());
-    Eigen::Matrix3d axes = solver.eigenvectors();
-    if (axes.determinant() < 0) axes.col(2) = -axes.col(2);  // a rotation, not a reflection
-    frame.axes = axes.cast<Real>();
-    frame.inertia = solver.eigenvalues().cast<Real>();
-    return frame;
-}
+using detail::btMat;
+using detail::btPose;
+using detail::btVec;
+using detail::mat;
+using detail::PrincipalFrame;
+using detail::vec;
 
 /// Shape pose -> Bullet body pose: T_body = T_shape * (center, axes).
 btTransform bulletPose(const Transform& pose, const PrincipalFrame& frame) {
@@ -146,10 +99,10 @@ void checkSupported(const World& world) {
         throw BulletUnsupported("springs[0] (\"" + world.bodies[std::size_t(world.springs[0].bodyA)].name +
                                 "\"): unsupported: Bullet has no damped spring between two anchors");
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        const ShapeType type = world.bodies[i].shape.type;
-        if (type == ShapeType::Compound || type == ShapeType::Mesh || type == ShapeType::HeightField)
-            throw BulletUnsupported(bodyLabel(world, static_cast<int>(i)) + ".shape (" + toString(type) +
-                                    "): unsupported by this peer yet");
+        const Body& body = world.bodies[i];
+        if (!canMove(body.shape) && body.type != BodyType::Static)
+            throw BulletUnsupported(bodyLabel(world, static_cast<int>(i)) + ".shape (" + toString(body.shape.type) +
+                                    "): unsupported: Bullet's triangle meshes and height fields are static only");
     }
     for (std::size_t i = 0; i < world.joints.size(); ++i) {
         const JointDesc& joint = world.joints[i];
@@ -180,7 +133,7 @@ struct BulletScene {
     btDbvtBroadphase broadphase;
     btSequentialImpulseConstraintSolver solver;
     btDiscreteDynamicsWorld dynamics{&dispatcher, &broadphase, &solver, &configuration};
-    std::vector<std::unique_ptr<btCollisionShape>> shapes;
+    detail::ShapeStore store;                               // the shapes and what they point into
     std::vector<std::unique_ptr<btRigidBody>> bodies;       // one per World body
     std::vector<std::unique_ptr<btTypedConstraint>> joints;
     std::vector<PrincipalFrame> frames;                     // one per World body
@@ -200,91 +153,59 @@ struct BulletScene {
     }
 };
 
-btCollisionShape* makeShape(BulletScene& scene, const Body& body, const PrincipalFrame& frame) {
-    const Shape& shape = body.shape;
-    std::unique_ptr<btCollisionShape> made;
-    switch (shape.type) {
-        case ShapeType::Box: made = std::make_unique<btBoxShape>(btVec(shape.halfExtents)); break;
-        case ShapeType::Sphere: made = std::make_unique<btSphereShape>(btScalar(shape.radius)); break;
-        // The engine's capsule runs along its +Y axis, as btCapsuleShape's does; Bullet's height
-        // is the segment's whole length.
-        case ShapeType::Capsule:
-            made = std::make_unique<btCapsuleShape>(btScalar(shape.radius), btScalar(2 * shape.halfHeight));
-            break;
-        case ShapeType::Convex: {
-            // Hull points straight into the principal frame: no compound shape needed.
-            auto hull = std::make_unique<btConvexHullShape>();
-            for (const Vec3& point : shape.hull->vertices)
-                hull->addPoint(btVec(frame.axes.transpose() * (point - frame.center)), false);
-            hull->recalcLocalAabb();
-            hull->setMargin(kHullMargin);
-            scene.shapes.push_back(std::move(hull));
-            return scene.shapes.back().get();
-        }
-        // The engine's cylinder runs along +Y, as btCylinderShape's does (half extents r, h, r).
-        case ShapeType::Cylinder:
-            made = std::make_unique<btCylinderShape>(btVector3(btScalar(shape.radius), btScalar(shape.halfHeight),
-                                                               btScalar(shape.radius)));
-            break;
-        case ShapeType::Compound:
-        case ShapeType::Mesh:
-        case ShapeType::HeightField: return nullptr;  // refused by checkSupported
-    }
-    btCollisionShape* child = made.get();
-    scene.shapes.push_back(std::move(made));
-    if (frame.identity()) return child;
-    // The shape's origin seen from the principal frame.
-    auto compound = std::make_unique<btCompoundShape>();
-    compound->addChildShape(btPose(frame.axes.transpose(), -(frame.axes.transpose() * frame.center)), child);
-    scene.shapes.push_back(std::move(compound));
-    return scene.shapes.back().get();
-}
-
 /// Velocity-proportional drag (World::dampings, dv/dt = -rate v) as Bullet's per-step factor
 /// v *= (1 - d)^dt: d = 1 - exp(-rate) gives exactly v *= exp(-rate dt).
 btScalar bulletDamping(Real rate) { return btScalar(1 - std::exp(-double(rate))); }
 
-void addBodies(BulletScene& scene, const World& world) {
-    const Settings& settings = world.settings;
+/// The Bullet body of World body `index`, its shape made in Bullet's body frame.
+std::unique_ptr<btRigidBody> makeBody(BulletScene& scene, const World& world, int index, bool internalEdges) {
+    const Body& body = world.bodies[std::size_t(index)];
+    const Motion* motion = world.motionOf(index);
+    PrincipalFrame frame = detail::principalFrame(motion);
+    const detail::BulletShape shape = detail::makeBodyShape(scene.store, body.shape, frame, internalEdges, bodyLabel(world, index));
+    scene.frames.push_back(frame);
+    const bool dynamic = body.type == BodyType::Dynamic;
+    const btScalar mass = dynamic ? btScalar(motion->mass) : btScalar(0);
+    btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, shape.shape, dynamic ? btVec(frame.inertia) : btVector3(0, 0, 0));
+    info.m_startWorldTransform = bulletPose(body.transform, frame);
+    info.m_friction = btScalar(body.material.friction);
+    info.m_restitution = btScalar(body.material.restitution);
+    info.m_rollingFriction = info.m_spinningFriction = btScalar(body.material.rollingResistance * roundRadius(body.shape));
+    Real linearRate = 0, angularRate = 0;
+    for (const Damping& damping : world.dampings)
+        if (dynamic && (damping.body == index || damping.body < 0)) linearRate += damping.linear, angularRate += damping.angular;
+    info.m_linearDamping = bulletDamping(linearRate);
+    info.m_angularDamping = bulletDamping(angularRate);
+    auto rigid = std::make_unique<btRigidBody>(info);
+    if (motion) {
+        rigid->setLinearVelocity(btVec(motion->linearVelocity));
+        rigid->setAngularVelocity(btVec(motion->angularVelocity));
+    }
+    if (shape.internalEdges)  // Bullet calls the contact-added callback for this body's contacts
+        rigid->setCollisionFlags(rigid->getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+    if (body.type == BodyType::Kinematic)
+        rigid->setCollisionFlags(rigid->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+    if (body.type != BodyType::Static) rigid->setActivationState(DISABLE_DEACTIVATION);
+    return rigid;
+}
+
+/// A dynamic body's gyroscopic term and continuous collision, as the world's settings ask.
+void setDynamics(btRigidBody& rigid, const Body& body, const Settings& settings) {
+    const int gyroscopic[] = {0, BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT, BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY};
+    rigid.setFlags(gyroscopic[int(settings.gyroscopic)]);
+    if (settings.ccd == CcdMode::Off) return;
+    // Bullet's continuous collision: a swept sphere for bodies moving more than half their
+    // smallest extent in a step (the engine's auto rule, chapter 7).
+    const Aabb box = computeAabb(body.shape, Transform{});
+    const Real smallestHalf = box.extents().minCoeff();
+    rigid.setCcdMotionThreshold(btScalar(smallestHalf));
+    rigid.setCcdSweptSphereRadius(btScalar(Real(0.8) * smallestHalf));
+}
+
+void addBodies(BulletScene& scene, const World& world, bool internalEdges) {
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        const Body& body = world.bodies[i];
-        const Motion* motion = world.motionOf(int(i));
-        const PrincipalFrame frame = principalFrame(motion);
-        scene.frames.push_back(frame);
-        const bool dynamic = body.type == BodyType::Dynamic;
-        const btScalar mass = dynamic ? btScalar(motion->mass) : btScalar(0);
-        btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, makeShape(scene, body, frame),
-                                                      dynamic ? btVec(frame.inertia) : btVector3(0, 0, 0));
-        info.m_startWorldTransform = bulletPose(body.transform, frame);
-        info.m_friction = btScalar(body.material.friction);
-        info.m_restitution = btScalar(body.material.restitution);
-        info.m_rollingFriction = info.m_spinningFriction =
-            btScalar(body.material.rollingResistance * roundRadius(body.shape));
-        Real linearRate = 0, angularRate = 0;
-        for (const Damping& damping : world.dampings)
-            if (dynamic && (damping.body == int(i) || damping.body < 0)) linearRate += damping.linear, angularRate += damping.angular;
-        info.m_linearDamping = bulletDamping(linearRate);
-        info.m_angularDamping = bulletDamping(angularRate);
-        auto rigid = std::make_unique<btRigidBody>(info);
-        if (motion) {
-            rigid->setLinearVelocity(btVec(motion->linearVelocity));
-            rigid->setAngularVelocity(btVec(motion->angularVelocity));
-        }
-        if (body.type == BodyType::Kinematic)
-            rigid->setCollisionFlags(rigid->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
-        if (body.type != BodyType::Static) rigid->setActivationState(DISABLE_DEACTIVATION);
-        if (dynamic) {
-            const int gyroscopic[] = {0, BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT, BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY};
-            rigid->setFlags(gyroscopic[int(settings.gyroscopic)]);
-            if (settings.ccd != CcdMode::Off) {
-                // Bullet's continuous collision: a swept sphere for bodies moving more than half
-                // their smallest extent in a step (the engine's auto rule, chapter 7).
-                const Aabb box = computeAabb(body.shape, Transform{});
-                const Real smallestHalf = box.extents().minCoeff();
-                rigid->setCcdMotionThreshold(btScalar(smallestHalf));
-                rigid->setCcdSweptSphereRadius(btScalar(Real(0.8) * smallestHalf));
-            }
-        }
+        std::unique_ptr<btRigidBody> rigid = makeBody(scene, world, int(i), internalEdges);
+        if (world.bodies[i].type == BodyType::Dynamic) setDynamics(*rigid, world.bodies[i], world.settings);
         scene.dynamics.addRigidBody(rigid.get());
         scene.bodies.push_back(std::move(rigid));
     }
@@ -389,6 +310,41 @@ Mat3 BulletMass::inertiaInShapeAxes() const {
     return rotation * principalInertia.asDiagonal() * rotation.transpose();
 }
 
+namespace {
+
+/// The deepest penetration of a contact between a static body and another, as Bullet measures it
+/// (a point's distance below zero), m; 0 when none penetrates.
+double deepestStaticPenetration(btDispatcher& dispatcher) {
+    double deepest = 0;
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+        const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+        if (!manifold.getBody0()->isStaticObject() && !manifold.getBody1()->isStaticObject()) continue;
+        for (int p = 0; p < manifold.getNumContacts(); ++p)
+            deepest = std::max(deepest, -double(manifold.getContactPoint(p).getDistance()));
+    }
+    return deepest;
+}
+
+/// What Bullet was given for each body, and where each body ended.
+void readBack(const BulletScene& scene, const World& world, BulletRun& run) {
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const btRigidBody& body = *scene.bodies[i];
+        run.finalPoses.push_back(shapePose(body.getWorldTransform(), scene.frames[i]));
+        run.finalLinearVelocities.push_back(vec(body.getLinearVelocity()));
+        run.finalAngularVelocities.push_back(vec(body.getAngularVelocity()));
+        BulletMass mass;
+        mass.mass = body.getInvMass() > 0 ? Real(1 / body.getInvMass()) : Real(0);
+        mass.principalInertia = mass.mass > 0 ? vec(body.getLocalInertia()) : Vec3::Zero();
+        if (world.motionOf(int(i))) {  // a static body's frame may be a height field's centre, not a mass's
+            mass.localCenter = scene.frames[i].center;
+            mass.principalRotation = Quat(scene.frames[i].axes);
+        }
+        run.masses.push_back(mass);
+    }
+}
+
+}  // namespace
+
 BulletRun runBullet(const World& world, long frames, const BulletOptions& options, const BulletFrameCallback& afterFrame) {
     checkSupported(world);
     const Settings& settings = world.settings;
@@ -398,6 +354,7 @@ BulletRun runBullet(const World& world, long frames, const BulletOptions& option
     const Real h = settings.dt / Real(run.substeps);
 
     const CombineRules combineRules;
+    const detail::InternalEdgeCallback edgeCallback(options.internalEdges);
     BulletScene scene;
     scene.dynamics.setGravity(btVec(settings.gravity));
     btContactSolverInfo& solverInfo = scene.dynamics.getSolverInfo();
@@ -405,7 +362,7 @@ BulletRun runBullet(const World& world, long frames, const BulletOptions& option
     solverInfo.m_splitImpulse = options.splitImpulse ? 1 : 0;
     solverInfo.m_restitutionVelocityThreshold = btScalar(settings.restitutionThreshold);
     if (!settings.warmStarting) solverInfo.m_solverMode &= ~SOLVER_USE_WARMSTARTING;
-    addBodies(scene, world);
+    addBodies(scene, world, options.internalEdges);
     addJoints(scene, world, btScalar(h));
 
     std::vector<Transform> kinematicPoses;
@@ -430,22 +387,11 @@ BulletRun runBullet(const World& world, long frames, const BulletOptions& option
         }
         const auto end = std::chrono::steady_clock::now();
         run.stepMs.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+        run.staticPenetration.push_back(deepestStaticPenetration(scene.dispatcher));
         if (afterFrame) afterFrame(frame, poses());
     }
     run.frames = frames;
-
-    run.finalPoses = poses();
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-        const btRigidBody& body = *scene.bodies[i];
-        run.finalLinearVelocities.push_back(vec(body.getLinearVelocity()));
-        run.finalAngularVelocities.push_back(vec(body.getAngularVelocity()));
-        BulletMass mass;
-        mass.mass = body.getInvMass() > 0 ? Real(1 / body.getInvMass()) : Real(0);
-        mass.principalInertia = mass.mass > 0 ? vec(body.getLocalInertia()) : Vec3::Zero();
-        mass.localCenter = scene.frames[i].center;
-        mass.principalRotation = Quat(scene.frames[i].axes);
-        run.masses.push_back(mass);
-    }
+    readBack(scene, world, run);
     return run;
 }
 
@@ -461,6 +407,13 @@ World worldAfterRun(const World& world, const BulletRun& run) {
     after.frame = world.frame + run.frames;
     after.time = world.time + double(run.frames) * double(world.settings.dt);
     return after;
+}
+
+PeerEngine bulletPeerEngine() {
+    return {bulletVersion(), [](const World& world, long frames, const BetweenPeerFrames& between) {
+                const BulletRun run = runBullet(world, frames, {}, between);
+                return PeerRun{run.stepMs, run.finalPoses, run.staticPenetration};
+            }};
 }
 
 std::string bulletVersion() {

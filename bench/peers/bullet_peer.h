@@ -3,10 +3,12 @@
 // as a yardstick for speed and behaviour (docs/peers.md). Plain data in and out; no Bullet type
 // appears here, so code that includes this header needs no Bullet headers.
 //
-// What the peer maps and what it refuses is listed in docs/peers.md. A feature it cannot map
+// What the peer maps and what it refuses is listed in docs/peers.md: the engine's convex shapes,
+// compounds, static meshes and height fields, and its joints. A feature it cannot map
 // (a distance joint, springs, an RK4 integrator, ...) throws BulletUnsupported naming the body,
 // joint or setting: a run is never silently different from the scene.
 
+#include "app/peer.h"
 #include "world/world.h"
 
 #include <functional>
@@ -28,6 +30,9 @@ struct BulletOptions {
     int substeps = 0;           // per frame; 0: the world's settings.substeps
     bool splitImpulse = true;   // Bullet's default: penetration recovery apart from the velocities
     bool sleeping = false;      // Bullet's deactivation; off so every body is stepped every step
+    /// Bullet's own internal-edge correction on meshes and height fields (btInternalEdgeUtility):
+    /// the engine corrects its triangle contacts' normals too (chapter 13).
+    bool internalEdges = true;
 };
 
 /// What Bullet was given for one body (read back from its btRigidBody): the engine's mass and
@@ -46,6 +51,9 @@ struct BulletRun {
     int solverIterations = 0;               // what ran
     int substeps = 0;
     std::vector<double> stepMs;             // one per frame: every stepSimulation call of the frame
+    /// One per frame, after it: the deepest penetration of a contact with a static body, m, as
+    /// Bullet measures it (a contact point's distance below zero); 0 when none penetrates.
+    std::vector<double> staticPenetration;
     std::vector<Transform> finalPoses;      // per World body, same order: pose of the shape origin
     std::vector<Vec3> finalLinearVelocities;    // of the centre of mass, m/s
     std::vector<Vec3> finalAngularVelocities;   // rad/s
@@ -65,5 +73,9 @@ World worldAfterRun(const World& world, const BulletRun& run);
 
 /// "bullet 3.24": the version of the Bullet library linked.
 std::string bulletVersion();
+
+/// The peer as the benches ask for one (app/peer.h): runBullet with the default options, for a
+/// program (or a test) to register with setPeerEngine.
+PeerEngine bulletPeerEngine();
 
 }  // namespace stepwise::peers

@@ -184,7 +184,7 @@ constexpr long kFramesATurn = 30;
 std::pair<Measurement, Measurement> runBeside(const World& start, const SpeedOptions& options, long frames, long timedFrom) {
     EngineRun engine(start, options, frames, timedFrom);
     long engineFrames = 0;
-    const PeerRun peer = peerEngine().run(start, frames, [&](long peerFrame) {
+    const PeerRun peer = peerEngine().run(start, frames, [&](long peerFrame, const std::vector<Transform>&) {
         if ((peerFrame + 1) % kFramesATurn != 0 && peerFrame + 1 != frames) return;
         while (engineFrames <= peerFrame) engine.step(engineFrames++);
     });

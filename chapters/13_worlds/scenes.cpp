@@ -2,9 +2,11 @@
 #include "13_worlds/scenes.h"
 
 #include "04_pgs/scenes.h"
+#include "10_skip_work/scenes.h"
 #include "math/random.h"
 
 #include <cmath>
+#include <functional>
 
 namespace stepwise {
 
@@ -48,20 +50,34 @@ Shape chairShape() {
     return Shape::compoundOf(std::move(children));
 }
 
-Shape tiledFloor(int tiles, Real size) {
+Shape gridMesh(int cells, Real size, const std::function<Real(Real x, Real z)>& height) {
     std::vector<Vec3> vertices;
     std::vector<std::array<int, 3>> triangles;
-    for (int row = 0; row <= tiles; ++row)
-        for (int column = 0; column <= tiles; ++column)
-            vertices.emplace_back(Real(column) * size, 0, Real(row) * size);
-    const auto at = [tiles](int row, int column) { return row * (tiles + 1) + column; };
-    for (int row = 0; row < tiles; ++row)
-        for (int column = 0; column < tiles; ++column) {
+    for (int row = 0; row <= cells; ++row)
+        for (int column = 0; column <= cells; ++column) {
+            const Real x = Real(column) * size, z = Real(row) * size;
+            vertices.emplace_back(x, height(x, z), z);
+        }
+    const auto at = [cells](int row, int column) { return row * (cells + 1) + column; };
+    for (int row = 0; row < cells; ++row)
+        for (int column = 0; column < cells; ++column) {
             // Counter-clockwise seen from +y: (r, c), (r + 1, c + 1), (r, c + 1) and (r, c), (r + 1, c), (r + 1, c + 1).
             triangles.push_back({at(row, column), at(row + 1, column + 1), at(row, column + 1)});
             triangles.push_back({at(row, column), at(row + 1, column), at(row + 1, column + 1)});
         }
     return Shape::triangleMesh(std::move(vertices), std::move(triangles));
+}
+
+Shape tiledFloor(int tiles, Real size) {
+    return gridMesh(tiles, size, [](Real, Real) { return Real(0); });
+}
+
+Real hillsHeight(Real x, Real z, Real amplitude) {
+    return amplitude * (std::sin(Real(0.21) * x) * std::cos(Real(0.17) * z) + Real(0.4) * std::sin(Real(0.53) * x + Real(0.31) * z));
+}
+
+Shape hillsMesh(int cells, Real size, Real amplitude) {
+    return gridMesh(cells, size, [amplitude](Real x, Real z) { return hillsHeight(x, z, amplitude); });
 }
 
 Shape flatHeightField(int tiles, Real size) {
@@ -74,9 +90,7 @@ World buildTerrain(int cells, Real size, Real amplitude) {
     std::vector<Real> heights;
     for (int row = 0; row <= cells; ++row)
         for (int column = 0; column <= cells; ++column) {
-            const Real x = Real(column) * size, z = Real(row) * size;
-            heights.push_back(amplitude * (std::sin(Real(0.21) * x) * std::cos(Real(0.17) * z) +
-                                           Real(0.4) * std::sin(Real(0.53) * x + Real(0.31) * z)));
+            heights.push_back(hillsHeight(Real(column) * size, Real(row) * size, amplitude));
         }
     const Real half = Real(cells) * size / 2;
     addBodyWith(world, "hills", Shape::heightFieldOf(cells + 1, cells + 1, size, std::move(heights)), Vec3(-half, 0, -half),
@@ -150,6 +164,36 @@ World buildTerrainPile(int bodies, unsigned seed) {
                             Real(1.2) * (Real(z) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)));
         const Quat turn(Eigen::AngleAxis<Real>(random.uniformReal(0, 2 * kPi), Vec3(1, 2, 3).normalized()));
         addBodyWith(world, "body" + std::to_string(i), shapes[i % 5], position, BodyType::Dynamic, turn);
+    }
+    return world;
+}
+
+Shape meshPileShape(int index) {
+    if (index % 40 == 39) return tableShape(Real(0.8), Real(0.6), Real(0.5), Real(0.05), Real(0.05));
+    switch (index % 4) {
+        case 0: return Shape::box(Vec3(Real(0.3), Real(0.3), Real(0.3)));
+        case 1: return Shape::sphere(Real(0.3));
+        case 2: return Shape::capsule(Real(0.2), Real(0.3));
+        default: return Shape::cylinder(Real(0.3), Real(0.3));
+    }
+}
+
+World buildMeshTerrainPile(int cells, int bodies, unsigned seed) {
+    World world = emptyWorld("mesh-terrain-pile-" + std::to_string(bodies));
+    const Real half = Real(cells) / 2;
+    addBodyWith(world, "hills", hillsMesh(cells, 1, Real(1.5)), Vec3(-half, 0, -half), BodyType::Static);
+    Random random(seed);
+    const int perSide = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(bodies) / 10))));
+    for (int i = 0; i < bodies; ++i) {
+        const int x = i % perSide, z = (i / perSide) % perSide, level = i / (perSide * perSide);
+        const Vec3 position(Real(1.2) * (Real(x) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)),
+                            Real(4) + Real(1.2) * Real(level),
+                            Real(1.2) * (Real(z) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)));
+        const Quat turn(Eigen::AngleAxis<Real>(random.uniformReal(0, 2 * kPi), Vec3(1, 2, 3).normalized()));
+        const int body = addBodyWith(world, "body" + std::to_string(i), meshPileShape(i), position, BodyType::Dynamic, turn);
+        // Balls and capsules roll for ever on rigid hills without it (chapter 10's piles do the same).
+        if (isRound(world.bodies[std::size_t(body)].shape))
+            world.bodies[std::size_t(body)].material.rollingResistance = kPileRollingResistance;
     }
     return world;
 }

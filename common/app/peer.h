@@ -15,10 +15,14 @@ namespace stepwise {
 struct PeerRun {
     std::vector<double> stepMs;            // one per frame
     std::vector<Transform> finalPoses;     // per World body
+    /// One per frame when the peer measures it (else empty): the deepest penetration of a contact
+    /// with a static body after the frame, m, as the peer measures its contacts.
+    std::vector<double> staticPenetration;
 };
 
-/// Called after each of the peer's frames, outside its timed region (frame: 0, 1, ...).
-using BetweenPeerFrames = std::function<void(long frame)>;
+/// Called after each of the peer's frames, outside its timed region (frame: 0, 1, ...), with every
+/// World body's pose (of the shape's origin) after it.
+using BetweenPeerFrames = std::function<void(long frame, const std::vector<Transform>& poses)>;
 
 struct PeerEngine {
     std::string name;                      // "bullet 3.24"

@@ -1,6 +1,8 @@
 // The Bullet peer (bench/peers/bullet_peer.h): Bullet is given the engine's world faithfully
-// (closed-form fall, masses, inertias, joint signs, scene files) and refuses what it cannot map.
+// (closed-form fall, masses, inertias, joint signs, scene files; chapter 13's meshes, height
+// fields and compounds) and refuses what it cannot map.
 #include "06_manifolds/scenes.h"
+#include "13_worlds/scenes.h"
 #include "peers/bullet_peer.h"
 #include "world/scene.h"
 
@@ -8,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace stepwise;
 using namespace stepwise::peers;
@@ -29,6 +32,15 @@ int addDynamic(World& world, const std::string& name, const Shape& shape, const 
     def.transform.position = position;
     def.transform.rotation = rotation;
     def.mass = mass;
+    return addBody(world, def);
+}
+
+int addStatic(World& world, const std::string& name, const Shape& shape, const Vec3& position) {
+    BodyDef def;
+    def.name = name;
+    def.type = BodyType::Static;
+    def.shape = shape;
+    def.transform.position = position;
     return addBody(world, def);
 }
 
@@ -181,4 +193,132 @@ TEST_CASE("a pyramid of 10 rows stands in Bullet and every frame is timed", "[pe
     CHECK((run.finalPoses[top].position - pyramid.bodies[top].transform.position).norm() < Real(0.05));
     const World after = worldAfterRun(pyramid, run);
     CHECK(computeEnergy(after).kinetic < 0.1);
+}
+
+TEST_CASE("a box comes to rest at the same height on a mesh floor and on a height field as on a box floor", "[peers][worlds]") {
+    // The floors' tops at y = 0: a box, 10 x 10 tiles of two triangles, a flat 10 x 10-cell height
+    // field. The box lands across a seam (x = 0, z = 0.3 in a tile), where a wrong normal would tip it.
+    const auto restingHeight = [](const Shape& floor, const Vec3& floorPosition) {
+        World world = emptyWorld();
+        addStatic(world, "floor", floor, floorPosition);
+        addDynamic(world, "box", Shape::box(Vec3(Real(0.5), Real(0.25), Real(0.5))), Vec3(0, Real(0.35), Real(0.3)), 2);
+        const BulletRun run = runBullet(world, 120);
+        CHECK(run.finalAngularVelocities[1].norm() < Real(0.01));
+        return double(run.finalPoses[1].position.y());
+    };
+    const double onBox = restingHeight(Shape::box(Vec3(10, 1, 10)), Vec3(0, -1, 0));
+    const double onMesh = restingHeight(tiledFloor(10, 1), Vec3(-5, 0, -5));
+    const double onField = restingHeight(flatHeightField(10, 1), Vec3(-5, 0, -5));
+    INFO("box floor " << onBox << " m, mesh " << onMesh << " m, height field " << onField << " m");
+    CHECK(onBox == Approx(0.25).margin(0.005));  // Bullet's resting penetration: a few millimetres at most
+    // Bullet's margins differ by shape pair (a box's 4 cm lies inside it, a triangle has none):
+    // the same height to a millimetre, far within them.
+    CHECK(onMesh == Approx(onBox).margin(0.001));
+    CHECK(onField == Approx(onBox).margin(0.001));
+}
+
+TEST_CASE("a height field's cells are split along the engine's diagonal in Bullet, with or without holes", "[peers][worlds]") {
+    // 3 x 3 cells, all at height 0 but the middle cell's corners off its split diagonal, raised to
+    // 0.5: along the engine's diagonal, (r, c) to (r + 1, c + 1), the middle cell is a V-shaped
+    // valley of two planes at 35 degrees whose floor stays at 0. A ball set down in it comes to
+    // rest on both planes, its centre sqrt(1.5) r above the floor. Split the other way, the cell
+    // would be a ridge 0.5 m high instead.
+    const bool holes = GENERATE(false, true);  // a hole in a far corner: the peer's mesh form
+    std::vector<Real> heights(16, Real(0));
+    heights[1 * 4 + 2] = heights[2 * 4 + 1] = Real(0.5);
+    if (holes) heights[0] = std::numeric_limits<Real>::quiet_NaN();
+    World world = emptyWorld();
+    addStatic(world, "field", Shape::heightFieldOf(4, 4, 1, heights), Vec3(-1, 0, -1));
+    const Real radius = Real(0.2);
+    addDynamic(world, "ball", Shape::sphere(radius), Vec3(Real(0.5), Real(0.4), Real(0.5)), 1);
+    const BulletRun run = runBullet(world, 180);
+    INFO((holes ? "mesh form" : "btHeightfieldTerrainShape") << ": ball at " << run.finalPoses[1].position.transpose());
+    CHECK(double(run.finalPoses[1].position.y()) == Approx(std::sqrt(1.5) * double(radius)).margin(0.003));
+    // The valley runs along x = z: the ball stays on it.
+    CHECK(std::abs(double(run.finalPoses[1].position.x() - run.finalPoses[1].position.z())) < 0.003);
+    CHECK(run.finalLinearVelocities[1].norm() < Real(0.01));
+}
+
+TEST_CASE("a hole in a height field lets a ball fall through, the cells around it hold one", "[peers][worlds]") {
+    // 4 x 4 cells of 1 m; the middle grid point is a hole, so the four cells around it are: a
+    // 2 m square opening.
+    std::vector<Real> heights(25, Real(0));
+    heights[2 * 5 + 2] = std::numeric_limits<Real>::quiet_NaN();
+    World world = emptyWorld();
+    addStatic(world, "ground", Shape::heightFieldOf(5, 5, 1, heights), Vec3(-2, 0, -2));
+    const int over = addDynamic(world, "over-hole", Shape::sphere(Real(0.3)), Vec3(0, 1, 0), 1);
+    const int beside = addDynamic(world, "beside", Shape::sphere(Real(0.3)), Vec3(Real(-1.7), 1, Real(1.7)), 1);
+    const BulletRun run = runBullet(world, 60);
+    CHECK(run.finalPoses[std::size_t(over)].position.y() < Real(-3));
+    CHECK(double(run.finalPoses[std::size_t(beside)].position.y()) == Approx(0.3).margin(0.005));
+
+    // A field whose every cell has a hole leaves Bullet nothing to collide: refused by name.
+    World empty = emptyWorld();
+    std::vector<Real> ring(9, Real(0));
+    ring[4] = std::numeric_limits<Real>::quiet_NaN();
+    addStatic(empty, "ground", Shape::heightFieldOf(3, 3, 1, ring), Vec3::Zero());
+    CHECK_THROWS_AS(runBullet(empty, 1), BulletUnsupported);
+    CHECK_THROWS_WITH(runBullet(empty, 1), Catch::Contains("bodies[0] (\"ground\").shape (heightfield): every cell has a hole"));
+}
+
+TEST_CASE("a compound's mass and inertia in Bullet are the engine's, and a table stands on its legs", "[peers][worlds]") {
+    World world = emptyWorld();
+    addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(20, Real(0.5), 20));
+    const Quat turn(Eigen::AngleAxis<Real>(Real(0.3), Vec3::UnitY()));
+    const int table = addDynamic(world, "table", tableShape(Real(1.2), Real(0.8), Real(0.75), Real(0.05), Real(0.06)),
+                                 Vec3(0, Real(0.001), 0), 12, turn);
+    // A chair's back puts its centre of mass behind and above the seat's middle, off its origin.
+    const int chair = addDynamic(world, "chair", chairShape(), Vec3(2, Real(0.001), 0), 5);
+    REQUIRE(!world.motionOf(chair)->localCenter.isZero(Real(1e-3)));
+
+    const BulletRun still = runBullet(world, 0);
+    for (int body : {table, chair}) {
+        const Motion& motion = *world.motionOf(body);
+        const BulletMass& given = still.masses[std::size_t(body)];
+        CHECK(given.mass == Approx(motion.mass).epsilon(1e-6));
+        CHECK((given.localCenter - motion.localCenter).norm() < Real(1e-6));
+        CHECK((given.inertiaInShapeAxes() - motion.inertiaLocal).norm() < Real(1e-4) * motion.inertiaLocal.norm());
+        const Vec3 placed = world.bodies[std::size_t(body)].transform.position;
+        CHECK((still.finalPoses[std::size_t(body)].position - placed).norm() < Real(1e-5));
+    }
+
+    // Two seconds later both stand where they were put, on their legs (the children where the
+    // engine has them: a leg out of place would tilt them).
+    const BulletRun run = runBullet(world, 120);
+    for (int body : {table, chair}) {
+        const Transform& pose = run.finalPoses[std::size_t(body)];
+        INFO(world.bodies[std::size_t(body)].name << " at " << pose.position.transpose());
+        CHECK((pose.position - world.bodies[std::size_t(body)].transform.position).norm() < Real(0.01));
+        CHECK(pose.rotation.angularDistance(world.bodies[std::size_t(body)].transform.rotation) < Real(0.01));
+        CHECK(std::abs(double(computeAabb(world.bodies[std::size_t(body)].shape, pose).min.y())) < 0.005);
+    }
+}
+
+TEST_CASE("with Bullet's internal-edge correction a box slides over the seams of triangles at its speed", "[peers][worlds]") {
+    // The engine's seam test (tests/ch13/worlds_test.cpp) in Bullet: a frictionless 1 m box at
+    // 5 m/s over 20 m of 1 m tiles, as a mesh and as a height field. Without btInternalEdgeUtility
+    // the triangles' edges catch the box's corners and most of its speed is lost.
+    const bool field = GENERATE(false, true);
+    World world = emptyWorld();
+    BodyDef floor;
+    floor.name = "floor";
+    floor.type = BodyType::Static;
+    floor.shape = field ? flatHeightField(30, 1) : tiledFloor(30, 1);
+    floor.material.friction = 0;
+    addBody(world, floor);
+    BodyDef box;
+    box.name = "box";
+    box.shape = Shape::box(Vec3::Constant(Real(0.5)));
+    box.transform.position = Vec3(2, Real(0.5), Real(15.3));
+    box.linearVelocity = Vec3(5, 0, 0);
+    box.material.friction = 0;
+    addBody(world, box);
+    BulletOptions corrected, uncorrected;
+    uncorrected.internalEdges = false;
+    const BulletRun on = runBullet(world, 240, corrected), off = runBullet(world, 240, uncorrected);
+    INFO((field ? "height field" : "mesh") << ": " << on.finalLinearVelocities[1].x() << " m/s corrected, "
+                                           << off.finalLinearVelocities[1].x() << " m/s not");
+    CHECK(double(on.finalLinearVelocities[1].x()) == Approx(5).margin(0.025));
+    CHECK(on.finalPoses[1].position.x() > Real(21.5));
+    CHECK(off.finalLinearVelocities[1].x() < Real(4));
 }
