@@ -44,8 +44,9 @@ World buildTerrain(int cells, Real size, Real amplitude);
 /// Cylinders standing, stacked and one rolling on its side, a table and a chair, on a floor.
 World buildCylinderScene();
 
-/// Two frictionless boxes sliding at 5 m/s over 30 m of 1 m tiles: one on a mesh floor, one on a
-/// height field beside it (the seam scene; Settings::activeEdges false shows the bump).
+/// Two frictionless boxes sliding at 5 m/s over 30 m of 1 m tiles, one on a mesh floor and one on a
+/// height field beside it, and a ball rolling down a 15-degree height-field ramp (the seam scene;
+/// Settings::activeEdges false slows the ball by a fifth).
 World buildSeamScene();
 
 /// A mixed pile of `bodies` boxes, spheres, capsules, cylinders and tables dropped onto hills.
