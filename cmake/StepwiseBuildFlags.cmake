@@ -13,6 +13,22 @@ else()
   add_compile_options(-ffp-contract=off -fno-fast-math)
 endif()
 
+# The linker: -DSTEPWISE_LINKER=lld in the Linux presets (Debian's lld, tools/setup-deps.sh), which
+# links a test program in a third of the time GNU ld takes (a sanitizer build's in 1 s instead of
+# 3). Where the compiler cannot link with it (lld not installed, MSVC) the build says so and keeps
+# the compiler's default linker. Empty: the compiler's default linker.
+set(STEPWISE_LINKER "" CACHE STRING "Linker for GCC and Clang (-fuse-ld=), e.g. lld; empty: the compiler's default")
+if(STEPWISE_LINKER AND NOT MSVC)
+  include(CheckLinkerFlag)
+  string(MAKE_C_IDENTIFIER "STEPWISE_LINKER_${STEPWISE_LINKER}_WORKS" linker_check)
+  check_linker_flag(CXX -fuse-ld=${STEPWISE_LINKER} ${linker_check})
+  if(${linker_check})
+    add_link_options(-fuse-ld=${STEPWISE_LINKER})
+  else()
+    message(STATUS "STEPWISE_LINKER=${STEPWISE_LINKER}: the compiler cannot link with it; using its default linker")
+  endif()
+endif()
+
 # Sanitizers: -DSTEPWISE_SANITIZE=address,undefined (the linux-asan preset). Any report ends the
 # program (no recover), so a ctest run fails on the first finding.
 set(STEPWISE_SANITIZE "" CACHE STRING "Sanitizers to build with, e.g. address,undefined")
@@ -43,3 +59,27 @@ if(STEPWISE_FUZZ)
   endif()
   add_compile_options(-fsanitize=fuzzer-no-link)
 endif()
+
+# The test programs' own code: -DSTEPWISE_TEST_OPTIMIZATION=-Og (the Linux presets). The Catch2
+# suites, their main, the scenario promises, the exercise checks and the CLI and PNG checkers call
+# the engine; the engine's libraries keep the build type's flags, so the engine runs (and rounds:
+# no fast-math, no contraction at any level) exactly as in the demos and the benches. The suites'
+# own code, assertions and scene set-up, is two fifths of a build's compiling; -Og takes a fifth
+# off its code generation and runs the suites as fast as -O3 does. -O0 would compile faster
+# still, but the engine's inline functions instantiated in a suite then run several times slower
+# (chapter 6's suite: 2.6 times). Empty: the build type's flags everywhere. GCC and Clang take the
+# last -O on the line.
+set(STEPWISE_TEST_OPTIMIZATION "" CACHE STRING
+    "Optimisation flag for the test programs' own code (e.g. -Og); empty: the build type's")
+function(stepwise_test_code target)
+  if(STEPWISE_TEST_OPTIMIZATION AND NOT MSVC)
+    target_compile_options(${target} PRIVATE ${STEPWISE_TEST_OPTIMIZATION})
+  endif()
+  if(STEPWISE_FUZZ)
+    # libFuzzer's coverage guides the fuzz programs; a test program never runs libFuzzer, so its
+    # own code needs none (its sanitizers stay).
+    get_target_property(options ${target} COMPILE_OPTIONS)
+    list(REMOVE_ITEM options -fsanitize=fuzzer-no-link)
+    set_target_properties(${target} PROPERTIES COMPILE_OPTIONS "${options}")
+  endif()
+endfunction()

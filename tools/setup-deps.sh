@@ -3,9 +3,10 @@
 # Idempotent; needs root (or sudo). Nothing is fetched from outside Debian's archive.
 set -euo pipefail
 # clang and libclang-rt-dev: the sanitizer build and its libFuzzer targets (linux-asan preset).
+# lld: the Linux presets' linker (STEPWISE_LINKER, cmake/StepwiseBuildFlags.cmake).
 # libbullet-dev: the Bullet peer (bench/peers, docs/peers.md), a yardstick only; the build skips
 # the peer without it.
-packages=(cmake ninja-build g++ clang libclang-rt-dev libeigen3-dev nlohmann-json3-dev libcli11-dev catch2 doxygen
+packages=(cmake ninja-build g++ clang libclang-rt-dev lld libeigen3-dev nlohmann-json3-dev libcli11-dev catch2 doxygen
           libjs-mathjax chromium libbullet-dev)
 missing=()
 for package in "${packages[@]}"; do
