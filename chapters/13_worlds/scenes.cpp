@@ -30,6 +30,21 @@ int addBodyWith(World& world, const std::string& name, const Shape& shape, const
     return addBody(world, def);
 }
 
+/// Where body `index` of a pile starts: columns 1.2 m apart, `perSide` to a side, layers 1.2 m
+/// apart from 4 m up, jittered and turned at random. One draw per statement: the order in which a
+/// call's arguments are evaluated is unspecified, and two draws in one call differ by compiler.
+Transform pileDrop(int index, int perSide, Random& random) {
+    const int x = index % perSide, z = (index / perSide) % perSide, level = index / (perSide * perSide);
+    const Real jitterX = random.uniformReal(Real(-0.1), Real(0.1));
+    const Real jitterZ = random.uniformReal(Real(-0.1), Real(0.1));
+    const Real angle = random.uniformReal(0, 2 * kPi);
+    Transform drop;
+    drop.position = Vec3(Real(1.2) * (Real(x) - Real(0.5) * Real(perSide - 1)) + jitterX, Real(4) + Real(1.2) * Real(level),
+                         Real(1.2) * (Real(z) - Real(0.5) * Real(perSide - 1)) + jitterZ);
+    drop.rotation = Quat(Eigen::AngleAxis<Real>(angle, Vec3(1, 2, 3).normalized()));
+    return drop;
+}
+
 }  // namespace
 
 Shape tableShape(Real width, Real depth, Real height, Real thickness, Real leg) {
@@ -179,12 +194,8 @@ World buildTerrainPile(int bodies, unsigned seed) {
                             tableShape(Real(0.8), Real(0.6), Real(0.5), Real(0.05), Real(0.05))};
     const int perSide = std::max(1, static_cast<int>(std::ceil(std::cbrt(static_cast<double>(bodies)))));
     for (int i = 0; i < bodies; ++i) {
-        const int x = i % perSide, z = (i / perSide) % perSide, level = i / (perSide * perSide);
-        const Vec3 position(Real(1.2) * (Real(x) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)),
-                            Real(4) + Real(1.2) * Real(level),
-                            Real(1.2) * (Real(z) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)));
-        const Quat turn(Eigen::AngleAxis<Real>(random.uniformReal(0, 2 * kPi), Vec3(1, 2, 3).normalized()));
-        addBodyWith(world, "body" + std::to_string(i), shapes[i % 5], position, BodyType::Dynamic, turn);
+        const Transform drop = pileDrop(i, perSide, random);
+        addBodyWith(world, "body" + std::to_string(i), shapes[i % 5], drop.position, BodyType::Dynamic, drop.rotation);
     }
     return world;
 }
@@ -206,12 +217,8 @@ World buildMeshTerrainPile(int cells, int bodies, unsigned seed) {
     Random random(seed);
     const int perSide = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(bodies) / 10))));
     for (int i = 0; i < bodies; ++i) {
-        const int x = i % perSide, z = (i / perSide) % perSide, level = i / (perSide * perSide);
-        const Vec3 position(Real(1.2) * (Real(x) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)),
-                            Real(4) + Real(1.2) * Real(level),
-                            Real(1.2) * (Real(z) - Real(0.5) * Real(perSide - 1)) + random.uniformReal(Real(-0.1), Real(0.1)));
-        const Quat turn(Eigen::AngleAxis<Real>(random.uniformReal(0, 2 * kPi), Vec3(1, 2, 3).normalized()));
-        const int body = addBodyWith(world, "body" + std::to_string(i), meshPileShape(i), position, BodyType::Dynamic, turn);
+        const Transform drop = pileDrop(i, perSide, random);
+        const int body = addBodyWith(world, "body" + std::to_string(i), meshPileShape(i), drop.position, BodyType::Dynamic, drop.rotation);
         // Balls and capsules roll for ever on rigid hills without it (chapter 10's piles do the same).
         if (isRound(world.bodies[std::size_t(body)].shape))
             world.bodies[std::size_t(body)].material.rollingResistance = kPileRollingResistance;
