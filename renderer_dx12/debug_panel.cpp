@@ -100,6 +100,17 @@ void viewsSection(DemoState& state, ViewOptions& view) {
     ImGui::Checkbox("wireframe, all (Z)", &view.wireframe);
     ImGui::SliderFloat("line px", &view.lineWidth, 1.0f, 8.0f, "%.1f");
     if (view.showImpulses && views.contactNormals) ImGui::TextDisabled("normals: the impulse arrows take their place");
+    for (DemoState::OverlayView& overlay : state.chapterViews) {
+        ImGui::PushID(overlay.overlay->name.c_str());
+        ImGui::Checkbox(overlay.overlay->name.c_str(), &overlay.on);
+        if (overlay.on && overlay.overlay->levels > 0) {
+            ImGui::SameLine(170);
+            ImGui::SetNextItemWidth(120);
+            ImGui::SliderInt("level", &overlay.level, 0, overlay.overlay->levels - 1);
+        }
+        if (overlay.on) ImGui::TextDisabled("%s", overlay.overlay->help.c_str());
+        ImGui::PopID();
+    }
     if (views.epaFace || views.gjkSimplex || views.minkowski) {
         const BodyPair pair = chosenPair(state.world(), state.hitTree(), state.hitSelection(), state.selectedBody);
         ImGui::TextDisabled("pair: %s / %s (click to choose)", bodyName(state.world(), pair.bodyA).c_str(),

@@ -15,6 +15,14 @@ DemoState::DemoState(const Registry& registry, int chapter)
     for (const SceneEntry& entry : registry.scenes()) {
         if (entry.chapter <= chapter && entry.build) scenes_.push_back(&entry);
     }
+    for (const DebugOverlay& overlay : registry.debugOverlays())
+        if (overlay.chapter <= chapter) chapterViews.push_back({&overlay, false, 0, nullptr});
+}
+
+DemoState::OverlayView* DemoState::findOverlay(const std::string& name) {
+    for (OverlayView& view : chapterViews)
+        if (view.overlay->name == name) return &view;
+    return nullptr;
 }
 
 void DemoState::setWorld(World next) {
@@ -28,6 +36,7 @@ void DemoState::setWorld(World next) {
     } catch (const std::exception& error) {
         pipelineError = error.what();
     }
+    for (OverlayView& overlay : chapterViews) overlay.draw = overlay.overlay->make();
     pipeline.timeStagesEvery(1);  // the per-stage graph draws every frame
     // A new session per load: the history, edits and frame hashes belong to one run. The
     // switches a learner set (pause, simulation off, stop rules) carry over, as the pause
@@ -272,6 +281,8 @@ void DemoState::buildDrawList(DrawList& list, const ViewOptions& options) const 
     DebugViews shown = views;
     if (impulses) shown.contactNormals = false;
     drawDebugViews(list, world, shown, selectedBody, hitTree(), hitSelection());
+    for (const OverlayView& overlay : chapterViews)
+        if (overlay.on && overlay.draw) overlay.draw(list, world, overlay.level);
     if (impulses) {
         ContactDrawOptions arrows;
         arrows.points = arrows.normals = false;

@@ -85,6 +85,17 @@ public:
     /// Chapter 9's views (colliders, contacts, EPA face, A - B, bounds...). Kept here, not in
     /// ViewOptions, because the A - B overlay is part of what the camera frames.
     DebugViews views;
+    /// The chapters' own views (chapter 13's mesh tree), each on or off at a level; its drawing
+    /// function is made afresh at every load.
+    struct OverlayView {
+        const DebugOverlay* overlay = nullptr;
+        bool on = false;
+        int level = 0;
+        OverlayDraw draw;
+    };
+    std::vector<OverlayView> chapterViews;
+    /// The overlay called `name`, or nullptr.
+    OverlayView* findOverlay(const std::string& name);
     const HitTree& hitTree() const;
     const HitSelection& hitSelection() const;
     void selectHit(const HitSelection& selection);

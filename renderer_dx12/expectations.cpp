@@ -172,6 +172,15 @@ void viewExpectations(ExpectationWriter& writer, const DemoState& state, bool im
                     writer.emit("mark joint", "-", Real(0.5) * (command.a + command.b), command.color, kFlatShade);
         }
     }
+    // The chapters' own views, recorded: their lines must show in their colours.
+    for (const DemoState::OverlayView& overlay : state.chapterViews) {
+        if (!overlay.on || !overlay.draw) continue;
+        RecordingDraw recorded;
+        overlay.draw(recorded, world, overlay.level);
+        for (const RecordingDraw::Command& command : recorded.commands())
+            if (command.kind == RecordingDraw::Kind::Line)
+                writer.emit("mark " + overlay.overlay->name, "-", Real(0.5) * (command.a + command.b), command.color, kFlatShade);
+    }
     if (!views.epaFace && !views.gjkSimplex && !views.minkowski) return;
     const BodyPair pair = chosenPair(world, tree, state.hitSelection(), selected);
     const PairDiagnosis diagnosis = diagnosePair(world, pair.bodyA, pair.bodyB);

@@ -1,6 +1,7 @@
 #include "scripted.h"
 
 #include <sstream>
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -17,6 +18,32 @@ std::vector<std::string> splitCommas(const std::string& list) {
     return items;
 }
 
+/// The chapters' own views, by name: "mesh-tree" (level 0) or "mesh-tree:4". False when the
+/// demo has no view of that name.
+bool applyOverlay(const std::string& item, DemoState& state) {
+    const size_t colon = item.find(':');
+    DemoState::OverlayView* overlay = state.findOverlay(item.substr(0, colon));
+    if (!overlay) return false;
+    overlay->on = true;
+    if (colon != std::string::npos) {
+        const std::string text = item.substr(colon + 1);
+        std::istringstream in(text);
+        int level = -1;
+        if (!(in >> level) || !in.eof() || level < 0 || level >= std::max(overlay->overlay->levels, 1))
+            throw std::invalid_argument("view '" + item + "': the level must be a whole number from 0 to " +
+                                        std::to_string(std::max(overlay->overlay->levels - 1, 0)));
+        overlay->level = level;
+    }
+    return true;
+}
+
+std::string overlayNames(const DemoState& state) {
+    std::string names;
+    for (const DemoState::OverlayView& overlay : state.chapterViews)
+        names += ", " + overlay.overlay->name + (overlay.overlay->levels > 0 ? "[:level]" : "");
+    return names;
+}
+
 }  // namespace
 
 const char* viewListNames() {
@@ -28,6 +55,7 @@ void applyViewList(const std::string& list, DemoState& state, ViewOptions& view)
     DebugViews views;
     views.colliders = views.wireframeSelection = views.contactPoints = views.contactNormals = false;
     view.showImpulses = view.wireframe = false;
+    for (DemoState::OverlayView& overlay : state.chapterViews) overlay.on = false;
     for (const std::string& name : splitCommas(list)) {
         if (name == "colliders") views.colliders = true;
         else if (name == "contacts") views.contactPoints = true;
@@ -40,7 +68,7 @@ void applyViewList(const std::string& list, DemoState& state, ViewOptions& view)
         else if (name == "wireframe") views.wireframeSelection = true;
         else if (name == "impulses") view.showImpulses = true;
         else if (name == "wireframe-all") view.wireframe = true;
-        else throw std::invalid_argument("unknown view '" + name + "' (views: " + viewListNames() + ")");
+        else if (!applyOverlay(name, state)) throw std::invalid_argument("unknown view '" + name + "' (views: " + viewListNames() + overlayNames(state) + ")");
     }
     state.views = views;
 }

@@ -241,6 +241,15 @@ void addChapter13Scenes(Registry& registry) {
         200 boxes, balls, capsules, cans and tables fall onto a height field of rolling hills and
         come to rest in its hollows; none sinks into the ground)"),
                        [] { return buildTerrainPile(200); }, {}});
+    registry.addScene({"worlds-mesh-terrain", 13, category, prose(R"(
+        200 bodies of the same mix fall onto the hills as a triangle mesh of 3,200 triangles; switch on
+        the mesh-tree view and step its level: each level down halves the triangles a box holds, and
+        a falling body's box meets only the few leaves under it)"),
+                       [] {
+                           World world = buildMeshTerrainPile(40, 200);
+                           world.name = "worlds-mesh-terrain";
+                           return world;
+                       }, {}});
 }
 
 }  // namespace stepwise

@@ -139,6 +139,7 @@ void Registry::addGenerator(GeneratorEntry entry) {
 }
 
 void Registry::addPenetrationProbe(PenetrationProbe probe) { probes_.push_back(std::move(probe)); }
+void Registry::addDebugOverlay(DebugOverlay overlay) { overlays_.push_back(std::move(overlay)); }
 
 const SceneEntry* Registry::findScene(const std::string& name) const {
     for (const SceneEntry& entry : scenes_)

@@ -140,6 +140,20 @@ struct PenetrationProbe {
     std::function<Real(const World&)> measure;
 };
 
+/// A debug view a chapter adds to the demo's Views section, drawn over chapter 9's views while it
+/// is on (chapter 13's mesh tree). A view with levels shows one level at a time, chosen by a
+/// slider from 0 to levels - 1 (a tree's depth). Like a SceneView, the drawing function is made
+/// afresh for every scene the demo loads, so what it builds and keeps (a mesh's tree) belongs to
+/// one load and never outlives it.
+using OverlayDraw = std::function<void(DebugDraw& draw, const World& world, int level)>;
+struct DebugOverlay {
+    int chapter = 0;
+    std::string name;  // the checkbox's label and the demo's --views name: "mesh-tree"
+    std::string help;  // one line under the checkbox: what the colours mean
+    int levels = 0;
+    std::function<OverlayDraw()> make;
+};
+
 /// What every chapter adds, in one declaration: its demo scenes, its pipeline and its benches.
 /// Commands, scene generators and penetration probes, which few chapters have, are added one
 /// by one after it.
@@ -159,10 +173,12 @@ public:
     void addCommand(CommandEntry entry);
     void addGenerator(GeneratorEntry entry);
     void addPenetrationProbe(PenetrationProbe probe);
+    void addDebugOverlay(DebugOverlay overlay);
 
     const std::vector<SceneEntry>& scenes() const { return scenes_; }
     const std::vector<BenchEntry>& benches() const { return benches_; }
     const std::vector<CommandEntry>& commands() const { return commands_; }
+    const std::vector<DebugOverlay>& debugOverlays() const { return overlays_; }
     /// The generators scene files may name, for loadSceneFile.
     const SceneGenerators& sceneGenerators() const { return generators_; }
     const SceneEntry* findScene(const std::string& name) const;
@@ -181,6 +197,7 @@ private:
     std::vector<CommandEntry> commands_;
     SceneGenerators generators_;
     std::vector<PenetrationProbe> probes_;
+    std::vector<DebugOverlay> overlays_;
 };
 
 /// Generated from the chapter list: calls registerChapter01..NN for the program's chapters.

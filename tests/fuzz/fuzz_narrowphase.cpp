@@ -126,7 +126,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double farthest = std::max(poseA.position.norm(), poseB.position.norm()) + pairSize;
     const bool curved = query.routine == std::string("gjk_epa") &&
                         (shapeA->type == ShapeType::Sphere || shapeA->type == ShapeType::Capsule ||
-                         shapeB->type == ShapeType::Sphere || shapeB->type == ShapeType::Capsule);
+                         shapeA->type == ShapeType::Cylinder || shapeB->type == ShapeType::Sphere ||
+                         shapeB->type == ShapeType::Capsule || shapeB->type == ShapeType::Cylinder);
     const double tolerance = 1e-4 * pairSize + 64 * double(kEpsilon) * farthest;
     STEPWISE_FUZZ_CHECK(kTarget, std::abs(query.normal.norm() - 1) < 1e-4, query.normal.norm(), 1);
     if (query.intersect)

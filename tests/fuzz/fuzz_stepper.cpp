@@ -1,5 +1,6 @@
-// Fuzz target: the whole step (the latest chapter's pipeline) on small random scenes: a ground
-// and 1 to 6 bodies of every shape kind, random sizes, speeds, spins, materials and settings,
+// Fuzz target: the whole step (the latest chapter's pipeline) on small random scenes: a ground (a
+// box, a bumpy triangle mesh or a height field with holes) and 1 to 6 bodies of every shape kind
+// (compounds and cylinders too), random sizes, speeds, spins, materials and settings,
 // joints of every type between them. 100 frames must run without a crash or a hang (libFuzzer's
 // -timeout). With the settings whose stability the engine claims (semi-implicit Euler, the
 // gyroscopic term implicit or off) every body must stay finite, and when nothing drives the
@@ -65,14 +66,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     world.name = "fuzz";
     world.settings = randomSettings(input);
 
-    addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(50, Real(0.5), 50));
+    // The bodies start above the ground's highest point, so none starts inside it.
+    Real groundTop = 0;
+    if (const std::optional<Shape> ground = randomGround(input)) {
+        BodyDef def;
+        def.name = "ground";
+        def.type = BodyType::Static;
+        def.shape = *ground;
+        def.transform.position = Vec3(-15, 0, -20);
+        groundTop = computeAabb(def.shape, def.transform).max.y();
+        addBody(world, def);
+    } else {
+        addStaticBox(world, "ground", Vec3(0, Real(-0.5), 0), Vec3(50, Real(0.5), 50));
+    }
 
     const int count = input.integer(1, 6);
     bool driven = false;
     double x = -10;
     for (int i = 0; i < count; ++i) {
         const double bodySize = input.logUniform(0.05, 2);
-        const std::optional<Shape> shape = randomShape(input, bodySize);
+        const std::optional<Shape> shape = randomBodyShape(input, bodySize);
         if (!shape) continue;
         BodyDef def;
         def.name = "body" + std::to_string(i);
@@ -84,7 +97,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         x += double(radius) + 0.05;
         const Real height = Real(input.uniform(0, 3));
         const Real depth = Real(input.uniform(-1, 1));
-        def.transform.position = Vec3(Real(x), radius + height, depth);
+        def.transform.position = Vec3(Real(x), groundTop + radius + height, depth);
         x += double(radius) + 0.05;
         def.transform.rotation = randomRotation(input);
         def.linearVelocity = input.vector(-10, 10).cast<Real>();

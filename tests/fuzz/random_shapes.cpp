@@ -1,5 +1,8 @@
 #include "random_shapes.h"
 
+#include <array>
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -78,7 +81,7 @@ Quat randomRotation(FuzzInput& input) {
 }
 
 std::optional<Shape> randomShape(FuzzInput& input, double size) {
-    switch (input.integer(0, 3)) {
+    switch (input.integer(0, 4)) {
     case 0: {
         const double x = size * input.logUniform(0.01, 1);
         const double y = size * input.logUniform(0.01, 1);
@@ -91,6 +94,10 @@ std::optional<Shape> randomShape(FuzzInput& input, double size) {
         const double radius = size * input.logUniform(0.01, 1);
         return Shape::capsule(Real(radius), Real(size * input.logUniform(0.01, 1)));
     }
+    case 3: {  // a can, from a flat disc to a tall thin rod
+        const double radius = size * input.logUniform(0.01, 1);
+        return Shape::cylinder(Real(radius), Real(size * input.logUniform(0.01, 1)));
+    }
     default: {
         std::vector<Vec3> points;
         for (const Vec3d& point : hullPoints(input)) points.push_back((size * point).cast<Real>());
@@ -100,6 +107,59 @@ std::optional<Shape> randomShape(FuzzInput& input, double size) {
             return std::nullopt;
         }
     }
+    }
+}
+
+std::optional<Shape> randomBodyShape(FuzzInput& input, double size) {
+    if (input.integer(0, 5) != 0) return randomShape(input, size);
+    // A compound of two or three convex children at random offsets and turns, touching or apart.
+    std::vector<CompoundChild> children;
+    const int count = input.integer(2, 3);
+    for (int i = 0; i < count; ++i) {
+        const std::optional<Shape> child = randomShape(input, size * input.uniform(0.2, 0.7));
+        if (!child) continue;
+        CompoundChild placed;
+        placed.shape = *child;
+        placed.transform.position = (size * input.vector(-0.6, 0.6)).cast<Real>();
+        placed.transform.rotation = randomRotation(input);
+        children.push_back(placed);
+    }
+    try {
+        return Shape::compoundOf(children);
+    } catch (const ShapeError&) {
+        return std::nullopt;  // no children left, refused correctly
+    }
+}
+
+std::optional<Shape> randomGround(FuzzInput& input) {
+    const int kind = input.integer(0, 2);
+    if (kind == 0) return std::nullopt;  // the caller's box
+    // A 12 x 12 grid of 1..5 m cells over a 60 m square, heights up to +-amplitude, smooth or spiky.
+    const int cells = 12;
+    const double cell = input.uniform(1, 5);
+    const double amplitude = input.logUniform(0.001, 3);
+    std::vector<Real> heights;
+    for (int i = 0; i < (cells + 1) * (cells + 1); ++i) heights.push_back(Real(amplitude * input.uniform(-1, 1)));
+    try {
+        if (kind == 1) {
+            std::vector<Vec3> vertices;
+            std::vector<std::array<int, 3>> triangles;
+            for (int r = 0; r <= cells; ++r)
+                for (int c = 0; c <= cells; ++c)
+                    vertices.emplace_back(Real(c * cell), heights[std::size_t(r * (cells + 1) + c)], Real(r * cell));
+            for (int r = 0; r < cells; ++r)
+                for (int c = 0; c < cells; ++c) {
+                    const int a = r * (cells + 1) + c, below = a + cells + 1;
+                    triangles.push_back({a, below + 1, a + 1});
+                    triangles.push_back({a, below, below + 1});
+                }
+            return Shape::triangleMesh(std::move(vertices), std::move(triangles));
+        }
+        for (Real& height : heights)
+            if (input.integer(0, 15) == 0) height = std::numeric_limits<Real>::quiet_NaN();  // a hole
+        return Shape::heightFieldOf(cells + 1, cells + 1, Real(cell), std::move(heights));
+    } catch (const ShapeError&) {
+        return std::nullopt;  // refused correctly (every height a hole)
     }
 }
 

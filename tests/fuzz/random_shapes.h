@@ -16,6 +16,14 @@ namespace stepwise::fuzz {
 /// nullopt when the drawn points span no volume (the hull builder rejects them, correctly).
 std::optional<Shape> randomShape(FuzzInput& input, double size);
 
+/// randomShape's kinds, or one time in six a compound of two or three of them: a body's shape.
+std::optional<Shape> randomBodyShape(FuzzInput& input, double size);
+
+/// A ground for the whole step: nullopt (a box, the caller's), a triangle mesh or a height field
+/// (with holes) of 12 x 12 cells of random size and heights, from nearly flat to spiky, starting
+/// at the origin and running along +x and +z.
+std::optional<Shape> randomGround(FuzzInput& input);
+
 /// A uniformly random rotation.
 Quat randomRotation(FuzzInput& input);
 
