@@ -44,6 +44,20 @@ std::uint64_t stateHash(const World& world) {
     return hash.value();
 }
 
+std::uint32_t bodyStateHash(const World& world, std::size_t body) {
+    Fnv1a hash;
+    const Body& state = world.bodies[body];
+    hash.vec3(state.transform.position);
+    hash.vec3(state.transform.rotation.vec());
+    hash.real(state.transform.rotation.w());
+    if (const Motion* motion = world.motionOf(static_cast<int>(body))) {
+        hash.vec3(motion->linearVelocity);
+        hash.vec3(motion->angularVelocity);
+    }
+    const std::uint64_t value = hash.value();
+    return static_cast<std::uint32_t>(value ^ (value >> 32));
+}
+
 std::string hexHash(std::uint64_t hash) {
     char text[24];
     std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(hash));
