@@ -1,5 +1,6 @@
 #include "world/state_hash.h"
 
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 
@@ -30,7 +31,10 @@ private:
 
 std::uint64_t stateHash(const World& world) {
     Fnv1a hash;
-    hash.bytes(&world.frame, sizeof world.frame);
+    // Fixed widths: World::frame is a long, 64 bits on Linux and 32 on Windows; the hash of one
+    // state must be the same on both (the golden hashes, recordings replayed across builds).
+    const std::int64_t frame = world.frame;
+    hash.bytes(&frame, sizeof frame);
     hash.bytes(&world.time, sizeof world.time);
     for (const Body& body : world.bodies) {
         hash.vec3(body.transform.position);

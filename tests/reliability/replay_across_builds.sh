@@ -10,14 +10,17 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 wine_run="$here/../render/run_under_wine.sh"
 [[ -f $exe ]] || { echo "SKIP: $exe not built (cmake --preset mingw && cmake --build build/mingw --target stepwise)"; exit 77; }
 mkdir -p "$out"
-rm -f "$out"/native.json "$out"/windows.json
+# File names relative to the output folder: the Windows program's command line parser (CLI11)
+# reads an argument that starts with "/" as a Windows-style option.
+cd "$out" || exit 1
+rm -f native.json windows.json
 
-"$native" record "$scene" --frames "$frames" --output "$out/native.json" || exit 1
-"$wine_run" --log "$out/windows-replay.log" -- "$exe" replay "$out/native.json"
+"$native" record "$scene" --frames "$frames" --output native.json || exit 1
+"$wine_run" --log windows-replay.log -- "$exe" replay native.json
 status=$?
 [[ $status -eq 77 ]] && exit 77
 [[ $status -eq 0 ]] || { echo "FAIL the Windows build does not replay the native recording"; exit 1; }
 
-"$wine_run" --log "$out/windows-record.log" -- "$exe" record "$scene" --frames "$frames" --output "$out/windows.json" || exit 1
-"$native" replay "$out/windows.json" || { echo "FAIL the native build does not replay the Windows recording"; exit 1; }
+"$wine_run" --log windows-record.log -- "$exe" record "$scene" --frames "$frames" --output windows.json || exit 1
+"$native" replay windows.json || { echo "FAIL the native build does not replay the Windows recording"; exit 1; }
 echo "recordings of $scene ($frames frames) replay across the native and the Windows build"
