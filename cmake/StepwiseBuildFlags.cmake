@@ -11,6 +11,12 @@ if(MSVC)
   add_compile_options(/fp:precise)
 else()
   add_compile_options(-ffp-contract=off -fno-fast-math)
+  # 32-bit x86 computes in the x87 unit by default, whose 80-bit registers round when the compiler
+  # spills them, so results follow register allocation; SSE2 rounds every operation to its type
+  # (FLT_EVAL_METHOD 0, as on every x86-64 build). tests/reliability/float_env_test.cpp checks it.
+  if(CMAKE_SIZEOF_VOID_P EQUAL 4 AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(i[3-6]86|x86)$")
+    add_compile_options(-msse2 -mfpmath=sse)
+  endif()
 endif()
 
 # The linker: -DSTEPWISE_LINKER=lld in the Linux presets (Debian's lld, tools/setup-deps.sh), which

@@ -94,7 +94,7 @@ double observedOrder(const std::vector<Measurement>& rows, IntegratorKind method
     double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
     for (const Measurement& row : rows) {
         if (row.method != method || row.error <= floor || row.error >= 1e-1) continue;
-        const double x = std::log(row.dt), y = std::log(row.error);
+        const double x = math::log(row.dt), y = math::log(row.error);
         n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
     }
     if (n < 2) return std::nan("");

@@ -5,8 +5,8 @@
 namespace stepwise {
 
 Eigen::Vector3d Oscillator::exactPosition(double t) const {
-    return anchor.cast<double>() + offset.cast<double>() * std::cos(omega * t) +
-           velocity.cast<double>() * (std::sin(omega * t) / omega);
+    return anchor.cast<double>() + offset.cast<double>() * math::cos(omega * t) +
+           velocity.cast<double>() * (math::sin(omega * t) / omega);
 }
 
 int addOscillator(World& world, const Oscillator& oscillator) {

@@ -22,7 +22,7 @@ Quat rotateExactly(const Quat& rotation, const Vec3& angularVelocity, Real h) {
     // For constant w the orientation turns by the angle h |w| about w / |w|.
     const Real speed = angularVelocity.norm();
     if (!(speed * h > Real(1e-12))) return rotation;
-    const Quat turn(Eigen::AngleAxis<Real>(speed * h, angularVelocity / speed));
+    const Quat turn(angleAxis(speed * h, angularVelocity / speed));
     return (turn * rotation).normalized();
 }
 // [ch01-exact-rotation]

@@ -77,8 +77,8 @@ inline Quat turnRotation(const Quat& rotation, const Vec3& angularVelocity, Real
         turnSeries(y, [](Real value) { return value; }, cosine, sineRatio);
     } else if (y < std::numeric_limits<Real>::infinity()) {  // a spin too fast for the series
         const Real x = std::sqrt(y);
-        cosine = std::cos(x);
-        sineRatio = std::sin(x) / x;
+        cosine = math::cos(x);
+        sineRatio = math::sin(x) / x;
     }  // else not finite: the first-order step, whose result the solver's checks catch
     const Quat derivative = quaternionDerivative(rotation, angularVelocity);
     Quat result;

@@ -22,7 +22,8 @@ BoxPair randomBoxPair(Random& random, double minSize, double maxSize, const Vec3
     pair.poseA.rotation = random.rotation();
     pair.poseB.rotation = random.rotation();
     const double reach = pair.halfExtentsA.cast<double>().norm() + pair.halfExtentsB.cast<double>().norm();
-    const Vec3 offset = random.unitVector() * Real(random.uniform(0, 1.2 * reach));
+    const Vec3 direction = random.unitVector();  // one draw per statement
+    const Vec3 offset = direction * Real(random.uniform(0, 1.2 * reach));
     pair.poseA.position = origin;
     pair.poseB.position = origin + offset;
     return pair;
@@ -39,13 +40,15 @@ BoxPair overlappingBoxPair(Random& random, double minDepthFraction, double centr
         BoxPair pair;
         pair.halfExtentsA = halfExtents();
         pair.halfExtentsB = halfExtents();
-        pair.poseA.position = Vec3(Real(random.uniform(-centreSpread, centreSpread)),
-                                   Real(random.uniform(-centreSpread, centreSpread)),
-                                   Real(random.uniform(-centreSpread, centreSpread)));
+        const double centreZ = random.uniform(-centreSpread, centreSpread);  // one draw per statement (z, y, x)
+        const double centreY = random.uniform(-centreSpread, centreSpread);
+        const double centreX = random.uniform(-centreSpread, centreSpread);
+        pair.poseA.position = Vec3(Real(centreX), Real(centreY), Real(centreZ));
         pair.poseA.rotation = random.rotation();
         pair.poseB.rotation = random.rotation();
         const double reach = pair.halfExtentsA.cast<double>().norm() + pair.halfExtentsB.cast<double>().norm();
-        pair.poseB.position = pair.poseA.position + Real(random.uniform(0, reach)) * random.unitVector();
+        const Real distance = Real(random.uniform(0, reach));  // one draw per statement
+        pair.poseB.position = pair.poseA.position + distance * random.unitVector();
         const oracle::SatResult sat = oracle::boxSat(oracle::makeOracleBox(pair.halfExtentsA, pair.poseA),
                                                      oracle::makeOracleBox(pair.halfExtentsB, pair.poseB));
         const double smallest = std::min(pair.halfExtentsA.minCoeff(), pair.halfExtentsB.minCoeff());

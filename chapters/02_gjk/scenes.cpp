@@ -118,9 +118,9 @@ void GjkView::panel(World& world, Panel& panel) {
     for (int i = 0; i < 3; ++i) turned = panel.sliderFloat(names[i], angles[i], -180.0f, 180.0f) || turned;
     if (turned) {
         const Real toRadians = kPi / 180;
-        body.transform.rotation = Quat(Eigen::AngleAxis<Real>(Real(angles[0]) * toRadians, Vec3::UnitY()) *
-                                       Eigen::AngleAxis<Real>(Real(angles[1]) * toRadians, Vec3::UnitX()) *
-                                       Eigen::AngleAxis<Real>(Real(angles[2]) * toRadians, Vec3::UnitZ()));
+        body.transform.rotation = Quat(angleAxis(Real(angles[0]) * toRadians, Vec3::UnitY()) *
+                                       angleAxis(Real(angles[1]) * toRadians, Vec3::UnitX()) *
+                                       angleAxis(Real(angles[2]) * toRadians, Vec3::UnitZ()));
         moved = true;
     }
     if (moved) animate_ = false;
@@ -159,7 +159,7 @@ std::vector<Vec3> minkowskiPoints(const Body& a, const Body& b, SupportMode mode
         for (int i = 0; i < count; ++i) {
             const Real y = 1 - 2 * (Real(i) + Real(0.5)) / Real(count);
             const Real r = std::sqrt(std::max(Real(0), 1 - y * y));
-            samples.push_back(proxy.support(Vec3(r * std::cos(golden * Real(i)), y, r * std::sin(golden * Real(i)))));
+            samples.push_back(proxy.support(Vec3(r * math::cos(golden * Real(i)), y, r * math::sin(golden * Real(i)))));
         }
         return samples;
     };

@@ -65,7 +65,7 @@ Vec3 capsuleSupport(Real radius, Real halfHeight, const Vec3& d) {
 // the axis. With no such part (d along the axis) every rim point ties: the centre of the cap,
 // which is on the surface, comes back.
 Vec3 cylinderSupport(Real radius, Real halfHeight, const Vec3& d) {
-    const Real across = std::hypot(d.x(), d.z());
+    const Real across = math::hypot(d.x(), d.z());
     const Vec3 rim = across > 0 ? Vec3(radius * d.x() / across, 0, radius * d.z() / across) : Vec3::Zero();
     return rim + Vec3(0, d.y() >= 0 ? halfHeight : -halfHeight, 0);
 }

@@ -74,7 +74,8 @@ PairSet makeSphereBoxPairs(int count) {
         pair.b = Shape::box(Vec3(Real(halfX), Real(halfY), Real(halfZ)));
         pair.poseB.rotation = random.rotation();
         const double reach = pair.a.radius + pair.b.halfExtents.norm();
-        pair.poseB.position = Real(random.uniform(0, reach)) * random.unitVector();
+        const Real distance = Real(random.uniform(0, reach));  // one draw per statement
+        pair.poseB.position = distance * random.unitVector();
         // Exact depth in double: a centre outside the box loses its distance to the box from the
         // radius, a centre inside adds its distance to the nearest face.
         const oracle::OracleBox box = oracle::makeOracleBox(pair.b.halfExtents, pair.poseB);

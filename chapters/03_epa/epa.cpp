@@ -280,7 +280,7 @@ bool holds(const ConvexProxy& proxy, const Vec3& worldPoint, Real slack) {
                 if (face.normal.dot(local) - face.offset > slack) return false;
             return true;
         case ShapeType::Cylinder:
-            return std::abs(local.y()) <= shape.halfHeight + slack && std::hypot(local.x(), local.z()) <= shape.radius + slack;
+            return std::abs(local.y()) <= shape.halfHeight + slack && math::hypot(local.x(), local.z()) <= shape.radius + slack;
         case ShapeType::Compound:
         case ShapeType::Mesh:
         case ShapeType::HeightField: return false;  // never a proxy's shape

@@ -33,8 +33,8 @@ int addPairBody(World& world, const std::string& name, const Shape& shape, const
 }
 
 Quat tilt(Real x, Real y, Real z) {
-    return (Eigen::AngleAxis<Real>(x, Vec3::UnitX()) * Eigen::AngleAxis<Real>(y, Vec3::UnitY()) *
-            Eigen::AngleAxis<Real>(z, Vec3::UnitZ()))
+    return (angleAxis(x, Vec3::UnitX()) * angleAxis(y, Vec3::UnitY()) *
+            angleAxis(z, Vec3::UnitZ()))
         .normalized();
 }
 

@@ -14,7 +14,7 @@ double RestingRun::maxDepth(int fromFrame) const { return *std::max_element(dept
 
 double RestingRun::drift(int fromFrame) const {
     const Vec3 offset = position.back() - position[fromFrame];
-    return std::hypot(static_cast<double>(offset.x()), static_cast<double>(offset.z()));
+    return math::hypot(static_cast<double>(offset.x()), static_cast<double>(offset.z()));
 }
 
 RestingRun runRestingStudy(const RestingSetup& setup, int frames) {
@@ -45,7 +45,7 @@ RestingRun runRestingStudy(const RestingSetup& setup, int frames) {
         const ContactQuery query = collideShapes(lower.shape, lower.transform, moving.shape, moving.transform);
         run.depth.push_back(query.intersect ? static_cast<double>(query.depth) : 0.0);
         const Vec3 up = moving.transform.rotate(Vec3::UnitY());
-        run.tilt.push_back(std::acos(std::clamp(static_cast<double>(up.y()), -1.0, 1.0)));
+        run.tilt.push_back(math::acos(std::clamp(static_cast<double>(up.y()), -1.0, 1.0)));
         run.position.push_back(moving.transform.position);
     }
     return run;

@@ -51,7 +51,7 @@ World buildDropScene() {
             const Real axisY = random.uniformReal(-1, 1);
             const Real axisX = random.uniformReal(-1, 1);
             const Vec3 axis = Vec3(axisX, axisY, axisZ).normalized();
-            const Quat rotation(Eigen::AngleAxis<Real>(random.uniformReal(0, kPi), axis));
+            const Quat rotation(angleAxis(random.uniformReal(0, kPi), axis));
             addCrate(world, "box" + std::to_string(i), position, Vec3(Real(0.4), Real(0.3), Real(0.35)), 2, material,
                      rotation);
         } else {
@@ -89,7 +89,7 @@ World buildRestingScene() {
 
 World buildRampScene(Real angle, Real friction, int* box) {
     World world = emptyWorld("pgs-ramp");
-    const Quat tilt(Eigen::AngleAxis<Real>(angle, Vec3::UnitZ()));
+    const Quat tilt(angleAxis(angle, Vec3::UnitZ()));
     const Vec3 rampHalf(4, Real(0.25), 2);
     const Vec3 rampCenter(0, 0, 0);
     const Vec3 rampNormal = tilt * Vec3::UnitY();
@@ -107,11 +107,11 @@ World buildFrictionScene(Real friction) {
     // down even a gentle ramp. 8 substeps make it small enough to show Coulomb's law.
     world.settings.substeps = 8;
     addGroundPlane(world, friction);
-    const Real critical = std::atan(friction);
+    const Real critical = math::atan(friction);
     const Real offsets[] = {Real(0.2), Real(-0.2)};  // rad: steeper, gentler than atan(mu)
     for (int i = 0; i < 2; ++i) {
         const Real angle = critical + offsets[i];
-        const Quat tilt(Eigen::AngleAxis<Real>(angle, Vec3::UnitZ()));
+        const Quat tilt(angleAxis(angle, Vec3::UnitZ()));
         const Vec3 rampCenter(2, 3, Real(-2) + Real(2.5) * static_cast<Real>(i));
         const Vec3 rampNormal = tilt * Vec3::UnitY();
         addStaticBox(world, i == 0 ? "ramp-steep" : "ramp-gentle", rampCenter, Vec3(3, Real(0.2), 1), tilt,

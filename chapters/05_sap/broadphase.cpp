@@ -50,7 +50,7 @@ void sweepBounds(World& world, SortMode sortMode) {
         refreshEndpointValues(state.bounds, axis, state.endpoints);
         // Past n log2 n moves a full sort is cheaper: it finishes the job.
         const double n = static_cast<double>(state.endpoints.size());
-        const long budget = static_cast<long>(n * std::max(1.0, std::log2(std::max(n, 2.0))));
+        const long budget = static_cast<long>(n * std::max(1.0, math::log2(std::max(n, 2.0))));
         state.sortMoves = insertionSortEndpoints(state.endpoints, budget);
         state.fullSort = state.sortMoves < 0;
     } else {

@@ -65,7 +65,7 @@ Grid layoutFor(const StressParams& params) {
         grid.columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(params.count))));
         grid.layers = 1;
     } else {
-        grid.columns = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(params.count))));
+        grid.columns = static_cast<int>(std::ceil(math::cbrt(static_cast<double>(params.count))));
         grid.layers = (params.count + grid.columns * grid.columns - 1) / (grid.columns * grid.columns);
     }
     return grid;

@@ -77,8 +77,8 @@ World buildCardHouse() {
     const Material card{Real(0.9), 0};
     const Vec3 cardHalf(Real(0.05), Real(0.6), Real(0.4));
     const Real lean = Real(0.35);  // rad from the vertical
-    const Real height = 2 * cardHalf.y() * std::cos(lean);
-    const Real foot = cardHalf.y() * std::sin(lean);
+    const Real height = 2 * cardHalf.y() * math::cos(lean);
+    const Real foot = cardHalf.y() * math::sin(lean);
     for (int storey = 0; storey < 2; ++storey) {
         const int pairs = 2 - storey;
         const Real base = static_cast<Real>(storey) * (height + 2 * Real(0.05));
@@ -86,9 +86,9 @@ World buildCardHouse() {
             const Real x = (static_cast<Real>(p) - Real(0.5) * static_cast<Real>(pairs - 1)) * Real(1.1);
             for (int side : {-1, 1}) {
                 const Real angle = static_cast<Real>(side) * lean;
-                const Quat tilt(Eigen::AngleAxis<Real>(angle, Vec3::UnitZ()));
+                const Quat tilt(angleAxis(angle, Vec3::UnitZ()));
                 // The plates' tops touch at x; their feet stand apart.
-                const Vec3 center(x + static_cast<Real>(side) * (foot + cardHalf.x() * std::cos(lean)),
+                const Vec3 center(x + static_cast<Real>(side) * (foot + cardHalf.x() * math::cos(lean)),
                                   base + Real(0.5) * height + Real(0.02), 0);
                 addCrate(world, "card" + std::to_string(storey) + std::to_string(p) + (side < 0 ? "l" : "r"), center,
                          cardHalf, Real(0.5), card, tilt);

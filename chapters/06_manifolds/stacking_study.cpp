@@ -46,7 +46,7 @@ StackingMeasure measureStacking(World world, const StackingConfig& config, doubl
         for (const Motion& motion : world.motions) {
             const std::size_t body = static_cast<std::size_t>(motion.bodyIndex);
             const Vec3 moved = world.bodies[body].transform.position - start[body].transform.position;
-            const double drift = std::hypot(static_cast<double>(moved.x()), static_cast<double>(moved.z()));
+            const double drift = math::hypot(static_cast<double>(moved.x()), static_cast<double>(moved.z()));
             const double sink = -static_cast<double>(moved.y());
             const int beneath = std::max(1, contactsBeneath(start[body]));
             const double slop = static_cast<double>(world.settings.slop);

@@ -19,9 +19,10 @@ Shot randomShot(Random& random, Real speed) {
     // Up to 30 degrees off the wall normal: x = cos(angle), the rest in a random direction.
     const Real angle = random.uniformReal(0, kPi / 6);
     const Real around = random.uniformReal(0, 2 * kPi);
-    shot.direction = Vec3(std::cos(angle), std::sin(angle) * std::cos(around), std::sin(angle) * std::sin(around));
+    shot.direction = Vec3(math::cos(angle), math::sin(angle) * math::cos(around), math::sin(angle) * math::sin(around));
     shot.orientation = random.rotation();
-    shot.spin = random.unitVector() * random.uniformReal(0, 50);
+    const Vec3 spinAxis = random.unitVector();  // one draw per statement
+    shot.spin = spinAxis * random.uniformReal(0, 50);
     shot.stepsBeforeWall = random.uniformReal(Real(0.3), Real(1.7));
     return shot;
 }

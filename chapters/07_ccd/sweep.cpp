@@ -22,7 +22,7 @@ Transform poseAt(const Sweep& sweep, Real t) {
     const Real span = Real(1) - sweep.alpha0;
     const Real u = span > 0 ? std::clamp((t - sweep.alpha0) / span, Real(0), Real(1)) : Real(1);
     Transform pose;
-    pose.rotation = sweep.rotation0.slerp(u, sweep.rotation1).normalized();
+    pose.rotation = slerp(sweep.rotation0, u, sweep.rotation1).normalized();
     const Vec3 center = sweep.center0 + u * (sweep.center1 - sweep.center0);
     pose.position = center - pose.rotation * sweep.localCenter;
     return pose;
@@ -30,7 +30,7 @@ Transform poseAt(const Sweep& sweep, Real t) {
 
 Real sweepAngle(const Sweep& sweep) {
     const Real cosine = std::min(Real(1), std::abs(sweep.rotation0.dot(sweep.rotation1)));
-    return Real(2) * std::acos(cosine);
+    return Real(2) * math::acos(cosine);
 }
 
 Real sweepTravel(const Sweep& sweep, const Shape& shape) {

@@ -47,7 +47,7 @@ void addTurn(JointFrame& frame, const JointDesc& joint, const Transform& poseA, 
 Real twistAngle(const Quat& deviation, const Vec3& localAxis) {
     // The deviation is swing * twist with the twist about localAxis; the twist quaternion is the
     // deviation's part along the axis (w, (v . a) a), normalised, so its angle is this.
-    return 2 * std::atan2(deviation.vec().dot(localAxis), deviation.w());
+    return 2 * math::atan2(deviation.vec().dot(localAxis), deviation.w());
 }
 // [ch08-twist]
 
@@ -55,7 +55,7 @@ Real twistAngle(const Quat& deviation, const Vec3& localAxis) {
 // by angle^2 / 2, and the arc cosine of the float just below 1 is already 3.45e-4 rad, so no
 // smaller swing can be read that way.
 Real swingAngle(const JointFrame& frame) {
-    return std::atan2(frame.axisA.cross(frame.axisB).norm(), frame.axisA.dot(frame.axisB));
+    return math::atan2(frame.axisA.cross(frame.axisB).norm(), frame.axisA.dot(frame.axisB));
 }
 
 Vec3 rotationError(const JointFrame& frame) { return frame.rotationA * (2 * frame.deviation.vec()); }
@@ -68,7 +68,7 @@ Real beyond(Real value, const std::pair<Real, Real>& limits) {
 }
 
 // The whole angle B has turned away from rest.
-Real turnAngle(const JointFrame& frame) { return 2 * std::atan2(frame.deviation.vec().norm(), frame.deviation.w()); }
+Real turnAngle(const JointFrame& frame) { return 2 * math::atan2(frame.deviation.vec().norm(), frame.deviation.w()); }
 
 }  // namespace
 

@@ -34,7 +34,7 @@ Vec3 perpendicular(const Vec3& axis) {
 
 // `u` (perpendicular to the unit `axis`) turned by `angle` about it.
 Vec3 turned(const Vec3& u, const Vec3& axis, Real angle) {
-    return u * std::cos(angle) + axis.cross(u) * std::sin(angle);
+    return u * math::cos(angle) + axis.cross(u) * math::sin(angle);
 }
 
 // The arc of angles [lo, hi] about `axis`, from the zero direction `u`, with radial ends.
@@ -78,8 +78,8 @@ void drawConeTwist(DebugDraw& draw, const JointFrame& frame, const JointDesc& jo
     const Vec3 axis = frame.axisA, zero = frame.rotationA * perpendicular(joint.axis);
     draw.line(frame.anchorA, frame.anchorA + axis * kArcRadius, colors::kCyan);
     const Real cone = std::max(joint.coneAngle, Real(1e-3));
-    const Vec3 ringCenter = frame.anchorA + axis * (kArcRadius * std::cos(cone));
-    const Real ringRadius = kArcRadius * std::sin(cone);
+    const Vec3 ringCenter = frame.anchorA + axis * (kArcRadius * math::cos(cone));
+    const Real ringRadius = kArcRadius * math::sin(cone);
     constexpr int kRing = 24;
     for (int i = 0; i < kRing; ++i) {
         const Vec3 from = ringCenter + ringRadius * turned(zero, axis, 2 * kPi * Real(i) / kRing);

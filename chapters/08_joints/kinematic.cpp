@@ -13,8 +13,12 @@ void moveKinematic(World& world, int bodyIndex, const Transform& target, Real dt
     // The turn from here to the target as an angle about an axis, spread over the step.
     Quat turn = target.rotation * body.transform.rotation.conjugate();
     if (turn.w() < 0) turn.coeffs() = -turn.coeffs();
-    const Eigen::AngleAxis<Real> angleAxis(turn.normalized());
-    motion->angularVelocity = angleAxis.axis() * (angleAxis.angle() / dt);
+    // Angle and axis as Eigen::AngleAxis reads a quaternion (2 atan2(|v|, w), axis v / |v|), with
+    // this build's atan2 (common/math/functions.h).
+    turn.normalize();
+    const Real sine = turn.vec().norm();
+    motion->angularVelocity = Vec3::Zero();
+    if (sine > 0) motion->angularVelocity = (turn.vec() / sine) * (2 * math::atan2(sine, turn.w()) / dt);
     // The centre of mass moves from where it is to where the target pose puts it.
     const Vec3 centerNow = body.transform.apply(motion->localCenter);
     const Vec3 centerThen = target.apply(motion->localCenter);
@@ -24,7 +28,7 @@ void moveKinematic(World& world, int bodyIndex, const Transform& target, Real dt
 
 Vec3 pathPosition(const KinematicPath& path, double time) {
     const double angle = 2 * 3.14159265358979323846 * time / double(path.period) + double(path.phase);
-    return path.center + path.amplitude * static_cast<Real>(std::sin(angle));
+    return path.center + path.amplitude * static_cast<Real>(math::sin(angle));
 }
 
 void driveKinematicPaths(World& world, Real dt) {

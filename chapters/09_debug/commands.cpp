@@ -62,8 +62,12 @@ int runReplay(const ReplayArgs& args) {
         return 2;
     }
     if (result.firstMismatch >= 0) {
-        std::cout << "replay of " << args.input << " parts from the recording at frame " << result.firstMismatch
-                  << ": state hash " << hexHash(result.actualHash) << ", recorded " << hexHash(result.expectedHash) << "\n";
+        std::cout << "replay of " << args.input << " parts from the recording at frame " << result.firstMismatch;
+        if (result.firstBody >= 0) {
+            const World scene = startingWorld(chapterRegistry(), recording);
+            std::cout << ", first at body " << scene.bodies[static_cast<std::size_t>(result.firstBody)].name;
+        }
+        std::cout << ": state hash " << hexHash(result.actualHash) << ", recorded " << hexHash(result.expectedHash) << "\n";
         return 1;
     }
     if (!recording.reportJson.empty() && !result.reportMatches) {

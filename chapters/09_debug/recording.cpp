@@ -8,6 +8,7 @@
 #include "world/state_hash.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -129,6 +130,34 @@ std::uint64_t parseHash(const JsonCursor& cursor) {
     return value;
 }
 
+// A frame's body hashes as one string, 8 hex digits a body, in scene order: a tenth of the size
+// of a JSON array of numbers.
+std::string bodyHashText(const std::vector<std::uint32_t>& hashes) {
+    std::string text;
+    char digits[9];
+    for (std::uint32_t hash : hashes) {
+        std::snprintf(digits, sizeof digits, "%08x", static_cast<unsigned>(hash));
+        text += digits;
+    }
+    return text;
+}
+
+std::vector<std::uint32_t> parseBodyHashes(const JsonCursor& cursor, std::size_t bodies) {
+    const std::string text = cursor.string();
+    if (text.size() != 8 * bodies || text.find_first_not_of("0123456789abcdef") != std::string::npos)
+        cursor.fail("must be 8 lower-case hex digits per body of the scene (" + std::to_string(8 * bodies) + " digits)");
+    std::vector<std::uint32_t> hashes;
+    for (std::size_t body = 0; body < bodies; ++body)
+        hashes.push_back(static_cast<std::uint32_t>(std::strtoul(text.substr(8 * body, 8).c_str(), nullptr, 16)));
+    return hashes;
+}
+
+std::vector<std::uint32_t> bodyHashesOf(const World& world) {
+    std::vector<std::uint32_t> hashes;
+    for (std::size_t body = 0; body < world.bodies.size(); ++body) hashes.push_back(bodyStateHash(world, body));
+    return hashes;
+}
+
 }  // namespace
 
 Recording recordingOf(const DebugSession& session, int chapter) {
@@ -152,7 +181,10 @@ Recording recordRun(const Registry& registry, const std::string& sceneNameOrPath
     RunOptions options;
     options.frames = frames;
     options.maxChapter = chapter;
-    options.afterFrame = [&](World& stepped) { recording.frameHashes.push_back(stateHash(stepped)); };
+    options.afterFrame = [&](World& stepped) {
+        recording.frameHashes.push_back(stateHash(stepped));
+        recording.bodyHashes.push_back(bodyHashesOf(stepped));
+    };
     const RunStats stats = runHeadless(world, pipeline, registry, options);
     recording.reportJson = reportToJson(world, stats, engineVersion());
     return recording;
@@ -170,6 +202,10 @@ std::string recordingToJson(const Recording& recording) {
     for (const BodyEdit& edit : recording.edits) json["edits"].push_back(editToJson(scene, edit));
     json["frame_hashes"] = Json::array();
     for (std::uint64_t hash : recording.frameHashes) json["frame_hashes"].push_back(hexHash(hash));
+    if (!recording.bodyHashes.empty()) {
+        json["body_hashes"] = Json::array();
+        for (const std::vector<std::uint32_t>& frame : recording.bodyHashes) json["body_hashes"].push_back(bodyHashText(frame));
+    }
     if (!recording.reportJson.empty()) json["report"] = Json::parse(recording.reportJson);
     return json.dump(2) + "\n";
 }
@@ -178,7 +214,8 @@ Recording recordingFromJson(const std::string& text, const std::string& source) 
     const Json json = parseStrictJson(text, source);
     const JsonCursor root(json, "");
     if (!json.is_object()) root.fail(source + " must be a JSON object (a recording: docs/scene-format.md)");
-    root.expectObject({"format", "version", "engine", "chapter", "frames", "scene", "start", "edits", "frame_hashes", "report"});
+    root.expectObject({"format", "version", "engine", "chapter", "frames", "scene", "start", "edits", "frame_hashes",
+                       "body_hashes", "report"});
     if (root.child("format").string() != kFormat) root.child("format").fail(std::string("must be \"") + kFormat + "\"");
     if (root.child("version").integer(1, 1000) != kVersion) root.child("version").fail("must be 1 (this program reads version 1)");
     const std::string engine = root.child("engine").string();
@@ -200,6 +237,11 @@ Recording recordingFromJson(const std::string& text, const std::string& source) 
     for (std::size_t i = 0; i < frames; ++i) recording.frameHashes.push_back(parseHash(hashes.element(i)));
     if (root.child("frames").integer(0, 100000000) != static_cast<int>(frames))
         root.child("frames").fail("must equal the number of frame_hashes (" + std::to_string(frames) + ")");
+    if (const auto bodyHashes = root.optional("body_hashes")) {
+        if (bodyHashes->arraySize() != frames) bodyHashes->fail("must hold one entry per frame (" + std::to_string(frames) + ")");
+        for (std::size_t i = 0; i < frames; ++i)
+            recording.bodyHashes.push_back(parseBodyHashes(bodyHashes->element(i), world.bodies.size()));
+    }
     const JsonCursor edits = root.child("edits");
     long previousFrame = -1;
     for (std::size_t i = 0; i < edits.arraySize(); ++i) {
@@ -292,6 +334,11 @@ ReplayResult replay(const Registry& registry, const Recording& recording) {
             result.firstMismatch = result.frames;
             result.expectedHash = recording.frameHashes[index];
             result.actualHash = hash;
+            if (index < recording.bodyHashes.size()) {
+                const std::vector<std::uint32_t> actual = bodyHashesOf(stepped);
+                for (std::size_t body = 0; body < actual.size() && result.firstBody < 0; ++body)
+                    if (actual[body] != recording.bodyHashes[index][body]) result.firstBody = static_cast<int>(body);
+            }
         }
     };
     const RunStats stats = runHeadless(world, pipeline, registry, options);

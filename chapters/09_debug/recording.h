@@ -35,6 +35,8 @@ struct Recording {
     std::vector<ExactBodyState> start;        // every body's exact state at the start
     std::vector<BodyEdit> edits;              // in frame order
     std::vector<std::uint64_t> frameHashes;   // stateHash after each frame, frame 1 first
+    std::vector<std::vector<std::uint32_t>> bodyHashes;  // per frame, bodyStateHash of each body
+                                                         // (optional: the demo's recordings leave it empty)
     std::string reportJson;                   // the run report (may be empty: the demo's recordings)
 };
 // [ch09-recording]
@@ -61,6 +63,8 @@ struct ReplayResult {
     long firstMismatch = -1;         // first frame whose hash differs (1-based), -1: all met
     std::uint64_t expectedHash = 0;  // at firstMismatch
     std::uint64_t actualHash = 0;
+    int firstBody = -1;              // at firstMismatch, the first body whose state differs (when
+                                     // the recording has body hashes), -1: none or not known
     std::string reportJson;          // the replay's own report
     bool reportMatches = false;      // equal to the recording's report, timings and notes aside
 };

@@ -10,7 +10,7 @@ namespace stepwise {
 World buildDebugDrop() {
     World world = emptyWorld("debug-drop");
     addGroundPlane(world);
-    const Quat tilt(Eigen::AngleAxis<Real>(Real(0.5), Vec3(1, 0, 1).normalized()));
+    const Quat tilt(angleAxis(Real(0.5), Vec3(1, 0, 1).normalized()));
     addCrate(world, "box", Vec3(0, Real(1.2), 0), Vec3(Real(0.3), Real(0.2), Real(0.25)), 2, Material{}, tilt);
     // Higher up and beside it, so its first contact comes on a later frame than the box's.
     addBall(world, "ball", Vec3(Real(1.0), Real(2.5), Real(0.2)), Real(0.25), 1, Material{});
@@ -21,7 +21,7 @@ std::vector<Vec3> gemPoints() {
     std::vector<Vec3> points{Vec3(0, Real(0.35), 0), Vec3(0, Real(-0.25), 0)};
     for (int i = 0; i < 8; ++i) {
         const Real angle = Real(2) * kPi * Real(i) / 8;
-        points.push_back(Vec3(Real(0.3) * std::cos(angle), Real(0.05), Real(0.3) * std::sin(angle)));
+        points.push_back(Vec3(Real(0.3) * math::cos(angle), Real(0.05), Real(0.3) * math::sin(angle)));
     }
     return points;
 }
@@ -34,7 +34,7 @@ World buildDebugHullOnBox() {
     BodyDef gem;
     gem.name = "gem";
     gem.shape = Shape::convex(gemPoints());
-    gem.transform = Transform{Vec3(Real(0.1), Real(1.4), 0), Quat(Eigen::AngleAxis<Real>(Real(0.6), Vec3::UnitZ()))};
+    gem.transform = Transform{Vec3(Real(0.1), Real(1.4), 0), Quat(angleAxis(Real(0.6), Vec3::UnitZ()))};
     gem.mass = 1;
     addBody(world, gem);
     return world;

@@ -26,7 +26,7 @@ bool touching(const Contact& contact) {
 /// the angle between two rotations q1 and q2 is 2 acos(|q1 . q2|).
 bool turnedWithin(const Contact& contact, const Quat& relativeRotation, const ContactCacheRule& rule) {
     const Real cosHalfAngle = std::abs(relativeRotation.coeffs().dot(contact.builtRelativeRotation.coeffs()));
-    return cosHalfAngle >= std::cos(Real(0.5) * rule.maxRotation);
+    return cosHalfAngle >= math::cos(Real(0.5) * rule.maxRotation);
 }
 
 /// The face of a box that a direction (world frame) leaves: its axis in the box's frame, the side
@@ -115,7 +115,7 @@ bool stillApart(const PairGap& gap, const Transform& transformA, const Transform
     const Vec3 relativePosition = inverseA * (transformB.position - transformA.position);
     const Quat relativeRotation = inverseA * transformB.rotation;
     const Real cosHalfAngle = std::min(Real(1), std::abs(relativeRotation.coeffs().dot(gap.builtRelativeRotation.coeffs())));
-    const Real turned = 2 * std::acos(cosHalfAngle);
+    const Real turned = 2 * math::acos(cosHalfAngle);
     const Real closing = (relativePosition - gap.builtRelativePosition).norm() + turned * gap.radiusB;
     const Real gjkAllowance = Real(0.001);
     return gap.gap - closing - gjkAllowance >= keepDistance;

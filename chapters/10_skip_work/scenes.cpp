@@ -39,7 +39,11 @@ namespace {
 Shape pileShape(int index, Random& random) {
     const Real size = random.uniformReal(Real(0.3), Real(0.6));
     switch (index % 4) {
-        case 0: return Shape::box(Vec3(size, random.uniformReal(Real(0.3), Real(0.6)), random.uniformReal(Real(0.3), Real(0.6))));
+        case 0: {  // one draw per statement (z, then y)
+            const Real z = random.uniformReal(Real(0.3), Real(0.6));
+            const Real y = random.uniformReal(Real(0.3), Real(0.6));
+            return Shape::box(Vec3(size, y, z));
+        }
         case 1: return Shape::sphere(size);
         case 2: {
             // An irregular hull: the corners of a box, each pulled in or out a little.

@@ -16,7 +16,7 @@ namespace stepwise {
 /// What chapter 11 adds, switchable for the A/B of the demo and the benches.
 struct WideSolveOptions {
     bool fastSolve = true;  // false: chapter 10's solve (chapter 8's rows) for every scene
-    SolverPath solverPath = SolverPath::Wide;
+    SolverPath solverPath = defaultSolverPath();  // Wide unless STEPWISE_SOLVER_PATH=scalar
     std::shared_ptr<FastSolveStats> profile;     // when set, every solve adds its phase times here
     std::shared_ptr<SolveExtension> extension;   // a later chapter's pass (chapter 12's shock sweep)
 };

@@ -13,11 +13,20 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 
 namespace stepwise {
 
 const char* toString(SolverPath path) { return path == SolverPath::Wide ? "wide" : "scalar"; }
+
+SolverPath defaultSolverPath() {
+    static const SolverPath path = [] {
+        const char* chosen = std::getenv("STEPWISE_SOLVER_PATH");
+        return chosen && std::string(chosen) == "scalar" ? SolverPath::Scalar : SolverPath::Wide;
+    }();
+    return path;
+}
 
 bool fastSolveApplies(const World& world, std::string* why) {
     auto refuse = [&](const char* reason) {

@@ -20,6 +20,11 @@ namespace stepwise {
 enum class SolverPath { Scalar, Wide };
 const char* toString(SolverPath path);
 
+/// The path a pipeline takes unless its options say otherwise: Wide, or Scalar when the
+/// environment variable STEPWISE_SOLVER_PATH is "scalar" (read once). The golden hashes are
+/// checked both ways (tests/reliability/CMakeLists.txt): the two paths must give the same bits.
+SolverPath defaultSolverPath();
+
 /// What one fast solve did (World::step.solver carries the engine-wide figures).
 /// The phases of a solve, in the order a frame runs them (Box3D's solver stages).
 enum class SolvePhase {

@@ -26,10 +26,12 @@ World buildRagdollField(int ragdolls, Real frictionTorque, unsigned seed) {
         spec.frictionTorque = frictionTorque;
         const Real x = (static_cast<Real>(column % side) - Real(0.5) * static_cast<Real>(side - 1)) * kSpacing;
         const Real z = (static_cast<Real>(column / side) - Real(0.5) * static_cast<Real>(side - 1)) * kSpacing;
-        spec.pelvis = Vec3(x + random.uniformReal(Real(-0.3), Real(0.3)), Real(1.2) + Real(1.0) * static_cast<Real>(level),
-                           z + random.uniformReal(Real(-0.3), Real(0.3)));
-        spec.orientation = Quat(Eigen::AngleAxis<Real>(random.uniformReal(0, 2 * kPi), Vec3::UnitY())) *
-                           Quat(Eigen::AngleAxis<Real>(kPi / 2, Vec3::UnitX()));
+        // One draw per statement (z, then x), as in chapter 8's pile (docs/reliability.md).
+        const Real jitterZ = random.uniformReal(Real(-0.3), Real(0.3));
+        const Real jitterX = random.uniformReal(Real(-0.3), Real(0.3));
+        spec.pelvis = Vec3(x + jitterX, Real(1.2) + Real(1.0) * static_cast<Real>(level), z + jitterZ);
+        spec.orientation = Quat(angleAxis(random.uniformReal(0, 2 * kPi), Vec3::UnitY())) *
+                           Quat(angleAxis(kPi / 2, Vec3::UnitX()));
         addRagdoll(world, spec);
     }
     return world;

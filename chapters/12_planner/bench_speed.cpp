@@ -68,7 +68,7 @@ struct Measurement {
 
 Real horizontalMove(const Transform& from, const Transform& to) {
     const Vec3 moved = to.position - from.position;
-    return std::hypot(moved.x(), moved.z());
+    return math::hypot(moved.x(), moved.z());
 }
 
 void measurePoses(const World& start, const std::vector<Transform>& poses, Measurement& measured) {

@@ -16,7 +16,7 @@ namespace stepwise {
 /// off at a time" and the demos' A/B.
 struct SpeedOptions {
     bool fastSolve = true;             // false: chapter 10's solve (chapter 8's rows)
-    SolverPath solverPath = SolverPath::Wide;
+    SolverPath solverPath = defaultSolverPath();  // Wide unless STEPWISE_SOLVER_PATH=scalar
     ContactCacheRule contactCache;     // enabled = false: every pair is queried every frame
     bool sleeping = true;              // with Settings::sleeping; false: never (the bench's A/B)
     bool enlargedBounds = true;        // sweep only when a body leaves its grown box; false: every step

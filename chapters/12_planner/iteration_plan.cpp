@@ -231,7 +231,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         };
         const Real plainLaw = Real(scene) * rows * rows * perMeasuredFrame;  // walks kPlainStackDrift
         const int plain = count(plainLaw * std::sqrt(kPlainStackDrift / kHeldStackDrift));
-        const int shocked = count(kShockStackSubsteps * std::pow(rows, kShockDepthExponent) * perMeasuredFrame);
+        const int shocked = count(kShockStackSubsteps * math::pow(rows, kShockDepthExponent) * perMeasuredFrame);
         // [ch12-shock-price]
         // The sweep pays where, for the walk its law allows, it and its substeps cost less than
         // the substeps without it.

@@ -63,7 +63,7 @@ void addSphere(std::vector<Vec3>& out, const Vec3& center, Real radius, Real spa
     const double golden = 3.14159265358979323846 * (3 - std::sqrt(5.0));
     for (int i = 0; i < count; ++i) {
         const double y = 1 - 2 * (i + 0.5) / count, ring = std::sqrt(1 - y * y), turn = golden * i;
-        const Vec3 unit(Real(ring * std::cos(turn)), Real(y), Real(ring * std::sin(turn)));
+        const Vec3 unit(Real(ring * math::cos(turn)), Real(y), Real(ring * math::sin(turn)));
         if (side * unit.y() >= 0) out.push_back(center + radius * unit);
     }
 }
@@ -75,7 +75,7 @@ void addSide(std::vector<Vec3>& out, Real radius, Real halfHeight, Real spacing)
         for (int k = 0; k < around; ++k) {
             const Real angle = 2 * kPi * Real(k) / Real(around);
             const Real y = -halfHeight + 2 * halfHeight * Real(i) / Real(rings);
-            out.emplace_back(radius * std::cos(angle), y, radius * std::sin(angle));
+            out.emplace_back(radius * math::cos(angle), y, radius * math::sin(angle));
         }
 }
 
@@ -88,7 +88,7 @@ void addDisc(std::vector<Vec3>& out, Real radius, Real y, Real spacing) {
         const int around = stepsOver(2 * kPi * rho, spacing);
         for (int k = 0; k < around; ++k) {
             const Real angle = 2 * kPi * Real(k) / Real(around);
-            out.emplace_back(rho * std::cos(angle), y, rho * std::sin(angle));
+            out.emplace_back(rho * math::cos(angle), y, rho * math::sin(angle));
         }
     }
 }

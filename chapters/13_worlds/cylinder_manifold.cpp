@@ -29,7 +29,7 @@ void capCorners(const Shape& cylinder, const Transform& pose, Real sign, std::ve
     corners.clear();
     for (int i = 0; i < kCapCorners; ++i) {
         const Real angle = sign * Real(2) * kPi * Real(i) / Real(kCapCorners);
-        const Vec3 local(cylinder.radius * std::cos(angle), sign * cylinder.halfHeight, -cylinder.radius * std::sin(angle));
+        const Vec3 local(cylinder.radius * math::cos(angle), sign * cylinder.halfHeight, -cylinder.radius * math::sin(angle));
         corners.push_back(pose.apply(local));
     }
 }
@@ -40,7 +40,7 @@ bool faceToward(const Shape& shape, const Transform& pose, const Vec3& outward, 
     if (isPolytope(shape)) {
         Real alignment = 0;
         const int index = mostAlignedFace(shape, pose, outward, alignment);
-        if (index < 0 || alignment < std::cos(kCapAngle)) return false;
+        if (index < 0 || alignment < math::cos(kCapAngle)) return false;
         const FacePolygon polygon = polytopeFace(shape, index);
         face.normal = pose.rotate(polygon.normal);
         face.corners.clear();
@@ -52,7 +52,7 @@ bool faceToward(const Shape& shape, const Transform& pose, const Vec3& outward, 
     if (shape.type != ShapeType::Cylinder) return false;
     const Vec3 axis = pose.rotate(Vec3::UnitY());
     const Real along = axis.dot(outward);
-    if (std::abs(along) < std::cos(kCapAngle)) return false;
+    if (std::abs(along) < math::cos(kCapAngle)) return false;
     const Real sign = along > 0 ? Real(1) : Real(-1);
     face.normal = sign * axis;
     capCorners(shape, pose, sign, face.corners);
@@ -67,7 +67,7 @@ bool incidentFeature(const Shape& cylinder, const Transform& pose, const Vec3& t
     feature.clear();
     const Vec3 axis = pose.rotate(Vec3::UnitY());
     const Real along = axis.dot(toward);
-    if (std::abs(along) >= std::cos(kCapAngle)) {
+    if (std::abs(along) >= math::cos(kCapAngle)) {
         std::vector<Vec3> corners;
         const Real sign = along > 0 ? Real(1) : Real(-1);
         capCorners(cylinder, pose, sign, corners);
@@ -75,7 +75,7 @@ bool incidentFeature(const Shape& cylinder, const Transform& pose, const Vec3& t
             feature.push_back({corners[i], makeFeature(FeatureKind::Vertex, static_cast<std::uint32_t>(i + (sign > 0 ? 0 : 16)))});
         return true;
     }
-    if (std::abs(along) > std::sin(kSideAngle)) return false;
+    if (std::abs(along) > math::sin(kSideAngle)) return false;
     const Vec3 radial = (toward - along * axis).normalized();
     const Vec3 rim = pose.position + cylinder.radius * radial;
     feature.push_back({rim + cylinder.halfHeight * axis, makeFeature(FeatureKind::Edge, 32)});

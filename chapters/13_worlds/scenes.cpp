@@ -41,7 +41,7 @@ Transform pileDrop(int index, int perSide, Random& random) {
     Transform drop;
     drop.position = Vec3(Real(1.2) * (Real(x) - Real(0.5) * Real(perSide - 1)) + jitterX, Real(4) + Real(1.2) * Real(level),
                          Real(1.2) * (Real(z) - Real(0.5) * Real(perSide - 1)) + jitterZ);
-    drop.rotation = Quat(Eigen::AngleAxis<Real>(angle, Vec3(1, 2, 3).normalized()));
+    drop.rotation = Quat(angleAxis(angle, Vec3(1, 2, 3).normalized()));
     return drop;
 }
 
@@ -88,7 +88,7 @@ Shape tiledFloor(int tiles, Real size) {
 }
 
 Real hillsHeight(Real x, Real z, Real amplitude) {
-    return amplitude * (std::sin(Real(0.21) * x) * std::cos(Real(0.17) * z) + Real(0.4) * std::sin(Real(0.53) * x + Real(0.31) * z));
+    return amplitude * (math::sin(Real(0.21) * x) * math::cos(Real(0.17) * z) + Real(0.4) * math::sin(Real(0.53) * x + Real(0.31) * z));
 }
 
 Shape hillsMesh(int cells, Real size, Real amplitude) {
@@ -118,7 +118,7 @@ World buildCylinderScene() {
     addGroundPlane(world, Real(0.8));
     // A can lying on its side, its axis along z, set rolling along x at 2 m/s.
     const int rolling = addBodyWith(world, "rolling-can", Shape::cylinder(Real(0.3), Real(0.6)), Vec3(-4, Real(0.301), 0),
-                                    BodyType::Dynamic, Quat(Eigen::AngleAxis<Real>(kPi / 2, Vec3::UnitX())));
+                                    BodyType::Dynamic, Quat(angleAxis(kPi / 2, Vec3::UnitX())));
     Motion& roll = world.motions[static_cast<std::size_t>(world.bodies[static_cast<std::size_t>(rolling)].motionIndex)];
     roll.linearVelocity = Vec3(2, 0, 0);
     roll.angularVelocity = Vec3(0, 0, Real(-2) / Real(0.3));  // rolling without slipping
@@ -167,7 +167,7 @@ World buildSeamScene() {
     const int columns = 41, rows = 5;
     std::vector<Real> heights;
     for (int row = 0; row < rows; ++row)
-        for (int column = 0; column < columns; ++column) heights.push_back(Real(10) - Real(column) * Real(0.5) * std::tan(slope));
+        for (int column = 0; column < columns; ++column) heights.push_back(Real(10) - Real(column) * Real(0.5) * math::tan(slope));
     BodyDef ramp;
     ramp.name = "ramp";
     ramp.type = BodyType::Static;
@@ -179,7 +179,7 @@ World buildSeamScene() {
     BodyDef ball;
     ball.name = "ball-on-ramp";
     ball.shape = Shape::sphere(radius);
-    ball.transform.position = Vec3(2, -2 * std::tan(slope), 11) + (radius + Real(0.001)) * Vec3(std::sin(slope), std::cos(slope), 0);
+    ball.transform.position = Vec3(2, -2 * math::tan(slope), 11) + (radius + Real(0.001)) * Vec3(math::sin(slope), math::cos(slope), 0);
     ball.material.friction = 1;
     addBody(world, ball);
     return world;
@@ -192,7 +192,7 @@ World buildTerrainPile(int bodies, unsigned seed) {
     const Shape shapes[] = {Shape::box(Vec3(Real(0.3), Real(0.3), Real(0.3))), Shape::sphere(Real(0.3)),
                             Shape::capsule(Real(0.2), Real(0.3)), Shape::cylinder(Real(0.3), Real(0.3)),
                             tableShape(Real(0.8), Real(0.6), Real(0.5), Real(0.05), Real(0.05))};
-    const int perSide = std::max(1, static_cast<int>(std::ceil(std::cbrt(static_cast<double>(bodies)))));
+    const int perSide = std::max(1, static_cast<int>(std::ceil(math::cbrt(static_cast<double>(bodies)))));
     for (int i = 0; i < bodies; ++i) {
         const Transform drop = pileDrop(i, perSide, random);
         addBodyWith(world, "body" + std::to_string(i), shapes[i % 5], drop.position, BodyType::Dynamic, drop.rotation);

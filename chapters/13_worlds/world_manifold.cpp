@@ -236,7 +236,7 @@ PairManifold worldManifold(WorldShapesCache& cache, const Shape& a, const Transf
     merged.normal = deepest->normal;
     for (const ManifoldCandidates& part : found) {
         const Real agreement = part.normal.dot(merged.normal);
-        if (agreement < std::cos(kMergeAngle)) continue;
+        if (agreement < math::cos(kMergeAngle)) continue;
         for (ManifoldPoint point : part.points) {
             point.depth *= agreement;  // along the common normal
             // Two triangles a ball rests on at their seam find the same point: keep it once.

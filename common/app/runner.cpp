@@ -20,12 +20,14 @@
 
 namespace stepwise {
 
+// The precision and, where the build calls the C library's sin, exp, ... (the option
+// STEPWISE_CROSS_PLATFORM_DETERMINISM off), that too; never the compiler or the platform: every
+// build of one precision gives the same bits (docs/reliability.md), so a recording made by one
+// replays on another.
 std::string engineVersion() {
-#ifdef STEPWISE_DOUBLE
-    return std::string("stepwise ") + STEPWISE_VERSION + " (double)";
-#else
-    return std::string("stepwise ") + STEPWISE_VERSION + " (float)";
-#endif
+    const std::string precision = sizeof(Real) == sizeof(double) ? "double" : "float";
+    const std::string functions = math::kCrossPlatformDeterminism ? "" : ", C library math";
+    return std::string("stepwise ") + STEPWISE_VERSION + " (" + precision + functions + ")";
 }
 
 bool stderrIsTerminal() { return STEPWISE_ISATTY(STEPWISE_FILENO(stderr)) != 0; }

@@ -3,6 +3,8 @@
 // Real is float by default (what games ship); -DSTEPWISE_DOUBLE=ON switches the whole engine
 // to double so the suites can check that nothing depends on the precision by accident.
 
+#include "math/functions.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -71,6 +73,30 @@ inline Mat3 skew(const Vec3& v) {
 inline Vec3 anyPerpendicular(const Vec3& unit) {
     const Vec3 helper = std::abs(unit.x()) >= Real(0.57735) ? Vec3(unit.y(), -unit.x(), 0) : Vec3(0, unit.z(), -unit.y());
     return helper.normalized();
+}
+
+/// The rotation by `angle` (rad) about the unit `axis`: Eigen::AngleAxis's quaternion, with this
+/// build's sin and cos (math/functions.h) instead of the C library's.
+inline Quat angleAxis(Real angle, const Vec3& axis) {
+    const Real half = Real(0.5) * angle;
+    const Vec3 vec = math::sin(half) * axis;
+    return Quat(math::cos(half), vec.x(), vec.y(), vec.z());
+}
+
+/// Spherical linear interpolation from a (t = 0) to b (t = 1) along the shorter arc: Eigen's
+/// Quaternion::slerp (Shoemake, "Animating rotation with quaternion curves", SIGGRAPH 1985), with
+/// this build's acos and sin. Nearly equal rotations interpolate linearly.
+inline Quat slerp(const Quat& a, Real t, const Quat& b) {
+    const Real one = Real(1) - kEpsilon;
+    const Real d = a.dot(b), absD = std::abs(d);
+    Real scale0 = Real(1) - t, scale1 = t;
+    if (absD < one) {
+        const Real theta = math::acos(absD), sinTheta = math::sin(theta);
+        scale0 = math::sin((Real(1) - t) * theta) / sinTheta;
+        scale1 = math::sin(t * theta) / sinTheta;
+    }
+    if (d < 0) scale1 = -scale1;
+    return Quat(scale0 * a.coeffs() + scale1 * b.coeffs());
 }
 
 }  // namespace stepwise

@@ -37,7 +37,7 @@ public:
         const double u3 = uniform() * 2 * 3.14159265358979323846;
         const double a = std::sqrt(1 - u1);
         const double b = std::sqrt(u1);
-        Quat q(Real(b * std::cos(u3)), Real(a * std::sin(u2)), Real(a * std::cos(u2)), Real(b * std::sin(u3)));
+        Quat q(Real(b * math::cos(u3)), Real(a * math::sin(u2)), Real(a * math::cos(u2)), Real(b * math::sin(u3)));
         q.normalize();
         return q;
     }
@@ -48,7 +48,7 @@ public:
         const double z = uniform(-1, 1);
         const double angle = uniform() * 2 * 3.14159265358979323846;
         const double r = std::sqrt(std::max(0.0, 1 - z * z));
-        return Vec3(Real(r * std::cos(angle)), Real(r * std::sin(angle)), Real(z));
+        return Vec3(Real(r * math::cos(angle)), Real(r * math::sin(angle)), Real(z));
     }
 
 private:

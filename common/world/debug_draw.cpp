@@ -16,7 +16,7 @@ void drawCylinder(DebugDraw& draw, const Transform& pose, Real radius, Real half
     Vec3 previousTop, previousBottom;
     for (int i = 0; i <= kCylinderSides; ++i) {
         const Real angle = Real(2) * kPi * Real(i) / Real(kCylinderSides);
-        const Vec3 rim(radius * std::cos(angle), 0, radius * std::sin(angle));
+        const Vec3 rim(radius * math::cos(angle), 0, radius * math::sin(angle));
         const Vec3 top = pose.apply(rim + Vec3(0, halfHeight, 0)), bottom = pose.apply(rim - Vec3(0, halfHeight, 0));
         if (i > 0) {
             draw.line(previousTop, top, color);

@@ -315,7 +315,7 @@ Real boundingRadius(const Shape& shape) {
         case ShapeType::Sphere: return shape.radius;
         case ShapeType::Capsule: return shape.halfHeight + shape.radius;
         case ShapeType::Convex: return shape.hull ? shape.hull->vertexRadius : 0;
-        case ShapeType::Cylinder: return std::hypot(shape.radius, shape.halfHeight);
+        case ShapeType::Cylinder: return math::hypot(shape.radius, shape.halfHeight);
         case ShapeType::Compound: return shape.compound ? shape.compound->vertexRadius : 0;
         case ShapeType::Mesh: return shape.mesh ? shape.mesh->vertexRadius : 0;
         case ShapeType::HeightField: {

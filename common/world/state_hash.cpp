@@ -1,5 +1,6 @@
 #include "world/state_hash.h"
 
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 
@@ -30,7 +31,10 @@ private:
 
 std::uint64_t stateHash(const World& world) {
     Fnv1a hash;
-    hash.bytes(&world.frame, sizeof world.frame);
+    // Fixed widths: World::frame is a long, 64 bits on Linux and 32 on Windows; the hash of one
+    // state must be the same on both (the golden hashes, recordings replayed across builds).
+    const std::int64_t frame = world.frame;
+    hash.bytes(&frame, sizeof frame);
     hash.bytes(&world.time, sizeof world.time);
     for (const Body& body : world.bodies) {
         hash.vec3(body.transform.position);
@@ -42,6 +46,20 @@ std::uint64_t stateHash(const World& world) {
         hash.vec3(motion.angularVelocity);
     }
     return hash.value();
+}
+
+std::uint32_t bodyStateHash(const World& world, std::size_t body) {
+    Fnv1a hash;
+    const Body& state = world.bodies[body];
+    hash.vec3(state.transform.position);
+    hash.vec3(state.transform.rotation.vec());
+    hash.real(state.transform.rotation.w());
+    if (const Motion* motion = world.motionOf(static_cast<int>(body))) {
+        hash.vec3(motion->linearVelocity);
+        hash.vec3(motion->angularVelocity);
+    }
+    const std::uint64_t value = hash.value();
+    return static_cast<std::uint32_t>(value ^ (value >> 32));
 }
 
 std::string hexHash(std::uint64_t hash) {

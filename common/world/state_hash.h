@@ -12,6 +12,10 @@ namespace stepwise {
 
 std::uint64_t stateHash(const World& world);
 
+/// One body's part of the state (pose, and velocities when it moves), 32 bits: what a replay
+/// compares to name the first body that parts from a recording.
+std::uint32_t bodyStateHash(const World& world, std::size_t body);
+
 /// "0x0123456789abcdef".
 std::string hexHash(std::uint64_t hash);
 

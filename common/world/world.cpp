@@ -95,7 +95,7 @@ int addBody(World& world, const BodyDef& def) {
     if (def.path && def.type == BodyType::Kinematic) {
         KinematicPath path = *def.path;
         path.body = bodyIndex;
-        path.center = def.transform.position - path.amplitude * std::sin(path.phase);
+        path.center = def.transform.position - path.amplitude * math::sin(path.phase);
         world.kinematicPaths.push_back(path);
     }
     world.bodies.push_back(std::move(body));

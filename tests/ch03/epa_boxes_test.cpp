@@ -111,18 +111,26 @@ TEST_CASE("EPA gives the same answers with vertex support", "[ch03][epa]") {
 TEST_CASE("Shallow box overlaps: the depth is right to an absolute bound", "[ch03][epa]") {
     // Depths down to a millionth of the box size, where a relative error is dominated by the
     // float resolution of the positions: hold them to a few ulps of the pair's size instead.
+    // The generator also makes deep pairs, which EPA ends within its stopping rule, a support gap
+    // of kEpaDefaultRelativeTolerance of the size (in double, one pair of 3,000 ends 3.5e-6 of
+    // its size off): those are held to that rule, the shallow ones (depth under 1% of the size)
+    // to the ulps.
     const std::vector<SatPair> pairs = makeOverlappingBoxes(4242u, 3000, 0.0);
     int failures = 0;
-    double worst = 0;
+    double worst = 0, worstDeep = 0;
     for (const SatPair& pair : pairs) {
         const ContactQuery query = collideShapes(Shape::box(pair.halfA), pair.poseA, Shape::box(pair.halfB), pair.poseB);
         if (!isFinite(query.depth) || !isFinite(query.pointA) || !isFinite(query.pointB)) ++failures;
         const double size = pair.halfA.norm() + pair.halfB.norm();
-        worst = std::max(worst, std::abs(double(query.depth) - pair.sat.depth) / size);
+        const double error = std::abs(double(query.depth) - pair.sat.depth) / size;
+        double& kept = pair.sat.depth < 0.01 * size ? worst : worstDeep;
+        kept = std::max(kept, error);
     }
-    std::printf("shallow boxes: %zu pairs, worst |depth error| / size %.2e\n", pairs.size(), worst);
+    std::printf("shallow boxes: %zu pairs, worst |depth error| / size %.2e (deeper pairs %.2e)\n", pairs.size(), worst,
+                worstDeep);
     CHECK(failures == 0);
     CHECK(worst <= 200 * double(kEpsilon));
+    CHECK(worstDeep <= std::max(200 * double(kEpsilon), double(kEpaDefaultRelativeTolerance)));
 }
 
 TEST_CASE("Concentric, nearly aligned boxes: EPA keeps growing through A - B's sliver faces", "[ch03][epa]") {

@@ -24,6 +24,7 @@ TEST_CASE("record then replay gives an identical report and meets every frame's 
     // Through the file format, as a user would replay it.
     const Recording read = recordingFromJson(recordingToJson(recording));
     CHECK(read.frameHashes == recording.frameHashes);
+    CHECK(read.bodyHashes == recording.bodyHashes);
     const ReplayResult result = replay(registry, read);
     CHECK(result.frames == 150);
     CHECK(result.firstMismatch == -1);
@@ -72,6 +73,19 @@ TEST_CASE("a replay that parts from its recording names the frame", "[ch09][reco
     CHECK(result.firstMismatch == 42);
     CHECK(result.expectedHash == recording.frameHashes[41]);
     CHECK(result.actualHash == (recording.frameHashes[41] ^ 1));
+    CHECK(result.firstBody == -1);  // every body's own hash is met: only the frame's was changed
+}
+
+TEST_CASE("a replay that parts from its recording names the first body that differs", "[ch09][record]") {
+    const Registry& registry = chapterRegistry();
+    Recording recording = recordRun(registry, "debug-drop", registry.lastChapter(), 60);
+    REQUIRE(recording.bodyHashes.size() == 60);
+    REQUIRE(recording.bodyHashes[41].size() >= 2);
+    recording.frameHashes[41] ^= 1;
+    recording.bodyHashes[41][1] ^= 1;
+    const ReplayResult result = replay(registry, recordingFromJson(recordingToJson(recording)));
+    CHECK(result.firstMismatch == 42);
+    CHECK(result.firstBody == 1);
 }
 
 namespace {

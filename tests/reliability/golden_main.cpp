@@ -3,7 +3,10 @@
 //   stepwise_goldens --write FILE --scenes DIR     rewrite FILE from this build
 //   --unchecked SCENE (repeatable, with --check)   run SCENE and print its hash, but do not count a
 //                                                  difference (a known gap, docs/reliability.md)
-//   --max-bodies N (with --check)                  skip the scenes of more than N bodies (sanitizer builds)
+//   --max-bodies N (with --check)                  skip the scenes of more than N bodies
+//   --from-chapter C (with --check)                skip the built-in scenes of chapters before C
+//   --shard K/N (with --check)                     only every Nth scene from the Kth (0-based): N
+//                                                  processes check the table in parallel
 // The build runs --check as the ctest reliability.golden_hashes; the target `golden-hashes`
 // runs --write for the build's precision (docs/reliability.md).
 #include "golden_runs.h"
@@ -54,21 +57,30 @@ std::map<std::string, std::string> readGolden(const std::string& path) {
 int main(int argc, char** argv) {
     std::string mode, path, scenes;
     std::set<std::string> unchecked;
-    std::size_t maxBodies = std::size_t(-1);
+    GoldenSelection selection;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string option = argv[i];
         if (option == "--check" || option == "--write") mode = option, path = argv[i + 1];
         if (option == "--scenes") scenes = argv[i + 1];
         if (option == "--unchecked") unchecked.insert(argv[i + 1]);
-        if (option == "--max-bodies") maxBodies = std::size_t(std::stoul(argv[i + 1]));
+        if (option == "--max-bodies") selection.maxBodies = std::size_t(std::stoul(argv[i + 1]));
+        if (option == "--from-chapter") selection.fromChapter = std::stoi(argv[i + 1]);
+        if (option == "--shard") {
+            const std::string shard = argv[i + 1];
+            const auto slash = shard.find('/');
+            if (slash != std::string::npos) selection.shard = std::stoi(shard.substr(0, slash)), selection.shards = std::stoi(shard.substr(slash + 1));
+        }
     }
-    if (mode.empty() || scenes.empty() || (mode == "--write" && maxBodies != std::size_t(-1))) {
-        std::cerr << "usage: stepwise_goldens --check|--write FILE --scenes DIR [--max-bodies N (with --check)]\n";
+    const bool everyScene = selection.maxBodies == std::size_t(-1) && selection.fromChapter == 0 && selection.shards == 1;
+    if (mode.empty() || scenes.empty() || (mode == "--write" && !everyScene) || selection.shards < 1 ||
+        selection.shard < 0 || selection.shard >= selection.shards) {
+        std::cerr << "usage: stepwise_goldens --check|--write FILE --scenes DIR [--max-bodies N] [--from-chapter C] "
+                     "[--shard K/N] (the last three with --check)\n";
         return 2;
     }
     Registry registry;
     registerChapters(registry);
-    const std::vector<GoldenRun> runs = runGoldenScenes(registry, scenes, maxBodies);
+    const std::vector<GoldenRun> runs = runGoldenScenes(registry, scenes, selection);
     if (mode == "--write") {
         std::ofstream(path) << goldenText(runs);
         std::cout << "golden hashes: wrote " << runs.size() << " scenes to " << path << "\n";
@@ -78,8 +90,8 @@ int main(int argc, char** argv) {
     int failures = 0;
     for (const GoldenRun& run : runs) {
         const auto known = golden.find(run.scene);
-        if (run.skipped) {
-            std::cout << "SKIPPED  " << run.scene << " (more than " << maxBodies << " bodies)\n";
+        if (!run.skipped.empty()) {
+            std::cout << "SKIPPED  " << run.scene << " (" << run.skipped << ")\n";
         } else if (known == golden.end()) {
             std::cout << "NEW      " << run.scene << " " << hexHash(run.hash) << " (no golden hash yet)\n";
             ++failures;

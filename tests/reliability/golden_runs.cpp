@@ -14,11 +14,14 @@ std::uint64_t finalHash(const Registry& registry, World world, long frames, int 
     return stateHash(world);
 }
 
-std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder, std::size_t maxBodies) {
+std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder, const GoldenSelection& selection) {
     std::vector<GoldenRun> runs;
     const auto run = [&](const std::string& name, World world, int chapter) {
-        if (world.bodies.size() > maxBodies) runs.push_back({name, 0, true});
-        else runs.push_back({name, finalHash(registry, std::move(world), kGoldenFrames, chapter), false});
+        const bool inShard = static_cast<int>(runs.size() % std::size_t(selection.shards)) == selection.shard;
+        if (!inShard) runs.push_back({name, 0, "in another shard"});
+        else if (chapter < selection.fromChapter) runs.push_back({name, 0, "a chapter before " + std::to_string(selection.fromChapter)});
+        else if (world.bodies.size() > selection.maxBodies) runs.push_back({name, 0, "more than " + std::to_string(selection.maxBodies) + " bodies"});
+        else runs.push_back({name, finalHash(registry, std::move(world), kGoldenFrames, chapter), ""});
     };
     for (const SceneEntry& entry : registry.scenes()) run(entry.name, entry.build(), entry.chapter);
     std::vector<std::filesystem::path> files;

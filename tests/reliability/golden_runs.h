@@ -16,13 +16,19 @@ constexpr long kGoldenFrames = 240;  // 4 s at 60 Hz: long enough for stacks to 
 struct GoldenRun {
     std::string scene;      // built-in name, or "scenes/<file>.json"
     std::uint64_t hash = 0; // stateHash after kGoldenFrames frames
-    bool skipped = false;   // more bodies than the run was allowed (no hash)
+    std::string skipped;    // why the scene was not run (no hash); empty: it ran
 };
 
-/// The built-in scenes in registry order, then the scene files of `sceneFolder` by name. Scenes
-/// of more than `maxBodies` bodies are listed as skipped, not run (the sanitizer build's budget).
+/// Which scenes a run covers; the others are listed as skipped.
+struct GoldenSelection {
+    std::size_t maxBodies = std::size_t(-1);  // more bodies: skipped
+    int fromChapter = 0;                      // built-in scenes of earlier chapters: skipped
+    int shard = 0, shards = 1;                // only scenes whose index % shards == shard
+};
+
+/// The built-in scenes in registry order, then the scene files of `sceneFolder` by name.
 std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder,
-                                       std::size_t maxBodies = std::size_t(-1));
+                                       const GoldenSelection& selection = {});
 
 /// Runs one scene for `frames` frames through the pipeline of the latest chapter up to
 /// `maxChapter` and returns its final state hash.
