@@ -28,6 +28,15 @@ private:
 
 }  // namespace
 
+const Registry& registryOnce(void (*registerAll)(Registry&)) {
+    static const Registry registry = [registerAll] {
+        Registry all;
+        registerAll(all);
+        return all;
+    }();
+    return registry;
+}
+
 std::string prose(const std::string& paragraph) {
     std::string joined;
     std::size_t start = 0;

@@ -3,6 +3,7 @@
 // demo panels. Each chapter has one `void registerChapterNN(Registry&)`; the chapter list in
 // CMake generates the function that calls them all in order (cmake/StepwiseChapters.cmake).
 
+#include "app/registry_fwd.h"  // registerChapters, chapterRegistry
 #include "world/pipeline.h"
 #include "world/scene.h"
 #include "world/world.h"
@@ -199,11 +200,5 @@ private:
     std::vector<PenetrationProbe> probes_;
     std::vector<DebugOverlay> overlays_;
 };
-
-/// Generated from the chapter list: calls registerChapter01..NN for the program's chapters.
-void registerChapters(Registry& registry);
-
-/// Every chapter of the program, registered once on first use (tests, tools, fuzz targets).
-const Registry& chapterRegistry();
 
 }  // namespace stepwise
