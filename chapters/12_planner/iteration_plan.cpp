@@ -201,7 +201,8 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     // crosses a contact layer a sweep, and a substep is a sweep however long it is.
     const int scene = std::max(1, settings.solverIterations);
     const TouchSummary touches = summarizeTouches(world, contactOrder);
-    plan.massRatio = touches.massRatio;
+    // Masses count where one rests on another (load_paths.h), not wherever two touch.
+    plan.massRatio = loadPathMassRatio(world, contactOrder, touches.massRatio, search.loads);
     plan.stackDepth = supportDepth(world, contactOrder, search);
     plan.plainIterations = scene;
     int iterations = scene;

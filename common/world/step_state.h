@@ -50,7 +50,7 @@ struct CcdState {
 struct IterationPlan {
     int iterations = 0;       // substeps of this frame's solve (the plan stage writes them before the solve)
     int previousIterations = 0;  // of the frame planned before (0 before the first)
-    Real massRatio = 1;       // heaviest over lightest dynamic body touching another, last frame
+    Real massRatio = 1;       // along load paths: heaviest body resting on a lighter one over it, last frame
     int stackDepth = 0;       // dynamic bodies between the top of the deepest stack and its support, last frame
     int plainIterations = 0;  // where bodies carry one another, at the solve's dt (auto), last frame
     int mostIterations = 0;   // over every frame so far
