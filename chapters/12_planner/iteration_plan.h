@@ -47,6 +47,10 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
 int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
                       StackSearch& search, bool shockAllowed = true);
 
+/// Counts the rule that decided this frame (plan.reason) in plan.reasons: the run report's
+/// "counts", which say why each count was chosen. The plan stage calls it once a frame.
+void tallyPlanReason(IterationPlan& plan);
+
 /// plannedIterations for a scene with joints, solved in the same substeps as the contacts
 /// (chapter 11's joint pass): the contacts' count, and no fewer than the joints need: as many as
 /// hold what hangs from the world by joints to kHeldChainSag, the scene's count where a joint joins

@@ -115,6 +115,23 @@ double percentile(std::vector<double> values, double p) {
     return values[index];
 }
 
+const char* planReasonText(PlanReason reason) {
+    switch (reason) {
+        case PlanReason::SceneCount: return "the scene's solver_iterations";
+        case PlanReason::NothingTouches: return "nothing touches: substeps of free flight";
+        case PlanReason::RestsOnWorld: return "bodies rest on the world alone";
+        case PlanReason::SlidesOnWorld: return "bodies slide on the world alone";
+        case PlanReason::Bounce: return "something arrives bouncing: the scene's count";
+        case PlanReason::MassRatio: return "a body rests on one over 100 times lighter: the square-root law";
+        case PlanReason::LikeStack: return "a stack of like masses: the depth law";
+        case PlanReason::ShockSweep: return "a stack of like masses: the depth law with a shock sweep";
+        case PlanReason::UnlikeStack: return "a stack of unlike masses: the scene's count";
+        case PlanReason::HangingChain: return "bodies hang by joints: the sag law";
+        case PlanReason::JointedBodies: return "bodies joined to bodies: the scene's count";
+    }
+    return "unknown";
+}
+
 std::string describeIterationPlan(const World& world) {
     const IterationPlan& plan = world.step.iterationPlan;
     if (plan.mostIterations <= 0) return "";
@@ -190,6 +207,16 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
     if (world.step.iterationPlan.mostIterations > 0) {
         report["solver_iterations"] = {{"most", world.step.iterationPlan.mostIterations},
                                        {"plan", describeIterationPlan(world)}};
+        Json counts = Json::array();
+        for (int k = 0; k < kPlanReasonCount; ++k) {
+            const PlanReasonTally& tally = world.step.iterationPlan.reasons[static_cast<std::size_t>(k)];
+            if (tally.frames == 0) continue;
+            counts.push_back({{"why", planReasonText(static_cast<PlanReason>(k))},
+                              {"frames", tally.frames},
+                              {"fewest", tally.fewest},
+                              {"most", tally.most}});
+        }
+        if (!counts.empty()) report["solver_iterations"]["counts"] = counts;
     }
     // Extension: how many dynamic bodies sleep at the end, when the pipeline planned sleeping
     // (chapter 10 on, whether the scene turns it on or off).
