@@ -2,6 +2,7 @@
 
 #include "05_sap/sweep_and_prune.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -166,6 +167,42 @@ void restoreContacts(const WorldSnapshot& in, World& world) {
     }
 }
 
+/// World::pairs as flags on the records plus the pairs without one, when the list is in the
+/// canonical order (strictly increasing, as every narrowphase writes it); else whole.
+void savePairs(const World& world, WorldSnapshot& out) {
+    out.pairs.clear();
+    out.pairsWhole = !std::is_sorted(world.pairs.begin(), world.pairs.end()) ||
+                     std::adjacent_find(world.pairs.begin(), world.pairs.end()) != world.pairs.end();
+    if (out.pairsWhole) {
+        out.pairs = world.pairs;
+        return;
+    }
+    std::size_t c = 0;
+    for (const BodyPair& pair : world.pairs) {
+        while (c < world.contacts.size() && world.contacts[c].pair() < pair) ++c;
+        if (c < world.contacts.size() && world.contacts[c].pair() == pair)
+            out.contacts[c].flags = static_cast<std::uint8_t>(out.contacts[c].flags | 32u);
+        else
+            out.pairs.push_back(pair);
+    }
+}
+
+void restorePairs(const WorldSnapshot& in, World& world) {
+    world.pairs.clear();
+    if (in.pairsWhole) {
+        world.pairs = in.pairs;
+        return;
+    }
+    std::size_t extra = 0;
+    for (std::size_t c = 0; c < in.contacts.size(); ++c) {
+        if ((in.contacts[c].flags & 32u) == 0) continue;
+        const BodyPair pair{in.contacts[c].bodyA, in.contacts[c].bodyB};
+        while (extra < in.pairs.size() && in.pairs[extra] < pair) world.pairs.push_back(in.pairs[extra++]);
+        world.pairs.push_back(pair);
+    }
+    world.pairs.insert(world.pairs.end(), in.pairs.begin() + static_cast<std::ptrdiff_t>(extra), in.pairs.end());
+}
+
 void restoreBroadphase(const WorldSnapshot& in, World& world) {
     BroadphaseState& broadphase = world.broadphase;
     broadphase.axis = in.step.sweepAxis;
@@ -239,7 +276,7 @@ void saveSnapshot(const World& world, WorldSnapshot& snapshot) {
     snapshot.builtPoses.clear();
     snapshot.points.clear();
     saveContacts(world, snapshot);
-    snapshot.pairs = world.pairs;
+    savePairs(world, snapshot);
     snapshot.jointImpulses = world.jointImpulses;
 }
 
@@ -281,7 +318,7 @@ void restoreSnapshot(const WorldSnapshot& snapshot, World& world) {
     restoreStep(snapshot.step, world);
     restoreContacts(snapshot, world);
     restoreBroadphase(snapshot, world);
-    world.pairs = snapshot.pairs;
+    restorePairs(snapshot, world);
     world.candidatePairs.clear();   // found again by the next step's broadphase
     world.pairGaps.clear();         // a shortcut: a pair without a gap is measured again, same answer
     world.jointImpulses = snapshot.jointImpulses;

@@ -45,7 +45,8 @@ struct ContactBits {
     std::uint8_t pointCount;
     std::uint8_t referenceSide;
     std::uint8_t missedSteps;
-    std::uint8_t flags;           // bit 0: built pose known; bits 1-4: point i persisted
+    std::uint8_t flags;           // bit 0: built pose known; bits 1-4: point i persisted;
+                                  // bit 5: the pair is in World::pairs
 };
 
 /// Where B stood in A's frame when the manifold was built (chapter 10's cache rule), for the
@@ -99,7 +100,9 @@ struct WorldSnapshot {
     std::vector<ContactBits> contacts;       // sorted by pair, as World::contacts
     std::vector<BuiltPoseBits> builtPoses;   // one per contact whose built pose is known
     std::vector<PointBits> points;           // pointCount per contact, in contact order
-    std::vector<BodyPair> pairs;             // the last narrowphase's overlapping pairs
+    std::vector<BodyPair> pairs;             // World::pairs without a contact record (flag bit 5 marks
+                                             // the others), or all of them when pairsWhole
+    bool pairsWhole = false;                 // World::pairs not in the canonical order: kept as it is
     std::vector<JointImpulses> jointImpulses;
 };
 // [ch09-snapshot]

@@ -97,3 +97,24 @@ TEST_CASE("snapshot: every built-in scene, its own chapter's pipeline and the la
         checkScene(scene.name + " (latest)", world, kLatest, 90, {2, 45, 70});
     }
 }
+
+TEST_CASE("snapshot: 2,100 boxes through the latest pipeline take at most 128 bytes a body and 64 a contact point", "[snapshot]") {
+    const SceneEntry* scene = chapterRegistry().findScene("speed-pyramids");
+    REQUIRE(scene);
+    World world = scene->build();
+    Pipeline pipeline = kLatest(world);
+    for (int frame = 0; frame < 3; ++frame) pipeline.step(world);   // every pyramid stands on its contacts
+    WorldSnapshot snapshot;
+    saveSnapshot(world, snapshot);
+    const SnapshotSize size = snapshotSize(snapshot);
+    INFO(size.perBody() << " bytes a body, " << size.perContactPoint() << " a contact point, " << size.contactPoints
+                        << " points in " << snapshot.contacts.size() << " records, " << snapshot.builtPoses.size()
+                        << " built poses");
+    REQUIRE(size.bodies > 2000);
+    REQUIRE(size.contactPoints > 10000);
+    const double realScale = double(sizeof(Real)) / 4;   // the budget is stated for float
+    CHECK(size.perBody() <= 128 * realScale);
+    CHECK(size.perContactPoint() <= 64 * realScale);
+    // Against a whole copy of the world: well under half.
+    CHECK(snapshotBytes(snapshot) * 2 < worldBytes(world));
+}
