@@ -50,7 +50,7 @@ bool History::restore(long frame, World& world) const {
     const int k = slotOf(frame);
     if (k < 0) return false;
     const Slot& slot = slotAt(k);
-    world = *slot.base;
+    world = *slot.base;   // the structure, with every per-frame vector empty
     restoreSnapshot(slot.snapshot, world);
     return true;
 }
@@ -63,8 +63,9 @@ std::optional<World> History::find(long frame) const {
 }
 
 World History::at(int k) const {
-    World world;
-    restore(slotAt(k).snapshot.frame, world);
+    const Slot& slot = slotAt(k);
+    World world = *slot.base;
+    restoreSnapshot(slot.snapshot, world);
     return world;
 }
 

@@ -32,6 +32,10 @@ public:
 
     /// Keeps the world's state as it is now (after a live frame); the oldest falls out when full.
     void record(const World& world);
+    /// The next record() takes a new base whatever it compares: for code that changes what
+    /// sameStructure does not look at (a shape, a material, a joint's definition) in a live world.
+    /// The frames kept so far keep their base.
+    void rebase() { base_.reset(); }
     void clear();
 
     int size() const { return count_; }
