@@ -67,7 +67,6 @@ HistoryCost measureHistory(int rows) {
     return cost;
 }
 
-// [ch09-bench-snapshot]
 struct SnapshotCost {
     std::string scene;
     int bodies = 0, contactPoints = 0;
@@ -139,7 +138,6 @@ SnapshotCost measureSnapshot(bool quick) {
     cost.historyCompactMb = (cost.compactBytes * kHistoryFrames + double(history.baseBytes())) / 1e6;
     return cost;
 }
-// [ch09-bench-snapshot]
 
 RayHit reference(const Ray& ray, const RayTarget& target) {
     if (target.shape.type == ShapeType::Convex) return rayHullPlanes(ray, target.pose, *target.shape.hull);
