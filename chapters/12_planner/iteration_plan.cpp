@@ -201,7 +201,8 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     // crosses a contact layer a sweep, and a substep is a sweep however long it is.
     const int scene = std::max(1, settings.solverIterations);
     const TouchSummary touches = summarizeTouches(world, contactOrder);
-    // Masses count where one rests on another (load_paths.h), not wherever two touch.
+    // The square-root law counts masses where one rests on another (load_paths.h), not wherever
+    // two touch; whether a stack is of like masses (kLikeMassRatio) is still read off every touch.
     plan.massRatio = loadPathMassRatio(world, contactOrder, touches.massRatio, search.loads);
     plan.stackDepth = supportDepth(world, contactOrder, search);
     plan.plainIterations = scene;
@@ -244,7 +245,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // the substeps without it.
         const Real heldWalk = kHeldWalkPerBody * static_cast<Real>(plan.stackDepth);
         const Real plainForHeldWalk = plainLaw * std::sqrt(kPlainStackDrift / heldWalk);
-        const bool likeAndQuiet = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
+        const bool likeAndQuiet = touches.massRatio <= kLikeMassRatio && !touches.bouncy;
         // The sweep costs at most every contact a one-lane block: where even that pays, the
         // blocks are not counted (a 40-row pyramid, six substeps against 22).
         const Real mostSweep = kShockBlockSubsteps * kShockLaneBlocks * static_cast<Real>(kPricedLanes);
@@ -262,7 +263,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const int stack = std::min(most, std::max({kFewestStackSubsteps, lengths, wanted}));
         // Unlike masses, and a frame in which something arrives bouncing, keep at least the
         // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
-        const bool keepScene = touches.bouncy || plan.massRatio > kLikeMassRatio;
+        const bool keepScene = touches.bouncy || touches.massRatio > kLikeMassRatio;
         const PlanReason byDepth = sweepSaves ? PlanReason::ShockSweep : PlanReason::LikeStack;
         if (!keepScene || stack > iterations) reason = byDepth;
         else if (reason != PlanReason::MassRatio) reason = touches.bouncy ? PlanReason::Bounce : PlanReason::UnlikeStack;
