@@ -41,7 +41,8 @@ Real loadPathMassRatio(const World& world, const std::vector<int>& contactOrder,
     for (std::size_t body = 0; body < bodyCount; ++body) start[body + 1] += start[body];
     search.below.resize(static_cast<std::size_t>(start[bodyCount]));
     search.bodies.clear();
-    std::vector<int> fill(start.begin(), start.end() - 1);
+    std::vector<int>& fill = search.fill;
+    fill.assign(start.begin(), start.end() - 1);
     for (const int index : contactOrder) {
         if (!restsOn(world.contacts[static_cast<std::size_t>(index)], upper, lower)) continue;
         if (fill[static_cast<std::size_t>(upper)] == start[static_cast<std::size_t>(upper)]) search.bodies.push_back(upper);

@@ -16,6 +16,7 @@ namespace stepwise {
 struct LoadPathSearch {
     std::vector<int> bodies;          // the dynamic bodies of contacts that carry weight, highest first
     std::vector<int> start, below;    // per body, the bodies it rests on (compressed rows)
+    std::vector<int> fill;            // where each body's next row goes while they are filled
     std::vector<Real> heaviestAbove;  // per body, the heaviest body resting on it through any path
 };
 
