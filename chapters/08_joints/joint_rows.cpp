@@ -47,11 +47,15 @@ bool finiteRow(const ConstraintRow& row) {
     return sum == 0;
 }
 
-// Collects one joint's rows, slot by slot.
+void applyFeedback(ConstraintRow& row, Softness& softness, bool& fedBack, JointRowKind kind, Real error,
+                   const JointFeedback& feedback, Real h);
+
+// Collects one joint's rows, slot by slot, into a batch. A joint has at most
+// JointRowBatch::kMaxRows slots (a cone twist: three point rows, the swing, two twist limits and
+// three friction rows), so the rules below never write past it.
 class RowBuilder {
 public:
-    // Appends straight to `out`: no vectors of its own to allocate per joint and pass.
-    RowBuilder(JointRows& out, const JointFeedback& feedback, Real h) : out_(out), feedback_(feedback), h_(h) {}
+    RowBuilder(JointRowBatch& out, const JointFeedback& feedback, Real h) : out_(out), feedback_(feedback), h_(h) {}
 
     void equality(ConstraintRow row, Real error) { add(row, Softness{}, JointRowKind::Equality, error); }
 
@@ -82,17 +86,18 @@ public:
     void spring(ConstraintRow row, Real error, const Softness& soft) { add(row, soft, JointRowKind::Spring, error); }
 
     void add(const ConstraintRow& row, const Softness& soft, JointRowKind kind = JointRowKind::Free, Real error = 0) {
-        out_.rows.push_back(row);
-        out_.softness.push_back(soft);
-        out_.fedBack.push_back(false);
-        out_.kind.push_back(kind);
-        out_.error.push_back(error);
-        applyRowFeedback(out_, out_.rows.size() - 1, feedback_, h_);
+        const int i = out_.count++;
+        out_.rows[i] = row;
+        out_.softness[i] = soft;
+        out_.fedBack[i] = false;
+        out_.kind[i] = kind;
+        out_.error[i] = error;
+        applyFeedback(out_.rows[i], out_.softness[i], out_.fedBack[i], kind, error, feedback_, h_);
     }
 
 private:
-    JointRows& out_;
-    JointFeedback feedback_;
+    JointRowBatch& out_;
+    const JointFeedback& feedback_;
     Real h_;
 };
 
@@ -249,8 +254,6 @@ void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& 
     set.pointArmB = frame.armB;
 }
 
-}  // namespace
-
 // [ch08-bias]
 // C = 0 wanted: the error goes back in by the feedback's rule. The push back is capped
 // (kMaxJointPushOutSpeed, kMaxJointPushOutTurn): a joint that starts 25 cm apart would otherwise
@@ -258,17 +261,16 @@ void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& 
 // relax pass takes out (uncapped, scenes/two-box-stack.json's distance joint throws its 65 kg ball
 // 12 m up). A limit not reached is speculative: the row only stops the bodies from closing the
 // gap by more than it is in this step. Passed, it is fed back like an equality.
-void applyRowFeedback(JointRows& rows, std::size_t i, const JointFeedback& feedback, Real h) {
-    ConstraintRow& row = rows.rows[i];
-    const Real error = rows.error[i];
-    switch (rows.kind[i]) {
+void applyFeedback(ConstraintRow& row, Softness& softness, bool& fedBack, JointRowKind kind, Real error,
+                   const JointFeedback& feedback, Real h) {
+    switch (kind) {
         case JointRowKind::Free: return;
-        case JointRowKind::Spring: row.bias = -rows.softness[i].biasRate * error; return;
+        case JointRowKind::Spring: row.bias = -softness.biasRate * error; return;
         case JointRowKind::Limit:
             if (error > 0) {
                 row.bias = -error / h;
-                rows.softness[i] = Softness{};
-                rows.fedBack[i] = false;
+                softness = Softness{};
+                fedBack = false;
                 return;
             }
             break;  // passed: an equality
@@ -284,10 +286,18 @@ void applyRowFeedback(JointRows& rows, std::size_t i, const JointFeedback& feedb
     const bool linear = !row.linearA.isZero(0) || !row.linearB.isZero(0);
     const Real cap = linear ? kMaxJointPushOutSpeed : kMaxJointPushOutTurn;
     row.bias = std::clamp(row.bias, -cap, cap);
-    rows.softness[i] = soft;
-    rows.fedBack[i] = true;
+    softness = soft;
+    fedBack = true;
 }
 // [ch08-bias]
+
+}  // namespace
+
+void applyRowFeedback(JointRows& rows, std::size_t i, const JointFeedback& feedback, Real h) {
+    bool fedBack = rows.fedBack[i] != 0;
+    applyFeedback(rows.rows[i], rows.softness[i], fedBack, rows.kind[i], rows.error[i], feedback, h);
+    rows.fedBack[i] = fedBack;
+}
 
 void appendJointRows(JointRows& out, const World& world, int jointIndex, const std::vector<SolverBody>& bodies, Real h,
                      const JointFeedback& feedback, bool carryImpulses) {
@@ -301,40 +311,53 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
                     carried ? &world.jointImpulses[static_cast<std::size_t>(jointIndex)] : nullptr);
 }
 
-void appendJointRows(JointRows& out, const JointDesc& joint, int jointIndex, const JointFrame& frame, int rowBodyA,
-                     int rowBodyB, const std::vector<SolverBody>& bodies, Real h, const JointFeedback& feedback,
-                     const JointImpulses* carried) {
-    const std::size_t first = out.rows.size();
-    RowBuilder builder(out, feedback, h);
+bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointIndex, const JointFrame& frame,
+                        int rowBodyA, int rowBodyB, const std::vector<SolverBody>& bodies, Real h,
+                        const JointFeedback& feedback, const JointImpulses* carried) {
+    batch.count = 0;
+    RowBuilder builder(batch, feedback, h);
     addRowsOf(builder, joint, frame, h);
-    const auto rows = out.rows.begin() + static_cast<std::ptrdiff_t>(first);
-    const std::size_t rowCount = out.rows.size() - first;
-    if (!std::all_of(rows, out.rows.end(), finiteRow)) {
-        out.rows.resize(first);
-        out.softness.resize(first);
-        out.fedBack.resize(first);
-        out.kind.resize(first);
-        out.error.resize(first);
-        ++out.invalidSkipped;
-        return;
+    if (!std::all_of(batch.rows, batch.rows + batch.count, finiteRow)) {
+        batch.count = 0;
+        return false;
     }
-    JointRowSet set;
+    JointRowSet& set = batch.set;
+    set = JointRowSet{};
     set.joint = jointIndex;
-    set.firstRow = static_cast<int>(first);
-    set.rowCount = static_cast<int>(rowCount);
+    set.rowCount = batch.count;
     if (joint.type != JointType::Distance && joint.type != JointType::Slider)
         setPointBlock(set, frame, bodies[static_cast<std::size_t>(rowBodyA)], bodies[static_cast<std::size_t>(rowBodyB)]);
-    for (std::size_t slot = 0; slot < rowCount; ++slot) {
-        ConstraintRow& row = rows[static_cast<std::ptrdiff_t>(slot)];
+    for (int slot = 0; slot < batch.count; ++slot) {
+        ConstraintRow& row = batch.rows[slot];
         row.bodyA = rowBodyA;  // the rows name the bodies as the caller's list holds them
         row.bodyB = rowBodyB;
         // The block solves slots 0-2 by its own mass; an unused slot has no Jacobian (mass 0).
         const bool inBlock = set.pointBlock && slot < 3;
-        const bool unused = out.kind[first + slot] == JointRowKind::Free && row.angularA.isZero(0) &&
+        const bool unused = batch.kind[slot] == JointRowKind::Free && row.angularA.isZero(0) &&
                             row.angularB.isZero(0) && row.linearA.isZero(0) && row.linearB.isZero(0);
         row.effectiveMass = inBlock || unused ? Real(0) : effectiveMass(row, bodies);
         const Real impulse = carried && slot < JointImpulses::kSlots ? carried->slot[slot] : Real(0);
         row.impulse = std::isfinite(impulse) ? std::clamp(impulse, row.lower, row.upper) : Real(0);
+    }
+    return true;
+}
+
+void appendJointRows(JointRows& out, const JointDesc& joint, int jointIndex, const JointFrame& frame, int rowBodyA,
+                     int rowBodyB, const std::vector<SolverBody>& bodies, Real h, const JointFeedback& feedback,
+                     const JointImpulses* carried) {
+    JointRowBatch batch;
+    if (!buildJointRowBatch(batch, joint, jointIndex, frame, rowBodyA, rowBodyB, bodies, h, feedback, carried)) {
+        ++out.invalidSkipped;
+        return;
+    }
+    JointRowSet set = batch.set;
+    set.firstRow = static_cast<int>(out.rows.size());
+    for (int slot = 0; slot < batch.count; ++slot) {
+        out.rows.push_back(batch.rows[slot]);
+        out.softness.push_back(batch.softness[slot]);
+        out.fedBack.push_back(batch.fedBack[slot]);
+        out.kind.push_back(batch.kind[slot]);
+        out.error.push_back(batch.error[slot]);
     }
     out.joints.push_back(set);
 }

@@ -80,6 +80,26 @@ struct JointRows {
     }
 };
 
+/// One joint's rows as built, before a solve takes them: what appendJointRows adds to a
+/// JointRows, held in place so that a solve with its own row layout (chapter 11's packed rows)
+/// takes them without a list in between. Slot i is rows[i], as in JointImpulses.
+struct JointRowBatch {
+    static constexpr int kMaxRows = JointImpulses::kSlots;
+    int count = 0;
+    ConstraintRow rows[kMaxRows];
+    Softness softness[kMaxRows];
+    bool fedBack[kMaxRows] = {};
+    JointRowKind kind[kMaxRows] = {};
+    Real error[kMaxRows] = {};
+    JointRowSet set;                // the point block; firstRow 0, rowCount = count
+};
+
+/// Builds the rows of `joint` at `frame` into `batch` (appendJointRows' rules, the same numbers):
+/// false, with nothing to solve, if any row came out non-finite.
+bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointIndex, const JointFrame& frame,
+                        int rowBodyA, int rowBodyB, const std::vector<SolverBody>& bodies, Real h,
+                        const JointFeedback& feedback, const JointImpulses* carried);
+
 /// Appends the rows of World::joints[jointIndex] for a step of h, effective masses filled in,
 /// accumulated impulses loaded from World::jointImpulses when `carryImpulses` (and clamped to
 /// this step's bounds), zero otherwise.

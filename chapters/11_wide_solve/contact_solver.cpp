@@ -323,8 +323,8 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     storeBlocks(scratch, world);
     if (linked) {
         storeJointImpulses(*scratch.joints, world);
-        solverStats.jointRows = static_cast<int>(scratch.joints->rows.rows.size());
-        solverStats.jointsSkipped = scratch.joints->rows.invalidSkipped;
+        solverStats.jointRows = scratch.joints->rowCount;
+        solverStats.jointsSkipped = scratch.joints->invalidSkipped;
     }
     stats.ms(SolvePhase::Store) += clock.lap();
     solverStats.contactPoints = stats.points;

@@ -73,8 +73,9 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
 
 // [ch11-joint-rows]
 void buildJointRows(const World& world, const SolverBodies& bodies, Real h, JointPass& pass) {
-    JointRows& rows = pass.rows;
-    rows.clear();
+    pass.packed.clear();
+    pass.rowCount = 0;
+    pass.invalidSkipped = 0;
     if (pass.joints.empty()) return;
     const JointFeedback feedback = fastJointFeedback(world.settings, h);
     // Where each body stands now: its start moved by the substeps so far (slot 0 does not move).
@@ -93,28 +94,32 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, Join
         pose.transform.position = now.center - now.rotation * world.motionOf(body)->localCenter;
         pose.center = now.center;
     }
+    JointRowBatch& batch = pass.batch;
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
         const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
         const JointFrame frame = jointRowFrame(joint, a.transform, a.center, b.transform, b.center);
-        const std::size_t before = rows.joints.size();
-        appendJointRows(rows, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i], pass.bodies, h, feedback,
-                        &pass.carried[i]);
-        // A joint whose rows came out non-finite is left out this substep (rows.invalidSkipped).
-        if (rows.joints.size() > before) rows.joints.back().joint = static_cast<int>(i);  // the pass's index
+        JointImpulses& carried = pass.carried[i];
+        if (!buildJointRowBatch(batch, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i], pass.bodies, h,
+                                feedback, &carried)) {
+            ++pass.invalidSkipped;  // left out this substep; its impulses wait as they are
+            continue;
+        }
+        // Every slot carries its impulse clamped to this substep's bounds; the sweeps' own rows
+        // overwrite theirs when the substep ends (keepJointImpulses).
+        for (int slot = 0; slot < batch.count; ++slot) carried.slot[slot] = batch.rows[slot].impulse;
+        pass.rowCount += batch.count;
+        appendPackedJoint(batch, static_cast<int>(i), pass.bodies, pass.slot, pass.packed);
     }
-    packJointRows(rows, pass.bodies, pass.slot, pass.packed);
 }
 // [ch11-joint-rows]
 
 
 void warmStartJoints(JointPass& pass, SolverBodyState* states, bool warmStarting) {
-    if (pass.rows.rows.empty()) return;
+    if (pass.packed.joints.empty()) return;
     if (!warmStarting) {  // every substep from zero, as the contacts
-        for (ConstraintRow& row : pass.rows.rows) row.impulse = 0;
-        for (PackedPointBlock& block : pass.packed.blocks) block.impulse = Vec3::Zero();
-        for (PackedJointRow& row : pass.packed.rows) row.impulse = 0;
+        resetPackedImpulses(pass.packed, pass.carried);
         return;
     }
     warmStartPacked(pass.packed, states);
@@ -122,14 +127,7 @@ void warmStartJoints(JointPass& pass, SolverBodyState* states, bool warmStarting
 
 void solveJoints(JointPass& pass, SolverBodyState* states, bool relax) { solvePacked(pass.packed, states, relax); }
 
-void keepJointImpulses(JointPass& pass) {
-    unpackImpulses(pass.packed, pass.rows);
-    for (const JointRowSet& set : pass.rows.joints) {
-        JointImpulses& carried = pass.carried[static_cast<std::size_t>(set.joint)];
-        for (int slot = 0; slot < set.rowCount && slot < JointImpulses::kSlots; ++slot)
-            carried.slot[slot] = pass.rows.rows[static_cast<std::size_t>(set.firstRow + slot)].impulse;
-    }
-}
+void keepJointImpulses(JointPass& pass) { keepPackedImpulses(pass.packed, pass.carried); }
 
 void storeJointImpulses(const JointPass& pass, World& world) {
     world.jointImpulses.resize(world.joints.size());

@@ -14,7 +14,7 @@
 // neighbour in a frame stretches by 1.3 cm to first order. Moving the Jacobians and keeping the
 // effective masses does not either: the arms turn, the frame's inertia does not, and a row's mass
 // can fall to half of what it answers with (a ragdoll's shin spun up and blew apart). Chapter 8's
-// rules build them (appendJointRows, applyRowFeedback); the three sweeps take them packed
+// rules build them, one joint at a time (buildJointRowBatch); the three sweeps take them packed
 // (packed_joint_rows.h: chapter 8's sweep, with M^-1 J^T made once a substep), one physics,
 // whichever solve runs it.
 
@@ -54,8 +54,10 @@ struct JointPass {
         Vec3 center = Vec3::Zero();
     };
     std::vector<BodyPose> poses;       // per entry: where it stands this substep
-    JointRows rows;                    // this substep's
-    PackedJointRows packed;            // the same rows, as the sweeps take them
+    JointRowBatch batch;               // one joint's rows, as chapter 8 builds them
+    PackedJointRows packed;            // this substep's rows, as the sweeps take them
+    int rowCount = 0;                  // this substep's rows, used slots or not (the run report's)
+    int invalidSkipped = 0;            // joints left out this substep: their rows came out non-finite
     JointSweep sweep;
     // Springs and drag: chapter 1's forces at each substep's state, per motion.
     std::vector<MotionState> forceStates;

@@ -20,15 +20,16 @@ void push(SolverBodyState* states, int slot, const Vec3& linear, const Vec3& ang
     }
 }
 
-PackedJointRow packRow(const ConstraintRow& row, std::size_t index, const JointRows& rows,
-                       const std::vector<SolverBody>& bodies, const std::vector<int>& slotOfEntry) {
+PackedJointRow packRow(const JointRowBatch& batch, int slot, const std::vector<SolverBody>& bodies,
+                       const std::vector<int>& slotOfEntry) {
+    const ConstraintRow& row = batch.rows[slot];
     const SolverBody& a = bodies[static_cast<std::size_t>(row.bodyA)];
     const SolverBody& b = bodies[static_cast<std::size_t>(row.bodyB)];
     PackedJointRow packed;
     packed.slotA = slotOfEntry[static_cast<std::size_t>(row.bodyA)];
     packed.slotB = slotOfEntry[static_cast<std::size_t>(row.bodyB)];
-    packed.row = static_cast<int>(index);
-    packed.fedBack = rows.fedBack[index] != 0;
+    packed.slot = slot;
+    packed.fedBack = batch.fedBack[slot];
     packed.linearA = row.linearA;
     packed.angularA = row.angularA;
     packed.linearB = row.linearB;
@@ -42,33 +43,31 @@ PackedJointRow packRow(const ConstraintRow& row, std::size_t index, const JointR
     packed.lower = row.lower;
     packed.upper = row.upper;
     packed.impulse = row.impulse;
-    packed.soft = rows.softness[index];
+    packed.soft = batch.softness[slot];
     return packed;
 }
 
-PackedPointBlock packBlock(const JointRowSet& set, const JointRows& rows, const std::vector<SolverBody>& bodies,
+PackedPointBlock packBlock(const JointRowBatch& batch, const std::vector<SolverBody>& bodies,
                            const std::vector<int>& slotOfEntry) {
-    const std::size_t first = static_cast<std::size_t>(set.firstRow);
-    const ConstraintRow& row = rows.rows[first];
+    const ConstraintRow& row = batch.rows[0];
     const SolverBody& a = bodies[static_cast<std::size_t>(row.bodyA)];
     const SolverBody& b = bodies[static_cast<std::size_t>(row.bodyB)];
     PackedPointBlock block;
     block.slotA = slotOfEntry[static_cast<std::size_t>(row.bodyA)];
     block.slotB = slotOfEntry[static_cast<std::size_t>(row.bodyB)];
-    block.row = set.firstRow;
-    block.armA = set.pointArmA;
-    block.armB = set.pointArmB;
-    block.mass = set.pointMass;
+    block.armA = batch.set.pointArmA;
+    block.armB = batch.set.pointArmB;
+    block.mass = batch.set.pointMass;
     block.inverseMassA = a.inverseMass;
     block.inverseMassB = b.inverseMass;
     block.inverseInertiaA = a.inverseInertia;
     block.inverseInertiaB = b.inverseInertia;
     for (int axis = 0; axis < 3; ++axis) {
-        block.fedBack[axis] = rows.fedBack[first + static_cast<std::size_t>(axis)] != 0;
-        block.bias[axis] = rows.rows[first + static_cast<std::size_t>(axis)].bias;
-        block.impulse[axis] = rows.rows[first + static_cast<std::size_t>(axis)].impulse;
+        block.fedBack[axis] = batch.fedBack[axis];
+        block.bias[axis] = batch.rows[axis].bias;
+        block.impulse[axis] = batch.rows[axis].impulse;
     }
-    block.soft = rows.softness[first];
+    block.soft = batch.softness[0];
     return block;
 }
 
@@ -108,28 +107,24 @@ void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
 
 }  // namespace
 
-void packJointRows(const JointRows& rows, const std::vector<SolverBody>& bodies, const std::vector<int>& slotOfEntry,
-                   PackedJointRows& packed) {
-    packed.joints.clear();
-    packed.blocks.clear();
-    packed.rows.clear();
-    for (const JointRowSet& set : rows.joints) {
-        PackedJoint joint;
-        int begin = set.firstRow;
-        if (set.pointBlock) {
-            joint.block = static_cast<int>(packed.blocks.size());
-            packed.blocks.push_back(packBlock(set, rows, bodies, slotOfEntry));
-            begin += 3;
-        }
-        joint.firstRow = static_cast<int>(packed.rows.size());
-        for (int i = begin; i < set.firstRow + set.rowCount; ++i) {
-            const ConstraintRow& row = rows.rows[static_cast<std::size_t>(i)];
-            if (row.effectiveMass == 0) continue;  // chapter 8's sweep skips it too
-            packed.rows.push_back(packRow(row, static_cast<std::size_t>(i), rows, bodies, slotOfEntry));
-        }
-        joint.rowCount = static_cast<int>(packed.rows.size()) - joint.firstRow;
-        packed.joints.push_back(joint);
+void appendPackedJoint(const JointRowBatch& batch, int joint, const std::vector<SolverBody>& bodies,
+                       const std::vector<int>& slotOfEntry, PackedJointRows& packed) {
+    PackedJoint entry;
+    entry.joint = joint;
+    entry.slotCount = batch.count;
+    int begin = 0;
+    if (batch.set.pointBlock) {
+        entry.block = static_cast<int>(packed.blocks.size());
+        packed.blocks.push_back(packBlock(batch, bodies, slotOfEntry));
+        begin = 3;
     }
+    entry.firstRow = static_cast<int>(packed.rows.size());
+    for (int slot = begin; slot < batch.count; ++slot) {
+        if (batch.rows[slot].effectiveMass == 0) continue;  // chapter 8's sweep skips it too
+        packed.rows.push_back(packRow(batch, slot, bodies, slotOfEntry));
+    }
+    entry.rowCount = static_cast<int>(packed.rows.size()) - entry.firstRow;
+    packed.joints.push_back(entry);
 }
 
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
@@ -153,11 +148,25 @@ void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
     }
 }
 
-void unpackImpulses(const PackedJointRows& packed, JointRows& rows) {
-    for (const PackedPointBlock& block : packed.blocks)
-        for (int axis = 0; axis < 3; ++axis)
-            rows.rows[static_cast<std::size_t>(block.row + axis)].impulse = block.impulse[axis];
-    for (const PackedJointRow& row : packed.rows) rows.rows[static_cast<std::size_t>(row.row)].impulse = row.impulse;
+void keepPackedImpulses(const PackedJointRows& packed, std::vector<JointImpulses>& carried) {
+    for (const PackedJoint& joint : packed.joints) {
+        JointImpulses& impulses = carried[static_cast<std::size_t>(joint.joint)];
+        if (joint.block >= 0) {
+            const Vec3& impulse = packed.blocks[static_cast<std::size_t>(joint.block)].impulse;
+            for (int axis = 0; axis < 3; ++axis) impulses.slot[axis] = impulse[axis];
+        }
+        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
+            const PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
+            impulses.slot[row.slot] = row.impulse;
+        }
+    }
+}
+
+void resetPackedImpulses(PackedJointRows& packed, std::vector<JointImpulses>& carried) {
+    for (PackedPointBlock& block : packed.blocks) block.impulse = Vec3::Zero();
+    for (PackedJointRow& row : packed.rows) row.impulse = 0;
+    for (const PackedJoint& joint : packed.joints)
+        for (int slot = 0; slot < joint.slotCount; ++slot) carried[static_cast<std::size_t>(joint.joint)].slot[slot] = 0;
 }
 
 }  // namespace stepwise

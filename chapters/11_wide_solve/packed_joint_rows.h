@@ -1,6 +1,8 @@
 #pragma once
 // A substep's joint rows, as the fast solve sweeps them three times (warm start, biased pass,
-// relax pass). Chapter 8's rows name their bodies and carry the Jacobian J; every sweep then
+// relax pass). Chapter 8's rules build each joint's rows (buildJointRowBatch), and they go
+// straight into this layout, with no list of rows in between. Chapter 8's rows name their bodies
+// and carry the Jacobian J; every sweep then
 // multiplies J by the bodies' inverse mass and inertia again (M^-1 J^T, two 3x3 products a row).
 // The inertia is the frame's for the whole substep, so the product is made once, when the rows
 // are packed, and the sweeps read and write the solve's body states by slot. Rows without a
@@ -17,7 +19,7 @@ namespace stepwise {
 /// One scalar row of a joint, ready to sweep.
 struct PackedJointRow {
     int slotA = 0, slotB = 0;   // the bodies' solver slots (0: does not move)
-    int row = 0;                // into JointRows::rows: where its impulse goes back
+    int slot = 0;               // its joint's slot (JointImpulses::slot): where its impulse goes back
     bool fedBack = false;       // the relax pass takes its bias and softness out
     Vec3 linearA = Vec3::Zero(), angularA = Vec3::Zero(), linearB = Vec3::Zero(), angularB = Vec3::Zero();  // J
     Vec3 moveLinearA = Vec3::Zero(), moveAngularA = Vec3::Zero();  // M^-1 J^T: the velocity one unit of impulse adds
@@ -29,7 +31,6 @@ struct PackedJointRow {
 /// A ball socket's three point rows, solved as chapter 8's 3x3 block.
 struct PackedPointBlock {
     int slotA = 0, slotB = 0;
-    int row = 0;                       // the first of its three rows in JointRows::rows
     bool fedBack[3] = {false, false, false};
     Vec3 armA = Vec3::Zero(), armB = Vec3::Zero();
     Mat3 mass = Mat3::Zero();          // K^-1
@@ -41,20 +42,27 @@ struct PackedPointBlock {
 
 /// One joint: its block (if any), then its rows, in chapter 8's order.
 struct PackedJoint {
+    int joint = 0;                // the caller's index of the joint (its carried impulses)
+    int slotCount = 0;            // the joint's slots, used or not
     int block = -1;               // into PackedJointRows::blocks, or -1
     int firstRow = 0, rowCount = 0;  // into PackedJointRows::rows
 };
 
 struct PackedJointRows {
+    void clear() {
+        joints.clear();
+        blocks.clear();
+        rows.clear();
+    }
     std::vector<PackedJoint> joints;
     std::vector<PackedPointBlock> blocks;
     std::vector<PackedJointRow> rows;
 };
 
-/// Packs `rows` (built over the solver bodies `bodies`, entries `slotOfEntry` in the solve's
-/// slots) for the sweeps.
-void packJointRows(const JointRows& rows, const std::vector<SolverBody>& bodies, const std::vector<int>& slotOfEntry,
-                   PackedJointRows& packed);
+/// Appends one joint's rows (`batch`, built over the solver bodies `bodies`, entries
+/// `slotOfEntry` in the solve's slots) for the sweeps; `joint` is the caller's index of it.
+void appendPackedJoint(const JointRowBatch& batch, int joint, const std::vector<SolverBody>& bodies,
+                       const std::vector<int>& slotOfEntry, PackedJointRows& packed);
 
 /// The carried impulses applied to the bodies.
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states);
@@ -62,7 +70,11 @@ void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states);
 /// One Gauss-Seidel sweep, joint after joint: biased, or (`relax`) without the feedback.
 void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax);
 
-/// The sweeps' impulses back into `rows` (which holds the rows left out as they were).
-void unpackImpulses(const PackedJointRows& packed, JointRows& rows);
+/// The sweeps' impulses back into the joints' carried impulses (`carried`, by PackedJoint::joint);
+/// the slots the sweeps leave out keep what they hold.
+void keepPackedImpulses(const PackedJointRows& packed, std::vector<JointImpulses>& carried);
+
+/// Every impulse zero, in the sweeps and in `carried` (a solve without warm starting).
+void resetPackedImpulses(PackedJointRows& packed, std::vector<JointImpulses>& carried);
 
 }  // namespace stepwise

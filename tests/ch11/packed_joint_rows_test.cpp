@@ -2,6 +2,7 @@
 // made once, the bodies' states read by slot, the unused slots left out. The sweep must be
 // chapter 8's, to rounding: the same impulses and the same velocities after a warm start, a
 // biased and a relax sweep, for every joint type, between two moving bodies and against a post.
+#include "08_joints/joint_frame.h"
 #include "08_joints/joint_solver.h"
 #include "08_joints/scenes.h"
 #include "11_wide_solve/joint_pass.h"
@@ -58,10 +59,23 @@ TEST_CASE("packed joint rows sweep as chapter 8's rows do", "[ch11][joints]") {
             JointPass pass;
             prepareJointPass(world, bodies, 1, pass);
             buildJointRows(world, bodies, h, pass);
-            REQUIRE(!pass.rows.joints.empty());
+            REQUIRE(!pass.packed.joints.empty());
+
+            // Chapter 8's rows of the same joints, where the pass's bodies stand, from the same
+            // carried impulses.
+            JointRows rows;
+            const JointFeedback feedback = fastJointFeedback(world.settings, h);
+            for (std::size_t i = 0; i < pass.joints.size(); ++i) {
+                const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
+                const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
+                const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
+                appendJointRows(rows, joint, static_cast<int>(i), jointRowFrame(joint, a.transform, a.center, b.transform, b.center),
+                                pass.entryA[i], pass.entryB[i], pass.bodies, h, feedback, &pass.carried[i]);
+            }
+            REQUIRE(rows.joints.size() == pass.packed.joints.size());
+            CHECK(static_cast<int>(rows.rows.size()) == pass.rowCount);
 
             // Chapter 8's sweep over the same rows and bodies.
-            JointRows rows = pass.rows;
             std::vector<SolverBody> reference = pass.bodies;
             for (std::size_t e = 0; e < reference.size(); ++e) {
                 reference[e].linearVelocity = packedTestLinear(bodies.states[static_cast<std::size_t>(pass.slot[e])]);
@@ -89,9 +103,12 @@ TEST_CASE("packed joint rows sweep as chapter 8's rows do", "[ch11][joints]") {
                 packedTestClose(packedTestLinear(state), reference[e].linearVelocity);
                 packedTestClose(packedTestAngular(state), reference[e].angularVelocity);
             }
-            for (std::size_t i = 0; i < rows.rows.size(); ++i)
-                CHECK(std::abs(pass.rows.rows[i].impulse - rows.rows[i].impulse) <=
-                      Real(2e-4) * (Real(1e-3) + std::abs(rows.rows[i].impulse)));
+            for (const JointRowSet& set : rows.joints)
+                for (int slot = 0; slot < set.rowCount; ++slot) {
+                    const Real expected = rows.rows[static_cast<std::size_t>(set.firstRow + slot)].impulse;
+                    const Real packed = pass.carried[static_cast<std::size_t>(set.joint)].slot[slot];
+                    CHECK(std::abs(packed - expected) <= Real(2e-4) * (Real(1e-3) + std::abs(expected)));
+                }
             // A static body's state is never written.
             CHECK(packedTestLinear(bodies.states[0]) == Vec3::Zero());
             CHECK(packedTestAngular(bodies.states[0]) == Vec3::Zero());
