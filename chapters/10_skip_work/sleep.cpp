@@ -8,11 +8,6 @@
 
 namespace stepwise {
 
-bool isDynamicBody(const World& world, int bodyIndex) {
-    return bodyIndex >= 0 && std::size_t(bodyIndex) < world.bodies.size() &&
-           world.bodies[std::size_t(bodyIndex)].type == BodyType::Dynamic;
-}
-
 bool isAwakeDynamic(const World& world, int bodyIndex) {
     return isDynamicBody(world, bodyIndex) && !world.motionOf(bodyIndex)->asleep;
 }

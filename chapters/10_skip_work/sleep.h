@@ -36,7 +36,10 @@ struct SleepScratch {
 bool isSlow(const World& world, int bodyIndex);
 
 /// Whether bodyIndex names a dynamic body of the world (false for any other index).
-bool isDynamicBody(const World& world, int bodyIndex);
+inline bool isDynamicBody(const World& world, int bodyIndex) {  // inline: the planner asks it per contact
+    return bodyIndex >= 0 && std::size_t(bodyIndex) < world.bodies.size() &&
+           world.bodies[std::size_t(bodyIndex)].type == BodyType::Dynamic;
+}
 
 /// Whether bodyIndex names a dynamic body that is awake.
 bool isAwakeDynamic(const World& world, int bodyIndex);

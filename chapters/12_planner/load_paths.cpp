@@ -21,6 +21,19 @@ Real loadPathMassRatio(const World& world, const std::vector<int>& contactOrder,
         const Real ha = height(a), hb = height(b);
         return ha != hb ? ha > hb : a < b;
     };
+    // Bodies of one mass hand on only that mass, whatever rests on what: the ratio is 1 without
+    // a search (a pyramid of like boxes, every frame).
+    Real lightest = kRealMax, heaviest = 0;
+    for (const int index : contactOrder) {
+        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
+        for (const int body : {contact.bodyA, contact.bodyB})
+            if (isDynamicBody(world, body)) {
+                const Real mass = world.motionOf(body)->mass;
+                lightest = std::min(lightest, mass);
+                heaviest = std::max(heaviest, mass);
+            }
+    }
+    if (!(heaviest > lightest)) return 1;
     const std::size_t bodyCount = world.bodies.size();
     // Which body rests on which: a contact between two dynamic bodies whose normal is near the
     // vertical; the higher centre is the one on top.
