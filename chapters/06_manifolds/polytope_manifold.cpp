@@ -222,6 +222,13 @@ int bestSeparatingFace(const Shape& shape, const Transform& transform, const Sha
     return best;
 }
 
+/// The depth of the deepest candidate point (-kRealMax when there is none).
+Real deepestCandidate(const ManifoldCandidates& candidates) {
+    Real deepest = -kRealMax;
+    for (const ManifoldPoint& point : candidates.points) deepest = std::max(deepest, point.depth);
+    return deepest;
+}
+
 }  // namespace
 
 bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
@@ -236,19 +243,30 @@ bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const
     const int faceB = bestSeparatingFace(b, tb, a, ta, separationB);
     if (faceA < 0 || faceB < 0) return false;
     const Real axisSeparation = -query.depth;
-    // A pair that touched face to face last step stays a face contact within the hysteresis.
-    const Real edgeTolerance = preferred == ReferenceSide::None ? kFaceTolerance : kReferenceHysteresis;
-    if (std::max(separationA, separationB) + edgeTolerance < axisSeparation) {
-        return edgeContact(a, ta, b, tb, query, keepDistance, out);
+    const auto build = [&](Real edgeTolerance, bool referenceIsA) {
+        if (std::max(separationA, separationB) + edgeTolerance < axisSeparation)
+            return edgeContact(a, ta, b, tb, query, keepDistance, out);
+        return referenceIsA ? faceContact(a, ta, faceA, b, tb, true, keepDistance, out)
+                            : faceContact(b, tb, faceB, a, ta, false, keepDistance, out);
+    };
+    if (preferred != ReferenceSide::None) {
+        // A pair that touched face to face last step stays a face contact, on the same reference
+        // body, within the larger hysteresis...
+        const bool heldA = preferred == ReferenceSide::A ? separationB <= separationA + kReferenceHysteresis
+                                                          : separationA > separationB + kReferenceHysteresis;
+        if (!build(kReferenceHysteresis, heldA)) return false;
+        // ...while its points read no deeper than the shapes overlap. A held face reads depth along
+        // its own normal, up to the hysteresis more than the best axis: a hull that turned, or a box
+        // that fell onto another at an angle since last step, would read a centimetre the shapes do
+        // not have, and the solve would push them apart by it. The best axis bounds the overlap.
+        const Real overlap = -std::max({separationA, separationB, axisSeparation});
+        if (deepestCandidate(out) <= overlap + kFaceTolerance) return true;
+        out.points.clear();
+        out.referenceSide = 0;
     }
     // A's face is the reference unless B's is clearly better: the bias keeps the choice steady
-    // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same). Last
-    // step's choice, when known, holds within the larger hysteresis.
-    bool referenceIsA = separationB <= separationA + kFaceTolerance;
-    if (preferred == ReferenceSide::A) referenceIsA = separationB <= separationA + kReferenceHysteresis;
-    if (preferred == ReferenceSide::B) referenceIsA = separationA > separationB + kReferenceHysteresis;
-    return referenceIsA ? faceContact(a, ta, faceA, b, tb, true, keepDistance, out)
-                        : faceContact(b, tb, faceB, a, ta, false, keepDistance, out);
+    // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same).
+    return build(kFaceTolerance, separationB <= separationA + kFaceTolerance);
 }
 // [ch06-polytope-manifold]
 

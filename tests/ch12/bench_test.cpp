@@ -47,11 +47,14 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
     }
     // The pile of unlike masses keeps its contacts within twice the slop (5 mm) of the surface.
     CHECK(std::stod(rowOf["unlike pile"]["fast step"][13]) < 0.01);
-    // No contact point reads deeper than its shapes overlap, by more than a millimetre (checked in
-    // every frame between the contact search and the solve).
+    // No contact point reads deeper than its shapes overlap (checked in every frame between the
+    // contact search and the solve): the rule is a millimetre; chapter 6 keeps within its face
+    // tolerance, half of it, and these scenes read under 0.31 mm. A reference face held while it
+    // reads deeper (tests/ch06/held_face_test.cpp) makes the mixed pile read 0.57 mm: the check is
+    // at half a millimetre, where a millimetre would let that pass.
     for (const char* scene : {"pyramid 100 rows", "touching 100 rows", "mixed pile", "unlike pile"}) {
         INFO(scene);
-        CHECK(std::stod(rowOf[scene]["fast step"][17]) < 0.001);
+        CHECK(std::stod(rowOf[scene]["fast step"][17]) < 0.0005);
     }
     for (const std::string& scene : jointScenes) {
         INFO(scene);

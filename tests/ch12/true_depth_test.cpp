@@ -4,14 +4,12 @@
 // the shapes only touch, and the solve would push the pair apart at metres per second. Here every
 // contact of a dense pile of all five stress kinds is checked at the poses the narrowphase saw:
 // against the shapes' overlap along the contact's own normal (the reach of A - B along it), and
-// against chapter 3's depth, the least overlap over all directions. Two polytopes may keep last
-// frame's reference face while another axis is better by up to chapter 6's kReferenceHysteresis (their
-// feature ids, and so their warm start, hold through small turns); every other pair reads within
-// 1 mm of chapter 3's depth.
+// against chapter 3's depth, the least overlap over all directions. Every pair reads within 1 mm of
+// it: two polytopes keep last frame's reference face (their feature ids, and so their warm start,
+// hold through small turns) only while its points read no deeper than the shapes overlap.
 #include "03_epa/narrowphase.h"
 #include "02_gjk/support.h"
 #include "05_sap/stress_scene.h"
-#include "06_manifolds/polytope_manifold.h"
 #include "12_planner/chapter.h"
 
 #include <catch2/catch.hpp>
@@ -47,13 +45,11 @@ TEST_CASE("no contact of a pile of mixed shapes reads deeper than its shapes ove
             const Real overlap = truth.intersect ? truth.depth : Real(0);
             const ConvexProxy proxyA{&a.shape, before[ia], SupportMode::Extents}, proxyB{&b.shape, before[ib], SupportMode::Extents};
             const Real alongNormal = contact.normal.dot(minkowskiSupport(proxyA, proxyB, contact.normal).w);
-            const bool polytopes = !isRound(a.shape) && !isRound(b.shape);
-            const Real allowed = overlap + (polytopes ? kReferenceHysteresis : Real(0));
             for (int i = 0; i < contact.pointCount; ++i) {
                 const Real depth = contact.points[i].depth;
                 worstAlongNormal = std::max(worstAlongNormal, depth - alongNormal);
-                if (depth - allowed > worstExcess) {
-                    worstExcess = depth - allowed;
+                if (depth - overlap > worstExcess) {
+                    worstExcess = depth - overlap;
                     std::ostringstream text;
                     text << "frame " << frame << ": " << a.name << " - " << b.name << " reads " << depth
                          << " m deep where the shapes overlap " << overlap << " m (" << alongNormal << " m along its normal)";
