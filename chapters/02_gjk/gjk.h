@@ -56,6 +56,10 @@ struct GjkDistanceResult {
     /// shapes that touch within round-off, where pointB - pointA is too short to have one. Zero
     /// when the cores themselves overlap.
     Vec3 axis = Vec3::Zero();
+    /// How far the shapes overlap when their cores are apart but their radii reach across (a
+    /// sphere or a capsule sunk into another shape): the radii minus the cores' distance, exact,
+    /// along `axis`. Zero otherwise (apart, or the cores themselves overlap).
+    Real radiusOverlap = 0;
     /// The final simplex; for spheres and capsules it is that of their cores (a point, a
     /// segment), which the walk uses instead of the round shapes (gjk_distance.cpp).
     Simplex simplex;

@@ -101,6 +101,7 @@ GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int ma
     const Real gap = coreDistance - radiusA - radiusB;
     result.separated = gap > tolerances.touching;
     result.distance = result.separated ? gap : Real(0);
+    result.radiusOverlap = coreDistance > 0 && gap < 0 ? -gap : Real(0);
     // [ch02-closest-points]
     // Separated cores whose radii overlap are intersecting shapes: a clean answer too.
     result.exit = exit == GjkExit::Separated && !result.separated ? GjkExit::Intersect : exit;

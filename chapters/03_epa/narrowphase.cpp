@@ -91,6 +91,13 @@ ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, 
     if (distance.separated && length > 0 && isFinite(length)) {
         query.depth = -distance.distance;
         query.normal = gap / length;
+    } else if (gjk.intersect && distance.radiusOverlap > 0) {
+        // The cores are apart and the radii reach across: a sphere or a capsule sunk into the
+        // other shape, as deep as the radii overlap, along the axis between the cores (exact; a
+        // sphere 1.5 mm into a cylinder's rim leaves EPA a flat polytope and reads 0 otherwise).
+        query.intersect = true;
+        query.depth = distance.radiusOverlap;
+        query.normal = distance.axis;
     } else if (distance.axis.squaredNorm() > 0) {
         // Within round-off of touching the closest points coincide and give no direction; the
         // axis between the cores still does (for a sphere or a capsule it is exact). The line of

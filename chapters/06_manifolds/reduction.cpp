@@ -39,6 +39,11 @@ int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal,
     };
 
     const auto planar = [&](const Vec3& v) -> Vec3 { return v - normal.dot(v) * normal; };
+    // Rules 2 to 4 look at the touching points first and at the speculative ones (above the
+    // reference face) only when the touching ones leave the rule without an answer. A body lying
+    // on an edge touches at the edge's two ends; a speculative corner farther away, kept in place
+    // of one end, leaves the body on one point and a gap, and it rocks over the edge for ever.
+    const auto touching = [&](int i) { return points[static_cast<std::size_t>(i)].depth >= -kDepthTolerance; };
 
     // 1. The deepest point: it carries the most load and must never be dropped. When several are
     // equally deep (a face resting flat), the one farthest from the patch's centre: a corner of
@@ -70,13 +75,18 @@ int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal,
     // 2. The point farthest from it in the contact plane: the longest lever against tipping.
     int farthest = -1;
     Real bestDistance = 0;
-    for (int i = 0; i < count; ++i) {
-        if (i == deepest) continue;
-        const Real distance = planar(at(i) - at(deepest)).squaredNorm();
-        if (farthest < 0 ? distance > 0 : clearlyBetter(distance, bestDistance)) {
-            farthest = i;
-            bestDistance = distance;
+    for (const bool touchingOnly : {true, false}) {
+        for (int i = 0; i < count; ++i) {
+            if (i == deepest || (touchingOnly && !touching(i))) continue;
+            const Real distance = planar(at(i) - at(deepest)).squaredNorm();
+            if (farthest < 0 ? distance > 0 : clearlyBetter(distance, bestDistance)) {
+                farthest = i;
+                bestDistance = distance;
+            }
         }
+        if (farthest >= 0 && bestDistance > kEpsilon * kEpsilon) break;
+        farthest = -1;
+        bestDistance = 0;
     }
     // Every point at the same place: one point says it all.
     const Real scale = std::max(bestDistance, Real(0));
@@ -87,14 +97,19 @@ int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal,
     // 3. The point making the largest triangle with the first two, on either side.
     int third = -1;
     Real bestArea = 0, thirdSide = 0;
-    for (int i = 0; i < count; ++i) {
-        if (isChosen(i, 2)) continue;
-        const Real area = signedArea(at(deepest), at(farthest), at(i), normal);
-        if (third < 0 ? std::abs(area) > 0 : clearlyBetter(std::abs(area), bestArea)) {
-            third = i;
-            bestArea = std::abs(area);
-            thirdSide = area;
+    for (const bool touchingOnly : {true, false}) {
+        for (int i = 0; i < count; ++i) {
+            if (isChosen(i, 2) || (touchingOnly && !touching(i))) continue;
+            const Real area = signedArea(at(deepest), at(farthest), at(i), normal);
+            if (third < 0 ? std::abs(area) > 0 : clearlyBetter(std::abs(area), bestArea)) {
+                third = i;
+                bestArea = std::abs(area);
+                thirdSide = area;
+            }
         }
+        if (third >= 0 && bestArea > Real(1e-6) * scale) break;
+        third = -1;
+        bestArea = thirdSide = 0;
     }
     // Collinear points: the segment's two ends are the manifold.
     if (third < 0 || !(bestArea > Real(1e-6) * scale)) return 2;
@@ -107,15 +122,20 @@ int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal,
     if (thirdSide < 0) std::swap(a, b);
     int fourth = -1;
     Real bestAdded = 0;
-    for (int i = 0; i < count; ++i) {
-        if (isChosen(i, 3)) continue;
-        const Real added = std::max(Real(0), -signedArea(at(a), at(b), at(i), normal)) +
-                           std::max(Real(0), -signedArea(at(b), at(c), at(i), normal)) +
-                           std::max(Real(0), -signedArea(at(c), at(a), at(i), normal));
-        if (fourth < 0 ? added > 0 : clearlyBetter(added, bestAdded)) {
-            fourth = i;
-            bestAdded = added;
+    for (const bool touchingOnly : {true, false}) {
+        for (int i = 0; i < count; ++i) {
+            if (isChosen(i, 3) || (touchingOnly && !touching(i))) continue;
+            const Real added = std::max(Real(0), -signedArea(at(a), at(b), at(i), normal)) +
+                               std::max(Real(0), -signedArea(at(b), at(c), at(i), normal)) +
+                               std::max(Real(0), -signedArea(at(c), at(a), at(i), normal));
+            if (fourth < 0 ? added > 0 : clearlyBetter(added, bestAdded)) {
+                fourth = i;
+                bestAdded = added;
+            }
         }
+        if (fourth >= 0 && bestAdded > Real(1e-6) * bestArea) break;
+        fourth = -1;
+        bestAdded = 0;
     }
     if (fourth < 0 || !(bestAdded > Real(1e-6) * bestArea)) return 3;
     chosen[3] = fourth;

@@ -13,7 +13,8 @@ constexpr int kMaxManifoldPoints = 4;
 /// equally deep, the farthest from the patch's centre), the one
 /// farthest from it, the one making the largest triangle with those two, and the one adding the
 /// most area on the other side (Gregorius, "Robust Contact Creation for Physics Simulations",
-/// GDC 2015; Box3D's convex manifold reduction). Returns how many were chosen, in that order.
+/// GDC 2015; Box3D's convex manifold reduction); the last three from the touching points (depth
+/// >= 0) while those give an answer, then from all. Returns how many were chosen, in that order.
 int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal, int chosen[kMaxManifoldPoints]);
 
 }  // namespace stepwise

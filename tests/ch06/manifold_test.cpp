@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -484,4 +485,28 @@ TEST_CASE("polytope faces: boxes are described like hulls", "[ch06][manifold]") 
     CHECK(polytopeEdges(box).size() == 12);
     CHECK(polytopeEdges(octahedronHull(1)).size() == 12);
     CHECK(polytopeEdges(prismHull()).size() == 18);
+}
+
+TEST_CASE("a patch touching along a line keeps both ends before any speculative point", "[ch06][manifold][reduction]") {
+    // A hull tilted half a degree on another: the patch touches along one edge (its two ends 5 mm
+    // and 4.9 mm deep) and its far corners hang up to 7 mm above the reference face. Both touching
+    // ends hold the body; a speculative corner chosen instead of one of them (it lies farther away)
+    // leaves the body on one touching point and a gap, and it rocks (the angular pile of chapter
+    // 10's scenes never fell asleep so).
+    std::vector<ManifoldPoint> patch(6);
+    const Vec3 positions[6] = {Vec3(Real(-0.5), 0, Real(-0.33)), Vec3(Real(-0.5), 0, Real(0.13)),
+                               Vec3(Real(-0.47), 0, Real(-0.47)), Vec3(Real(0.45), 0, Real(0.46)),
+                               Vec3(Real(0.46), 0, Real(-0.45)), Vec3(Real(-0.46), 0, Real(0.46))};
+    const Real depths[6] = {Real(0.005), Real(0.0049), Real(-0.0005), Real(-0.007), Real(-0.005), Real(-0.002)};
+    for (int k = 0; k < 6; ++k) {
+        patch[static_cast<std::size_t>(k)].pointA = positions[k];
+        patch[static_cast<std::size_t>(k)].depth = depths[k];
+    }
+    int chosen[kMaxManifoldPoints] = {-1, -1, -1, -1};
+    const int count = reduceManifold(patch, Vec3::UnitY(), chosen);
+    REQUIRE(count == 4);
+    CHECK(chosen[0] == 0);
+    CHECK(chosen[1] == 1);  // the other touching end, though the speculative corners lie farther
+    // The last two spread the patch for the speculative rows: the largest triangle, then the most area.
+    CHECK(std::find(chosen, chosen + 4, 3) != chosen + 4);
 }

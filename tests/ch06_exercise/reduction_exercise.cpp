@@ -3,7 +3,8 @@
 // from it, the largest triangle, the most area added), and run this. The check has its own greedy
 // choice, written apart from the chapter, and asks of yours: never more than four points, none
 // twice, the deepest first, and each later point within the page's 5% of the best score for its
-// rule. Degenerate patches (one place, one line) must give one and two points.
+// rule; the last three from the touching points first. Degenerate patches (one place, one line)
+// must give one and two points.
 #include "06_manifolds/reduction.h"
 
 #include "math/random.h"
@@ -131,4 +132,15 @@ TEST_CASE("exercise: a patch in one place gives one point, on one line its two e
     CHECK(chosen[0] == 2);  // the deepest
     CHECK(chosen[1] == 5);  // the end farthest from it
     CHECK(reduceManifold({}, Vec3::UnitY(), chosen) == 0);
+}
+
+TEST_CASE("exercise: touching points come before speculative ones", "[ch06-exercise]") {
+    // A patch touching along one edge (x = -0.5) whose far corners hang above the reference face.
+    std::vector<ManifoldPoint> patch = {pointAt(Real(-0.5), Real(-0.3), Real(0.005)), pointAt(Real(-0.5), Real(0.1), Real(0.0049)),
+                                        pointAt(Real(0.45), Real(0.46), Real(-0.007)), pointAt(Real(0.46), Real(-0.45), Real(-0.005))};
+    int chosen[kMaxManifoldPoints] = {-1, -1, -1, -1};
+    REQUIRE(reduceManifold(patch, Vec3::UnitY(), chosen) >= 2);
+    CHECK(chosen[0] == 0);
+    INFO("the second point must be the edge's other end (it touches), not a corner above the face");
+    CHECK(chosen[1] == 1);
 }
