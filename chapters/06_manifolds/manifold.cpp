@@ -113,7 +113,7 @@ namespace {
 /// more, its points riding on their bodies, so a contact that opens for a step does not lose what
 /// it carried (no flicker).
 void keepManifold(World& world, const BodyPair& pair, bool built, bool intersect, const Contact* old, Contact& contact,
-                  const ManifoldOptions& options) {
+                  const ManifoldOptions& options, Real measuredGap = -1) {
     if (built) {
         if (intersect) world.pairs.push_back(pair);
         if (old) matchContactPoints(contact, *old, options.matchDistance);
@@ -125,6 +125,13 @@ void keepManifold(World& world, const BodyPair& pair, bool built, bool intersect
         ++kept.missedSteps;
         refreshFromAnchors(kept, world.bodies[static_cast<std::size_t>(pair.bodyA)],
                            world.bodies[static_cast<std::size_t>(pair.bodyB)]);
+        // The search just measured the shapes `measuredGap` apart (< 0: not measured, or they
+        // overlap), and no point of theirs is closer than that. A point clipped onto a face's
+        // plane rides with its body past the face's edge, and its depth along the old normal can
+        // read centimetres closer than the shapes are: a speculative row that stops a fast body
+        // short of what it never reaches.
+        if (measuredGap >= 0)
+            for (int i = 0; i < kept.pointCount; ++i) kept.points[i].depth = std::min(kept.points[i].depth, -measuredGap);
         world.contacts.push_back(kept);
     }
 }
@@ -172,7 +179,8 @@ int updateManifolds(World& world, Real lookAhead, const ManifoldOptions& options
         const bool close = query.intersect || -query.depth < keepDistance;
         const bool built = close && buildManifold(bodyA.shape, bodyA.transform, bodyB.shape, bodyB.transform, query,
                                                   keepDistance, options, contact, old);
-        keepManifold(world, pair, built, query.intersect, old, contact, options);
+        keepManifold(world, pair, built, query.intersect, old, contact, options,
+                     query.intersect ? Real(-1) : std::max(Real(0), -query.depth));
     }
     return queries;
 }

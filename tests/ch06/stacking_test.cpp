@@ -51,7 +51,7 @@ TEST_CASE("a tower of 1, 10, 100 and 1000 kg from the top stands", "[ch06][stack
 
 // Measured, as the issue asks, and pinned as the page reports it: a mass ratio of 1000 that a few
 // rigid sweeps cannot carry. The rigid stabilisations let the 1000 kg box crush the tower within
-// 10 s, the top box ending on the ground; soft_step's springs (static contacts twice as stiff)
+// 10 s, the top box ending half a metre or more lower; soft_step's springs (static contacts twice as stiff)
 // hold it, the top box sagging some 9 cm. If that ever changes, this fails and the page's table
 // must change with it.
 TEST_CASE("1000 kg on top of 100, 10 and 1 kg: soft_step holds it, the rigid stabilisations let it fall",
@@ -69,7 +69,9 @@ TEST_CASE("1000 kg on top of 100, 10 and 1 kg: soft_step holds it, the rigid sta
             CHECK(measure.topHeightEnd > measure.topHeightStart - 0.15);
         } else {
             CHECK(!measure.stood);
-            CHECK(measure.topHeightEnd < 1);  // the top box's centre a box or less above the ground
+            // Crushed: the top box ends half a metre or more lower (where the wreck leaves it: on the
+            // ground, or on a box that fell over).
+            CHECK(measure.topHeightEnd < measure.topHeightStart - Real(0.5));
         }
     }
 }
