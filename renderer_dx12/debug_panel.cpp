@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 namespace stepwise::render {
@@ -69,7 +70,15 @@ void sessionSection(DemoState& state, DebugTools& tools) {
     if (ImGui::Button("Resume live")) state.resume();
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ImGui::Button("Save recording")) tools.recordingMessage = saveRecording(state);
+    if (ImGui::Button("Save recording")) {
+        tools.recordingMessage = saveRecording(state);
+        const std::string saved = recordingPathOf(state);  // what "Load recording" offers next
+        std::snprintf(tools.recordingPath, sizeof tools.recordingPath, "%s", saved.c_str());
+    }
+    ImGui::SetNextItemWidth(220);
+    ImGui::InputText("##recording", tools.recordingPath, sizeof tools.recordingPath);
+    ImGui::SameLine();
+    if (ImGui::Button("Load recording")) tools.recordingMessage = replayRecording(state, tools.recordingPath);
     ImGui::TextDisabled("history %d/%d frames, %.1f MB", history.size(), history.capacity(),
                         static_cast<double>(history.bytes()) / (1024.0 * 1024.0));
     if (!tools.recordingMessage.empty()) ImGui::TextWrapped("%s", tools.recordingMessage.c_str());
@@ -144,11 +153,35 @@ int sectionByName(const std::string& name) {
     return -1;
 }
 
-std::string saveRecording(const DemoState& state) {
+// A recording from any build of the same precision (this one, the Linux `stepwise record`, another
+// machine's demo) replays here frame by frame, as `stepwise replay` does: every hash met, or the
+// first frame and body where the runs part.
+std::string replayRecording(const DemoState& state, const std::string& path) {
+    try {
+        const Recording recording = readRecordingFile(path);
+        const ReplayResult result = replay(state.registry(), recording);
+        if (result.firstMismatch < 0)
+            return "replayed " + std::to_string(result.frames) + " frames of " + path + ": every state hash met";
+        std::string where = "frame " + std::to_string(result.firstMismatch);
+        if (result.firstBody >= 0) {
+            const World start = startingWorld(state.registry(), recording);
+            where += ", body " + bodyName(start, result.firstBody);
+        }
+        return "the replay of " + path + " parts from the recording at " + where;
+    } catch (const std::exception& error) {
+        return std::string("could not replay: ") + error.what();
+    }
+}
+
+std::string recordingPathOf(const DemoState& state) {
     std::string scene = state.scene() ? state.scene()->name : state.world().name;
     for (char& c : scene)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '-';
-    const std::string path = "out/recording-" + (scene.empty() ? std::string("scene") : scene) + ".json";
+    return "out/recording-" + (scene.empty() ? std::string("scene") : scene) + ".json";
+}
+
+std::string saveRecording(const DemoState& state) {
+    const std::string path = recordingPathOf(state);
     try {
         std::filesystem::create_directories("out");
         const Recording recording = recordingOf(state.session(), state.chapter());

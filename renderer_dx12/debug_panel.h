@@ -20,6 +20,7 @@ struct DebugTools {
     /// The panel's "stop on new contact" switch; holding Space turns the rule on while held.
     bool stopOnNewContact = false;
     std::string recordingMessage;
+    char recordingPath[260] = "out/recording.json";  // what "Load recording" replays
 
     enum Section { Session, Views, HitResults, InspectorSection, Performance, kSectionCount };
     /// Sections to open at the next frame (scripted runs, a contact clicked in the scene).
@@ -36,8 +37,15 @@ void drawDebugger(DemoState& state, ViewOptions& view, DebugTools& tools);
 /// was not drawn or is collapsed to its title bar.
 bool debuggerRect(float rect[4]);
 
+/// out/recording-<scene>.json, where "Save recording" writes.
+std::string recordingPathOf(const DemoState& state);
+
 /// Writes the session's live run so far to out/recording-<scene>.json (stepwise replay reads
 /// it); returns the message the panel shows.
 std::string saveRecording(const DemoState& state);
+
+/// "Load recording": replays the recording at `path` through this program's engine and says
+/// whether every frame met its hash, or where the runs part.
+std::string replayRecording(const DemoState& state, const std::string& path);
 
 }  // namespace stepwise::render

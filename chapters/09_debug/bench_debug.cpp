@@ -3,6 +3,10 @@
 //   history   pyramids of 10 to 528 boxes: the step's CPU time, the time to record a frame into
 //             the 120-frame ring, the memory a frame takes, and a rewind of 60 frames, 60
 //             speculative steps and a resume.
+//   snapshot the 2,100-box scene of ten 20-row pyramids (speed-pyramids, through the latest
+//             chapter the program has; a 20-row pyramid through chapter 8 where the registry has
+//             no such scene): a frame kept whole against a compact snapshot, bytes per body and
+//             per contact point, the time to record a frame and to restore one.
 //   ray casts random rays at a sphere, a box, a capsule and a hull: the closed forms' time per
 //             cast, and the GJK cast's time and largest deviation from them as its iteration cap
 //             grows (the hull's reference is its face planes). The deviation is measured across
@@ -16,6 +20,7 @@
 #include "09_debug/ray_cast.h"
 #include "09_debug/ray_targets.h"
 #include "app/bench_util.h"
+#include "app/registry.h"
 #include "math/random.h"
 
 #include <algorithm>
@@ -62,6 +67,78 @@ HistoryCost measureHistory(int rows) {
     return cost;
 }
 
+struct SnapshotCost {
+    std::string scene;
+    int bodies = 0, contactPoints = 0;
+    double wholeBytes = 0, wholePerBody = 0, wholePerPoint = 0;     // a whole copy of the world
+    double compactBytes = 0, compactPerBody = 0, compactPerPoint = 0;  // a snapshot
+    double historyWholeMb = 0, historyCompactMb = 0;                // 120 frames, the base included
+    double copyMs = 0, saveMs = 0, assignMs = 0, restoreMs = 0;
+};
+
+/// A whole world's bytes split as the snapshot's are: the contact records (and the pair lists
+/// beside them) per contact point, everything else per body.
+void wholeWorldSplit(const World& world, double& perBody, double& perPoint) {
+    const double contactBytes = double(world.contacts.capacity() * sizeof(Contact) + world.pairs.capacity() * sizeof(BodyPair) +
+                                       world.pairGaps.capacity() * sizeof(PairGap));
+    const double bodyBytes = double(worldBytes(world)) - contactBytes;
+    int points = 0;
+    for (const Contact& contact : world.contacts) points += contact.pointCount;
+    perBody = bodyBytes / double(std::max<std::size_t>(1, world.bodies.size()));
+    perPoint = contactBytes / double(std::max(1, points));
+}
+
+SnapshotCost measureSnapshot(bool quick) {
+    const Registry& registry = chapterRegistry();
+    const SceneEntry* big = registry.findScene("speed-pyramids");
+    SnapshotCost cost;
+    World world = big ? big->build() : buildPyramid(20);
+    Pipeline pipeline = big ? registry.makePipeline(world) : makeChapter08Pipeline(world);
+    cost.scene = big ? "speed-pyramids (chapter " + std::to_string(registry.lastChapter()) + ")" : "pyramid-20 (chapter 8)";
+    // Settled enough for every pyramid to stand on its contacts, before anything sleeps.
+    const int settle = quick ? 10 : 20;
+    for (int frame = 0; frame < settle; ++frame) pipeline.step(world);
+    cost.bodies = static_cast<int>(world.bodies.size());
+    History history;
+    World copy = world;   // a slot of a ring of whole worlds
+    WorldSnapshot snapshot;
+    std::vector<double> copies, saves, assigns, restores;
+    const int frames = quick ? 6 : 30;
+    for (int frame = 0; frame < frames; ++frame) {
+        pipeline.step(world);
+        ThreadStopwatch clock;
+        copy = world;
+        copies.push_back(clock.seconds() * 1e3);
+        clock.restart();
+        saveSnapshot(world, snapshot);
+        saves.push_back(clock.seconds() * 1e3);
+        history.record(world);
+    }
+    World restored;
+    for (int k = 0; k < frames; ++k) {
+        ThreadStopwatch clock;
+        restored = copy;
+        assigns.push_back(clock.seconds() * 1e3);
+        clock.restart();
+        history.restore(history.newestFrame(), restored);
+        restores.push_back(clock.seconds() * 1e3);
+    }
+    cost.copyMs = median(copies);
+    cost.saveMs = median(saves);
+    cost.assignMs = median(assigns);
+    cost.restoreMs = median(restores);
+    const SnapshotSize size = snapshotSize(snapshot);
+    cost.contactPoints = static_cast<int>(size.contactPoints);
+    cost.wholeBytes = double(worldBytes(world));
+    wholeWorldSplit(world, cost.wholePerBody, cost.wholePerPoint);
+    cost.compactBytes = double(snapshotBytes(snapshot));
+    cost.compactPerBody = size.perBody();
+    cost.compactPerPoint = size.perContactPoint();
+    cost.historyWholeMb = cost.wholeBytes * kHistoryFrames / 1e6;
+    cost.historyCompactMb = (cost.compactBytes * kHistoryFrames + double(history.baseBytes())) / 1e6;
+    return cost;
+}
+
 RayHit reference(const Ray& ray, const RayTarget& target) {
     if (target.shape.type == ShapeType::Convex) return rayHullPlanes(ray, target.pose, *target.shape.hull);
     return castRay(ray, target.shape, target.pose);
@@ -87,6 +164,18 @@ void measureDebug(BenchRun& bench) {
         recordSeries.y.push_back(cost.recordMs);
         bench.progress().advance();
     }
+
+    bench.progress().stage("snapshot", 1);
+    const SnapshotCost snap = measureSnapshot(quick);
+    bench.progress().advance();
+    CsvTable snapshots({"scene", "kept as", "bodies", "contact points", "bytes per frame", "bytes per body",
+                        "bytes per contact point", "120 frames (MB)", "record (ms)", "restore (ms)"});
+    snapshots.addRow({snap.scene, "whole world", std::to_string(snap.bodies), std::to_string(snap.contactPoints),
+                      formatNumber(snap.wholeBytes), formatNumber(snap.wholePerBody), formatNumber(snap.wholePerPoint),
+                      formatNumber(snap.historyWholeMb, 3), formatNumber(snap.copyMs), formatNumber(snap.assignMs)});
+    snapshots.addRow({snap.scene, "snapshot", std::to_string(snap.bodies), std::to_string(snap.contactPoints),
+                      formatNumber(snap.compactBytes), formatNumber(snap.compactPerBody), formatNumber(snap.compactPerPoint),
+                      formatNumber(snap.historyCompactMb, 3), formatNumber(snap.saveMs), formatNumber(snap.restoreMs)});
 
     const int rayCount = quick ? 2000 : 20000;
     const std::vector<int> caps{1, 2, 3, 4, 6, 8, 16, 64};
@@ -141,13 +230,18 @@ void measureDebug(BenchRun& bench) {
     std::ostream& out = bench.out();
     out << "history (" << realTypeName() << ", pyramids through chapter 8's pipeline, medians of " << 2 * kHistoryFrames
         << " frames):\n"
-        << history.toText() << "\nray casts (" << rayCount << " rays per shape):\n" << rays.toText();
+        << history.toText() << "\nsnapshot (" << realTypeName()
+        << ", a frame kept whole against kept as a snapshot; bytes per body and per contact point split the frame's "
+           "bytes between the bodies' state and the contact cache; 120 frames include the snapshot's base world; "
+           "restore: a whole copy assigned, or base plus snapshot):\n"
+        << snapshots.toText() << "\nray casts (" << rayCount << " rays per shape):\n" << rays.toText();
     bench.writeCsv(history);
     bench.writeCsv(rays, "-rays");
+    bench.writeCsv(snapshots, "-snapshot");
     PlotSpec historyPlot("History: recording a frame beside stepping it (" + std::string(realTypeName()) + ")",
                          "bodies", "ms per frame (CPU, median)");
     historyPlot.series = {stepSeries, recordSeries};
-    historyPlot.caption = "Pyramids of boxes through chapter 8's pipeline; recording copies the whole world into the "
+    historyPlot.caption = "Pyramids of boxes through chapter 8's pipeline; recording saves a compact snapshot into the "
                           "120-frame ring (slots reused).";
     bench.writePlot(historyPlot);
     bench.writePlot(rayPlot, "-rays");
@@ -160,6 +254,8 @@ BenchEntry debugBench() {
         debug: history cost per frame against scene size, rewind and resume, GJK ray cast error
             against its iteration cap
         debug.csv       history: step, record and memory per frame against body count
+        debug-snapshot.csv  a frame of 2,100 boxes kept whole or as a snapshot: bytes per body and
+                        per contact point, record and restore time
         debug-rays.csv  ray casts: time per cast and deviation from the closed form
         debug.svg       history: step and record time against body count
         debug-rays.svg  GJK ray cast deviation against time per cast, iteration cap growing)");

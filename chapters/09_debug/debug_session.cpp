@@ -54,13 +54,12 @@ StopReason DebugSession::step() {
 long DebugSession::liveFrame() const { return rewound_ ? live_.frame : world_.frame; }
 
 bool DebugSession::rewindTo(long frame) {
-    const World* kept = history_.find(frame);
-    if (!kept) return false;
+    if (!history_.contains(frame)) return false;
     if (!rewound_) {
         live_ = world_;   // the live world as it is now, edits after its last frame included
         rewound_ = true;
     }
-    world_ = *kept;
+    history_.restore(frame, world_);
     return true;
 }
 

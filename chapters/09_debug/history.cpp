@@ -1,43 +1,127 @@
 #include "09_debug/history.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace stepwise {
 
 History::History(int capacity) : slots_(static_cast<std::size_t>(capacity > 0 ? capacity : 1)) {}
 
+// [ch09-history-record]
 void History::record(const World& world) {
+    if (!base_ || !sameStructure(*base_, world)) base_ = std::make_shared<const World>(structureOf(world));
     const int slot = (first_ + count_) % capacity();
-    slots_[static_cast<std::size_t>(slot)] = world;
+    Slot& target = slots_[static_cast<std::size_t>(slot)];
+    saveSnapshot(world, target.snapshot);
+    target.base = base_;
     if (count_ < capacity()) ++count_;
     else first_ = (first_ + 1) % capacity();
 }
+// [ch09-history-record]
 
 void History::clear() {
+    for (Slot& slot : slots_) slot.base.reset();
+    base_.reset();
     first_ = 0;
     count_ = 0;
 }
 
-const World& History::at(int k) const {
+const History::Slot& History::slotAt(int k) const {
     if (k < 0 || k >= count_) throw std::out_of_range("History::at: frame " + std::to_string(k) + " of " + std::to_string(count_));
     return slots_[static_cast<std::size_t>((first_ + k) % capacity())];
 }
 
-long History::oldestFrame() const { return count_ > 0 ? at(0).frame : -1; }
-long History::newestFrame() const { return count_ > 0 ? at(count_ - 1).frame : -1; }
+const WorldSnapshot& History::snapshotAt(int k) const { return slotAt(k).snapshot; }
 
-const World* History::find(long frame) const {
-    if (count_ == 0 || frame < oldestFrame() || frame > newestFrame()) return nullptr;
+long History::oldestFrame() const { return count_ > 0 ? slotAt(0).snapshot.frame : -1; }
+long History::newestFrame() const { return count_ > 0 ? slotAt(count_ - 1).snapshot.frame : -1; }
+
+int History::slotOf(long frame) const {
+    if (count_ == 0 || frame < oldestFrame() || frame > newestFrame()) return -1;
     // Frames are recorded in order but not always one apart (a session that rewound and resumed
     // records on from its newest frame), so look the frame up rather than compute its slot.
     for (int k = count_ - 1; k >= 0; --k)
-        if (at(k).frame == frame) return &at(k);
-    return nullptr;
+        if (slotAt(k).snapshot.frame == frame) return k;
+    return -1;
 }
 
+// [ch09-history-restore]
+bool History::restore(long frame, World& world) const {
+    const int k = slotOf(frame);
+    if (k < 0) return false;
+    const Slot& slot = slotAt(k);
+    world = *slot.base;   // the structure, with every per-frame vector empty
+    restoreSnapshot(slot.snapshot, world);
+    return true;
+}
+// [ch09-history-restore]
+
+std::optional<World> History::find(long frame) const {
+    World world;
+    if (!restore(frame, world)) return std::nullopt;
+    return world;
+}
+
+World History::at(int k) const {
+    const Slot& slot = slotAt(k);
+    World world = *slot.base;
+    restoreSnapshot(slot.snapshot, world);
+    return world;
+}
+
+std::size_t History::snapshotBytes() const {
+    std::size_t total = 0;
+    for (int k = 0; k < count_; ++k) total += stepwise::snapshotBytes(slotAt(k).snapshot);
+    return total;
+}
+
+namespace {
+
 template <class T>
-static std::size_t vectorBytes(const std::vector<T>& values) {
+std::size_t vectorBytes(const std::vector<T>& values) {
     return values.capacity() * sizeof(T);
+}
+
+}  // namespace
+
+std::size_t History::baseBytes() const {
+    std::size_t total = 0;
+    const World* last = nullptr;
+    for (int k = 0; k < count_; ++k) {
+        const World* base = slotAt(k).base.get();
+        if (base != last) total += worldBytes(*base);   // frames of one base are recorded in a row
+        last = base;
+    }
+    return total;
+}
+
+int History::baseCount() const {
+    int bases = 0;
+    const World* last = nullptr;
+    for (int k = 0; k < count_; ++k) {
+        if (slotAt(k).base.get() != last) ++bases;
+        last = slotAt(k).base.get();
+    }
+    return bases;
+}
+
+std::size_t History::bytes() const { return snapshotBytes() + baseBytes(); }
+
+World structureOf(const World& world) {
+    // Copy what no step changes; leave every per-frame vector empty (a restore fills them).
+    World base;
+    base.name = world.name;
+    base.settings = world.settings;
+    base.bodies = world.bodies;
+    base.motions = world.motions;
+    base.springs = world.springs;
+    base.dampings = world.dampings;
+    base.joints = world.joints;
+    base.kinematicPaths = world.kinematicPaths;
+    base.broadphase.reason = world.broadphase.reason;
+    base.broadphase.reasonSetting = world.broadphase.reasonSetting;
+    base.broadphase.reasonBodyCount = world.broadphase.reasonBodyCount;
+    return base;
 }
 
 std::size_t worldBytes(const World& world) {
@@ -58,12 +142,6 @@ std::size_t worldBytes(const World& world) {
              vectorBytes(broadphase.buffers.pairStarts) + vectorBytes(broadphase.enlargedBounds) +
              vectorBytes(broadphase.enlargedDynamic) + vectorBytes(broadphase.enlargedPairs);
     return bytes;
-}
-
-std::size_t History::bytes() const {
-    std::size_t total = 0;
-    for (int k = 0; k < count_; ++k) total += worldBytes(at(k));
-    return total;
 }
 
 }  // namespace stepwise

@@ -11,9 +11,9 @@
 
 namespace stepwise {
 
-World buildPyramidRow(int count, int rows) {
-    World world = emptyWorld("pyramids-" + std::to_string(count) + "x" + std::to_string(rows));
-    const Real spacing = Real(1.05);
+World buildPyramidRow(int count, int rows, Real spacing) {
+    const std::string touching = spacing == kTouchingSpacing ? "-touching" : "";
+    World world = emptyWorld("pyramids-" + std::to_string(count) + "x" + std::to_string(rows) + touching);
     // The ground reaches 5 m beyond the widest row and the outer pyramids (chapter 4's 40 m square
     // ground is narrower than a 100-row pyramid's 105 m base).
     const Real halfWidth = std::max(Real(20), Real(0.5) * spacing * static_cast<Real>(rows) + 5);
@@ -36,12 +36,12 @@ World buildPyramidRow(int count, int rows) {
 
 namespace {
 
-Shape pileShape(int index, Random& random) {
-    const Real size = random.uniformReal(Real(0.3), Real(0.6));
+Shape pileShape(int index, Random& random, PileSizes sizes) {
+    const Real size = random.uniformReal(sizes.smallest, sizes.largest);
     switch (index % 4) {
         case 0: {  // one draw per statement (z, then y)
-            const Real z = random.uniformReal(Real(0.3), Real(0.6));
-            const Real y = random.uniformReal(Real(0.3), Real(0.6));
+            const Real z = random.uniformReal(sizes.smallest, sizes.largest);
+            const Real y = random.uniformReal(sizes.smallest, sizes.largest);
             return Shape::box(Vec3(size, y, z));
         }
         case 1: return Shape::sphere(size);
@@ -60,8 +60,11 @@ Shape pileShape(int index, Random& random) {
 
 }  // namespace
 
-World buildMixedPile(int count, bool roundShapes) {
-    World world = emptyWorld((roundShapes ? "mixed-pile-" : "angular-pile-") + std::to_string(count));
+World buildMixedPile(int count, bool roundShapes) { return buildMixedPile(count, roundShapes, PileSizes{}); }
+
+World buildMixedPile(int count, bool roundShapes, PileSizes sizes) {
+    const bool unlike = sizes.smallest != PileSizes{}.smallest || sizes.largest != PileSizes{}.largest;
+    World world = emptyWorld((roundShapes ? (unlike ? "unlike-pile-" : "mixed-pile-") : "angular-pile-") + std::to_string(count));
     addGroundPlane(world);
     const int side = 12;  // bodies per row and column of a layer
     const Real spacing = Real(1.5);
@@ -80,7 +83,7 @@ World buildMixedPile(int count, bool roundShapes) {
         const int layer = i / (side * side), cell = i % (side * side);
         BodyDef def;
         def.name = "body" + std::to_string(i);
-        def.shape = pileShape(roundShapes ? i : 2 * (i % 2), random);  // boxes and hulls only: 0 and 2
+        def.shape = pileShape(roundShapes ? i : 2 * (i % 2), random, sizes);  // boxes and hulls only: 0 and 2
         def.transform.position = Vec3(-halfWidth + spacing * (Real(0.5) + static_cast<Real>(cell % side)),
                                       Real(1.5) + spacing * static_cast<Real>(layer),
                                       -halfWidth + spacing * (Real(0.5) + static_cast<Real>(cell / side)));

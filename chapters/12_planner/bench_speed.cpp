@@ -3,6 +3,7 @@
 #include "12_planner/benches.h"
 
 #include "12_planner/chapter.h"
+#include "12_planner/contact_truth.h"
 #include "08_joints/builders.h"
 #include "08_joints/scenes.h"
 #include "10_skip_work/scenes.h"
@@ -60,7 +61,8 @@ struct Measurement {
     long frames = 0;
     Real maxSideways = 0;   // m, largest horizontal move of a dynamic body from its start
     Real lowest = 0;        // m, lowest centre of a dynamic body (below the ground: tunnelled)
-    Real maxPenetration = 0;
+    Real maxPenetration = 0;   // m, deepest contact point from kSettledFrom on
+    Real beyondTrue = -1;      // m, most a contact read deeper than its shapes overlap (contact_truth.h); -1: not checked
     JointErrorSummary jointError;  // largest over the last second (scenes with joints)
     int sleeping = 0;
     FastSolveStats solvePhases;  // ms per timed frame in each phase of the fast solve
@@ -80,8 +82,12 @@ void measurePoses(const World& start, const std::vector<Transform>& poses, Measu
     }
 }
 
+/// Frames after which a scene counts as landed: five seconds.
+constexpr long kSettledFrom = 300;
+
 /// Chapter 10 stepping a copy of `start` one frame at a time (so that the peer's frames can
 /// alternate with its own, runBeside), measuring as it goes.
+
 class EngineRun {
 public:
     EngineRun(const World& start, SpeedOptions options, long frames, long timedFrom)
@@ -99,6 +105,12 @@ public:
             measured_.jointError.position = std::max(measured_.jointError.position, error.position);
             measured_.jointError.angle = std::max(measured_.jointError.angle, error.angle);
         }
+        // The deepest contact from the fifth second on (the last frame of a shorter run): what is
+        // left once a pile has landed.
+        if (frame >= std::min(kSettledFrom, lastFrame_))
+            for (const Contact& contact : world_.contacts)
+                for (int i = 0; i < contact.pointCount; ++i)
+                    measured_.maxPenetration = std::max(measured_.maxPenetration, contact.points[i].depth);
         if (frame < timedFrom_) return;
         stepMs_.push_back(pipeline_.lastStepMs());
         if (!pipeline_.lastStepTimedStages()) return;  // stages are timed one frame in eight
@@ -117,9 +129,6 @@ public:
         std::vector<Transform> poses;
         for (const Body& body : world_.bodies) poses.push_back(body.transform);
         measurePoses(start_, poses, measured_);
-        for (const Contact& contact : world_.contacts)
-            for (int i = 0; i < contact.pointCount; ++i)
-                measured_.maxPenetration = std::max(measured_.maxPenetration, contact.points[i].depth);
         for (const Motion& motion : world_.motions) measured_.sleeping += motion.asleep ? 1 : 0;
         return measured_;
     }
@@ -146,6 +155,22 @@ Measurement runEngine(const World& start, const SpeedOptions& options, long fram
     EngineRun run(start, options, frames, timedFrom);
     for (long frame = 0; frame < frames; ++frame) run.step(frame);
     return run.finish();
+}
+
+/// The fast step again, untimed, with a stage between its contact search and its solve that
+/// compares every manifold's depth with its shapes' true overlap at the poses it was found at
+/// (contact_truth.h): the most any read deeper, m.
+Real depthBeyondTrue(const World& start, const SpeedOptions& options, long frames) {
+    World world = start;
+    Pipeline pipeline = makeChapter12Pipeline(world, options);
+    Real beyond = 0;
+    Stage check;
+    check.name = "check:contact_depths";
+    check.frequency = StageFrequency::FrameStart;
+    check.run = [&beyond](World& checked, Real) { beyond = std::max(beyond, deepestBeyondTrueOverlap(checked)); };
+    pipeline.insertBefore(pipeline.find(stage_group::kPlan) ? stage_group::kPlan : stage_group::kSolve, check);
+    for (long frame = 0; frame < frames; ++frame) pipeline.step(world);
+    return beyond;
 }
 
 /// Frames until every dynamic body of `start` sleeps, stepped by chapter 10 with sleeping on; at
@@ -231,6 +256,7 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
             results[i] = {&configuration, runEngine(scene.world, configuration.options, frames, scene.timedFrom)};
             bench.progress().advance();
         }
+        if (!scene.joints) results.front().second.beyondTrue = depthBeyondTrue(scene.world, list.front().options, scene.frames);
         const FastSolveStats& phases = results.front().second.solvePhases;
         std::vector<std::string> row = {scene.name, std::to_string(phases.manifolds), std::to_string(phases.points)};
         for (double ms : phases.phaseMs) row.push_back(formatNumber(ms));
@@ -251,7 +277,8 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
                           formatNumber(m.lowest), configuration->peer ? "" : formatNumber(m.maxPenetration),
                           scene.joints && !configuration->peer ? formatNumber(m.jointError.position) : "",
                           scene.joints && !configuration->peer ? formatNumber(m.jointError.angle) : "",
-                          peerMs > 0 ? formatNumber(peerMs / m.stepMs.median, 3) : ""});
+                          peerMs > 0 ? formatNumber(peerMs / m.stepMs.median, 3) : "",
+                          m.beyondTrue >= 0 ? formatNumber(m.beyondTrue) : ""});
         }
     }
     bench.progress().endStage();
@@ -354,7 +381,12 @@ void measureSpeed(BenchRun& bench) {
     std::vector<BenchScene> scenes;
     scenes.push_back({"pyramid 100 rows", buildPyramidRow(1, quick ? 30 : 100), quick ? 60 : 600, 0});
     scenes.push_back({"ten 20-row pyramids", buildPyramidRow(quick ? 3 : 10, 20), quick ? 60 : 600, 0});
+    // Boxes that touch their neighbours in a row: twice the contacts, and side contacts that carry no load.
+    scenes.push_back({"touching 100 rows", buildPyramidRow(1, quick ? 25 : 100, kTouchingSpacing), quick ? 60 : 600, 0});
+    scenes.push_back({"ten touching 20-row", buildPyramidRow(quick ? 2 : 10, 20, kTouchingSpacing), quick ? 60 : 600, 0});
     scenes.push_back({"mixed pile", buildMixedPile(quick ? 300 : 2000), quick ? 120 : 600, 0});
+    // One density, sizes 0.15 to 0.6 m: masses up to about 150 to 1 apart, timed from its first frame.
+    scenes.push_back({"unlike pile", buildMixedPile(quick ? 150 : 600, true, kUnlikePileSizes), quick ? 120 : 600, 0});
     // Joints, springs and kinematic bodies: chapter 8's scenes, and a field of ragdolls without
     // joint friction (the peer's cone-twist has none).
     scenes.push_back({"ragdoll pile", buildRagdollPile(10), quick ? 120 : 600, 0, true});
@@ -368,15 +400,26 @@ void measureSpeed(BenchRun& bench) {
     scenes.push_back({"100 ragdolls", buildRagdollField(quick ? 20 : 100, 0), quick ? 120 : 600, 0, true});
     for (BenchScene& scene : scenes) scene.world.settings.sleeping = false;
     // [ch12-bench-scenes]
+    const std::string& only = bench.options().only;
+    if (!only.empty()) {
+        scenes.erase(std::remove_if(scenes.begin(), scenes.end(),
+                                    [&](const BenchScene& scene) { return scene.name.find(only) == std::string::npos; }),
+                     scenes.end());
+        if (scenes.empty()) throw std::runtime_error("bench speed --only \"" + only + "\": no scene's name contains it");
+    }
 
     CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
                     "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
-                    "joint_error_m", "joint_error_rad", "x_faster_than_peer"});
+                    "joint_error_m", "joint_error_rad", "x_faster_than_peer", "depth_beyond_true_m"});
     // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
     CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
                       "relax_ms", "store_ms"});
     const std::vector<Configuration> list = configurations(withPeer);
     measureScenes(bench, scenes, list, withPeer, table, profile);
+    if (!only.empty()) {  // the chosen scenes' two tables; the files stay whole runs' only
+        out << table.toText() << "\n" << profile.toText();
+        return;
+    }
     CsvTable sleepTable({"scene", "bodies", "sleeping", "settle_frames", "bodies_asleep", "ms_median", "fraction_of_awake"});
     measureSleep(bench, sleepTable);
     CsvTable scaling({"rows", "bodies", "configuration", "ms_median", "ms_q1", "ms_q3"});

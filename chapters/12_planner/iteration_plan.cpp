@@ -201,22 +201,30 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     // crosses a contact layer a sweep, and a substep is a sweep however long it is.
     const int scene = std::max(1, settings.solverIterations);
     const TouchSummary touches = summarizeTouches(world, contactOrder);
-    plan.massRatio = touches.massRatio;
+    // The square-root law counts masses where one rests on another (load_paths.h), not wherever
+    // two touch; whether a stack is of like masses (kLikeMassRatio) is still read off every touch.
+    plan.massRatio = loadPathMassRatio(world, contactOrder, touches.massRatio, search.loads);
     plan.stackDepth = supportDepth(world, contactOrder, search);
     plan.plainIterations = scene;
     int iterations = scene;
+    PlanReason reason = touches.bouncy ? PlanReason::Bounce : PlanReason::SceneCount;
     // The laws below hold a substep's length (kMeasuredFrame), and so does their ceiling.
     const Real perMeasuredFrame = dt / kMeasuredFrame;
     const Real mostAtThisDt = Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame);
     const int most = static_cast<int>(std::ceil(mostAtThisDt - Real(1e-3)));
-    if (settings.planIterations && contactOrder.empty())
+    if (settings.planIterations && contactOrder.empty()) {
         iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
-    else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy)
+        reason = PlanReason::NothingTouches;
+    } else if (settings.planIterations && plan.stackDepth <= 1 && !touches.bouncy) {
         iterations = std::min(scene, substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep));
+        reason = touches.sliding ? PlanReason::SlidesOnWorld : PlanReason::RestsOnWorld;
+    }
     if (settings.planIterations && plan.massRatio > kPlainMassRatio) {
         // The square-root law (plan_constants.h, kPlainMassRatio).
         const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio) * perMeasuredFrame;
-        iterations = std::max(iterations, std::min(most, static_cast<int>(std::ceil(wanted - Real(1e-3)))));
+        const int byRatio = std::min(most, static_cast<int>(std::ceil(wanted - Real(1e-3))));
+        if (byRatio > iterations) reason = PlanReason::MassRatio;
+        iterations = std::max(iterations, byRatio);
     }
     plan.shockPropagation = false;
     if (settings.planIterations && plan.stackDepth > 1) {
@@ -237,7 +245,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // the substeps without it.
         const Real heldWalk = kHeldWalkPerBody * static_cast<Real>(plan.stackDepth);
         const Real plainForHeldWalk = plainLaw * std::sqrt(kPlainStackDrift / heldWalk);
-        const bool likeAndQuiet = plan.massRatio <= kLikeMassRatio && !touches.bouncy;
+        const bool likeAndQuiet = touches.massRatio <= kLikeMassRatio && !touches.bouncy;
         // The sweep costs at most every contact a one-lane block: where even that pays, the
         // blocks are not counted (a 40-row pyramid, six substeps against 22).
         const Real mostSweep = kShockBlockSubsteps * kShockLaneBlocks * static_cast<Real>(kPricedLanes);
@@ -255,9 +263,14 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const int stack = std::min(most, std::max({kFewestStackSubsteps, lengths, wanted}));
         // Unlike masses, and a frame in which something arrives bouncing, keep at least the
         // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
-        const bool keepScene = touches.bouncy || plan.massRatio > kLikeMassRatio;
+        const bool keepScene = touches.bouncy || touches.massRatio > kLikeMassRatio;
+        const PlanReason byDepth = sweepSaves ? PlanReason::ShockSweep : PlanReason::LikeStack;
+        if (!keepScene || stack > iterations) reason = byDepth;
+        else if (reason != PlanReason::MassRatio) reason = touches.bouncy ? PlanReason::Bounce : PlanReason::UnlikeStack;
         iterations = keepScene ? std::max(iterations, stack) : stack;
     }
+    if (!settings.planIterations) reason = PlanReason::SceneCount;
+    plan.reason = reason;
     plan.shockFrames += plan.shockPropagation ? 1 : 0;
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);
@@ -292,12 +305,24 @@ int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& c
     // Hanging alone with nothing touching is free flight on a leash: substeps of free flight's
     // length; touching the world as well, those of bodies resting on it.
     const Real longest = contacts.empty() ? kFreeFlightSubstep : touches.sliding ? kSlidingSubstep : kRestingSubstep;
-    const int iterations = plan.stackDepth <= 1 && !touches.bouncy ? std::min(scene, substepsFor(dt, longest)) : scene;
+    const bool onWorldAlone = plan.stackDepth <= 1 && !touches.bouncy;
+    const int iterations = onWorldAlone ? std::min(scene, substepsFor(dt, longest)) : scene;
+    plan.reason = !onWorldAlone || iterations == scene ? PlanReason::SceneCount
+                  : contacts.empty()                   ? PlanReason::NothingTouches
+                  : touches.sliding                    ? PlanReason::SlidesOnWorld
+                                                       : PlanReason::RestsOnWorld;
     plan.iterations = iterations;
     plan.mostIterations = std::max(plan.mostIterations, iterations);
     plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, iterations) : iterations;
     plan.deepestStack = std::max(plan.deepestStack, plan.stackDepth);
     return iterations;
+}
+
+void tallyPlanReason(IterationPlan& plan) {
+    PlanReasonTally& tally = plan.reasons[static_cast<std::size_t>(plan.reason)];
+    tally.fewest = tally.frames > 0 ? std::min(tally.fewest, plan.iterations) : plan.iterations;
+    tally.most = std::max(tally.most, plan.iterations);
+    ++tally.frames;
 }
 
 // [ch12-linked-plan]
@@ -314,6 +339,7 @@ int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>&
     // square (the spring is at most a quarter of the substep rate) and as the chain's depth: the
     // count that holds a chain of that depth to kHeldChainSag.
     int wanted = 1;
+    PlanReason reason = PlanReason::HangingChain;
     static const std::vector<int> noContacts;
     const int hanging = supportDepth(world, noContacts, search, /*withJoints=*/true);
     if (hanging > 0) {
@@ -333,14 +359,20 @@ int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>&
         bodyToBody = bodyToBody || !a->asleep || !b->asleep;
         ratio = std::max(ratio, std::max(a->mass, b->mass) / std::min(a->mass, b->mass));
     }
-    if (ratio > kPlainMassRatio)
-        wanted = std::max(wanted, static_cast<int>(std::ceil(Real(scene) * std::sqrt(ratio / kPlainMassRatio) *
-                                                              perMeasuredFrame - Real(1e-3))));
+    if (ratio > kPlainMassRatio) {
+        const int byRatio = static_cast<int>(std::ceil(Real(scene) * std::sqrt(ratio / kPlainMassRatio) * perMeasuredFrame - Real(1e-3)));
+        if (byRatio > wanted) reason = PlanReason::MassRatio;
+        wanted = std::max(wanted, byRatio);
+    }
     // Bodies joined to bodies pass loads through their joints as a stack does, in the air as on
     // the ground (a ragdoll's limbs swing its trunk): the scene's count.
     const int depth = supportDepth(world, contactOrder, search, /*withJoints=*/true);
-    if (bodyToBody || depth > 1) wanted = std::max(wanted, scene);
+    if ((bodyToBody || depth > 1) && scene > wanted) {
+        wanted = scene;
+        reason = PlanReason::JointedBodies;
+    }
     const int iterations = std::max(contacts, std::min(most, wanted));
+    if (std::min(most, wanted) > contacts) plan.reason = reason;
     plan.massRatio = std::max(plan.massRatio, ratio);
     plan.largestRatio = std::max(plan.largestRatio, plan.massRatio);
     plan.stackDepth = std::max(plan.stackDepth, depth);

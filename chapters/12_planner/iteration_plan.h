@@ -5,11 +5,12 @@
 // heavier (Erleben, "Velocity-based shock propagation for multibody dynamics animation", 2007;
 // Tonge, Benevolenski and Voroshilov, "Mass splitting for jitter-free parallel rigid body
 // simulation", 2012). More substeps are the engine's cure for that, and a scene only pays for
-// them when its touching masses differ widely. A deep stack has the same trouble: when it is
+// them where a heavy body rests on a much lighter one (load_paths.h). A deep stack has the same trouble: when it is
 // loaded (or hit), the load must cross every contact layer before the bottom pushes back
 // enough, and while it crosses, the top rows sway.
 
 #include "12_planner/plan_constants.h"
+#include "12_planner/load_paths.h"
 #include "world/world.h"
 
 #include <vector>
@@ -24,6 +25,7 @@ int substepsFor(Real dt, Real longest);
 struct StackSearch {
     std::vector<int> start, fill, neighbours, depth, queue;
     std::vector<int> downward, layerLanes, layerGroups;  // the shock sweep's cost (shockSweepSubsteps)
+    LoadPathSearch loads;                                // the mass ratio along load paths
 };
 
 /// How many dynamic bodies the deepest stack has between its top and what holds it up (a static
@@ -44,6 +46,10 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
 /// `shockAllowed` false (the speed bench's A/B): the same count, without the sweep.
 int plannedIterations(const World& world, Real dt, const std::vector<int>& contactOrder, IterationPlan& plan,
                       StackSearch& search, bool shockAllowed = true);
+
+/// Counts the rule that decided this frame (plan.reason) in plan.reasons: the run report's
+/// "counts", which say why each count was chosen. The plan stage calls it once a frame.
+void tallyPlanReason(IterationPlan& plan);
 
 /// plannedIterations for a scene with joints, solved in the same substeps as the contacts
 /// (chapter 11's joint pass): the contacts' count, and no fewer than the joints need: as many as

@@ -30,6 +30,7 @@ void planWideSolve(Stage& plan, const std::shared_ptr<PlanScratch>& scratch, boo
             plannedIterations(world, dt, scratch->contacts, frame, scratch->search, shockAllowed);
         else
             plannedLinkedIterations(world, dt, scratch->contacts, frame, scratch->search);
+        tallyPlanReason(frame);
     };
 }
 // [ch12-plan-stage]
@@ -49,6 +50,7 @@ void planJointSolve(Pipeline& pipeline, const std::shared_ptr<PlanScratch>& scra
     plan.name = stageName(stage_group::kPlan, "joint_substeps");
     plan.run = [scratch](World& world, Real dt) {
         plannedJointSolveIterations(world, dt, scratch->contacts, world.step.iterationPlan, scratch->search);
+        tallyPlanReason(world.step.iterationPlan);
     };
     pipeline.insertBefore(stage_group::kSolve, std::move(plan));
     pipeline.setPlanNote(stage_group::kPlan, "chapter 8's rows: substeps by what hangs and rests on the world alone");

@@ -116,6 +116,8 @@ int runCli(int argc, char** argv, const Registry& registry) {
     bench->add_flag("--list", listBenches, "List the suites");
     bench->add_option("--scenes", benchOptions.scenesDir, "bench engine: the reference scenes' folder (default scenes/reference)");
     bench->add_option("--peer", benchOptions.peer, "bench engine: run this peer too (bullet)");
+    bench->add_option("--only", benchOptions.only,
+                      "bench speed: only the scenes whose name contains this text (and none of the other tables)");
     bench->footer(benchFilesHelp(registry.benches()));
 
     for (const CommandEntry& command : registry.commands()) {

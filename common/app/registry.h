@@ -78,6 +78,7 @@ struct BenchOptions {
     std::ostream* out = nullptr;  // the results; standard output when null
     std::string scenesDir;     // `bench engine --scenes DIR`; empty: the suite's own scenes
     std::string peer;          // `bench engine --peer bullet`; empty: no peer run
+    std::string only;          // `bench speed --only pile`: the scenes whose name holds this; empty: all
 };
 
 /// One file a bench writes: the --csv or --plot path itself (suffix ""), or a file next to it

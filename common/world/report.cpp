@@ -115,6 +115,23 @@ double percentile(std::vector<double> values, double p) {
     return values[index];
 }
 
+const char* planReasonText(PlanReason reason) {
+    switch (reason) {
+        case PlanReason::SceneCount: return "the scene's solver_iterations";
+        case PlanReason::NothingTouches: return "nothing touches: substeps of free flight";
+        case PlanReason::RestsOnWorld: return "bodies rest on the world alone";
+        case PlanReason::SlidesOnWorld: return "bodies slide on the world alone";
+        case PlanReason::Bounce: return "something arrives bouncing: the scene's count";
+        case PlanReason::MassRatio: return "a body rests on one over 100 times lighter: the square-root law";
+        case PlanReason::LikeStack: return "a stack of like masses: the depth law";
+        case PlanReason::ShockSweep: return "a stack of like masses: the depth law with a shock sweep";
+        case PlanReason::UnlikeStack: return "a stack of unlike masses: the scene's count";
+        case PlanReason::HangingChain: return "bodies hang by joints: the sag law";
+        case PlanReason::JointedBodies: return "bodies joined to bodies: the scene's count";
+    }
+    return "unknown";
+}
+
 std::string describeIterationPlan(const World& world) {
     const IterationPlan& plan = world.step.iterationPlan;
     if (plan.mostIterations <= 0) return "";
@@ -127,23 +144,24 @@ std::string describeIterationPlan(const World& world) {
                                                          " deep) ended " + std::to_string(plan.shockFrames) + " frame(s)"
                                                    : "";
     if (plan.mostIterations > std::max(1, plan.plainIterations)) {
-        // What asked for more: touching masses over 100 to 1, a stack over 20 bodies deep, or both.
+        // What asked for more: a body resting on one over 100 times lighter (through the bodies
+        // between: chapter 12's load paths), a stack over 20 bodies deep, or both.
         const bool deep = plan.deepestStack > 20;
         const bool heavy = plan.largestRatio > 100 || !deep;
-        std::string why = heavy ? "touching masses up to " + std::string(ratio) + " to 1" : "";
+        std::string why = heavy ? "masses resting on lighter ones up to " + std::string(ratio) + " to 1" : "";
         if (deep) why += std::string(heavy ? " and " : "") + "a stack " + std::to_string(plan.deepestStack) + " bodies deep";
         return "auto: up to " + most + ", for " + why + " (over 100 to 1, or a deep stack, asks for more)" + shock;
     }
-    // Chapter 10's iteration_plan.h: the scene's count where something bounces or touching masses
+    // Chapter 12's iteration_plan.h: the scene's count where something bounces or masses
     // differ, a count by depth for a stack of like masses, substeps of 1/60 or 1/120 s where
     // bodies rest or slide on the world alone or nothing touches.
     const std::string plain = std::to_string(plan.plainIterations);
     const std::string range =
         plan.fewestIterations < plan.mostIterations ? std::to_string(plan.fewestIterations) + " to " + most : most;
     return "auto: " + range + " by what touches (" + plain +
-           " where bodies bounce or touching masses differ, by depth where like masses carry one another, fewer where they "
+           " where bodies bounce or rest on unlike masses, by depth where like masses carry one another, fewer where they "
            "rest on the world alone or nothing touches), "
-           "touching masses at most " + std::string(ratio) + " to 1 (up to 100 to 1 solve at " + plain + ")" + shock;
+           "masses resting on lighter ones at most " + std::string(ratio) + " to 1 (up to 100 to 1 solve at " + plain + ")" + shock;
 }
 
 std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {
@@ -189,6 +207,16 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
     if (world.step.iterationPlan.mostIterations > 0) {
         report["solver_iterations"] = {{"most", world.step.iterationPlan.mostIterations},
                                        {"plan", describeIterationPlan(world)}};
+        Json counts = Json::array();
+        for (int k = 0; k < kPlanReasonCount; ++k) {
+            const PlanReasonTally& tally = world.step.iterationPlan.reasons[static_cast<std::size_t>(k)];
+            if (tally.frames == 0) continue;
+            counts.push_back({{"why", planReasonText(static_cast<PlanReason>(k))},
+                              {"frames", tally.frames},
+                              {"fewest", tally.fewest},
+                              {"most", tally.most}});
+        }
+        if (!counts.empty()) report["solver_iterations"]["counts"] = counts;
     }
     // Extension: how many dynamic bodies sleep at the end, when the pipeline planned sleeping
     // (chapter 10 on, whether the scene turns it on or off).

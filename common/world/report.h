@@ -48,6 +48,9 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
 /// scene's number); empty when no stage planned them (chapters 1 to 9).
 std::string describeIterationPlan(const World& world);
 
+/// The rule behind a frame's substep count, in words (the report's solver_iterations "counts").
+const char* planReasonText(PlanReason reason);
+
 /// Writes the report; throws std::runtime_error naming the path when the file cannot be written.
 void writeReport(const std::string& path, const World& world, const RunStats& stats,
                  const std::string& engineVersion);

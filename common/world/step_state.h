@@ -5,6 +5,7 @@
 
 #include "math/math.h"
 
+#include <array>
 #include <vector>
 
 namespace stepwise {
@@ -46,11 +47,34 @@ struct CcdState {
     long stepsBoundHit = 0;      // substeps in which an event bound was hit
 };
 
-/// What chapter 10's planner for solver_iterations "auto" saw and chose (iteration_plan.h).
+/// The rule that decided a frame's substep count (chapter 12's iteration_plan.h).
+enum class PlanReason {
+    SceneCount,      // the scene's solver_iterations: planning off, or bodies carry one another
+    NothingTouches,  // free flight: substeps of kFreeFlightSubstep
+    RestsOnWorld,    // bodies rest on static or kinematic bodies alone
+    SlidesOnWorld,   // ... and one slides under friction
+    Bounce,          // something arrives bouncing: the scene's count
+    MassRatio,       // a body rests on a much lighter one: the square-root law
+    LikeStack,       // a stack of like masses: the depth law without the sweep
+    ShockSweep,      // a stack of like masses: the depth law with the shock sweep
+    UnlikeStack,     // a stack of unlike masses (within the law's ratio): the scene's count
+    HangingChain,    // bodies hang from the world by joints: the sag law
+    JointedBodies,   // dynamic bodies joined to one another: the scene's count
+};
+constexpr int kPlanReasonCount = static_cast<int>(PlanReason::JointedBodies) + 1;
+
+/// Frames a rule decided, and the counts it chose.
+struct PlanReasonTally {
+    long frames = 0;
+    int fewest = 0;
+    int most = 0;
+};
+
+/// What chapter 12's planner for solver_iterations "auto" saw and chose (iteration_plan.h).
 struct IterationPlan {
     int iterations = 0;       // substeps of this frame's solve (the plan stage writes them before the solve)
     int previousIterations = 0;  // of the frame planned before (0 before the first)
-    Real massRatio = 1;       // heaviest over lightest dynamic body touching another, last frame
+    Real massRatio = 1;       // along load paths: heaviest body resting on a lighter one over it, last frame
     int stackDepth = 0;       // dynamic bodies between the top of the deepest stack and its support, last frame
     int plainIterations = 0;  // where bodies carry one another, at the solve's dt (auto), last frame
     int mostIterations = 0;   // over every frame so far
@@ -59,6 +83,8 @@ struct IterationPlan {
     int deepestStack = 0;     // over every frame so far
     bool shockPropagation = false;  // the last frame ended with a shock sweep (chapter 12)
     int shockFrames = 0;            // frames that did, so far
+    PlanReason reason = PlanReason::SceneCount;  // what decided the last frame's count
+    std::array<PlanReasonTally, kPlanReasonCount> reasons{};  // per rule, over every frame so far
 };
 
 struct StepState {

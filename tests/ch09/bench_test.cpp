@@ -20,9 +20,10 @@ TEST_CASE("bench debug writes its tables and plots: history is cheap, GJK ray ca
     for (const std::vector<std::string>& cells : run.rows) {
         REQUIRE(cells.size() == 7);
         CHECK(std::stod(cells[2]) < std::stod(cells[1]));   // recording a frame costs less than stepping it
-        CHECK(std::stod(cells[4]) > 1000);                  // and holds the world: more than a kilobyte a frame
+        CHECK(std::stod(cells[4]) > 1000);                  // a snapshot: more than a kilobyte a frame, the contacts' most of it
     }
     CHECK(run.printed.find("ray casts") != std::string::npos);
+    CHECK(run.printed.find("snapshot") != std::string::npos);
     // The last GJK row per shape (cap 64) deviates from the closed form by less than a micrometre
     // and calls (almost) every ray as the closed form does.
     int converged = 0;

@@ -41,11 +41,12 @@ TEST_CASE("history: a ring of the last frames, the oldest overwritten", "[ch09][
     CHECK(history.size() == 4);
     CHECK(history.oldestFrame() == 2);
     CHECK(history.newestFrame() == 5);
-    CHECK(history.find(1) == nullptr);
-    REQUIRE(history.find(3) != nullptr);
+    CHECK_FALSE(history.find(1));
+    REQUIRE(history.find(3));
     CHECK(history.find(3)->frame == 3);
     CHECK(history.at(0).frame == 2);
-    CHECK(history.bytes() >= 4 * sizeof(World));
+    CHECK(history.bytes() >= 4 * sizeof(WorldSnapshot));
+    CHECK(history.baseCount() == 1);   // one structure, kept once
     history.clear();
     CHECK(history.empty());
     CHECK(History(0).capacity() == 1);   // a ring of at least one frame, never a division by zero

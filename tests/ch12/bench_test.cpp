@@ -16,10 +16,10 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
     const test::QuickBench run = test::runQuickBench(
         speedBench(), "ch10_bench_test",
         "scene,bodies,configuration,frames,ms_median,ms_q1,ms_q3,broadphase_ms,narrowphase_ms,solve_ms,ns_per_body,"
-        "max_sideways_m,lowest_m,max_penetration_m,joint_error_m,joint_error_rad,x_faster_than_peer");
-    // 3 contact scenes x 6 configurations, 4 joint scenes x 3 (the fast step, its scalar solve,
+        "max_sideways_m,lowest_m,max_penetration_m,joint_error_m,joint_error_rad,x_faster_than_peer,depth_beyond_true_m");
+    // 6 contact scenes x 6 configurations, 4 joint scenes x 3 (the fast step, its scalar solve,
     // chapter 8's solve), no peer here.
-    REQUIRE(run.rows.size() == 30);
+    REQUIRE(run.rows.size() == 48);
     const std::vector<std::string> jointScenes = {"ragdoll pile", "20-link chain", "joints sandbox", "100 ragdolls"};
     std::map<std::string, std::map<std::string, std::vector<std::string>>> rowOf;
     std::map<std::string, std::map<std::string, double>> ms;  // scene -> configuration -> ms per step
@@ -34,15 +34,24 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
         // (the scalar order, bottom row first, drifts most: 2.4 cm in float, 3.4 cm in double).
         // Without the shock sweep, at the substeps the planner takes with it, they sway further.
         const bool swaying = cells[2] == "no shock sweep";
-        const bool pyramid = cells[0] == "pyramid 100 rows" || cells[0] == "ten 20-row pyramids";
+        const bool pyramid = cells[0] == "pyramid 100 rows" || cells[0] == "ten 20-row pyramids" ||
+                             cells[0] == "touching 100 rows" || cells[0] == "ten touching 20-row";
         if (pyramid && !swaying) CHECK(std::stod(cells[11]) < (cells[2] == "fast step" ? 0.01 : 0.05));
     }
-    for (const char* pyramid : {"pyramid 100 rows", "ten 20-row pyramids"}) {
+    for (const char* pyramid : {"pyramid 100 rows", "ten 20-row pyramids", "touching 100 rows", "ten touching 20-row"}) {
         INFO(pyramid);
         CHECK(ms[pyramid]["fast step"] < ms[pyramid]["scalar solve"]);
         CHECK(ms[pyramid]["fast step"] < ms[pyramid]["no contact cache"]);
         CHECK(ms[pyramid]["fast step"] < ms[pyramid]["chapter 8's solve"]);
         CHECK(sideways[pyramid]["fast step"] < sideways[pyramid]["no shock sweep"]);  // the sweep buys accuracy
+    }
+    // The pile of unlike masses keeps its contacts within twice the slop (5 mm) of the surface.
+    CHECK(std::stod(rowOf["unlike pile"]["fast step"][13]) < 0.01);
+    // No contact point reads deeper than its shapes overlap, by more than a millimetre (checked in
+    // every frame between the contact search and the solve).
+    for (const char* scene : {"pyramid 100 rows", "touching 100 rows", "mixed pile", "unlike pile"}) {
+        INFO(scene);
+        CHECK(std::stod(rowOf[scene]["fast step"][17]) < 0.001);
     }
     for (const std::string& scene : jointScenes) {
         INFO(scene);

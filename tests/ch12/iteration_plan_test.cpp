@@ -1,4 +1,4 @@
-// Chapter 10's planner for solver_iterations "auto": more substeps where touching masses differ
+// Chapter 12's planner for solver_iterations "auto": more substeps where unlike masses rest on one another
 // by more than 100 to 1 and for stacks over 20 bodies deep, the scene's ten elsewhere; a change of
 // count carries the same forces over.
 #include "12_planner/chapter.h"
@@ -73,7 +73,7 @@ TEST_CASE("solver_iterations auto: a 1:1000 tower stands, where the scene's ten 
     CHECK(describeIterationPlan(ten).find("the scene's solver_iterations") != std::string::npos);
 }
 
-TEST_CASE("solver_iterations auto keeps ten substeps for touching masses within 100 to 1", "[ch12][solve]") {
+TEST_CASE("solver_iterations auto keeps ten substeps for masses resting on lighter ones within 100 to 1", "[ch12][solve]") {
     // 100 kg on 1 kg stands at ten (chapter 6's heavy-on-light); only beyond that does it cost more.
     World world = tower(R"("auto")", {1, 10, 100, 100});
     const Standing standing = runFiveSeconds(world);

@@ -10,6 +10,7 @@
 // The build runs --check as the ctest reliability.golden_hashes; the target `golden-hashes`
 // runs --write for the build's precision (docs/reliability.md).
 #include "golden_runs.h"
+#include "11_wide_solve/lanes.h"
 #include "world/state_hash.h"
 
 #include "app/runner.h"
@@ -111,7 +112,8 @@ int main(int argc, char** argv) {
         ++failures;
     }
     std::cout << runs.size() << " scenes, " << failures
-              << " differ from " << path << " (" << engineVersion() << ")\n";
+              << " differ from " << path << " (" << engineVersion() << "; the wide solve at " << kWideLanes
+              << " lanes)\n";
     if (failures > 0)
         std::cout << "A change meant to alter results? Rewrite the goldens of both precisions:\n"
                      "  cmake --build build/linux --target golden-hashes\n"

@@ -1,0 +1,26 @@
+// The reported contact depths against the shapes' true overlap (contact_truth.h).
+#include "12_planner/contact_truth.h"
+
+#include "03_epa/narrowphase.h"
+
+#include <algorithm>
+
+namespace stepwise {
+
+Real deepestBeyondTrueOverlap(const World& world) {
+    Real worst = 0;
+    for (const Contact& contact : world.contacts) {
+        if (contact.pointCount == 0) continue;
+        const Body& a = world.bodies[static_cast<std::size_t>(contact.bodyA)];
+        const Body& b = world.bodies[static_cast<std::size_t>(contact.bodyB)];
+        if (!isValidShape(a.shape) || !isValidShape(b.shape)) continue;  // not one convex set
+        Real reported = 0;
+        for (int i = 0; i < contact.pointCount; ++i) reported = std::max(reported, contact.points[i].depth);
+        if (!(reported > 0)) continue;
+        const ContactQuery truth = collideShapes(a.shape, a.transform, b.shape, b.transform);
+        worst = std::max(worst, reported - std::max(Real(0), truth.depth));
+    }
+    return worst;
+}
+
+}  // namespace stepwise
