@@ -12,7 +12,9 @@
 
 using namespace stepwise;
 
-TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyramids stand", "[ch12][bench]") {
+// Tagged without-peer: the `stepwise` program runs this bench beside Bullet, so the docs build runs
+// it itself rather than taking this run's files (tests/CMakeLists.txt: stepwise_discover_tests).
+TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyramids stand", "[ch12][bench][without-peer]") {
     const test::QuickBench run = test::runQuickBench(
         speedBench(), "ch10_bench_test",
         "scene,bodies,configuration,frames,ms_median,ms_q1,ms_q3,broadphase_ms,narrowphase_ms,solve_ms,ns_per_body,"

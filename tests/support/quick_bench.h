@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -44,6 +45,27 @@ inline std::string readWholeFile(const std::string& path) {
     return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
 }
 
+/// With STEPWISE_BENCH_RUNS set (the float build's ctest, docs/CMakeLists.txt), a copy of every
+/// file the run wrote, named as `stepwise bench NAME --quick --csv bench-NAME.csv --plot
+/// bench-NAME.svg` names them, and what it printed as bench-NAME.txt, written last: docs.build
+/// takes them instead of running the same quick bench again.
+inline void keepForDocs(const BenchEntry& entry, const std::filesystem::path& directory, const std::string& stem,
+                        const std::string& printed) {
+    const char* keep = std::getenv("STEPWISE_BENCH_RUNS");
+    if (!keep || !*keep) return;
+    const std::filesystem::path into(keep);
+    std::filesystem::create_directories(into);
+    const std::string name = "bench-" + entry.name;
+    for (const std::filesystem::directory_entry& written : std::filesystem::directory_iterator(directory)) {
+        const std::string file = written.path().filename().string();
+        const bool main = file == stem + ".csv" || file == stem + ".svg";
+        if (main || file.rfind(stem + "-", 0) == 0)
+            std::filesystem::copy_file(written.path(), into / (name + file.substr(stem.size())),
+                                       std::filesystem::copy_options::overwrite_existing);
+    }
+    std::ofstream(into / (name + ".txt")) << printed;
+}
+
 /// Runs `entry` quick, with its CSV and (when it names one) its plot in the temporary directory
 /// under the name `stem`; reads them back and removes every file the entry names. Checks what
 /// every bench promises: exit code 0, every declared file written, and the table's first line
@@ -72,6 +94,7 @@ inline QuickBench runQuickBench(const BenchEntry& entry, const std::string& stem
         run.rows.push_back(splitCells(line));
     }
     if (!options.plotPath.empty()) run.plotText = readWholeFile(options.plotPath);
+    if (run.exitCode == 0) keepForDocs(entry, directory, stem, run.printed);
     for (const BenchFile& file : entry.files) {
         if (file.oneEach) continue;  // removed below, from the list of files written
         const std::string path = pathOf(file);
