@@ -44,6 +44,25 @@ int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal,
     // on an edge touches at the edge's two ends; a speculative corner farther away, kept in place
     // of one end, leaves the body on one point and a gap, and it rocks over the edge for ever.
     const auto touching = [&](int i) { return points[static_cast<std::size_t>(i)].depth >= -kDepthTolerance; };
+    // The candidate not among the first `used` chosen with the best score, replacing the best so
+    // far only when clearly better; from the touching points first, from all when no touching one
+    // scores above `floor`. -1 when none does.
+    const auto pick = [&](int used, const auto& score, Real floor, Real& best) {
+        for (const bool touchingOnly : {true, false}) {
+            int picked = -1;
+            best = 0;
+            for (int i = 0; i < count; ++i) {
+                if (isChosen(i, used) || (touchingOnly && !touching(i))) continue;
+                const Real value = score(i);
+                if (picked < 0 ? value > 0 : clearlyBetter(value, best)) {
+                    picked = i;
+                    best = value;
+                }
+            }
+            if (picked >= 0 && best > floor) return picked;
+        }
+        return -1;
+    };
 
     // 1. The deepest point: it carries the most load and must never be dropped. When several are
     // equally deep (a face resting flat), the one farthest from the patch's centre: a corner of
@@ -73,71 +92,34 @@ int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal,
     if (count == 1) return 1;
 
     // 2. The point farthest from it in the contact plane: the longest lever against tipping.
-    int farthest = -1;
-    Real bestDistance = 0;
-    for (const bool touchingOnly : {true, false}) {
-        for (int i = 0; i < count; ++i) {
-            if (i == deepest || (touchingOnly && !touching(i))) continue;
-            const Real distance = planar(at(i) - at(deepest)).squaredNorm();
-            if (farthest < 0 ? distance > 0 : clearlyBetter(distance, bestDistance)) {
-                farthest = i;
-                bestDistance = distance;
-            }
-        }
-        if (farthest >= 0 && bestDistance > kEpsilon * kEpsilon) break;
-        farthest = -1;
-        bestDistance = 0;
-    }
     // Every point at the same place: one point says it all.
-    const Real scale = std::max(bestDistance, Real(0));
-    if (farthest < 0 || !(scale > kEpsilon * kEpsilon)) return 1;
+    Real scale = 0;
+    const int farthest = pick(1, [&](int i) { return planar(at(i) - at(deepest)).squaredNorm(); }, kEpsilon * kEpsilon, scale);
+    if (farthest < 0) return 1;
     chosen[1] = farthest;
     if (count == 2) return 2;
 
     // 3. The point making the largest triangle with the first two, on either side.
-    int third = -1;
-    Real bestArea = 0, thirdSide = 0;
-    for (const bool touchingOnly : {true, false}) {
-        for (int i = 0; i < count; ++i) {
-            if (isChosen(i, 2) || (touchingOnly && !touching(i))) continue;
-            const Real area = signedArea(at(deepest), at(farthest), at(i), normal);
-            if (third < 0 ? std::abs(area) > 0 : clearlyBetter(std::abs(area), bestArea)) {
-                third = i;
-                bestArea = std::abs(area);
-                thirdSide = area;
-            }
-        }
-        if (third >= 0 && bestArea > Real(1e-6) * scale) break;
-        third = -1;
-        bestArea = thirdSide = 0;
-    }
     // Collinear points: the segment's two ends are the manifold.
-    if (third < 0 || !(bestArea > Real(1e-6) * scale)) return 2;
+    Real bestArea = 0;
+    const int third = pick(2, [&](int i) { return std::abs(signedArea(at(deepest), at(farthest), at(i), normal)); },
+                           Real(1e-6) * scale, bestArea);
+    if (third < 0) return 2;
     chosen[2] = third;
     if (count == 3) return 3;
 
     // 4. The point adding the most area to the triangle: it lies beyond one of its edges.
     // Orient the triangle counter-clockwise about the normal first.
     int a = deepest, b = farthest, c = third;
-    if (thirdSide < 0) std::swap(a, b);
-    int fourth = -1;
+    if (signedArea(at(deepest), at(farthest), at(third), normal) < 0) std::swap(a, b);
+    const auto added = [&](int i) {
+        return std::max(Real(0), -signedArea(at(a), at(b), at(i), normal)) +
+               std::max(Real(0), -signedArea(at(b), at(c), at(i), normal)) +
+               std::max(Real(0), -signedArea(at(c), at(a), at(i), normal));
+    };
     Real bestAdded = 0;
-    for (const bool touchingOnly : {true, false}) {
-        for (int i = 0; i < count; ++i) {
-            if (isChosen(i, 3) || (touchingOnly && !touching(i))) continue;
-            const Real added = std::max(Real(0), -signedArea(at(a), at(b), at(i), normal)) +
-                               std::max(Real(0), -signedArea(at(b), at(c), at(i), normal)) +
-                               std::max(Real(0), -signedArea(at(c), at(a), at(i), normal));
-            if (fourth < 0 ? added > 0 : clearlyBetter(added, bestAdded)) {
-                fourth = i;
-                bestAdded = added;
-            }
-        }
-        if (fourth >= 0 && bestAdded > Real(1e-6) * bestArea) break;
-        fourth = -1;
-        bestAdded = 0;
-    }
-    if (fourth < 0 || !(bestAdded > Real(1e-6) * bestArea)) return 3;
+    const int fourth = pick(3, added, Real(1e-6) * bestArea, bestAdded);
+    if (fourth < 0) return 3;
     chosen[3] = fourth;
     return 4;
 }

@@ -14,7 +14,8 @@ constexpr int kMaxManifoldPoints = 4;
 /// farthest from it, the one making the largest triangle with those two, and the one adding the
 /// most area on the other side (Gregorius, "Robust Contact Creation for Physics Simulations",
 /// GDC 2015; Box3D's convex manifold reduction); the last three from the touching points (depth
-/// >= 0) while those give an answer, then from all. Returns how many were chosen, in that order.
+/// within 0.1 mm of zero or more) while those give an answer, then from all. Returns how many
+/// were chosen, in that order.
 int reduceManifold(const std::vector<ManifoldPoint>& points, const Vec3& normal, int chosen[kMaxManifoldPoints]);
 
 }  // namespace stepwise
