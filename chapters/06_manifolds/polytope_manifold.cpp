@@ -229,6 +229,17 @@ Real deepestCandidate(const ManifoldCandidates& candidates) {
     return deepest;
 }
 
+// [ch06-reads-overlap]
+/// Whether the candidates reach the shapes' overlap: their deepest point reads at most
+/// kFaceTolerance less. Clipping keeps only what lies over the reference face; where the incident
+/// body's deepest corner lies beyond the face's edge, every kept point reads shallower than the
+/// shapes overlap (centimetres, for a hull that turned onto an edge), and the solve would let the
+/// bodies sink by the difference.
+bool readsOverlap(const ManifoldCandidates& candidates, Real overlap) {
+    return deepestCandidate(candidates) >= overlap - kFaceTolerance;
+}
+// [ch06-reads-overlap]
+
 }  // namespace
 
 bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
@@ -249,6 +260,8 @@ bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const
         return referenceIsA ? faceContact(a, ta, faceA, b, tb, true, keepDistance, out)
                             : faceContact(b, tb, faceB, a, ta, false, keepDistance, out);
     };
+    // The best axis bounds the overlap (EPA's depth never exceeds the shapes' own).
+    const Real overlap = -std::max({separationA, separationB, axisSeparation});
     if (preferred != ReferenceSide::None) {
         // A pair that touched face to face last step stays a face contact, on the same reference
         // body, within the larger hysteresis...
@@ -258,15 +271,18 @@ bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const
         // ...while its points read no deeper than the shapes overlap. A held face reads depth along
         // its own normal, up to the hysteresis more than the best axis: a hull that turned, or a box
         // that fell onto another at an angle since last step, would read a centimetre the shapes do
-        // not have, and the solve would push them apart by it. The best axis bounds the overlap.
-        const Real overlap = -std::max({separationA, separationB, axisSeparation});
-        if (deepestCandidate(out) <= overlap + kFaceTolerance) return true;
+        // not have, and the solve would push them apart by it.
+        if (deepestCandidate(out) <= overlap + kFaceTolerance && readsOverlap(out, overlap)) return true;
         out.points.clear();
         out.referenceSide = 0;
     }
     // A's face is the reference unless B's is clearly better: the bias keeps the choice steady
     // when both faces rest flat on each other (Box2D's b2CollidePolygons does the same).
-    return build(kFaceTolerance, separationB <= separationA + kFaceTolerance);
+    if (!build(kFaceTolerance, separationB <= separationA + kFaceTolerance)) return false;
+    if (readsOverlap(out, overlap)) return true;
+    out.points.clear();
+    out.referenceSide = 0;
+    return false;  // chapter 3's single point stands for the pair
 }
 // [ch06-polytope-manifold]
 

@@ -41,11 +41,23 @@ ManifoldPoint roundPoint(const Vec3& coreA, Real radiusA, const Vec3& coreB, Rea
     return point;
 }
 
+// [ch06-round-ends]
+/// Whether a capsule's ends stand for the contact: the deepest reads the shapes' overlap (chapter
+/// 3's depth) within kRoundEndsTolerance. Where the capsule's deepest part lies beyond the face's
+/// edge, or two capsules cross, the ends read shallower than the shapes overlap.
+bool reachesQueryDepth(const ManifoldCandidates& out, const ContactQuery& query) {
+    Real deepest = -kRealMax;
+    for (const ManifoldPoint& point : out.points) deepest = std::max(deepest, point.depth);
+    return deepest >= query.depth - kRoundEndsTolerance;
+}
+// [ch06-round-ends]
+
 // [ch06-capsule-capsule]
 /// Nearly parallel capsules: the two ends of the stretch where their segments overlap, seen along
 /// A's axis. Each end is a cap of A or of B; its feature is that cap against the other's segment.
-bool parallelCapsules(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const Vec3& normal,
+bool parallelCapsules(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const ContactQuery& query,
                       Real keepDistance, ManifoldCandidates& out) {
+    const Vec3& normal = query.normal;
     const Segment segmentA = capsuleSegment(a, ta), segmentB = capsuleSegment(b, tb);
     const Vec3 axisA = segmentA.end - segmentA.start, axisB = segmentB.end - segmentB.start;
     const Real lengthA = axisA.norm(), lengthB = axisB.norm();
@@ -78,7 +90,7 @@ bool parallelCapsules(const Shape& a, const Transform& ta, const Shape& b, const
         const ManifoldPoint point = roundPoint(onA, a.radius, closestOnB, b.radius, normal, features[k]);
         if (-point.depth <= keepDistance) out.points.push_back(point);
     }
-    return !out.points.empty();
+    return !out.points.empty() && reachesQueryDepth(out, query);
 }
 // [ch06-capsule-capsule]
 
@@ -152,7 +164,7 @@ bool capsuleOnFace(const Shape& polytope, const Transform& polytopeTransform, co
                                       : makeFeatureId(capsuleFeatures[k], polytopeFeatures[k]);
         out.points.push_back(point);
     }
-    return !out.points.empty();
+    return !out.points.empty() && reachesQueryDepth(out, query);
 }
 // [ch06-capsule-face]
 
@@ -161,7 +173,7 @@ bool capsuleOnFace(const Shape& polytope, const Transform& polytopeTransform, co
 bool roundManifold(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
                    const ContactQuery& query, Real keepDistance, ManifoldCandidates& out) {
     if (a.type == ShapeType::Capsule && b.type == ShapeType::Capsule &&
-        parallelCapsules(a, ta, b, tb, query.normal, keepDistance, out))
+        parallelCapsules(a, ta, b, tb, query, keepDistance, out))
         return true;
     if (a.type == ShapeType::Capsule && isPolytope(b) && capsuleOnFace(b, tb, a, ta, false, query, keepDistance, out))
         return true;

@@ -29,6 +29,7 @@ bool turnedWithin(const Contact& contact, const Quat& relativeRotation, const Co
     return cosHalfAngle >= math::cos(Real(0.5) * rule.maxRotation);
 }
 
+
 /// The face of a box that a direction (world frame) leaves: its axis in the box's frame, the side
 /// (+1 or -1), and how nearly the direction is the face's normal (1: exactly).
 struct BoxFace {
@@ -58,6 +59,17 @@ bool manifoldStillValid(const Contact& contact, const Transform& transformA, con
     return turnedWithin(contact, inverseA * transformB.rotation, rule);
 }
 // [ch10-cache-rule]
+
+// [ch10-turn-swing]
+Real turnSwing(const Contact& contact, const Body& bodyA, const Body& bodyB) {
+    if (bodyB.shape.type == ShapeType::Sphere) return 0;
+    // A turn by theta moves a point r from the axis 2 r sin(theta / 2), and sin(theta / 2) is the
+    // length of the turn's quaternion's vector part: no arc cosine, whose float argument near 1
+    // would round a turn of a few hundredths of a degree to nothing or to 0.04 degrees.
+    const Quat turn = bodyA.transform.rotation.conjugate() * bodyB.transform.rotation * contact.builtRelativeRotation.conjugate();
+    return 2 * turn.vec().norm() * boundingRadius(bodyB.shape);
+}
+// [ch10-turn-swing]
 
 // [ch10-cache-slide]
 bool faceContactSlides(const Contact& contact, const Body& bodyA, const Body& bodyB, const ContactCacheRule& rule) {
@@ -192,6 +204,7 @@ bool carryRecord(World& world, const BodyPair& pair, Contact& record, const Cont
     const bool still = manifoldStillValid(record, bodyA.transform, bodyB.transform, rule);
     const bool slides = !still && faceContactSlides(record, bodyA, bodyB, rule);
     if (!still && !slides) return false;
+    if (turnSwing(record, bodyA, bodyB) > rule.maxTranslation) return false;
     record.normal = (bodyA.transform.rotation * record.builtLocalNormal).normalized();
     if (slides)
         slideFaceContact(record, bodyA, bodyB);

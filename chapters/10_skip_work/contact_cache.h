@@ -2,7 +2,9 @@
 // Chapter 10's narrowphase: chapter 6's manifolds, built from the shapes only when a pair has
 // moved. A pair whose relative pose changed less than a small tolerance since its manifold was
 // built keeps the manifold: its points ride on their bodies (anchors), the normal turns with body
-// A, and no GJK, EPA or clipping runs (Jolt's body-pair cache: 1 mm and 2 degrees). A pair of two
+// A, and no GJK, EPA or clipping runs (Jolt's body-pair cache: 1 mm and 2 degrees; here B's
+// farthest point, too, may swing no more than the 1 mm, since a corner the manifold does not hold
+// would sink unseen). A pair of two
 // sleeping (or static) bodies keeps its record untouched. A pair without a record is asked for
 // its distance once, and not again while it cannot have closed it (PairGap).
 
@@ -16,7 +18,7 @@ namespace stepwise {
 /// How far a pair may move relative to itself before its manifold is built again.
 struct ContactCacheRule {
     bool enabled = true;
-    Real maxTranslation = Real(0.001);  // m, of B in A's frame
+    Real maxTranslation = Real(0.001);  // m, of B in A's frame; also the most B's farthest point may swing
     Real maxRotation = 2 * kDegree;     // rad, of B relative to A
 };
 
@@ -46,6 +48,13 @@ struct ContactCacheScratch {
 /// Whether B's pose in A's frame is within the rule of the pose the manifold was built at.
 bool manifoldStillValid(const Contact& contact, const Transform& transformA, const Transform& transformB,
                         const ContactCacheRule& rule);
+
+/// How far B's turn relative to A since the record was built has moved B's farthest point in A's
+/// frame, m: the chord of the turn at B's bounding radius (zero for a sphere, which turning about
+/// its centre leaves the same). A corner that is not among the record's points moves that much towards
+/// A unseen: two degrees would let a unit box's far corner sink 3 cm into its neighbour. A record
+/// is carried only while this is within the rule's translation.
+Real turnSwing(const Contact& contact, const Body& bodyA, const Body& bodyB);
 
 /// Whether a face contact of two boxes may be carried although its boxes slid apart along the
 /// face: turned no more than the rule allows, moved no more than its translation along the normal,

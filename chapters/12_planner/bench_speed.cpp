@@ -63,6 +63,7 @@ struct Measurement {
     Real lowest = 0;        // m, lowest centre of a dynamic body (below the ground: tunnelled)
     Real maxPenetration = 0;   // m, deepest contact point from kSettledFrom on
     Real beyondTrue = -1;      // m, most a contact read deeper than its shapes overlap (contact_truth.h); -1: not checked
+    Real shortOfTrue = -1;     // m, most a pair's shapes overlapped beyond its contact's deepest point; -1: not checked
     JointErrorSummary jointError;  // largest over the last second (scenes with joints)
     int sleeping = 0;
     FastSolveStats solvePhases;  // ms per timed frame in each phase of the fast solve
@@ -159,18 +160,22 @@ Measurement runEngine(const World& start, const SpeedOptions& options, long fram
 
 /// The fast step again, untimed, with a stage between its contact search and its solve that
 /// compares every manifold's depth with its shapes' true overlap at the poses it was found at
-/// (contact_truth.h): the most any read deeper, m.
-Real depthBeyondTrue(const World& start, const SpeedOptions& options, long frames) {
+/// (contact_truth.h): the most any read deeper, and the most any pair overlapped unseen, m.
+ContactDepthErrors depthAgainstTrue(const World& start, const SpeedOptions& options, long frames) {
     World world = start;
     Pipeline pipeline = makeChapter12Pipeline(world, options);
-    Real beyond = 0;
+    ContactDepthErrors worst;
     Stage check;
     check.name = "check:contact_depths";
     check.frequency = StageFrequency::FrameStart;
-    check.run = [&beyond](World& checked, Real) { beyond = std::max(beyond, deepestBeyondTrueOverlap(checked)); };
+    check.run = [&worst](World& checked, Real) {
+        const ContactDepthErrors errors = contactDepthErrors(checked);
+        worst.deeper = std::max(worst.deeper, errors.deeper);
+        worst.shallower = std::max(worst.shallower, errors.shallower);
+    };
     pipeline.insertBefore(pipeline.find(stage_group::kPlan) ? stage_group::kPlan : stage_group::kSolve, check);
     for (long frame = 0; frame < frames; ++frame) pipeline.step(world);
-    return beyond;
+    return worst;
 }
 
 /// Frames until every dynamic body of `start` sleeps, stepped by chapter 10 with sleeping on; at
@@ -256,7 +261,11 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
             results[i] = {&configuration, runEngine(scene.world, configuration.options, frames, scene.timedFrom)};
             bench.progress().advance();
         }
-        if (!scene.joints) results.front().second.beyondTrue = depthBeyondTrue(scene.world, list.front().options, scene.frames);
+        if (!scene.joints) {
+            const ContactDepthErrors errors = depthAgainstTrue(scene.world, list.front().options, scene.frames);
+            results.front().second.beyondTrue = errors.deeper;
+            results.front().second.shortOfTrue = errors.shallower;
+        }
         const FastSolveStats& phases = results.front().second.solvePhases;
         std::vector<std::string> row = {scene.name, std::to_string(phases.manifolds), std::to_string(phases.points)};
         for (double ms : phases.phaseMs) row.push_back(formatNumber(ms));
@@ -278,7 +287,8 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
                           scene.joints && !configuration->peer ? formatNumber(m.jointError.position) : "",
                           scene.joints && !configuration->peer ? formatNumber(m.jointError.angle) : "",
                           peerMs > 0 ? formatNumber(peerMs / m.stepMs.median, 3) : "",
-                          m.beyondTrue >= 0 ? formatNumber(m.beyondTrue) : ""});
+                          m.beyondTrue >= 0 ? formatNumber(m.beyondTrue) : "",
+                          m.shortOfTrue >= 0 ? formatNumber(m.shortOfTrue) : ""});
         }
     }
     bench.progress().endStage();
@@ -410,7 +420,8 @@ void measureSpeed(BenchRun& bench) {
 
     CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
                     "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
-                    "joint_error_m", "joint_error_rad", "x_faster_than_peer", "depth_beyond_true_m"});
+                    "joint_error_m", "joint_error_rad", "x_faster_than_peer", "depth_beyond_true_m",
+                    "overlap_unseen_m"});
     // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
     CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
                       "relax_ms", "store_ms"});

@@ -7,20 +7,21 @@
 
 namespace stepwise {
 
-Real deepestBeyondTrueOverlap(const World& world) {
-    Real worst = 0;
+ContactDepthErrors contactDepthErrors(const World& world) {
+    ContactDepthErrors errors;
     for (const Contact& contact : world.contacts) {
         if (contact.pointCount == 0) continue;
         const Body& a = world.bodies[static_cast<std::size_t>(contact.bodyA)];
         const Body& b = world.bodies[static_cast<std::size_t>(contact.bodyB)];
         if (!isValidShape(a.shape) || !isValidShape(b.shape)) continue;  // not one convex set
-        Real reported = 0;
+        Real reported = -kRealMax;
         for (int i = 0; i < contact.pointCount; ++i) reported = std::max(reported, contact.points[i].depth);
-        if (!(reported > 0)) continue;
         const ContactQuery truth = collideShapes(a.shape, a.transform, b.shape, b.transform);
-        worst = std::max(worst, reported - std::max(Real(0), truth.depth));
+        const Real overlap = std::max(Real(0), truth.depth);
+        if (reported > 0) errors.deeper = std::max(errors.deeper, reported - overlap);
+        if (overlap > 0) errors.shallower = std::max(errors.shallower, overlap - reported);
     }
-    return worst;
+    return errors;
 }
 
 }  // namespace stepwise

@@ -194,7 +194,8 @@ void collectDrifts(const World& world, std::vector<Drift>& drifts) {
         drift.metres = double(moved.norm());
         drift.degrees = 2 * std::atan2(double(turn.vec().norm()), std::abs(double(turn.w()))) * 180 / 3.141592653589793;
         if (drift.metres == 0 && drift.degrees == 0) continue;  // built this frame
-        drift.outcome = manifoldStillValid(contact, a.transform, b.transform, rule) ? CacheOutcome::Carried
+        drift.outcome = turnSwing(contact, a, b) > rule.maxTranslation                ? CacheOutcome::Rebuilt
+                        : manifoldStillValid(contact, a.transform, b.transform, rule) ? CacheOutcome::Carried
                         : faceContactSlides(contact, a, b, rule)                    ? CacheOutcome::Slid
                                                                                     : CacheOutcome::Rebuilt;
         drifts.push_back(drift);
@@ -240,7 +241,8 @@ bool drawCacheRule(const std::string& path) {
         return at(std::clamp(std::log10(std::max(metres, 1e-30)), xMin, xMax),
                   std::clamp(std::log10(std::max(degrees, 1e-30)), yMin, yMax));
     };
-    const double limitY = std::log10(2.0);
+    // The turn that swings a unit box's corner (0.87 m from its centre) the rule's 1 mm.
+    const double limitY = std::log10(2 * std::asin(0.001 / (2 * std::sqrt(0.75))) * 180 / 3.141592653589793);
     svg.polygon(view, {at(xMin, yMin), at(-3, yMin), at(-3, limitY), at(xMin, limitY)}, "fill:#2ca02c;fill-opacity:0.12");
     svg.polyline(view, {at(-3, yMin), at(-3, limitY), at(xMin, limitY)}, "stroke:#2ca02c;stroke-width:2");
     svg.polygon(view, {at(xMin, yMin), at(xMax, yMin), at(xMax, yMax), at(xMin, yMax)}, "fill:none;stroke:#333");
@@ -255,7 +257,7 @@ bool drawCacheRule(const std::string& path) {
     }
     svg.text(view, at(-6.8, yMin - 1.0), "how far B moved in A's frame since the build (m)", "fill:#333");
     svg.text(view, at(xMin + 0.1, yMax - 0.4), "how far B turned relative to A (degrees)", "fill:#333");
-    svg.text(view, at(xMin + 0.2, limitY + 0.2), "1 mm, 2 degrees: carried", "fill:#2ca02c");
+    svg.text(view, at(xMin + 0.2, limitY + 0.2), "1 mm, and a unit box's corner swung 1 mm: carried", "fill:#2ca02c");
     svg.text(view, at(xMin + 0.1, yMin + 0.15), "(no turn at all: on the bottom line)", "fill:#333;font-size:12px");
     const char* const colours[] = {"#2ca02c", "#1f77b4", "#d62728"};
     int counts[3] = {0, 0, 0};

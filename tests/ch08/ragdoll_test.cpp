@@ -42,13 +42,16 @@ TEST_CASE("ten ragdolls dropped in a pile come to rest with every joint holding"
     bool finite = true;
     const int frames = 480;
     JointErrorSummary settled;
+    double kineticLastSecond = 0;
     for (int frame = 0; frame < frames; ++frame) {
         pipeline.step(world);
-        highest = std::max(highest, computeEnergy(world).total());
+        const Energy energy = computeEnergy(world);
+        highest = std::max(highest, energy.total());
         if (frame >= frames - 60) {
             const JointErrorSummary error = largestJointError(world, joints);
             settled.position = std::max(settled.position, error.position);
             settled.angle = std::max(settled.angle, error.angle);
+            kineticLastSecond = std::max(kineticLastSecond, energy.kinetic);
         }
     }
     for (const Body& body : world.bodies) finite = finite && body.transform.position.allFinite();
@@ -67,7 +70,12 @@ TEST_CASE("ten ragdolls dropped in a pile come to rest with every joint holding"
                           << settled.position * 1000 << " mm, " << settled.angle * 180 / kPi << " deg");
     REQUIRE(finite);
     CHECK(highest <= initial + 1e-3 * std::abs(initial));
-    CHECK(final.kinetic < 0.01);  // at rest: a hundredth of a joule among 700 kg of bodies
-    CHECK(fastest < Real(0.01));
+    // At rest: under a hundredth of a joule among 700 kg of bodies through the whole last second.
+    // A limb may still creep: a forearm balanced on its rounded end rolls on it a centimetre or two
+    // a second, and a pile of ragdolls goes on slumping now and then for a while (with any of 8 to
+    // 13 ragdolls some body moves faster than 1 cm/s after 15 s).
+    CHECK(kineticLastSecond < 0.01);
+    CHECK(final.kinetic < 0.01);
+    CHECK(fastest < Real(0.02));
     CHECK(settled.position < Real(0.01));
 }

@@ -84,3 +84,33 @@ TEST_CASE("a face contact slides only while its corners stay inside the face it 
         CHECK((carried.points[i].pointA - carried.points[i].pointB - carried.points[i].depth * carried.normal).norm() < Real(1e-5));
     }
 }
+
+TEST_CASE("a record is built again once a corner it may not hold can have swung 1 mm", "[ch10][cache]") {
+    // The rule's 2 degrees are Jolt's; a unit box turned 2 degrees swings its far corner 3 cm, and
+    // a corner that is not among the record's points (a box tipping over an edge, a hull's fifth
+    // corner) would sink that far unseen. B's turn times its bounding radius is held to the 1 mm.
+    World world = loadSceneFromString(R"({
+      "format": "stepwise-scene", "version": 1, "name": "slab",
+      "bodies": [
+        {"name": "slab", "type": "static", "shape": {"box": {"half_extents": [2, 0.5, 2]}}, "position": [0, -0.5, 0]},
+        {"name": "box", "shape": {"box": {"half_extents": [0.5, 0.5, 0.5]}}, "position": [0, 0.5, 0], "mass": 1}
+      ]})");
+    Pipeline pipeline = makeChapter10Pipeline(world, SkipWorkOptions{});
+    pipeline.step(world);
+    REQUIRE(world.contacts.size() == 1);
+    const World settled = world;
+    const ContactCacheRule rule;
+    const auto searchTurned = [&](Real degrees) {
+        World turned = settled;
+        Transform& pose = turned.bodies[1].transform;
+        pose.rotation = Quat(Eigen::AngleAxis<Real>(degrees * kDegree, Vec3::UnitZ())) * pose.rotation;
+        ContactCacheScratch scratch;
+        return updateManifoldsCached(turned, 1, ManifoldOptions{}, rule, scratch);
+    };
+    const ContactCacheStats slight = searchTurned(Real(0.03));  // the far corner swings 0.45 mm
+    CHECK(slight.reused == 1);
+    CHECK(slight.rebuilt == 0);
+    const ContactCacheStats tipped = searchTurned(Real(0.3));  // 4.5 mm, well within 2 degrees
+    CHECK(tipped.reused == 0);
+    CHECK(tipped.rebuilt == 1);
+}

@@ -11,6 +11,8 @@
 #include "02_gjk/support.h"
 #include "05_sap/stress_scene.h"
 #include "12_planner/chapter.h"
+#include "12_planner/contact_truth.h"
+#include "10_skip_work/scenes.h"
 
 #include <catch2/catch.hpp>
 
@@ -72,4 +74,34 @@ TEST_CASE("no contact of a pile of mixed shapes reads deeper than its shapes ove
     INFO(worst);
     CHECK(worstAlongNormal < Real(0.001));
     CHECK(worstExcess < Real(0.001));
+}
+
+TEST_CASE("no pair of a pile overlaps more than 1 mm beyond its contact's deepest point", "[ch12][cache]") {
+    // The other side of the rule above: a contact that reads shallower than its shapes overlap lets
+    // them sink by the difference, and max_penetration, which reads the contacts, never sees it.
+    // A capsule clipped against a face whose edge it overhangs read 3 cm apart 5 cm into a box; a
+    // held face whose clip cut off the deepest corner read a hull 2 cm short; a box record carried
+    // through a 1.5 degree turn missed the far corner sinking 1.6 cm. Two piles of two layers,
+    // checked at the contact search of every frame while they land and settle.
+    for (const bool unlike : {false, true}) {
+        World world = unlike ? buildMixedPile(300, true, kUnlikePileSizes) : buildMixedPile(300);
+        world.settings.sleeping = false;
+        SpeedOptions options;
+        options.sleeping = false;
+        Pipeline pipeline = makeChapter12Pipeline(world, options);
+        ContactDepthErrors worst;
+        Stage check;
+        check.name = "check:overlap_unseen";
+        check.frequency = StageFrequency::FrameStart;
+        check.run = [&worst](World& checked, Real) {
+            const ContactDepthErrors errors = contactDepthErrors(checked);
+            worst.deeper = std::max(worst.deeper, errors.deeper);
+            worst.shallower = std::max(worst.shallower, errors.shallower);
+        };
+        pipeline.insertBefore(stage_group::kPlan, check);
+        for (int frame = 0; frame < 240; ++frame) pipeline.step(world);
+        INFO(world.name << ": deepest beyond the overlap " << worst.deeper << " m, overlap unseen " << worst.shallower << " m");
+        CHECK(worst.shallower < Real(0.001));
+        CHECK(worst.deeper < Real(0.001));
+    }
 }
