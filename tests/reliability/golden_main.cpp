@@ -5,7 +5,8 @@
 //                                                  difference (a known gap, docs/reliability.md)
 //   --max-bodies N (with --check)                  skip the scenes of more than N bodies
 //   --from-chapter C (with --check)                skip the built-in scenes of chapters before C
-//   --shard K/N (with --check)                     only every Nth scene from the Kth (0-based): N
+//   --shard K/N (with --check)                     only the Kth (0-based) of N shards, balanced by
+//                                                  each scene's cost (golden_shards.cpp): N
 //                                                  processes check the table in parallel
 // The build runs --check as the ctest reliability.golden_hashes; the target `golden-hashes`
 // runs --write for the build's precision (docs/reliability.md).

@@ -15,21 +15,26 @@ std::uint64_t finalHash(const Registry& registry, World world, long frames, int 
 }
 
 std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder, const GoldenSelection& selection) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& item : std::filesystem::directory_iterator(sceneFolder))
+        if (item.path().extension() == ".json") files.push_back(item.path());
+    std::sort(files.begin(), files.end());
+    // The shards are dealt from the names alone, before any run, so every process agrees.
+    std::vector<std::string> names;
+    for (const SceneEntry& entry : registry.scenes()) names.push_back(entry.name);
+    for (const auto& file : files) names.push_back("scenes/" + file.filename().string());
+    const std::vector<int> shardOf = goldenShards(names, selection.shards);
+
     std::vector<GoldenRun> runs;
     const auto run = [&](const std::string& name, World world, int chapter) {
-        const bool inShard = static_cast<int>(runs.size() % std::size_t(selection.shards)) == selection.shard;
+        const bool inShard = shardOf[runs.size()] == selection.shard;
         if (!inShard) runs.push_back({name, 0, "in another shard"});
         else if (chapter < selection.fromChapter) runs.push_back({name, 0, "a chapter before " + std::to_string(selection.fromChapter)});
         else if (world.bodies.size() > selection.maxBodies) runs.push_back({name, 0, "more than " + std::to_string(selection.maxBodies) + " bodies"});
         else runs.push_back({name, finalHash(registry, std::move(world), kGoldenFrames, chapter), ""});
     };
     for (const SceneEntry& entry : registry.scenes()) run(entry.name, entry.build(), entry.chapter);
-    std::vector<std::filesystem::path> files;
-    for (const auto& item : std::filesystem::directory_iterator(sceneFolder))
-        if (item.path().extension() == ".json") files.push_back(item.path());
-    std::sort(files.begin(), files.end());
-    for (const auto& file : files)
-        run("scenes/" + file.filename().string(), loadSceneFile(file.string()), 99);
+    for (const auto& file : files) run("scenes/" + file.filename().string(), loadSceneFile(file.string()), 99);
     return runs;
 }
 

@@ -23,12 +23,21 @@ struct GoldenRun {
 struct GoldenSelection {
     std::size_t maxBodies = std::size_t(-1);  // more bodies: skipped
     int fromChapter = 0;                      // built-in scenes of earlier chapters: skipped
-    int shard = 0, shards = 1;                // only scenes whose index % shards == shard
+    int shard = 0, shards = 1;                // only the scenes goldenShards gives to `shard`
 };
 
 /// The built-in scenes in registry order, then the scene files of `sceneFolder` by name.
 std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::string& sceneFolder,
                                        const GoldenSelection& selection = {});
+
+/// Which of `shards` shards runs each scene (by index in `scenes`): balanced by each scene's
+/// measured cost under the sanitizers, longest first into the least loaded shard, so no shard
+/// waits on a pile of slow scenes that round-robin dealing would give it. Deterministic.
+std::vector<int> goldenShards(const std::vector<std::string>& scenes, int shards);
+
+/// Seconds a scene's golden run took in the sanitizer build (golden_shards.cpp's table);
+/// a scene missing from the table counts as a middling one.
+double goldenSceneSeconds(const std::string& scene);
 
 /// Runs one scene for `frames` frames through the pipeline of the latest chapter up to
 /// `maxChapter` and returns its final state hash.
