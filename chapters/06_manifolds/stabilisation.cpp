@@ -114,18 +114,18 @@ std::vector<Softness> softenContactRows(const World& world, ContactRows& contact
     return softness;
 }
 
-// Relax's Baumgarte rows push a deep point out at baumgarte * depth / h, and h is a substep:
-// a body that arrives 7 cm deep (tunnelled) would be pushed at 10 m/s. The relax iteration takes
-// the push-out speed out of the contact points' normal velocities, but with friction and offset
+// Relax's Baumgarte rows push a deep point out at feedback * depth / h: a body that arrives
+// 7 cm deep (tunnelled) would be pushed at metres per second. The relax iteration takes the
+// push-out speed out of the contact points' normal velocities, but with friction and offset
 // points part of it stays behind as spin. Capped at soft step's (Box2D v3's) push-out speed, the
 // energy it can leave is bounded. Restitution's target (the reversed approach speed) is kept.
-void capPushOutSpeed(const World& world, ContactRows& contactRows, Real dt) {
+void capPushOutSpeed(const World& world, ContactRows& contactRows, Real dt, Real feedback) {
     if (!(dt > 0)) return;
     for (const ContactRowRef& ref : contactRows.points) {
         const Real depth = pointOf(world, ref).depth;
         if (depth <= world.settings.slop) continue;
         ConstraintRow& row = contactRows.rows[static_cast<std::size_t>(ref.normalRow)];
-        const Real pushOut = world.settings.baumgarte * (depth - world.settings.slop) / dt;
+        const Real pushOut = feedback * (depth - world.settings.slop) / dt;
         const Real most = world.settings.maxPushOutSpeed;
         if (row.bias > most && row.bias <= pushOut) row.bias = most;
     }
@@ -206,16 +206,17 @@ void recordResidual(World& world, const ContactRows& contactRows, const std::vec
 
 }  // namespace
 
-SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstraints* extra) {
+SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstraints* extra, Real frame) {
     const Settings& settings = world.settings;
     SolverStats stats;
     for (const Contact& contact : world.contacts) stats.contactPoints += contact.pointCount;
     std::vector<SolverBody> bodies = gatherSolverBodies(world);
     // Only Baumgarte and relax feed the penetration back through the velocity rows.
-    const bool velocityBias =
-        settings.stabilisation == Stabilisation::Baumgarte || settings.stabilisation == Stabilisation::Relax;
-    ContactRows contactRows = buildContactRows(world, bodies, dt, velocityBias ? settings.baumgarte : Real(0));
-    if (settings.stabilisation == Stabilisation::Relax) capPushOutSpeed(world, contactRows, dt);
+    const bool relax = settings.stabilisation == Stabilisation::Relax;
+    const bool velocityBias = settings.stabilisation == Stabilisation::Baumgarte || relax;
+    const Real feedback = relax ? relaxFeedback(settings, dt, frame) : settings.baumgarte;
+    ContactRows contactRows = buildContactRows(world, bodies, dt, velocityBias ? feedback : Real(0));
+    if (relax) capPushOutSpeed(world, contactRows, dt, feedback);
     if (extra) extra->prepare(world, bodies, dt, /*positionFeedback=*/true);
     if (settings.warmStarting) {
         if (extra) extra->warmStart(bodies);
@@ -235,6 +236,12 @@ SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstrai
     return world.step.solver;
 }
 // [ch06-solve]
+
+// [ch06-relax-feedback]
+Real relaxFeedback(const Settings& settings, Real h, Real frame) {
+    return frame > h ? settings.baumgarte * (h / frame) : settings.baumgarte;
+}
+// [ch06-relax-feedback]
 
 // [ch06-relax]
 void relaxContacts(World& world, Real dt, int iterations, ExtraConstraints* extra) {
@@ -281,7 +288,7 @@ void substeppedSolve(World& world, Real dt, ExtraConstraints* extra) {
         applyForces(world);
         integrateVelocities(world, h);
         followContactAnchors(world);  // where the points are now (a no-op right after the search)
-        solveStabilised(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra);
+        solveStabilised(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra, dt);
         integratePositions(world, h);
         relaxContacts(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra);
     }

@@ -298,7 +298,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         moveFreeBodies(world, h, substeps);
         return finishFrame(world, solverStats);
     }
-    ContactSolveParams params = solveParams(world.settings, h);
+    ContactSolveParams params = solveParams(world.settings, h, dt);
     // Carried impulses were a substep's of the last plan: scaled to this frame's substep.
     if (plan.previousIterations > 0 && plan.previousIterations != substeps)
         params.carryScale = static_cast<Real>(plan.previousIterations) / static_cast<Real>(substeps);

@@ -12,8 +12,9 @@ namespace stepwise {
 /// Slot 0 for everything that does not move, then one slot per kinematic body and one per awake
 /// dynamic body, each in motion order.
 void prepareBodies(const World& world, SolverBodies& bodies);
-/// The rows' feedback and softness for substeps of h (chapter 6's relax or soft step).
-ContactSolveParams solveParams(const Settings& settings, Real h);
+/// The rows' feedback and softness for substeps of h of a frame of `frame` seconds (chapter 6's
+/// relax or soft step).
+ContactSolveParams solveParams(const Settings& settings, Real h, Real frame);
 /// Chapter 1's velocity step for the dynamic bodies (gravity; the user's force in the first
 /// substep). With `forces` (per motion: chapter 1's evaluateForces at this substep's state, which
 /// a scene with springs or drag needs), their force and torque instead of gravity alone.

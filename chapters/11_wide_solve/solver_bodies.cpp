@@ -64,7 +64,7 @@ void prepareBodies(const World& world, SolverBodies& bodies) {
 }
 // [ch11-prepare-bodies]
 
-ContactSolveParams solveParams(const Settings& settings, Real h) {
+ContactSolveParams solveParams(const Settings& settings, Real h, Real frame) {
     ContactSolveParams params;
     params.substep = h;
     params.slop = settings.slop;
@@ -82,8 +82,8 @@ ContactSolveParams solveParams(const Settings& settings, Real h) {
         params.staticBiasRate = staticSoft.biasRate;
         params.staticMassScale = staticSoft.massScale;
         params.staticImpulseScale = staticSoft.impulseScale;
-    } else {  // relax: Baumgarte's fraction per substep, rigid rows
-        params.dynamicBiasRate = params.staticBiasRate = settings.baumgarte / h;
+    } else {  // relax: rigid rows, Baumgarte's fraction per frame (chapter 6's relaxFeedback)
+        params.dynamicBiasRate = params.staticBiasRate = relaxFeedback(settings, h, frame) / h;
     }
     return params;
 }

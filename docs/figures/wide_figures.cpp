@@ -161,7 +161,7 @@ bool lanesFigure(const std::string& path) {
     ContactSolverScratch scratch;
     gatherForSolve(world, scratch);
     const Real h = Real(1.0 / 60) / static_cast<Real>(std::max(1, world.settings.solverIterations));
-    buildWideBlocks(world, scratch, solveParams(world.settings, h));
+    buildWideBlocks(world, scratch, solveParams(world.settings, h, Real(1.0 / 60)));
     std::vector<int> colourOfContact(world.contacts.size(), -1);
     for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i)
         colourOfContact[static_cast<std::size_t>(scratch.contactOrder[i])] = scratch.colours[i];

@@ -68,7 +68,7 @@ TEST_CASE("solver_iterations auto: a 1:1000 tower stands, where the scene's ten 
     World ten = tower("10");
     const Standing fell = runFiveSeconds(ten);
     INFO("10: drift " << fell.drift << " m, sag " << fell.sag << " m");
-    CHECK(fell.sag > Real(1));  // the light boxes are crushed and the tower comes down
+    CHECK((fell.sag > Real(1) || fell.drift > Real(1)));  // it does not stand: crushed, or walked a metre off its base
     CHECK(ten.step.iterationPlan.mostIterations == 10);
     CHECK(describeIterationPlan(ten).find("the scene's solver_iterations") != std::string::npos);
 }

@@ -182,10 +182,14 @@ void galleryContactsAreFinite(const PipelineMaker& makePipeline) {
                 if (depth < 0) CHECK(-depth <= reach + w.settings.slop);
             }
             // Chapter 3's claim, for a pair the narrowphase found overlapping: its contact
-            // touches (its deepest point has depth >= 0).
+            // touches (its deepest point has depth >= 0, to float round-off: a face contact
+            // reads its depths again from clipped points, a few tenths of a micrometre off for
+            // boxes that just touch).
             const bool overlapping =
                 std::find(w.pairs.begin(), w.pairs.end(), BodyPair{contact.bodyA, contact.bodyB}) != w.pairs.end();
-            if (overlapping && contact.pointCount > 0) CHECK(deepest >= 0);
+            INFO("t " << w.time << " pair " << w.bodies[std::size_t(contact.bodyA)].name << " - "
+                      << w.bodies[std::size_t(contact.bodyB)].name << " deepest " << deepest);
+            if (overlapping && contact.pointCount > 0) CHECK(deepest >= Real(-1e-6));
         }
     };
     test::simulate(world, pipeline, 3.0);
