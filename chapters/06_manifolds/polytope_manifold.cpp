@@ -230,13 +230,17 @@ Real deepestCandidate(const ManifoldCandidates& candidates) {
 }
 
 // [ch06-reads-overlap]
-/// Whether the candidates reach the shapes' overlap: their deepest point reads at most
-/// kFaceTolerance less. Clipping keeps only what lies over the reference face; where the incident
+/// Whether the candidates read the shapes' overlap: their deepest point within kFaceTolerance of
+/// it, either way. Clipping keeps only what lies over the reference face; where the incident
 /// body's deepest corner lies beyond the face's edge, every kept point reads shallower than the
 /// shapes overlap (centimetres, for a hull that turned onto an edge), and the solve would let the
-/// bodies sink by the difference.
+/// bodies sink by the difference. The other way, a held face reads along its own normal (up to
+/// the hysteresis deeper), and two edges within round-off of parallel give an edge axis that is
+/// anything at all (a hull a hair above the ground read 4.7 cm deep along one): the solve would
+/// push the bodies apart by the difference.
 bool readsOverlap(const ManifoldCandidates& candidates, Real overlap) {
-    return deepestCandidate(candidates) >= overlap - kFaceTolerance;
+    const Real deepest = deepestCandidate(candidates);
+    return deepest >= overlap - kFaceTolerance && deepest <= overlap + kFaceTolerance;
 }
 // [ch06-reads-overlap]
 
@@ -272,7 +276,7 @@ bool polytopeManifold(const Shape& a, const Transform& ta, const Shape& b, const
         // its own normal, up to the hysteresis more than the best axis: a hull that turned, or a box
         // that fell onto another at an angle since last step, would read a centimetre the shapes do
         // not have, and the solve would push them apart by it.
-        if (deepestCandidate(out) <= overlap + kFaceTolerance && readsOverlap(out, overlap)) return true;
+        if (readsOverlap(out, overlap)) return true;
         out.points.clear();
         out.referenceSide = 0;
     }
