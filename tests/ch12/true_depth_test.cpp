@@ -82,7 +82,8 @@ TEST_CASE("no pair of a pile overlaps more than 1 mm beyond its contact's deepes
     // A capsule clipped against a face whose edge it overhangs read 3 cm apart 5 cm into a box; a
     // held face whose clip cut off the deepest corner read a hull 2 cm short; a box record carried
     // through a 1.5 degree turn missed the far corner sinking 1.6 cm. Two piles of two layers,
-    // checked at the contact search of every frame while they land and settle.
+    // checked at the contact search of every frame of their first three seconds, while they land
+    // (without those rules they read 20 and 7 mm short within it).
     for (const bool unlike : {false, true}) {
         World world = unlike ? buildMixedPile(300, true, kUnlikePileSizes) : buildMixedPile(300);
         world.settings.sleeping = false;
@@ -99,7 +100,7 @@ TEST_CASE("no pair of a pile overlaps more than 1 mm beyond its contact's deepes
             worst.shallower = std::max(worst.shallower, errors.shallower);
         };
         pipeline.insertBefore(stage_group::kPlan, check);
-        for (int frame = 0; frame < 240; ++frame) pipeline.step(world);
+        for (int frame = 0; frame < 180; ++frame) pipeline.step(world);
         INFO(world.name << ": deepest beyond the overlap " << worst.deeper << " m, overlap unseen " << worst.shallower << " m");
         CHECK(worst.shallower < Real(0.001));
         CHECK(worst.deeper < Real(0.001));
