@@ -158,26 +158,6 @@ Measurement runEngine(const World& start, const SpeedOptions& options, long fram
     return run.finish();
 }
 
-/// The fast step again, untimed, with a stage between its contact search and its solve that
-/// compares every manifold's depth with its shapes' true overlap at the poses it was found at
-/// (contact_truth.h): the most any read deeper, and the most any pair overlapped unseen, m.
-ContactDepthErrors depthAgainstTrue(const World& start, const SpeedOptions& options, long frames) {
-    World world = start;
-    Pipeline pipeline = makeChapter12Pipeline(world, options);
-    ContactDepthErrors worst;
-    Stage check;
-    check.name = "check:contact_depths";
-    check.frequency = StageFrequency::FrameStart;
-    check.run = [&worst](World& checked, Real) {
-        const ContactDepthErrors errors = contactDepthErrors(checked);
-        worst.deeper = std::max(worst.deeper, errors.deeper);
-        worst.shallower = std::max(worst.shallower, errors.shallower);
-    };
-    pipeline.insertBefore(pipeline.find(stage_group::kPlan) ? stage_group::kPlan : stage_group::kSolve, check);
-    for (long frame = 0; frame < frames; ++frame) pipeline.step(world);
-    return worst;
-}
-
 /// Frames until every dynamic body of `start` sleeps, stepped by chapter 10 with sleeping on; at
 /// most `most`.
 long framesUntilAsleep(const World& start, long most) {

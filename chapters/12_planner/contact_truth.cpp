@@ -24,4 +24,21 @@ ContactDepthErrors contactDepthErrors(const World& world) {
     return errors;
 }
 
+ContactDepthErrors depthAgainstTrue(const World& start, const SpeedOptions& options, long frames) {
+    World world = start;
+    Pipeline pipeline = makeChapter12Pipeline(world, options);
+    ContactDepthErrors worst;
+    Stage check;
+    check.name = "check:contact_depths";
+    check.frequency = StageFrequency::FrameStart;
+    check.run = [&worst](World& checked, Real) {
+        const ContactDepthErrors errors = contactDepthErrors(checked);
+        worst.deeper = std::max(worst.deeper, errors.deeper);
+        worst.shallower = std::max(worst.shallower, errors.shallower);
+    };
+    pipeline.insertBefore(pipeline.find(stage_group::kPlan) ? stage_group::kPlan : stage_group::kSolve, check);
+    for (long frame = 0; frame < frames; ++frame) pipeline.step(world);
+    return worst;
+}
+
 }  // namespace stepwise

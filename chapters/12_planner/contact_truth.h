@@ -7,6 +7,7 @@
 // carried while a corner it does not hold swung in, shows up as overlap the contact does not see,
 // into which the bodies sink unresisted (bench speed's two depth columns).
 
+#include "12_planner/chapter.h"
 #include "world/world.h"
 
 namespace stepwise {
@@ -20,5 +21,10 @@ struct ContactDepthErrors {
 /// Over the world's contacts between two convex shapes (compounds, meshes and height fields are
 /// left out: their parts answer for them).
 ContactDepthErrors contactDepthErrors(const World& world);
+
+/// Chapter 12's step of a copy of `start` for `frames` frames with `options`, untimed, with a stage
+/// between its contact search and its solve that checks every manifold at the poses it was found
+/// at (contactDepthErrors): the worst of each side over the run.
+ContactDepthErrors depthAgainstTrue(const World& start, const SpeedOptions& options, long frames);
 
 }  // namespace stepwise

@@ -22,12 +22,6 @@ namespace {
 /// the same unity file, names its own copy of that constant.)
 constexpr Real kBeyondOverlap = Real(0.001);
 
-Real deepest(const Contact& contact) {
-    Real depth = -kRealMax;
-    for (int i = 0; i < contact.pointCount; ++i) depth = std::max(depth, contact.points[i].depth);
-    return depth;
-}
-
 }  // namespace
 
 TEST_CASE("a box that falls onto another at an angle reads no deeper than the boxes overlap", "[ch06][manifold]") {
@@ -61,9 +55,9 @@ TEST_CASE("a box that falls onto another at an angle reads no deeper than the bo
     REQUIRE(truth.depth == Approx(0.0269).margin(0.0005));
     REQUIRE(world.contacts.size() == 1);
     const Contact& contact = world.contacts[0];
-    INFO("reads " << deepest(contact) << " m, the boxes overlap " << truth.depth << " m");
-    CHECK(deepest(contact) <= truth.depth + kBeyondOverlap);
-    CHECK(deepest(contact) > truth.depth - Real(0.001));  // and not shallower either
+    INFO("reads " << deepestPoint(contact) << " m, the boxes overlap " << truth.depth << " m");
+    CHECK(deepestPoint(contact) <= truth.depth + kBeyondOverlap);
+    CHECK(deepestPoint(contact) > truth.depth - Real(0.001));  // and not shallower either
     CHECK(contact.normal.dot(truth.normal) > Real(0.999));
 }
 
@@ -81,8 +75,8 @@ TEST_CASE("a held face that reads true is kept: the hysteresis still holds the r
         previous.referenceSide = side;
         Contact contact;
         REQUIRE(collideManifold(kSlab, slab, kUnitBox, box, 0, contact, ManifoldOptions{}, &previous));
-        INFO("held side " << side << ": reads " << deepest(contact) << " m, the shapes overlap " << truth.depth << " m");
+        INFO("held side " << side << ": reads " << deepestPoint(contact) << " m, the shapes overlap " << truth.depth << " m");
         CHECK(contact.referenceSide == side);
-        CHECK(deepest(contact) <= truth.depth + kBeyondOverlap);
+        CHECK(deepestPoint(contact) <= truth.depth + kBeyondOverlap);
     }
 }

@@ -22,12 +22,6 @@ namespace {
 /// capsule-end tolerances are half a millimetre; a millimetre leaves room for EPA's round-off.
 constexpr Real kShortOfOverlap = Real(0.001);
 
-Real deepestPoint(const Contact& contact) {
-    Real depth = -kRealMax;
-    for (int i = 0; i < contact.pointCount; ++i) depth = std::max(depth, contact.points[i].depth);
-    return depth;
-}
-
 /// The mixed pile's shapes: boxes, irregular hulls with a peak, capsules; sizes 0.15 to 0.6 m.
 Shape pileShape(Random& random, int kind) {
     const Real size = random.uniformReal(Real(0.15), Real(0.6));

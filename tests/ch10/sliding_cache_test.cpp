@@ -21,6 +21,16 @@ int bodyNamed(const World& world, const std::string& name) {
     return -1;
 }
 
+/// A 1 m box standing on a 4 m slab.
+World boxOnSlab() {
+    return loadSceneFromString(R"({
+      "format": "stepwise-scene", "version": 1, "name": "slab",
+      "bodies": [
+        {"name": "slab", "type": "static", "shape": {"box": {"half_extents": [2, 0.5, 2]}}, "position": [0, -0.5, 0]},
+        {"name": "box", "shape": {"box": {"half_extents": [0.5, 0.5, 0.5]}}, "position": [0, 0.5, 0], "mass": 1}
+      ]})");
+}
+
 }  // namespace
 
 TEST_CASE("a block sliding down a ramp keeps its manifold and slides as when it is built every frame", "[ch10][cache]") {
@@ -47,12 +57,7 @@ TEST_CASE("a block sliding down a ramp keeps its manifold and slides as when it 
 
 TEST_CASE("a face contact slides only while its corners stay inside the face it slides on", "[ch10][cache]") {
     // A 1 m box on a 4 m slab; the contact built where it stands, then the box moved along x.
-    World world = loadSceneFromString(R"({
-      "format": "stepwise-scene", "version": 1, "name": "slab",
-      "bodies": [
-        {"name": "slab", "type": "static", "shape": {"box": {"half_extents": [2, 0.5, 2]}}, "position": [0, -0.5, 0]},
-        {"name": "box", "shape": {"box": {"half_extents": [0.5, 0.5, 0.5]}}, "position": [0, 0.5, 0], "mass": 1}
-      ]})");
+    World world = boxOnSlab();
     Pipeline pipeline = makeChapter10Pipeline(world, SkipWorkOptions{});
     pipeline.step(world);
     REQUIRE(world.contacts.size() == 1);
@@ -89,12 +94,7 @@ TEST_CASE("a record is built again once a corner it may not hold can have swung 
     // The rule's 2 degrees are Jolt's; a unit box turned 2 degrees swings its far corner 3 cm, and
     // a corner that is not among the record's points (a box tipping over an edge, a hull's fifth
     // corner) would sink that far unseen. B's turn times its bounding radius is held to the 1 mm.
-    World world = loadSceneFromString(R"({
-      "format": "stepwise-scene", "version": 1, "name": "slab",
-      "bodies": [
-        {"name": "slab", "type": "static", "shape": {"box": {"half_extents": [2, 0.5, 2]}}, "position": [0, -0.5, 0]},
-        {"name": "box", "shape": {"box": {"half_extents": [0.5, 0.5, 0.5]}}, "position": [0, 0.5, 0], "mass": 1}
-      ]})");
+    World world = boxOnSlab();
     Pipeline pipeline = makeChapter10Pipeline(world, SkipWorkOptions{});
     pipeline.step(world);
     REQUIRE(world.contacts.size() == 1);

@@ -89,18 +89,7 @@ TEST_CASE("no pair of a pile overlaps more than 1 mm beyond its contact's deepes
         world.settings.sleeping = false;
         SpeedOptions options;
         options.sleeping = false;
-        Pipeline pipeline = makeChapter12Pipeline(world, options);
-        ContactDepthErrors worst;
-        Stage check;
-        check.name = "check:overlap_unseen";
-        check.frequency = StageFrequency::FrameStart;
-        check.run = [&worst](World& checked, Real) {
-            const ContactDepthErrors errors = contactDepthErrors(checked);
-            worst.deeper = std::max(worst.deeper, errors.deeper);
-            worst.shallower = std::max(worst.shallower, errors.shallower);
-        };
-        pipeline.insertBefore(stage_group::kPlan, check);
-        for (int frame = 0; frame < 180; ++frame) pipeline.step(world);
+        const ContactDepthErrors worst = depthAgainstTrue(world, options, 180);
         INFO(world.name << ": deepest beyond the overlap " << worst.deeper << " m, overlap unseen " << worst.shallower << " m");
         CHECK(worst.shallower < Real(0.001));
         CHECK(worst.deeper < Real(0.001));
