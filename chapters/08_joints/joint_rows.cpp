@@ -57,6 +57,10 @@ class RowBuilder {
 public:
     RowBuilder(JointRowBatch& out, const JointFeedback& feedback, Real h) : out_(out), feedback_(feedback), h_(h) {}
 
+    // The point rows of a block its solve pushes by the arms: their linear part alone, which is
+    // all their feedback reads (the cap of a row that moves points).
+    bool blockWithoutJacobians = false;
+
     void equality(ConstraintRow row, Real error) { add(row, Softness{}, JointRowKind::Equality, error); }
 
     // C >= 0 wanted (a limit), row J = dC/dt, impulse >= 0.
@@ -81,6 +85,7 @@ public:
         row.bodyA = bodyA;
         row.bodyB = bodyB;
         add(row, Softness{});
+        out_.used[out_.count - 1] = false;
     }
 
     void spring(ConstraintRow row, Real error, const Softness& soft) { add(row, soft, JointRowKind::Spring, error); }
@@ -92,6 +97,7 @@ public:
         out_.fedBack[i] = false;
         out_.kind[i] = kind;
         out_.error[i] = error;
+        out_.used[i] = true;
         applyFeedback(out_.rows[i], out_.softness[i], out_.fedBack[i], kind, error, feedback_, h_);
     }
 
@@ -108,8 +114,16 @@ void perpendiculars(const Vec3& axis, Vec3& first, Vec3& second) { tangentBasis(
 // Slots 0-2 of the point joints: the anchors coincide, one row per world axis (solved as a block).
 void addPointRows(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame) {
     const Vec3 gap = frame.anchorB - frame.anchorA;
-    for (int axis = 0; axis < 3; ++axis)
-        builder.equality(linearRow(joint.bodyA, joint.bodyB, frame.armA, frame.armB, Vec3::Unit(axis)), gap[axis]);
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!builder.blockWithoutJacobians) {
+            builder.equality(linearRow(joint.bodyA, joint.bodyB, frame.armA, frame.armB, Vec3::Unit(axis)), gap[axis]);
+            continue;
+        }
+        ConstraintRow row;
+        row.linearA = -Vec3::Unit(axis);
+        row.linearB = Vec3::Unit(axis);
+        builder.equality(row, gap[axis]);
+    }
 }
 // [ch08-point-rows]
 
@@ -313,29 +327,31 @@ void appendJointRows(JointRows& out, const World& world, int jointIndex, const s
 
 bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointIndex, const JointFrame& frame,
                         int rowBodyA, int rowBodyB, const std::vector<SolverBody>& bodies, Real h,
-                        const JointFeedback& feedback, const JointImpulses* carried) {
+                        const JointFeedback& feedback, const JointImpulses* carried, const JointBatchNeeds& needs) {
     batch.count = 0;
-    RowBuilder builder(batch, feedback, h);
-    addRowsOf(builder, joint, frame, h);
-    if (!std::all_of(batch.rows, batch.rows + batch.count, finiteRow)) {
-        batch.count = 0;
-        return false;
-    }
     JointRowSet& set = batch.set;
     set = JointRowSet{};
     set.joint = jointIndex;
-    set.rowCount = batch.count;
     if (joint.type != JointType::Distance && joint.type != JointType::Slider)
         setPointBlock(set, frame, bodies[static_cast<std::size_t>(rowBodyA)], bodies[static_cast<std::size_t>(rowBodyB)]);
+    RowBuilder builder(batch, feedback, h);
+    // A block made from non-finite arms is not invertible, so its rows are built whole and the
+    // check below still sees them.
+    builder.blockWithoutJacobians = set.pointBlock && !needs.pointJacobians;
+    addRowsOf(builder, joint, frame, h);
+    for (int slot = 0; slot < batch.count; ++slot) {
+        if (!batch.used[slot] || finiteRow(batch.rows[slot])) continue;  // an unused slot is all zeros
+        batch.count = 0;
+        return false;
+    }
+    set.rowCount = batch.count;
     for (int slot = 0; slot < batch.count; ++slot) {
         ConstraintRow& row = batch.rows[slot];
         row.bodyA = rowBodyA;  // the rows name the bodies as the caller's list holds them
         row.bodyB = rowBodyB;
         // The block solves slots 0-2 by its own mass; an unused slot has no Jacobian (mass 0).
         const bool inBlock = set.pointBlock && slot < 3;
-        const bool unused = batch.kind[slot] == JointRowKind::Free && row.angularA.isZero(0) &&
-                            row.angularB.isZero(0) && row.linearA.isZero(0) && row.linearB.isZero(0);
-        row.effectiveMass = inBlock || unused ? Real(0) : effectiveMass(row, bodies);
+        row.effectiveMass = inBlock || !batch.used[slot] || !needs.effectiveMasses ? Real(0) : effectiveMass(row, bodies);
         const Real impulse = carried && slot < JointImpulses::kSlots ? carried->slot[slot] : Real(0);
         row.impulse = std::isfinite(impulse) ? std::clamp(impulse, row.lower, row.upper) : Real(0);
     }

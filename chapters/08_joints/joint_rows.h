@@ -91,14 +91,26 @@ struct JointRowBatch {
     bool fedBack[kMaxRows] = {};
     JointRowKind kind[kMaxRows] = {};
     Real error[kMaxRows] = {};
+    bool used[kMaxRows] = {};       // false: a slot the joint does not use now (no Jacobian)
     JointRowSet set;                // the point block; firstRow 0, rowCount = count
+};
+
+/// What a solve reads of a batch besides the biases, bounds, softness and impulses. Chapter 8's
+/// solve reads every row's Jacobian and effective mass (its warm start pushes the point rows by
+/// their Jacobians). A solve that packs the rows itself (chapter 11) makes M^-1 J^T anyway, and
+/// the effective mass with it, and pushes a point block by its arms: making them here too is
+/// work thrown away, a third of a ragdoll joint's.
+struct JointBatchNeeds {
+    bool pointJacobians = true;   // false: a point block's rows carry only their linear part
+    bool effectiveMasses = true;  // false: every row's effectiveMass is left 0
 };
 
 /// Builds the rows of `joint` at `frame` into `batch` (appendJointRows' rules, the same numbers):
 /// false, with nothing to solve, if any row came out non-finite.
 bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointIndex, const JointFrame& frame,
                         int rowBodyA, int rowBodyB, const std::vector<SolverBody>& bodies, Real h,
-                        const JointFeedback& feedback, const JointImpulses* carried);
+                        const JointFeedback& feedback, const JointImpulses* carried,
+                        const JointBatchNeeds& needs = JointBatchNeeds{});
 
 /// Appends the rows of World::joints[jointIndex] for a step of h, effective masses filled in,
 /// accumulated impulses loaded from World::jointImpulses when `carryImpulses` (and clamped to

@@ -71,6 +71,12 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
     }
 }
 
+namespace {
+// The sweeps push a point block by its arms and make every row's effective mass with M^-1 J^T
+// (appendPackedJoint): the batch leaves both out.
+constexpr JointBatchNeeds kPackedNeeds{/*pointJacobians=*/false, /*effectiveMasses=*/false};
+}  // namespace
+
 // [ch11-joint-rows]
 void buildJointRows(const World& world, const SolverBodies& bodies, Real h, JointPass& pass) {
     pass.packed.clear();
@@ -102,7 +108,7 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, Join
         const JointFrame frame = jointRowFrame(joint, a.transform, a.center, b.transform, b.center);
         JointImpulses& carried = pass.carried[i];
         if (!buildJointRowBatch(batch, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i], pass.bodies, h,
-                                feedback, &carried)) {
+                                feedback, &carried, kPackedNeeds)) {
             ++pass.invalidSkipped;  // left out this substep; its impulses wait as they are
             continue;
         }

@@ -20,6 +20,23 @@ void push(SolverBodyState* states, int slot, const Vec3& linear, const Vec3& ang
     }
 }
 
+void pushTurn(SolverBodyState* states, int slot, const Vec3& angular) {
+    if (slot == 0) return;
+    SolverBodyState& s = states[slot];
+    for (int k = 0; k < 3; ++k) s.angularVelocity[k] += angular[k];
+}
+
+// The row's impulse change `applied` into its bodies' velocities.
+void pushRow(const PackedJointRow& row, Real applied, SolverBodyState* states) {
+    if (row.turnOnly) {
+        pushTurn(states, row.slotA, applied * row.moveAngularA);
+        pushTurn(states, row.slotB, applied * row.moveAngularB);
+        return;
+    }
+    push(states, row.slotA, applied * row.moveLinearA, applied * row.moveAngularA);
+    push(states, row.slotB, applied * row.moveLinearB, applied * row.moveAngularB);
+}
+
 PackedJointRow packRow(const JointRowBatch& batch, int slot, const std::vector<SolverBody>& bodies,
                        const std::vector<int>& slotOfEntry) {
     const ConstraintRow& row = batch.rows[slot];
@@ -30,6 +47,7 @@ PackedJointRow packRow(const JointRowBatch& batch, int slot, const std::vector<S
     packed.slotB = slotOfEntry[static_cast<std::size_t>(row.bodyB)];
     packed.slot = slot;
     packed.fedBack = batch.fedBack[slot];
+    packed.turnOnly = row.linearA.isZero(0) && row.linearB.isZero(0);
     packed.linearA = row.linearA;
     packed.angularA = row.angularA;
     packed.linearB = row.linearB;
@@ -38,7 +56,10 @@ PackedJointRow packRow(const JointRowBatch& batch, int slot, const std::vector<S
     packed.moveAngularA = a.inverseInertia * row.angularA;
     packed.moveLinearB = b.inverseMass * row.linearB;
     packed.moveAngularB = b.inverseInertia * row.angularB;
-    packed.effectiveMass = row.effectiveMass;
+    // Chapter 4's effectiveMass, 1 / (J M^-1 J^T), with M^-1 J^T made once above.
+    const Real inverseEffectiveMass = a.inverseMass * row.linearA.squaredNorm() + row.angularA.dot(packed.moveAngularA) +
+                                      b.inverseMass * row.linearB.squaredNorm() + row.angularB.dot(packed.moveAngularB);
+    packed.effectiveMass = inverseEffectiveMass > 0 ? 1 / inverseEffectiveMass : 0;
     packed.bias = row.bias;
     packed.lower = row.lower;
     packed.upper = row.upper;
@@ -91,17 +112,16 @@ void solveBlock(PackedPointBlock& block, SolverBodyState* states, bool relax) {
 void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
     const SolverBodyState& a = states[row.slotA];
     const SolverBodyState& b = states[row.slotB];
-    const Real velocity = row.linearA.dot(linearOf(a)) + row.angularA.dot(angularOf(a)) + row.linearB.dot(linearOf(b)) +
-                          row.angularB.dot(angularOf(b));
+    const Real velocity = row.turnOnly ? row.angularA.dot(angularOf(a)) + row.angularB.dot(angularOf(b))
+                                       : row.linearA.dot(linearOf(a)) + row.angularA.dot(angularOf(a)) +
+                                             row.linearB.dot(linearOf(b)) + row.angularB.dot(angularOf(b));
     const bool plain = relax && row.fedBack;  // the relax pass: no bias, rigid
     const Softness soft = plain ? Softness{} : row.soft;
     const Real bias = plain ? Real(0) : row.bias;
     const Real previous = row.impulse;
     const Real increment = soft.massScale * row.effectiveMass * (bias - velocity) - soft.impulseScale * previous;
     row.impulse = std::clamp(previous + increment, row.lower, row.upper);
-    const Real applied = row.impulse - previous;
-    push(states, row.slotA, applied * row.moveLinearA, applied * row.moveAngularA);
-    push(states, row.slotB, applied * row.moveLinearB, applied * row.moveAngularB);
+    pushRow(row, row.impulse - previous, states);
 }
 // [ch11-packed-sweep]
 
@@ -120,8 +140,10 @@ void appendPackedJoint(const JointRowBatch& batch, int joint, const std::vector<
     }
     entry.firstRow = static_cast<int>(packed.rows.size());
     for (int slot = begin; slot < batch.count; ++slot) {
-        if (batch.rows[slot].effectiveMass == 0) continue;  // chapter 8's sweep skips it too
-        packed.rows.push_back(packRow(batch, slot, bodies, slotOfEntry));
+        if (!batch.used[slot]) continue;
+        PackedJointRow row = packRow(batch, slot, bodies, slotOfEntry);
+        if (row.effectiveMass == 0) continue;  // chapter 8's sweep skips it too
+        packed.rows.push_back(row);
     }
     entry.rowCount = static_cast<int>(packed.rows.size()) - entry.firstRow;
     packed.joints.push_back(entry);
@@ -134,9 +156,7 @@ void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
         push(states, block.slotB, block.inverseMassB * impulse, block.inverseInertiaB * block.armB.cross(impulse));
     }
     for (const PackedJointRow& row : packed.rows) {
-        if (row.impulse == 0) continue;
-        push(states, row.slotA, row.impulse * row.moveLinearA, row.impulse * row.moveAngularA);
-        push(states, row.slotB, row.impulse * row.moveLinearB, row.impulse * row.moveAngularB);
+        if (row.impulse != 0) pushRow(row, row.impulse, states);
     }
 }
 

@@ -21,6 +21,7 @@ struct PackedJointRow {
     int slotA = 0, slotB = 0;   // the bodies' solver slots (0: does not move)
     int slot = 0;               // its joint's slot (JointImpulses::slot): where its impulse goes back
     bool fedBack = false;       // the relax pass takes its bias and softness out
+    bool turnOnly = false;      // no linear part (a hinge's, a cone's, a limit's turn): the sweeps skip it
     Vec3 linearA = Vec3::Zero(), angularA = Vec3::Zero(), linearB = Vec3::Zero(), angularB = Vec3::Zero();  // J
     Vec3 moveLinearA = Vec3::Zero(), moveAngularA = Vec3::Zero();  // M^-1 J^T: the velocity one unit of impulse adds
     Vec3 moveLinearB = Vec3::Zero(), moveAngularB = Vec3::Zero();
@@ -60,7 +61,8 @@ struct PackedJointRows {
 };
 
 /// Appends one joint's rows (`batch`, built over the solver bodies `bodies`, entries
-/// `slotOfEntry` in the solve's slots) for the sweeps; `joint` is the caller's index of it.
+/// `slotOfEntry` in the solve's slots) for the sweeps, each row's M^-1 J^T and effective mass made
+/// here (the batch needs neither); `joint` is the caller's index of it.
 void appendPackedJoint(const JointRowBatch& batch, int joint, const std::vector<SolverBody>& bodies,
                        const std::vector<int>& slotOfEntry, PackedJointRows& packed);
 
