@@ -268,6 +268,8 @@ void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& 
     set.pointArmB = frame.armB;
 }
 
+}  // namespace
+
 // [ch08-bias]
 // C = 0 wanted: the error goes back in by the feedback's rule. The push back is capped
 // (kMaxJointPushOutSpeed, kMaxJointPushOutTurn): a joint that starts 25 cm apart would otherwise
@@ -275,14 +277,14 @@ void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& 
 // relax pass takes out (uncapped, scenes/two-box-stack.json's distance joint throws its 65 kg ball
 // 12 m up). A limit not reached is speculative: the row only stops the bodies from closing the
 // gap by more than it is in this step. Passed, it is fed back like an equality.
-void applyFeedback(ConstraintRow& row, Softness& softness, bool& fedBack, JointRowKind kind, Real error,
-                   const JointFeedback& feedback, Real h) {
+void jointRowFeedback(Real& bias, Softness& softness, bool& fedBack, JointRowKind kind, Real error, bool movesPoints,
+                      const JointFeedback& feedback, Real h) {
     switch (kind) {
         case JointRowKind::Free: return;
-        case JointRowKind::Spring: row.bias = -softness.biasRate * error; return;
+        case JointRowKind::Spring: bias = -softness.biasRate * error; return;
         case JointRowKind::Limit:
             if (error > 0) {
-                row.bias = -error / h;
+                bias = -error / h;
                 softness = Softness{};
                 fedBack = false;
                 return;
@@ -291,27 +293,28 @@ void applyFeedback(ConstraintRow& row, Softness& softness, bool& fedBack, JointR
         case JointRowKind::Equality: break;
     }
     Softness soft;
-    row.bias = 0;
-    if (feedback.kind == JointFeedback::Kind::Baumgarte) row.bias = -feedback.baumgarte * error / h;
+    bias = 0;
+    if (feedback.kind == JointFeedback::Kind::Baumgarte) bias = -feedback.baumgarte * error / h;
     if (feedback.kind == JointFeedback::Kind::Soft) {
         soft = feedback.soft;
-        row.bias = -soft.biasRate * error;
+        bias = -soft.biasRate * error;
     }
-    const bool linear = !row.linearA.isZero(0) || !row.linearB.isZero(0);
-    const Real cap = linear ? kMaxJointPushOutSpeed : kMaxJointPushOutTurn;
-    row.bias = std::clamp(row.bias, -cap, cap);
+    const Real cap = movesPoints ? kMaxJointPushOutSpeed : kMaxJointPushOutTurn;
+    bias = std::clamp(bias, -cap, cap);
     softness = soft;
     fedBack = true;
 }
 // [ch08-bias]
 
-}  // namespace
+namespace {
 
-void applyRowFeedback(JointRows& rows, std::size_t i, const JointFeedback& feedback, Real h) {
-    bool fedBack = rows.fedBack[i] != 0;
-    applyFeedback(rows.rows[i], rows.softness[i], fedBack, rows.kind[i], rows.error[i], feedback, h);
-    rows.fedBack[i] = fedBack;
+void applyFeedback(ConstraintRow& row, Softness& softness, bool& fedBack, JointRowKind kind, Real error,
+                   const JointFeedback& feedback, Real h) {
+    const bool movesPoints = !row.linearA.isZero(0) || !row.linearB.isZero(0);
+    jointRowFeedback(row.bias, softness, fedBack, kind, error, movesPoints, feedback, h);
 }
+
+}  // namespace
 
 void appendJointRows(JointRows& out, const World& world, int jointIndex, const std::vector<SolverBody>& bodies, Real h,
                      const JointFeedback& feedback, bool carryImpulses) {

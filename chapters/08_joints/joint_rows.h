@@ -125,10 +125,13 @@ void appendJointRows(JointRows& out, const JointDesc& joint, int jointIndex, con
                      int rowBodyB, const std::vector<SolverBody>& bodies, Real h, const JointFeedback& feedback,
                      const JointImpulses* carried);
 
-/// Sets row i's bias, softness and fedBack from its kind and rows.error[i] by the feedback's rule
-/// for a step of h (what appendJointRows does for every row; a solve that moves the error without
-/// building the row again calls it too).
-void applyRowFeedback(JointRows& rows, std::size_t i, const JointFeedback& feedback, Real h);
+/// A row's bias, softness and fedBack from its kind and position error by the feedback's rule, for
+/// a step of h: what every build does for every row, and what a solve that moves a row's error
+/// without building the row again (chapter 11's kept rows) does. `movesPoints`: the row has a
+/// linear part (its push-out is capped as a speed, else as a turn rate). A spring's `softness`
+/// is its own and is read, not set.
+void jointRowFeedback(Real& bias, Softness& softness, bool& fedBack, JointRowKind kind, Real error, bool movesPoints,
+                      const JointFeedback& feedback, Real h);
 
 /// One Gauss-Seidel pass over one joint's rows: the point block first, then the scalar rows.
 void solveJointRows(JointRows& rows, const JointRowSet& set, std::vector<SolverBody>& bodies);

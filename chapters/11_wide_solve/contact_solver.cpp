@@ -196,7 +196,7 @@ void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolve
     for (int substep = 0; substep < substeps; ++substep) {
         if (forces) evaluateSubstepForces(world, scratch.bodies, *joints);
         integrateVelocities(world, scratch.bodies, h, substep == 0, path, forces ? &joints->forces : nullptr);
-        if (joints) buildJointRows(world, scratch.bodies, h, *joints);
+        if (joints) buildJointRows(world, scratch.bodies, h, substep == 0, *joints);
         // [ch11-collisions-first]
         // Collisions first, on the speeds before the warm start adds last substep's pushes.
         for (int sweep = 0; collisions && sweep < kCollisionSweeps; ++sweep) {
@@ -224,6 +224,7 @@ void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolve
         solveAll(scratch.scalarBlocks, states, params, true);
         stats.ms(SolvePhase::Solve) += clock.lap();
         integratePositions(scratch.bodies, h, path);
+        if (joints) advanceJointErrors(*joints, states, h);  // what the move did to the kept rows' errors
         stats.ms(SolvePhase::Integrate) += clock.lap();
         if (joints) solveJoints(*joints, states, /*relax=*/true);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
@@ -325,6 +326,8 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         storeJointImpulses(*scratch.joints, world);
         solverStats.jointRows = scratch.joints->rowCount;
         solverStats.jointsSkipped = scratch.joints->invalidSkipped;
+        solverStats.jointsBuilt = scratch.joints->jointsBuilt;
+        solverStats.jointsKept = scratch.joints->jointsKept;
     }
     stats.ms(SolvePhase::Store) += clock.lap();
     solverStats.contactPoints = stats.points;

@@ -52,6 +52,8 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
     pass.slot.clear();
     pass.bodies.clear();
     pass.carried.clear();
+    pass.jointsBuilt = 0;
+    pass.jointsKept = 0;
     pass.entryOfBody.assign(world.bodies.size(), -1);
     if (world.joints.empty()) return;
     for (const int jointIndex : pass.sweep.order(world, kDefaultJointOrder)) {
@@ -77,14 +79,31 @@ namespace {
 constexpr JointBatchNeeds kPackedNeeds{/*pointJacobians=*/false, /*effectiveMasses=*/false};
 }  // namespace
 
-// [ch11-joint-rows]
-void buildJointRows(const World& world, const SolverBodies& bodies, Real h, JointPass& pass) {
-    pass.packed.clear();
-    pass.rowCount = 0;
-    pass.invalidSkipped = 0;
-    if (pass.joints.empty()) return;
-    const JointFeedback feedback = fastJointFeedback(world.settings, h);
-    // Where each body stands now: its start moved by the substeps so far (slot 0 does not move).
+namespace {
+
+// The angle of the turn from `built` to `now` (small-angle form, 2 |v| of the quotient).
+Real turnSince(const Quat& built, const Quat& now) { return 2 * (now * built.conjugate()).vec().norm(); }
+
+// Whether a joint's Jacobians depend on its bodies' turns alone: the point joints' rows run
+// along fixed axes through arms that turn with the bodies, their turn rows about axes that turn
+// with them. A distance joint's row runs along the line between the anchors and a slider's
+// through the gap between them, which the bodies' moves turn too: always built.
+bool rowsFollowTurnsAlone(JointType type) {
+    return type == JointType::BallSocket || type == JointType::Hinge || type == JointType::ConeTwist ||
+           type == JointType::Fixed;
+}
+
+// Whether listed joint i may keep last substep's rows.
+bool keepsRows(const World& world, const JointPass& pass, std::size_t i) {
+    if (pass.packedEntry[i] < 0) return false;  // left out last substep: built again
+    if (!rowsFollowTurnsAlone(world.joints[static_cast<std::size_t>(pass.joints[i])].type)) return false;
+    const Quat& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])].transform.rotation;
+    const Quat& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])].transform.rotation;
+    return turnSince(pass.builtA[i], a) <= kJointRowsKeptTurn && turnSince(pass.builtB[i], b) <= kJointRowsKeptTurn;
+}
+
+// Where each body stands now: its start moved by the substeps so far (slot 0 does not move).
+void placeBodies(const World& world, const SolverBodies& bodies, JointPass& pass) {
     pass.poses.resize(pass.bodies.size());
     for (std::size_t e = 0; e < pass.bodies.size(); ++e) {
         const int slot = pass.slot[e];
@@ -100,8 +119,36 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, Join
         pose.transform.position = now.center - now.rotation * world.motionOf(body)->localCenter;
         pose.center = now.center;
     }
+}
+
+}  // namespace
+
+// [ch11-joint-rows]
+void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool firstSubstep, JointPass& pass) {
+    std::swap(pass.packed, pass.previous);
+    pass.packed.clear();
+    pass.rowCount = 0;
+    pass.invalidSkipped = 0;
+    if (pass.joints.empty()) return;
+    const JointFeedback feedback = fastJointFeedback(world.settings, h);
+    placeBodies(world, bodies, pass);
+    pass.packedEntry.resize(pass.joints.size(), -1);
+    pass.builtA.resize(pass.joints.size());
+    pass.builtB.resize(pass.joints.size());
     JointRowBatch& batch = pass.batch;
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
+        const int entry = static_cast<int>(pass.packed.joints.size());
+        if (!firstSubstep && keepsRows(world, pass, i)) {
+            // Kept: last substep's rows, their impulses the sweeps ended with, their errors moved.
+            const PackedJoint& kept = pass.previous.joints[static_cast<std::size_t>(pass.packedEntry[i])];
+            pass.rowCount += kept.slotCount;
+            copyPackedJoint(pass.previous, pass.packedEntry[i], pass.packed);
+            refreshPackedFeedback(pass.packed, entry, feedback, h);
+            pass.packedEntry[i] = entry;
+            ++pass.jointsKept;
+            continue;
+        }
+        pass.packedEntry[i] = -1;
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
         const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
@@ -117,9 +164,17 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, Join
         for (int slot = 0; slot < batch.count; ++slot) carried.slot[slot] = batch.rows[slot].impulse;
         pass.rowCount += batch.count;
         appendPackedJoint(batch, static_cast<int>(i), pass.bodies, pass.slot, pass.packed);
+        pass.packedEntry[i] = entry;
+        pass.builtA[i] = a.transform.rotation;
+        pass.builtB[i] = b.transform.rotation;
+        ++pass.jointsBuilt;
     }
 }
 // [ch11-joint-rows]
+
+void advanceJointErrors(JointPass& pass, const SolverBodyState* states, Real h) {
+    advancePackedErrors(pass.packed, states, h);
+}
 
 
 void warmStartJoints(JointPass& pass, SolverBodyState* states, bool warmStarting) {

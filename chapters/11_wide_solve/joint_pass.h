@@ -56,7 +56,11 @@ struct JointPass {
     std::vector<BodyPose> poses;       // per entry: where it stands this substep
     JointRowBatch batch;               // one joint's rows, as chapter 8 builds them
     PackedJointRows packed;            // this substep's rows, as the sweeps take them
+    PackedJointRows previous;          // last substep's, which a joint whose bodies barely turned keeps
+    std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out)
+    std::vector<Quat> builtA, builtB;  // per listed joint: its bodies' rotations when its rows were built
     int rowCount = 0;                  // this substep's rows, used slots or not (the run report's)
+    int jointsBuilt = 0, jointsKept = 0;  // this frame's substeps: joints whose rows were built, kept
     int invalidSkipped = 0;            // joints left out this substep: their rows came out non-finite
     JointSweep sweep;
     // Springs and drag: chapter 1's forces at each substep's state, per motion.
@@ -71,8 +75,24 @@ bool needsJointPass(const World& world);
 /// World::jointImpulses times `carryScale` (the substep count changed).
 void prepareJointPass(const World& world, const SolverBodies& bodies, Real carryScale, JointPass& pass);
 
-/// The rows for a substep of h, where the bodies stand now, from the carried impulses.
-void buildJointRows(const World& world, const SolverBodies& bodies, Real h, JointPass& pass);
+// [ch11-kept-turn]
+/// A joint keeps last substep's rows while neither body has turned more than this since they were
+/// built (rad): its Jacobians then stand where the arms and axes were, and its errors move to first
+/// order (advanceJointErrors). A frozen arm of length r misplaces its anchor by about
+/// turn^2 r / 2, 12.5 micrometres for a 1 m arm at this turn, where the joints' own error at rest
+/// is a millimetre; the frame's first substep always builds.
+constexpr Real kJointRowsKeptTurn = Real(0.005);
+// [ch11-kept-turn]
+
+/// The rows for a substep of h, where the bodies stand now, from the carried impulses; after the
+/// frame's first substep, a point joint (ball socket, hinge, cone twist, fixed) whose bodies have
+/// turned at most kJointRowsKeptTurn since its rows were built keeps them, its biases made again
+/// from its moved errors.
+void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool firstSubstep, JointPass& pass);
+
+/// Every row's position error moved by the velocities the bodies moved with in this substep
+/// (after the biased pass, before the relax pass).
+void advanceJointErrors(JointPass& pass, const SolverBodyState* states, Real h);
 
 /// The carried impulses applied to the bodies (the warm start); without warm starting, every
 /// substep's impulses start from zero.

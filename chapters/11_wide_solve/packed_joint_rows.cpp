@@ -48,6 +48,8 @@ PackedJointRow packRow(const JointRowBatch& batch, int slot, const std::vector<S
     packed.slot = slot;
     packed.fedBack = batch.fedBack[slot];
     packed.turnOnly = row.linearA.isZero(0) && row.linearB.isZero(0);
+    packed.kind = batch.kind[slot];
+    packed.error = batch.error[slot];
     packed.linearA = row.linearA;
     packed.angularA = row.angularA;
     packed.linearB = row.linearB;
@@ -87,6 +89,7 @@ PackedPointBlock packBlock(const JointRowBatch& batch, const std::vector<SolverB
         block.fedBack[axis] = batch.fedBack[axis];
         block.bias[axis] = batch.rows[axis].bias;
         block.impulse[axis] = batch.rows[axis].impulse;
+        block.error[axis] = batch.error[axis];
     }
     block.soft = batch.softness[0];
     return block;
@@ -147,6 +150,49 @@ void appendPackedJoint(const JointRowBatch& batch, int joint, const std::vector<
     }
     entry.rowCount = static_cast<int>(packed.rows.size()) - entry.firstRow;
     packed.joints.push_back(entry);
+}
+
+void copyPackedJoint(const PackedJointRows& from, int entry, PackedJointRows& packed) {
+    PackedJoint joint = from.joints[static_cast<std::size_t>(entry)];
+    if (joint.block >= 0) {
+        packed.blocks.push_back(from.blocks[static_cast<std::size_t>(joint.block)]);
+        joint.block = static_cast<int>(packed.blocks.size()) - 1;
+    }
+    const auto first = from.rows.begin() + joint.firstRow;
+    joint.firstRow = static_cast<int>(packed.rows.size());
+    packed.rows.insert(packed.rows.end(), first, first + joint.rowCount);
+    packed.joints.push_back(joint);
+}
+
+// [ch11-advance-errors]
+void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
+    for (PackedPointBlock& block : packed.blocks) {
+        const SolverBodyState& a = states[block.slotA];
+        const SolverBodyState& b = states[block.slotB];
+        block.error += h * (linearOf(b) + angularOf(b).cross(block.armB) - linearOf(a) - angularOf(a).cross(block.armA));
+    }
+    for (PackedJointRow& row : packed.rows) {
+        if (row.kind == JointRowKind::Free) continue;  // a motor's bias is a speed, not an error
+        const SolverBodyState& a = states[row.slotA];
+        const SolverBodyState& b = states[row.slotB];
+        row.error += h * (row.linearA.dot(linearOf(a)) + row.angularA.dot(angularOf(a)) +
+                          row.linearB.dot(linearOf(b)) + row.angularB.dot(angularOf(b)));
+    }
+}
+// [ch11-advance-errors]
+
+void refreshPackedFeedback(PackedJointRows& packed, int entry, const JointFeedback& feedback, Real h) {
+    const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    if (joint.block >= 0) {
+        PackedPointBlock& block = packed.blocks[static_cast<std::size_t>(joint.block)];
+        for (int axis = 0; axis < 3; ++axis)
+            jointRowFeedback(block.bias[axis], block.soft, block.fedBack[axis], JointRowKind::Equality,
+                             block.error[axis], /*movesPoints=*/true, feedback, h);
+    }
+    for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
+        PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
+        jointRowFeedback(row.bias, row.soft, row.fedBack, row.kind, row.error, !row.turnOnly, feedback, h);
+    }
 }
 
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {

@@ -22,6 +22,8 @@ struct PackedJointRow {
     int slot = 0;               // its joint's slot (JointImpulses::slot): where its impulse goes back
     bool fedBack = false;       // the relax pass takes its bias and softness out
     bool turnOnly = false;      // no linear part (a hinge's, a cone's, a limit's turn): the sweeps skip it
+    JointRowKind kind = JointRowKind::Free;  // what its bias is made from (chapter 8's jointRowFeedback)
+    Real error = 0;             // its position error C, moved to first order while the row is kept
     Vec3 linearA = Vec3::Zero(), angularA = Vec3::Zero(), linearB = Vec3::Zero(), angularB = Vec3::Zero();  // J
     Vec3 moveLinearA = Vec3::Zero(), moveAngularA = Vec3::Zero();  // M^-1 J^T: the velocity one unit of impulse adds
     Vec3 moveLinearB = Vec3::Zero(), moveAngularB = Vec3::Zero();
@@ -38,6 +40,7 @@ struct PackedPointBlock {
     Real inverseMassA = 0, inverseMassB = 0;
     Mat3 inverseInertiaA = Mat3::Zero(), inverseInertiaB = Mat3::Zero();
     Vec3 bias = Vec3::Zero(), impulse = Vec3::Zero();
+    Vec3 error = Vec3::Zero();         // the anchors' gap, moved to first order while the block is kept
     Softness soft;
 };
 
@@ -65,6 +68,17 @@ struct PackedJointRows {
 /// here (the batch needs neither); `joint` is the caller's index of it.
 void appendPackedJoint(const JointRowBatch& batch, int joint, const std::vector<SolverBody>& bodies,
                        const std::vector<int>& slotOfEntry, PackedJointRows& packed);
+
+/// Appends `from`'s joint `entry` (its block and rows, impulses included) as it is.
+void copyPackedJoint(const PackedJointRows& from, int entry, PackedJointRows& packed);
+
+/// Every row's and block's position error moved by what the velocities in `states` do to it over
+/// h: C += h J v, the first-order change (the rows' Jacobians are dC/dx).
+void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h);
+
+/// Joint `entry`'s biases, softness and fedBack made again from its rows' errors by chapter 8's
+/// rule (jointRowFeedback), for a substep of h.
+void refreshPackedFeedback(PackedJointRows& packed, int entry, const JointFeedback& feedback, Real h);
 
 /// The carried impulses applied to the bodies.
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states);

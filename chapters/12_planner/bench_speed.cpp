@@ -67,6 +67,7 @@ struct Measurement {
     JointErrorSummary jointError;  // largest over the last second (scenes with joints)
     int sleeping = 0;
     FastSolveStats solvePhases;  // ms per timed frame in each phase of the fast solve
+    long jointsBuilt = 0, jointsKept = 0;  // timed frames' substeps: joints whose rows were built, kept
 };
 
 Real horizontalMove(const Transform& from, const Transform& to) {
@@ -113,6 +114,8 @@ public:
                 for (int i = 0; i < contact.pointCount; ++i)
                     measured_.maxPenetration = std::max(measured_.maxPenetration, contact.points[i].depth);
         if (frame < timedFrom_) return;
+        measured_.jointsBuilt += world_.step.solver.jointsBuilt;
+        measured_.jointsKept += world_.step.solver.jointsKept;
         stepMs_.push_back(pipeline_.lastStepMs());
         if (!pipeline_.lastStepTimedStages()) return;  // stages are timed one frame in eight
         for (const Stage& stage : pipeline_.stages()) measured_.stageMs[stageGroup(stage.name)] += stage.lastMs;
@@ -249,6 +252,9 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
         const FastSolveStats& phases = results.front().second.solvePhases;
         std::vector<std::string> row = {scene.name, std::to_string(phases.manifolds), std::to_string(phases.points)};
         for (double ms : phases.phaseMs) row.push_back(formatNumber(ms));
+        const Measurement& fast = results.front().second;
+        const long builds = fast.jointsBuilt + fast.jointsKept;
+        row.push_back(builds > 0 ? formatNumber(static_cast<double>(fast.jointsKept) / static_cast<double>(builds)) : "");
         profile.addRow(std::move(row));
         const double peerMs = withPeer ? results.back().second.stepMs.median : 0;
         for (const auto& result : results) {
@@ -404,7 +410,7 @@ void measureSpeed(BenchRun& bench) {
                     "overlap_unseen_m"});
     // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
     CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
-                      "relax_ms", "store_ms"});
+                      "relax_ms", "store_ms", "joint_rows_kept"});
     const std::vector<Configuration> list = configurations(withPeer);
     measureScenes(bench, scenes, list, withPeer, table, profile);
     if (!only.empty()) {  // the chosen scenes' two tables; the files stay whole runs' only
@@ -424,7 +430,7 @@ void measureSpeed(BenchRun& bench) {
     bench.writePlot(plot);
     const std::vector<FigureTable> figures = {
         {{"Ms per step and per stage, single thread, " + std::string(realTypeName()) + " build."}, &table},
-        {{"Where chapter 10's solve spends its time: ms per step in each phase."}, &profile},
+        {{"Where the fast solve spends its time: ms per step in each phase, and the share of joints that kept their rows."}, &profile},
         {{"A settled pile: the step with sleeping on, as a fraction of the same step awake."}, &sleepTable}};
     bench.writeTables(figures, "-tables");
 }
@@ -437,7 +443,8 @@ BenchEntry speedBench() {
             2,000-body pile, each optimisation off in turn, Bullet beside it; a settled pile
             asleep and awake; ms against body count
         speed.csv          per scene and configuration: ms per step, per stage, drift, penetration
-        speed-profile.csv  chapter 10's solve phase by phase: ms per step in each
+        speed-profile.csv  the fast solve phase by phase: ms per step in each; the share
+                           of joint row builds a joint kept its last substep's rows
         speed-scaling.csv  pyramids of growing size: ms per step against body count
         speed.svg          ms per step against body count, chapter 10, scalar, Bullet
         speed-tables.svg   the tables as a figure for the page)");

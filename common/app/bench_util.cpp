@@ -166,6 +166,12 @@ void BenchRun::writeTables(const std::vector<FigureTable>& figures, const std::s
 }
 
 int runBench(const BenchEntry& entry, const BenchOptions& options) {
+    // A part of a run prints its tables; the files hold whole runs only.
+    if (!options.only.empty() && (!options.csvPath.empty() || !options.plotPath.empty())) {
+        std::cerr << "error: bench " << entry.name << " --only prints the chosen scenes' tables and writes no files: "
+                  << "drop --csv and --plot, or --only for a whole run\n";
+        return 2;
+    }
     BenchRun run(entry, options);
     // Before minutes of measuring: every output can be written. Opening for appending creates
     // a missing file and leaves an existing one as it is until the suite overwrites it.

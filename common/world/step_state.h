@@ -24,6 +24,8 @@ struct SolverStats {
     Real residualMax = 0;        // m/s
     int jointRows = 0;           // rows of the joints solved with the contacts (chapter 8)
     int jointsSkipped = 0;       // joints with bad bodies or non-finite data, left out
+    int jointsBuilt = 0;         // the frame's substeps: joints whose rows were built (chapter 11)
+    int jointsKept = 0;          // ... and joints that kept last substep's rows, their errors moved
 };
 
 /// What continuous collision (chapter 7) keeps within a step and measured in the last ones. Plain

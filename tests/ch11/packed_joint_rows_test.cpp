@@ -58,7 +58,7 @@ TEST_CASE("packed joint rows sweep as chapter 8's rows do", "[ch11][joints]") {
             prepareBodies(world, bodies);
             JointPass pass;
             prepareJointPass(world, bodies, 1, pass);
-            buildJointRows(world, bodies, h, pass);
+            buildJointRows(world, bodies, h, /*firstSubstep=*/true, pass);
             REQUIRE(!pass.packed.joints.empty());
 
             // Chapter 8's rows of the same joints, where the pass's bodies stand, from the same

@@ -6,7 +6,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -72,7 +74,38 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
         if (scene != "20-link chain") CHECK(ms[scene]["fast step"] < ms[scene]["chapter 8's solve"]);
         for (std::size_t column : {11u, 12u, 13u, 14u, 15u}) CHECK(rowOf[scene]["fast step"][column] == rowOf[scene]["scalar solve"][column]);
     }
+    // The profile's last column: the share of joint row builds a joint kept its last substep's rows
+    // (chapter 11). A falling pile keeps most; a swinging chain of distance joints none.
+    std::map<std::string, double> kept;
+    std::istringstream printed(run.printed);
+    bool inProfile = false;
+    for (std::string line; std::getline(printed, line);) {
+        if (line.find("joint_rows_kept") != std::string::npos) inProfile = true;
+        if (!inProfile || line.empty()) continue;
+        const std::size_t end = line.find_last_not_of(' ');
+        for (const std::string& scene : jointScenes)
+            if (line.rfind(scene + " ", 0) == 0) kept[scene] = std::stod(line.substr(line.find_last_of(' ', end) + 1));
+    }
+    REQUIRE(kept.size() == jointScenes.size());
+    CHECK(kept["ragdoll pile"] > 0.5);
+    CHECK(kept["100 ragdolls"] > 0.5);
+    CHECK(kept["20-link chain"] == 0);
     CHECK(run.printed.find("Bullet skipped") != std::string::npos);
     CHECK(run.printed.find("angular-pile-300") != std::string::npos);
     CHECK(run.printed.find("ragdoll-field-20") != std::string::npos);  // the ragdolls asleep and awake
+}
+
+TEST_CASE("bench speed --only prints the chosen scenes and refuses to write files", "[ch12][bench]") {
+    BenchOptions options;
+    options.quick = options.quiet = true;
+    std::ostringstream out;
+    options.out = &out;
+    options.only = "ragdoll pile";
+    options.csvPath = (std::filesystem::temp_directory_path() / "speed-only-refused.csv").string();
+    CHECK(runBench(speedBench(), options) == 2);
+    CHECK(!std::filesystem::exists(options.csvPath));
+    options.csvPath.clear();
+    REQUIRE(runBench(speedBench(), options) == 0);
+    CHECK(out.str().find("ragdoll pile") != std::string::npos);
+    CHECK(out.str().find("pyramid") == std::string::npos);
 }

@@ -1,0 +1,123 @@
+// A point joint whose bodies barely turn within a frame keeps its rows from substep to substep
+// (joint_pass.h, kJointRowsKeptTurn): its Jacobians stay where they were built and its errors move
+// to first order, C += h J v (advancePackedErrors). What a kept row reads must be what chapter 8
+// would build where the bodies stand now, to second order in the turn; a joint that turned more,
+// or whose rows follow the bodies' moves too (distance, slider), is built again.
+#include "08_joints/joint_frame.h"
+#include "08_joints/scenes.h"
+#include "11_wide_solve/joint_pass.h"
+#include "11_wide_solve/solve_steps.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace stepwise;
+
+namespace {
+
+/// Every moving body given a random velocity and a turn rate of `spin` rad/s about a random axis.
+void keptTestStir(SolverBodies& bodies, unsigned seed, Real spin) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<Real> uniform(-1, 1);
+    for (std::size_t slot = 1; slot < bodies.states.size(); ++slot) {
+        SolverBodyState& state = bodies.states[slot];
+        Vec3 axis(uniform(rng), uniform(rng), uniform(rng));
+        axis = axis.norm() > Real(0.1) ? Vec3(axis.normalized()) : Vec3::UnitY();
+        for (int k = 0; k < 3; ++k) {
+            state.linearVelocity[k] = Real(0.5) * uniform(rng);
+            state.angularVelocity[k] = spin * axis[k];
+        }
+    }
+}
+
+/// One substep's move as the solve makes it: the positions, then what the move did to the errors,
+/// then the next substep's rows.
+void keptTestSubstep(const World& world, SolverBodies& bodies, Real h, JointPass& pass) {
+    integratePositions(bodies, h, SolverPath::Scalar);
+    advanceJointErrors(pass, bodies.states.data(), h);
+    buildJointRows(world, bodies, h, /*firstSubstep=*/false, pass);
+}
+
+/// Chapter 8's rows of listed joint i where its bodies stand now.
+JointRowBatch keptTestFresh(const World& world, JointPass& pass, std::size_t i, Real h) {
+    const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
+    const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
+    const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
+    JointRowBatch batch;
+    buildJointRowBatch(batch, joint, pass.joints[i], jointRowFrame(joint, a.transform, a.center, b.transform, b.center),
+                       pass.entryA[i], pass.entryB[i], pass.bodies, h, fastJointFeedback(world.settings, h), nullptr);
+    return batch;
+}
+
+/// The packed row of `slot` in joint entry `entry`, or nullptr.
+const PackedJointRow* keptTestRow(const PackedJointRows& packed, int entry, int slot) {
+    const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    for (int r = joint.firstRow; r < joint.firstRow + joint.rowCount; ++r)
+        if (packed.rows[static_cast<std::size_t>(r)].slot == slot) return &packed.rows[static_cast<std::size_t>(r)];
+    return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("a point joint whose bodies barely turn keeps its rows, its errors moved to first order", "[ch11][joints]") {
+    const Real h = Real(1) / Real(600);
+    // 1 rad/s: 1.7 mrad a substep, so three substeps stay under kJointRowsKeptTurn (5 mrad).
+    const Real spin = 1;
+    for (const World& world : {buildJointGallery(), buildRagdollPile(2)}) {
+        for (unsigned seed = 1; seed <= 3; ++seed) {
+            INFO(world.name << ", seed " << seed);
+            SolverBodies bodies;
+            prepareBodies(world, bodies);
+            keptTestStir(bodies, seed, spin);
+            JointPass pass;
+            prepareJointPass(world, bodies, 1, pass);
+            buildJointRows(world, bodies, h, /*firstSubstep=*/true, pass);
+            const int listed = static_cast<int>(pass.joints.size());
+            REQUIRE(pass.jointsBuilt == listed);
+            for (int substep = 1; substep <= 2; ++substep) keptTestSubstep(world, bodies, h, pass);
+
+            int kept = 0;
+            for (std::size_t i = 0; i < pass.joints.size(); ++i) {
+                const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
+                const bool point = joint.type != JointType::Distance && joint.type != JointType::Slider;
+                const int entry = pass.packedEntry[i];
+                REQUIRE(entry >= 0);
+                if (!point) continue;
+                ++kept;
+                const JointRowBatch fresh = keptTestFresh(world, pass, i, h);
+                // Second order in the turn, a few micrometres (or microradians) here.
+                const Real tolerance = Real(2e-5);
+                const PackedJoint& packedJoint = pass.packed.joints[static_cast<std::size_t>(entry)];
+                if (packedJoint.block >= 0) {
+                    const Vec3& gap = pass.packed.blocks[static_cast<std::size_t>(packedJoint.block)].error;
+                    for (int axis = 0; axis < 3; ++axis) CHECK(std::abs(gap[axis] - fresh.error[axis]) <= tolerance);
+                }
+                // The turn rows off a hinge's axis are measured along directions made from the
+                // axis, which may differ between builds: their pair is compared as a length.
+                Real keptAcross = 0, freshAcross = 0;
+                for (int slot = 3; slot < fresh.count; ++slot) {
+                    const PackedJointRow* row = keptTestRow(pass.packed, entry, slot);
+                    if (!row || !fresh.used[slot]) continue;
+                    if (joint.type == JointType::Hinge && slot <= 4) {
+                        keptAcross += row->error * row->error;
+                        freshAcross += fresh.error[slot] * fresh.error[slot];
+                        continue;
+                    }
+                    INFO("joint " << pass.joints[i] << " slot " << slot);
+                    CHECK(std::abs(row->error - fresh.error[slot]) <= tolerance);
+                }
+                CHECK(std::abs(std::sqrt(keptAcross) - std::sqrt(freshAcross)) <= tolerance);
+            }
+            CHECK(pass.jointsKept == 2 * kept);
+            CHECK(pass.jointsBuilt == listed + 2 * (listed - kept));
+
+            // A turn of 20 rad/s (33 mrad a substep) builds every joint again.
+            keptTestStir(bodies, seed, 20);
+            const int keptBefore = pass.jointsKept;
+            keptTestSubstep(world, bodies, h, pass);
+            CHECK(pass.jointsKept == keptBefore);
+        }
+    }
+}
