@@ -65,6 +65,18 @@ if(STEPWISE_FUZZ)
   endif()
   add_compile_options(-fsanitize=fuzzer-no-link)
 endif()
+# The chapters' libraries, the physics, keep the coverage counters but not trace-cmp, which calls
+# into libFuzzer at every integer comparison so that it can learn the values an input must match
+# (the JSON reader's keys and numbers, in common/, keep it). The physics compares floats, which
+# trace-cmp does not see; what it traced there was mostly the sanitizers' own alignment and bounds
+# checks and Eigen's index asserts (perf, bench speed's pile under the sanitizers: 15.7% of the
+# time in __sanitizer_cov_trace_*, called from Aabb::overlaps, the support points, the wide solve),
+# no value an input could be made to match.
+function(stepwise_chapter_code target)
+  if(STEPWISE_FUZZ)
+    target_compile_options(${target} PRIVATE -fno-sanitize-coverage=trace-cmp)
+  endif()
+endfunction()
 
 # The test programs' own code: -DSTEPWISE_TEST_OPTIMIZATION=-Og (the Linux presets). The Catch2
 # suites, their main, the scenario promises, the exercise checks and the CLI and PNG checkers call

@@ -24,6 +24,7 @@ function(stepwise_add_chapter number name)
     target_link_libraries(${lib} PUBLIC stepwise_app)
   endif()
   stepwise_set_warnings(${lib})
+  stepwise_chapter_code(${lib})
   set_property(GLOBAL APPEND PROPERTY STEPWISE_CHAPTERS ${number})
   set_property(GLOBAL PROPERTY STEPWISE_CHAPTER_NAME_${number} ${name})
 

@@ -8,6 +8,9 @@
 //   --shard K/N (with --check)                     only the Kth (0-based) of N shards, balanced by
 //                                                  each scene's cost (golden_shards.cpp): N
 //                                                  processes check the table in parallel
+//   --max-seconds S (with --check)                 skip the scenes whose sanitizer run took more
+//                                                  than S seconds (golden_shards.cpp's table); the
+//                                                  shards are dealt from the others
 // The build runs --check as the ctest reliability.golden_hashes; the target `golden-hashes`
 // runs --write for the build's precision (docs/reliability.md).
 #include "golden_runs.h"
@@ -67,17 +70,19 @@ int main(int argc, char** argv) {
         if (option == "--unchecked") unchecked.insert(argv[i + 1]);
         if (option == "--max-bodies") selection.maxBodies = std::size_t(std::stoul(argv[i + 1]));
         if (option == "--from-chapter") selection.fromChapter = std::stoi(argv[i + 1]);
+        if (option == "--max-seconds") selection.maxSeconds = std::stod(argv[i + 1]);
         if (option == "--shard") {
             const std::string shard = argv[i + 1];
             const auto slash = shard.find('/');
             if (slash != std::string::npos) selection.shard = std::stoi(shard.substr(0, slash)), selection.shards = std::stoi(shard.substr(slash + 1));
         }
     }
-    const bool everyScene = selection.maxBodies == std::size_t(-1) && selection.fromChapter == 0 && selection.shards == 1;
+    const bool everyScene = selection.maxBodies == std::size_t(-1) && selection.fromChapter == 0 && selection.shards == 1 &&
+                            selection.maxSeconds < 0;
     if (mode.empty() || scenes.empty() || (mode == "--write" && !everyScene) || selection.shards < 1 ||
         selection.shard < 0 || selection.shard >= selection.shards) {
         std::cerr << "usage: stepwise_goldens --check|--write FILE --scenes DIR [--max-bodies N] [--from-chapter C] "
-                     "[--shard K/N] (the last three with --check)\n";
+                     "[--shard K/N] [--max-seconds S] (the last four with --check)\n";
         return 2;
     }
     Registry registry;

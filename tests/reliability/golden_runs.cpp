@@ -19,16 +19,26 @@ std::vector<GoldenRun> runGoldenScenes(const Registry& registry, const std::stri
     for (const auto& item : std::filesystem::directory_iterator(sceneFolder))
         if (item.path().extension() == ".json") files.push_back(item.path());
     std::sort(files.begin(), files.end());
-    // The shards are dealt from the names alone, before any run, so every process agrees.
-    std::vector<std::string> names;
+    // The shards are dealt from the names alone, before any run, so every process agrees. A scene
+    // over the time cap is in none (-1), and the others are dealt evenly among the shards.
+    std::vector<std::string> names, dealt;
     for (const SceneEntry& entry : registry.scenes()) names.push_back(entry.name);
     for (const auto& file : files) names.push_back("scenes/" + file.filename().string());
-    const std::vector<int> shardOf = goldenShards(names, selection.shards);
+    const auto overCap = [&](const std::string& name) {
+        return selection.maxSeconds >= 0 && goldenSceneSeconds(name) > selection.maxSeconds;
+    };
+    for (const std::string& name : names)
+        if (!overCap(name)) dealt.push_back(name);
+    const std::vector<int> dealtShard = goldenShards(dealt, selection.shards);
+    std::vector<int> shardOf;
+    std::size_t next = 0;
+    for (const std::string& name : names) shardOf.push_back(overCap(name) ? -1 : dealtShard[next++]);
 
     std::vector<GoldenRun> runs;
     const auto run = [&](const std::string& name, World world, int chapter) {
-        const bool inShard = shardOf[runs.size()] == selection.shard;
-        if (!inShard) runs.push_back({name, 0, "in another shard"});
+        const int shard = shardOf[runs.size()];
+        if (shard < 0) runs.push_back({name, 0, "over " + std::to_string(int(selection.maxSeconds)) + " s under the sanitizers"});
+        else if (shard != selection.shard) runs.push_back({name, 0, "in another shard"});
         else if (chapter < selection.fromChapter) runs.push_back({name, 0, "a chapter before " + std::to_string(selection.fromChapter)});
         else if (world.bodies.size() > selection.maxBodies) runs.push_back({name, 0, "more than " + std::to_string(selection.maxBodies) + " bodies"});
         else runs.push_back({name, finalHash(registry, std::move(world), kGoldenFrames, chapter), ""});

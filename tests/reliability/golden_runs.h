@@ -24,6 +24,8 @@ struct GoldenSelection {
     std::size_t maxBodies = std::size_t(-1);  // more bodies: skipped
     int fromChapter = 0;                      // built-in scenes of earlier chapters: skipped
     int shard = 0, shards = 1;                // only the scenes goldenShards gives to `shard`
+    double maxSeconds = -1;                   // >= 0: scenes whose goldenSceneSeconds is above: skipped,
+                                              // and the shards dealt from the others
 };
 
 /// The built-in scenes in registry order, then the scene files of `sceneFolder` by name.
