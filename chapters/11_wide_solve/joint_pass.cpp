@@ -74,12 +74,10 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
 }
 
 namespace {
+
 // The sweeps push a point block by its arms and make every row's effective mass with M^-1 J^T
 // (appendPackedJoint): the batch leaves both out.
 constexpr JointBatchNeeds kPackedNeeds{/*pointJacobians=*/false, /*effectiveMasses=*/false};
-}  // namespace
-
-namespace {
 
 // The angle of the turn from `built` to `now` (small-angle form, 2 |v| of the quotient).
 Real turnSince(const Quat& built, const Quat& now) { return 2 * (now * built.conjugate()).vec().norm(); }
@@ -175,7 +173,6 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
 void advanceJointErrors(JointPass& pass, const SolverBodyState* states, Real h) {
     advancePackedErrors(pass.packed, states, h);
 }
-
 
 void warmStartJoints(JointPass& pass, SolverBodyState* states, bool warmStarting) {
     if (pass.packed.joints.empty()) return;
