@@ -224,7 +224,9 @@ void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolve
         solveAll(scratch.scalarBlocks, states, params, true);
         stats.ms(SolvePhase::Solve) += clock.lap();
         integratePositions(scratch.bodies, h, path);
-        if (joints) advanceJointErrors(*joints, states, h);  // what the move did to the kept rows' errors
+        // What the move did to the errors of rows the next substep may keep (the frame's last
+        // substep hands none on: the next frame builds every joint).
+        if (joints && substep + 1 < substeps) advanceJointErrors(*joints, states, h);
         stats.ms(SolvePhase::Integrate) += clock.lap();
         if (joints) solveJoints(*joints, states, /*relax=*/true);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax

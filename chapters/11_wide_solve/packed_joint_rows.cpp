@@ -95,12 +95,17 @@ PackedPointBlock packBlock(const JointRowBatch& batch, const std::vector<SolverB
     return block;
 }
 
+// How fast the anchors part: B's anchor's velocity less A's (the point rows' J v).
+Vec3 anchorsRate(const PackedPointBlock& block, const SolverBodyState* states) {
+    const SolverBodyState& a = states[block.slotA];
+    const SolverBodyState& b = states[block.slotB];
+    return linearOf(b) + angularOf(b).cross(block.armB) - linearOf(a) - angularOf(a).cross(block.armA);
+}
+
 // The block's impulse: the anchors' relative velocity to the bias, softened (chapter 8's
 // solveJointRows).
 void solveBlock(PackedPointBlock& block, SolverBodyState* states, bool relax) {
-    const SolverBodyState& a = states[block.slotA];
-    const SolverBodyState& b = states[block.slotB];
-    const Vec3 relative = linearOf(b) + angularOf(b).cross(block.armB) - linearOf(a) - angularOf(a).cross(block.armA);
+    const Vec3 relative = anchorsRate(block, states);
     Vec3 bias = block.bias;
     for (int axis = 0; axis < 3; ++axis)
         if (relax && block.fedBack[axis]) bias[axis] = 0;
@@ -112,12 +117,17 @@ void solveBlock(PackedPointBlock& block, SolverBodyState* states, bool relax) {
 }
 
 // [ch11-packed-sweep]
-void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
+// How fast the row's C changes: J v (a turn-only row without its zero linear part).
+Real rowRate(const PackedJointRow& row, const SolverBodyState* states) {
     const SolverBodyState& a = states[row.slotA];
     const SolverBodyState& b = states[row.slotB];
-    const Real velocity = row.turnOnly ? row.angularA.dot(angularOf(a)) + row.angularB.dot(angularOf(b))
-                                       : row.linearA.dot(linearOf(a)) + row.angularA.dot(angularOf(a)) +
-                                             row.linearB.dot(linearOf(b)) + row.angularB.dot(angularOf(b));
+    if (row.turnOnly) return row.angularA.dot(angularOf(a)) + row.angularB.dot(angularOf(b));
+    return row.linearA.dot(linearOf(a)) + row.angularA.dot(angularOf(a)) + row.linearB.dot(linearOf(b)) +
+           row.angularB.dot(angularOf(b));
+}
+
+void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
+    const Real velocity = rowRate(row, states);
     const bool plain = relax && row.fedBack;  // the relax pass: no bias, rigid
     const Softness soft = plain ? Softness{} : row.soft;
     const Real bias = plain ? Real(0) : row.bias;
@@ -166,18 +176,9 @@ void copyPackedJoint(const PackedJointRows& from, int entry, PackedJointRows& pa
 
 // [ch11-advance-errors]
 void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
-    for (PackedPointBlock& block : packed.blocks) {
-        const SolverBodyState& a = states[block.slotA];
-        const SolverBodyState& b = states[block.slotB];
-        block.error += h * (linearOf(b) + angularOf(b).cross(block.armB) - linearOf(a) - angularOf(a).cross(block.armA));
-    }
-    for (PackedJointRow& row : packed.rows) {
-        if (row.kind == JointRowKind::Free) continue;  // a motor's bias is a speed, not an error
-        const SolverBodyState& a = states[row.slotA];
-        const SolverBodyState& b = states[row.slotB];
-        row.error += h * (row.linearA.dot(linearOf(a)) + row.angularA.dot(angularOf(a)) +
-                          row.linearB.dot(linearOf(b)) + row.angularB.dot(angularOf(b)));
-    }
+    for (PackedPointBlock& block : packed.blocks) block.error += h * anchorsRate(block, states);
+    for (PackedJointRow& row : packed.rows)
+        if (row.kind != JointRowKind::Free) row.error += h * rowRate(row, states);  // a motor's bias is a speed
 }
 // [ch11-advance-errors]
 
