@@ -154,10 +154,16 @@ SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale, FacePoint fa
         const Vec3 normal = ab.cross(ac);
         originSide[f] = -a.dot(normal);
         oppositeSide[f] = ad.dot(normal);
-        // A flat tetrahedron has no inside; test every face instead of trusting the signs.
         const bool flat = std::abs(oppositeSide[f]) <= kDegenerateFraction * ab.norm() * ac.norm() * ad.norm();
         degenerate = degenerate || flat;
-        const bool outside = flat || (originSide[f] > 0 && oppositeSide[f] < 0) || (originSide[f] < 0 && oppositeSide[f] > 0);
+    }
+    for (int f = 0; f < 4; ++f) {
+        // A flat tetrahedron has no inside; test every face instead of trusting the signs. All
+        // four, not only the face whose test said flat: the test scales with each face's own
+        // edges, so of a 40 m by 2 mm sliver (a box resting on a large ground box) one face reads
+        // flat and the others do not, and the face nearest the origin would go untested.
+        const bool outside =
+            degenerate || (originSide[f] > 0 && oppositeSide[f] < 0) || (originSide[f] < 0 && oppositeSide[f] > 0);
         if (!outside) continue;
         anyOutside = true;
         SimplexClosest onFace = closestOnTriangle(points, kFaces[f][0], kFaces[f][1], kFaces[f][2], scale, facePoint);

@@ -3,6 +3,7 @@
 
 #include "02_gjk/gjk_walk.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace stepwise {
@@ -49,11 +50,13 @@ GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int ma
     Walk walk = startWalk(pair, tolerances);
     result.iterations = 1;
     GjkExit exit = walk.v.squaredNorm() <= touchingSquared ? GjkExit::Intersect : GjkExit::IterationCap;
+    Real lowerBound = -kRealMax;  // the best support plane's distance from the origin (cores)
     // [ch02-distance-loop]
     while (exit == GjkExit::IterationCap && result.iterations < maxIterations) {
         const Vec3 direction = -walk.v;
         const SupportPoint point = minkowskiSupport(pair.a, pair.b, direction);
         ++result.iterations;
+        lowerBound = std::max(lowerBound, walk.v.dot(point.w) / walk.v.norm());
 
         // Bounds on the distance: |v| from above (v is a point of A - B), v.w / |v| from below
         // (the support plane through w). Stop when they agree to a relative tolerance
@@ -93,7 +96,13 @@ GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int ma
         coreA += walk.weights[i] * walk.simplex.vertices[i].onA;
         coreB += walk.weights[i] * walk.simplex.vertices[i].onB;
     }
-    const Real coreDistance = exit == GjkExit::Intersect ? Real(0) : walk.v.norm();
+    // A walk that stopped on a rounding floor (a sliver simplex: a small box on a 40 m ground box
+    // makes A - B a slab, and its tetrahedra near the origin are millimetres thick) has found an
+    // upper bound of the distance, not the distance. It proves a gap only with a support plane that
+    // leaves the origin outside; without one the cores count as touching, as gjkIntersect's verdict
+    // counts them.
+    const bool proven = exit == GjkExit::Separated || lowerBound > tolerances.touching;
+    const Real coreDistance = exit == GjkExit::Intersect || !proven ? Real(0) : walk.v.norm();
     const Vec3 axisAToB = coreDistance > 0 ? Vec3(-walk.v / coreDistance) : Vec3::Zero();
     result.pointA = coreA + radiusA * axisAToB + pair.offset;
     result.pointB = coreB - radiusB * axisAToB + pair.offset;

@@ -1,6 +1,7 @@
 #pragma once
 // Manifolds of two polytopes (boxes, hulls): a face contact by clipping, or an edge-edge contact
-// of one point. Chapter 3's query supplies the normal; the faces and edges are found from it.
+// of one point with the speculative guards of the faces that meet next. Chapter 3's query
+// supplies the normal; the faces and edges are found from it.
 
 #include "03_epa/narrowphase.h"
 #include "06_manifolds/manifold_point.h"

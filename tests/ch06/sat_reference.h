@@ -120,9 +120,62 @@ inline void segmentClosest(const V3& p1, const V3& q1, const V3& p2, const V3& q
     c2 = p2 + t * d2;
 }
 
+/// The points of a face contact: `inc`'s face most opposed to the reference face, clipped against
+/// the reference face's side planes, kept up to keepDistance above it.
+inline std::vector<ReferencePoint> clipFacePoints(const WorldPolytope& a, const WorldPolytope& b, bool referenceIsA,
+                                                  std::size_t refFace, double keepDistance) {
+    const WorldPolytope& ref = referenceIsA ? a : b;
+    const WorldPolytope& inc = referenceIsA ? b : a;
+    const V3 refNormal = ref.normals[refFace];
+    std::size_t incFace = 0;
+    double lowest = 1e300;
+    for (std::size_t f = 0; f < inc.faces.size(); ++f) {
+        const double d = inc.normals[f].dot(refNormal);
+        if (d < lowest) { lowest = d; incFace = f; }
+    }
+    std::vector<V3> polygon;
+    for (int index : inc.faces[incFace]) polygon.push_back(inc.vertices[static_cast<std::size_t>(index)]);
+    const auto& loop = ref.faces[refFace];
+    for (std::size_t k = 0; k < loop.size() && !polygon.empty(); ++k) {
+        const V3& p = ref.vertices[static_cast<std::size_t>(loop[k])];
+        const V3& q = ref.vertices[static_cast<std::size_t>(loop[(k + 1) % loop.size()])];
+        const V3 side = (q - p).cross(refNormal).normalized();
+        std::vector<V3> next;
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const V3& s = polygon[i];
+            const V3& e = polygon[(i + 1) % polygon.size()];
+            const double ds = side.dot(s - p), de = side.dot(e - p);
+            if (ds <= 0) next.push_back(s);
+            if ((ds <= 0) != (de <= 0)) next.push_back(s + (ds / (ds - de)) * (e - s));
+        }
+        polygon.swap(next);
+    }
+    const double refOffset = refNormal.dot(ref.vertices[static_cast<std::size_t>(loop[0])]);
+    std::vector<ReferencePoint> points;
+    for (const V3& p : polygon) {
+        const double separation = refNormal.dot(p) - refOffset;
+        if (separation > keepDistance) continue;
+        const V3 projected = p - separation * refNormal;
+        points.push_back(referenceIsA ? ReferencePoint{projected, p, -separation} : ReferencePoint{p, projected, -separation});
+    }
+    return points;
+}
+
+/// The face of `polytope` whose outward normal is most aligned with `direction`.
+inline std::size_t mostAlignedFaceOf(const WorldPolytope& polytope, const V3& direction, double& alignment) {
+    std::size_t best = 0;
+    alignment = -1e300;
+    for (std::size_t f = 0; f < polytope.faces.size(); ++f) {
+        if (polytope.normals[f].dot(direction) > alignment) { alignment = polytope.normals[f].dot(direction); best = f; }
+    }
+    return best;
+}
+
 /// SAT and clipping. `faceTolerance`: faces are preferred to edges and A's face to B's within it
 /// (the engine's convention, Box2D's). Points more than keepDistance above the reference face are
-/// dropped.
+/// dropped. An edge-edge answer also holds the guards: the clipped points of the faces most aligned
+/// with its normal, read along it, apart (depth < 0) and more than `faceTolerance` shallower than
+/// the edge point.
 inline ReferenceManifold satManifold(const Shape& shapeA, const Transform& ta, const Shape& shapeB, const Transform& tb,
                                      double keepDistance, double faceTolerance) {
     ReferenceManifold result;
@@ -169,47 +222,24 @@ inline ReferenceManifold satManifold(const Shape& shapeA, const Transform& ta, c
         result.kind = ReferenceManifold::EdgeEdge;
         result.normal = edgeAxis;
         const double depth = edgeAxis.dot(onA - onB);
-        if (-depth <= keepDistance) result.points.push_back({onA, onB, depth});
+        if (!(-depth <= keepDistance)) return result;
+        result.points.push_back({onA, onB, depth});
+        // Guards: the faces most aligned with the edge normal, clipped, read along that normal.
+        double alignA = 0, alignB = 0;
+        const std::size_t guardA = mostAlignedFaceOf(a, edgeAxis, alignA);
+        const std::size_t guardB = mostAlignedFaceOf(b, -edgeAxis, alignB);
+        const bool guardOnA = alignA >= alignB;
+        for (const ReferencePoint& face : clipFacePoints(a, b, guardOnA, guardOnA ? guardA : guardB, keepDistance)) {
+            const double guardDepth = edgeAxis.dot(face.pointA - face.pointB);
+            if (guardDepth < std::min(0.0, depth - faceTolerance) && -guardDepth <= keepDistance)
+                result.points.push_back({face.pointA, face.pointB, guardDepth});
+        }
         return result;
     }
     const bool referenceIsA = bestB <= bestA + faceTolerance;
-    const WorldPolytope& ref = referenceIsA ? a : b;
-    const WorldPolytope& inc = referenceIsA ? b : a;
-    const std::size_t refFace = referenceIsA ? faceA : faceB;
-    const V3 refNormal = ref.normals[refFace];
-    std::size_t incFace = 0;
-    double lowest = 1e300;
-    for (std::size_t f = 0; f < inc.faces.size(); ++f) {
-        const double d = inc.normals[f].dot(refNormal);
-        if (d < lowest) { lowest = d; incFace = f; }
-    }
-    std::vector<V3> polygon;
-    for (int index : inc.faces[incFace]) polygon.push_back(inc.vertices[static_cast<std::size_t>(index)]);
-    const auto& loop = ref.faces[refFace];
-    for (std::size_t k = 0; k < loop.size() && !polygon.empty(); ++k) {
-        const V3& p = ref.vertices[static_cast<std::size_t>(loop[k])];
-        const V3& q = ref.vertices[static_cast<std::size_t>(loop[(k + 1) % loop.size()])];
-        const V3 side = (q - p).cross(refNormal).normalized();
-        std::vector<V3> next;
-        for (std::size_t i = 0; i < polygon.size(); ++i) {
-            const V3& s = polygon[i];
-            const V3& e = polygon[(i + 1) % polygon.size()];
-            const double ds = side.dot(s - p), de = side.dot(e - p);
-            if (ds <= 0) next.push_back(s);
-            if ((ds <= 0) != (de <= 0)) next.push_back(s + (ds / (ds - de)) * (e - s));
-        }
-        polygon.swap(next);
-    }
-    const double refOffset = refNormal.dot(ref.vertices[static_cast<std::size_t>(loop[0])]);
     result.kind = referenceIsA ? ReferenceManifold::FaceA : ReferenceManifold::FaceB;
-    result.normal = referenceIsA ? refNormal : V3(-refNormal);
-    for (const V3& p : polygon) {
-        const double separation = refNormal.dot(p) - refOffset;
-        if (separation > keepDistance) continue;
-        const V3 projected = p - separation * refNormal;
-        result.points.push_back(referenceIsA ? ReferencePoint{projected, p, -separation}
-                                             : ReferencePoint{p, projected, -separation});
-    }
+    result.normal = referenceIsA ? a.normals[faceA] : V3(-b.normals[faceB]);
+    result.points = clipFacePoints(a, b, referenceIsA, referenceIsA ? faceA : faceB, keepDistance);
     return result;
 }
 
