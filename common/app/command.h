@@ -3,13 +3,13 @@
 // callback once its command line is parsed. The `stepwise` program parses with CLI11, a large
 // header library of templates; behind this small interface only common/app compiles it, so a
 // chapter that adds a command (`collide`, `stress`, `record`) costs its unity build no CLI11.
-// Each function calls the CLI11 function of the same name and the same value type, so option
-// names, help, validation messages and exit codes are CLI11's own.
+// Each function is one CLI11 call (add_option, add_flag, check, ...) on a value of the same type,
+// so option names, help, validation messages and exit codes are CLI11's own.
 //
-//     Command collide = program.addSubcommand("collide", "Contact queries for pairs of shapes");
-//     collide.addOption("--input", args->inputPath, "Pairs file").required();
-//     collide.addOption("--frames", args->frames, "Frames to run").range(0L, 10000000L);
-//     collide.onParsed([args, &exitCode] { exitCode = run(*args); });
+//     Command record = program.addSubcommand("record", "Run a scene and record it");
+//     record.addOption("--output", args->output, "The recording file to write").required();
+//     record.addOption("--frames", args->frames, "Frames to run").range(0L, 10000000L);
+//     record.onParsed([args, &exitCode] { exitCode = runRecord(*args); });
 
 #include "world/enum_names.h"
 
