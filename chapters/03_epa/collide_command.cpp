@@ -5,8 +5,6 @@
 #include "world/json_reader.h"
 #include "world/scene.h"
 
-#include <CLI/CLI.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -137,15 +135,14 @@ int runCollideCommand(const CollideArgs& args, std::ostream& out, std::ostream& 
     return 0;
 }
 
-void installCollideCommand(CLI::App& app, int& exitCode) {
+void installCollideCommand(Command program, int& exitCode) {
     auto args = std::make_shared<CollideArgs>();
-    CLI::App* collide =
-        app.add_subcommand("collide", "Contact queries for pairs of shapes: depth, normal and points (JSON in and out)");
-    collide->add_option("--input", args->inputPath, "Pairs file: { \"pairs\": [ { \"a\": BODY, \"b\": BODY } ] }")
-        ->required();
-    collide->add_option("--output", args->outputPath, "Write the results here (default: standard output)");
-    collide->add_flag("--time", args->time, "Also print the time per query (parsing and writing excluded)");
-    collide->callback([args, &exitCode] { exitCode = runCollideCommand(*args, std::cout, std::cerr); });
+    Command collide =
+        program.addSubcommand("collide", "Contact queries for pairs of shapes: depth, normal and points (JSON in and out)");
+    collide.addOption("--input", args->inputPath, "Pairs file: { \"pairs\": [ { \"a\": BODY, \"b\": BODY } ] }").required();
+    collide.addOption("--output", args->outputPath, "Write the results here (default: standard output)");
+    collide.addFlag("--time", args->time, "Also print the time per query (parsing and writing excluded)");
+    collide.onParsed([args, &exitCode] { exitCode = runCollideCommand(*args, std::cout, std::cerr); });
 }
 
 }  // namespace stepwise

@@ -4,14 +4,11 @@
 // suites and other engines can drive chapter 3's narrowphase through a file.
 
 #include "03_epa/narrowphase.h"
+#include "app/command.h"
 
 #include <iosfwd>
 #include <string>
 #include <vector>
-
-namespace CLI {
-class App;
-}
 
 namespace stepwise {
 
@@ -38,6 +35,6 @@ struct CollideArgs {
 int runCollideCommand(const CollideArgs& args, std::ostream& out, std::ostream& err);
 
 /// Adds the `collide` subcommand; its callback runs the command and stores the exit code.
-void installCollideCommand(CLI::App& app, int& exitCode);
+void installCollideCommand(Command program, int& exitCode);
 
 }  // namespace stepwise

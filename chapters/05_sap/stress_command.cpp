@@ -5,11 +5,8 @@
 #include "app/runner.h"
 #include "world/report.h"
 
-#include <CLI/CLI.hpp>
-
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <memory>
 
 namespace stepwise {
@@ -59,31 +56,28 @@ int runStressCommand(const StressArgs& args, const Registry& registry, std::ostr
     return stats.frames == args.frames ? 0 : 1;
 }
 
-void installStressCommand(CLI::App& app, int& exitCode, const Registry& registry) {
+void installStressCommand(Command program, int& exitCode, const Registry& registry) {
     auto args = std::make_shared<StressArgs>();
-    CLI::App* stress = app.add_subcommand(
+    Command stress = program.addSubcommand(
         "stress", "The stress scene (chapter 5): many bodies dropped dense or sparse, run headless or saved as a scene");
-    const std::map<std::string, StressDensity> densities = {{"sparse", StressDensity::Sparse}, {"dense", StressDensity::Dense}};
-    std::map<std::string, StressShape> shapes;
-    for (const auto& [name, shape] : stressShapeNames()) shapes[name] = shape;
-    stress->add_option("--count", args->params.count, "Dynamic bodies")->check(CLI::Range(1, kStressMaxCount));
-    stress->add_option("--density", args->params.density, "sparse (3 m apart) or dense (5 cm apart)")
-        ->transform(CLI::CheckedTransformer(densities, CLI::ignore_case));
-    stress->add_option("--shape", args->params.shape, "sphere, diamond (convex hull), box, capsule, cylinder, mixed (the first three) or all")
-        ->transform(CLI::CheckedTransformer(shapes, CLI::ignore_case));
-    stress->add_option("--height", args->params.dropHeight, "Drop height of the lowest bodies, m")
-        ->check(CLI::Range(Real(0), kStressMaxDropHeight));
-    stress->add_option("--seed", args->params.seed, "Seed of the positions' jitter and the orientations");
-    stress->add_option("--broadphase", args->broadphase, "auto, sap or brute")->check(CLI::IsMember({"auto", "sap", "brute"}));
-    stress->add_option("--frames", args->frames, "Frames to simulate")->check(CLI::Range(0L, 100000000L));
+    const Names<StressDensity> densities = {{"sparse", StressDensity::Sparse}, {"dense", StressDensity::Dense}};
+    stress.addOption("--count", args->params.count, "Dynamic bodies").range(1, kStressMaxCount);
+    stress.addChoice("--density", args->params.density, densities, "sparse (3 m apart) or dense (5 cm apart)");
+    stress.addChoice("--shape", args->params.shape, stressShapeNames(),
+                     "sphere, diamond (convex hull), box, capsule, cylinder, mixed (the first three) or all");
+    stress.addOption("--height", args->params.dropHeight, "Drop height of the lowest bodies, m")
+        .range(Real(0), kStressMaxDropHeight);
+    stress.addOption("--seed", args->params.seed, "Seed of the positions' jitter and the orientations");
+    stress.addOption("--broadphase", args->broadphase, "auto, sap or brute").oneOf({"auto", "sap", "brute"});
+    stress.addOption("--frames", args->frames, "Frames to simulate").range(0L, 100000000L);
     // Checked by the command, which names the chapters there are.
     auto chapter = std::make_shared<int>(0);
-    CLI::Option* chapterOption =
-        stress->add_option("--chapter", *chapter, "Use the engine as of this chapter (default: the latest)");
-    stress->add_option("--report", args->reportPath, "Write the run report (JSON) here");
-    stress->add_option("--save", args->savePath, "Write a scene file naming the generator instead of running");
-    stress->callback([args, chapter, chapterOption, &exitCode, &registry] {
-        if (chapterOption->count() > 0) args->chapter = *chapter;
+    CommandOption chapterOption =
+        stress.addOption("--chapter", *chapter, "Use the engine as of this chapter (default: the latest)");
+    stress.addOption("--report", args->reportPath, "Write the run report (JSON) here");
+    stress.addOption("--save", args->savePath, "Write a scene file naming the generator instead of running");
+    stress.onParsed([args, chapter, chapterOption, &exitCode, &registry] {
+        if (chapterOption.given()) args->chapter = *chapter;
         exitCode = runStressCommand(*args, registry, std::cout, std::cerr);
     });
 }

@@ -4,14 +4,11 @@
 // another: summary, report), or saved as a scene file that names the generator.
 
 #include "05_sap/stress_scene.h"
+#include "app/command.h"
 
 #include <iosfwd>
 #include <optional>
 #include <string>
-
-namespace CLI {
-class App;
-}
 
 namespace stepwise {
 
@@ -33,6 +30,6 @@ int runStressCommand(const StressArgs& args, const Registry& registry, std::ostr
 
 /// Adds the `stress` subcommand; its callback runs the command on the program's registry and
 /// stores the exit code.
-void installStressCommand(CLI::App& app, int& exitCode, const Registry& registry);
+void installStressCommand(Command program, int& exitCode, const Registry& registry);
 
 }  // namespace stepwise

@@ -7,8 +7,6 @@
 #include "world/scene.h"
 #include "world/state_hash.h"
 
-#include <CLI/CLI.hpp>
-
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -81,22 +79,23 @@ int runReplay(const ReplayArgs& args) {
 
 }  // namespace
 
-void installRecordCommand(CLI::App& app, int& exitCode) {
+void installRecordCommand(Command program, int& exitCode) {
     auto args = std::make_shared<RecordArgs>();
-    CLI::App* command = app.add_subcommand("record", "Run a scene and record it (scene, state hash per frame, report) for replay");
-    command->add_option("scene", args->scene, "Built-in scene name or scene JSON file")->required();
-    command->add_option("--frames", args->frames, "Frames to run")->check(CLI::Range(0L, 10000000L));
-    command->add_option("--chapter", args->chapter, "Use this chapter's pipeline (default: the latest)")->check(CLI::Range(1, 99));
-    command->add_option("--output", args->output, "The recording file to write")->required();
-    command->callback([args, &exitCode] { exitCode = runRecord(*args); });
+    Command command =
+        program.addSubcommand("record", "Run a scene and record it (scene, state hash per frame, report) for replay");
+    command.addOption("scene", args->scene, "Built-in scene name or scene JSON file").required();
+    command.addOption("--frames", args->frames, "Frames to run").range(0L, 10000000L);
+    command.addOption("--chapter", args->chapter, "Use this chapter's pipeline (default: the latest)").range(1, 99);
+    command.addOption("--output", args->output, "The recording file to write").required();
+    command.onParsed([args, &exitCode] { exitCode = runRecord(*args); });
 }
 
-void installReplayCommand(CLI::App& app, int& exitCode) {
+void installReplayCommand(Command program, int& exitCode) {
     auto args = std::make_shared<ReplayArgs>();
-    CLI::App* command = app.add_subcommand("replay", "Replay a recording and check every frame against it");
-    command->add_option("recording", args->input, "A file written by `stepwise record` or the demo's Save recording")->required();
-    command->add_option("--report", args->reportPath, "Write the replay's run report here");
-    command->callback([args, &exitCode] { exitCode = runReplay(*args); });
+    Command command = program.addSubcommand("replay", "Replay a recording and check every frame against it");
+    command.addOption("recording", args->input, "A file written by `stepwise record` or the demo's Save recording").required();
+    command.addOption("--report", args->reportPath, "Write the replay's run report here");
+    command.onParsed([args, &exitCode] { exitCode = runReplay(*args); });
 }
 
 }  // namespace stepwise

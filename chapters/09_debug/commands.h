@@ -7,13 +7,11 @@
 // replay exits 0 when every frame's state hash and the report match the recording, 1 when they
 // part (naming the first frame that differs), 2 on a malformed recording (naming the JSON path).
 
-namespace CLI {
-class App;
-}
+#include "app/command.h"
 
 namespace stepwise {
 
-void installRecordCommand(CLI::App& app, int& exitCode);
-void installReplayCommand(CLI::App& app, int& exitCode);
+void installRecordCommand(Command program, int& exitCode);
+void installReplayCommand(Command program, int& exitCode);
 
 }  // namespace stepwise

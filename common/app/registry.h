@@ -3,6 +3,7 @@
 // demo panels. Each chapter has one `void registerChapterNN(Registry&)`; the chapter list in
 // CMake generates the function that calls them all in order (cmake/StepwiseChapters.cmake).
 
+#include "app/command.h"
 #include "app/registry_fwd.h"  // registerChapters, chapterRegistry
 #include "world/pipeline.h"
 #include "world/scene.h"
@@ -13,10 +14,6 @@
 #include <memory>
 #include <string>
 #include <vector>
-
-namespace CLI {
-class App;
-}
 
 namespace stepwise {
 
@@ -126,8 +123,8 @@ class Registry;
 /// engine (`stress --chapter N`) installs with the program's registry, which knows them all.
 struct CommandEntry {
     int chapter = 0;
-    std::function<void(CLI::App& app, int& exitCode)> install;
-    std::function<void(CLI::App& app, int& exitCode, const Registry& registry)> installWithRegistry = nullptr;
+    std::function<void(Command program, int& exitCode)> install;
+    std::function<void(Command program, int& exitCode, const Registry& registry)> installWithRegistry = nullptr;
 };
 
 /// A scene generator scene files can name ("generator": { "<name>": { ... } }).
