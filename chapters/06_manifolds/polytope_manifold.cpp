@@ -209,8 +209,8 @@ bool edgeContact(const Shape& a, const Transform& ta, const Shape& b, const Tran
 /// as a guard. Its depth is read along the edge normal from its pair of points, which is never
 /// more than along the face's own normal: a guard may act a little early, never late. Guards are
 /// gaps only: a clipped point already below the face would push along the edge normal, not the
-/// face's, and shove the bodies sideways (limbs of a ragdoll pile wedged between boxes kept
-/// creeping); the edge point, whose depth is the shapes' overlap, stays the deepest.
+/// face's, and shove the bodies sideways (limbs of a ragdoll pile wedged between boxes would
+/// creep); the edge point, whose depth is the shapes' overlap, stays the deepest.
 void addFaceGuards(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, Real keepDistance,
                    ManifoldCandidates& out) {
     const Vec3 normal = out.normal;
