@@ -221,20 +221,36 @@ void addSliderRows(RowBuilder& builder, const JointDesc& joint, const JointFrame
 }
 // [ch08-slider-rows]
 
+// A distance joint's row before its feedback: a spring of its own, or an equality.
+struct DistanceRow {
+    ConstraintRow row;
+    Real error = 0;
+    bool spring = false;
+    Softness springSoftness;
+};
+
 // [ch08-distance-row]
-void addDistanceRow(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame, Real h) {
+DistanceRow distanceRow(const JointDesc& joint, const JointFrame& frame, Real h) {
     const Vec3 gap = frame.anchorB - frame.anchorA;
     const Real length = gap.norm();
     // Coincident anchors leave no direction to hold the length along: the row is empty (and skipped).
     const Vec3 direction = length > Real(1e-9) ? Vec3(gap / length) : Vec3::Zero();
-    const ConstraintRow row = linearRow(joint.bodyA, joint.bodyB, frame.armA, frame.armB, direction);
-    const Real error = length - joint.length.value_or(length);
-    if (joint.springHertz > 0)
-        builder.spring(row, error, makeSoftness(joint.springHertz, joint.springDampingRatio, h));
-    else
-        builder.equality(row, error);
+    DistanceRow out;
+    out.row = linearRow(joint.bodyA, joint.bodyB, frame.armA, frame.armB, direction);
+    out.error = length - joint.length.value_or(length);
+    out.spring = joint.springHertz > 0;
+    if (out.spring) out.springSoftness = makeSoftness(joint.springHertz, joint.springDampingRatio, h);
+    return out;
 }
 // [ch08-distance-row]
+
+void addDistanceRow(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame, Real h) {
+    const DistanceRow distance = distanceRow(joint, frame, h);
+    if (distance.spring)
+        builder.spring(distance.row, distance.error, distance.springSoftness);
+    else
+        builder.equality(distance.row, distance.error);
+}
 
 void addRowsOf(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame, Real h) {
     switch (joint.type) {
@@ -358,6 +374,25 @@ bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointI
         const Real impulse = carried && slot < JointImpulses::kSlots ? carried->slot[slot] : Real(0);
         row.impulse = std::isfinite(impulse) ? std::clamp(impulse, row.lower, row.upper) : Real(0);
     }
+    return true;
+}
+
+bool buildDistanceRow(SingleJointRow& out, const JointDesc& joint, const JointFrame& frame, int rowBodyA, int rowBodyB,
+                      Real h, const JointFeedback& feedback, const JointImpulses* carried) {
+    const DistanceRow distance = distanceRow(joint, frame, h);
+    // RowBuilder::spring and ::equality, then the batch's last steps for slot 0.
+    out.row = distance.row;
+    out.softness = distance.spring ? distance.springSoftness : Softness{};
+    out.fedBack = false;
+    out.kind = distance.spring ? JointRowKind::Spring : JointRowKind::Equality;
+    out.error = distance.error;
+    applyFeedback(out.row, out.softness, out.fedBack, out.kind, out.error, feedback, h);
+    if (!finiteRow(out.row)) return false;
+    out.row.bodyA = rowBodyA;
+    out.row.bodyB = rowBodyB;
+    out.row.effectiveMass = 0;
+    const Real impulse = carried ? carried->slot[0] : Real(0);
+    out.row.impulse = std::isfinite(impulse) ? std::clamp(impulse, out.row.lower, out.row.upper) : Real(0);
     return true;
 }
 

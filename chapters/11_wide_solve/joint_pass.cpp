@@ -76,7 +76,7 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
 namespace {
 
 // The sweeps push a point block by its arms and make every row's effective mass with M^-1 J^T
-// (appendPackedJoint): the batch leaves both out.
+// (writePackedJoint): the batch leaves both out.
 constexpr JointBatchNeeds kPackedNeeds{/*pointJacobians=*/false, /*effectiveMasses=*/false};
 
 // The angle of the turn from `built` to `now` (small-angle form, 2 |v| of the quotient).
@@ -85,7 +85,8 @@ Real turnSince(const Quat& built, const Quat& now) { return 2 * (now * built.con
 // Whether a joint's Jacobians depend on its bodies' turns alone: the point joints' rows run
 // along fixed axes through arms that turn with the bodies, their turn rows about axes that turn
 // with them. A distance joint's row runs along the line between the anchors and a slider's
-// through the gap between them, which the bodies' moves turn too: always built.
+// through the gap between them, which the bodies' moves turn too: always built (kept while that
+// line turns as little as the arms may, a swinging chain's links stretch a fifth more).
 bool rowsFollowTurnsAlone(JointType type) {
     return type == JointType::BallSocket || type == JointType::Hinge || type == JointType::ConeTwist ||
            type == JointType::Fixed;
@@ -121,48 +122,79 @@ void placeBodies(const World& world, const SolverBodies& bodies, JointPass& pass
 
 }  // namespace
 
+namespace {
+
+// Builds listed joint i's rows where its bodies stand now into its entry, which the frame's first
+// substep lays out; its slot count into `slots`. False (the entry left empty) if a row came out
+// non-finite. A joint of one row skips chapter 8's batch: the same rule, a tenth of the room.
+bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback, bool firstSubstep, std::size_t i,
+                      const JointFrame& frame, JointPass& pass, int& slots) {
+    const int entry = static_cast<int>(i);
+    const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
+    JointImpulses& carried = pass.carried[i];
+    if (hasSingleRow(joint.type)) {
+        SingleJointRow& single = pass.single;
+        const bool built = buildDistanceRow(single, joint, frame, pass.entryA[i], pass.entryB[i], h, feedback, &carried);
+        if (firstSubstep) reservePackedJoint(pass.packed, entry, 1, /*block=*/false);
+        if (!built || !writePackedJoint(single, pass.bodies, pass.slot, pass.packed, entry)) return false;
+        carried.slot[0] = single.row.impulse;
+        slots = 1;
+        return true;
+    }
+    JointRowBatch& batch = pass.batch;
+    const bool built = buildJointRowBatch(batch, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i],
+                                          pass.bodies, h, feedback, &carried, kPackedNeeds);
+    if (firstSubstep) {
+        // A joint's slots depend on its description alone; one not built yet gets them all.
+        const bool pointBlock = joint.type != JointType::Distance && joint.type != JointType::Slider;
+        reservePackedJoint(pass.packed, entry, built ? batch.count : JointRowBatch::kMaxRows, pointBlock);
+    }
+    if (!built || !writePackedJoint(batch, pass.bodies, pass.slot, pass.packed, entry)) return false;
+    // Every slot carries its impulse clamped to this substep's bounds; the sweeps' own rows
+    // overwrite theirs when the substep ends (keepJointImpulses).
+    for (int slot = 0; slot < batch.count; ++slot) carried.slot[slot] = batch.rows[slot].impulse;
+    slots = batch.count;
+    return true;
+}
+
+}  // namespace
+
 // [ch11-joint-rows]
 void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool firstSubstep, JointPass& pass) {
-    std::swap(pass.packed, pass.previous);
-    pass.packed.clear();
     pass.rowCount = 0;
     pass.invalidSkipped = 0;
+    // The frame's first substep lays the joints out, each with room for all its slots; later
+    // substeps write a joint built again over its own rows and leave a kept one where it is.
+    if (firstSubstep) {
+        pass.packed.clear();
+        pass.packedEntry.assign(pass.joints.size(), -1);
+    }
     if (pass.joints.empty()) return;
     const JointFeedback feedback = fastJointFeedback(world.settings, h);
     placeBodies(world, bodies, pass);
-    pass.packedEntry.resize(pass.joints.size(), -1);
     pass.builtA.resize(pass.joints.size());
     pass.builtB.resize(pass.joints.size());
-    JointRowBatch& batch = pass.batch;
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
-        const int entry = static_cast<int>(pass.packed.joints.size());
         if (!firstSubstep && keepsRows(world, pass, i)) {
             // Kept: last substep's rows, their impulses the sweeps ended with, their errors moved.
-            const PackedJoint& kept = pass.previous.joints[static_cast<std::size_t>(pass.packedEntry[i])];
-            pass.rowCount += kept.slotCount;
-            copyPackedJoint(pass.previous, pass.packedEntry[i], pass.packed);
-            refreshPackedFeedback(pass.packed, entry, feedback, h);
-            pass.packedEntry[i] = entry;
+            pass.rowCount += pass.packed.joints[i].slotCount;
+            refreshPackedFeedback(pass.packed, static_cast<int>(i), feedback, h);
             ++pass.jointsKept;
             continue;
         }
-        pass.packedEntry[i] = -1;
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
         const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
         const JointFrame frame = jointRowFrame(joint, a.transform, a.center, b.transform, b.center);
-        JointImpulses& carried = pass.carried[i];
-        if (!buildJointRowBatch(batch, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i], pass.bodies, h,
-                                feedback, &carried, kPackedNeeds)) {
+        pass.packedEntry[i] = -1;
+        int slots = 0;
+        if (!buildListedJoint(world, h, feedback, firstSubstep, i, frame, pass, slots)) {
+            emptyPackedJoint(pass.packed, static_cast<int>(i));
             ++pass.invalidSkipped;  // left out this substep; its impulses wait as they are
             continue;
         }
-        // Every slot carries its impulse clamped to this substep's bounds; the sweeps' own rows
-        // overwrite theirs when the substep ends (keepJointImpulses).
-        for (int slot = 0; slot < batch.count; ++slot) carried.slot[slot] = batch.rows[slot].impulse;
-        pass.rowCount += batch.count;
-        appendPackedJoint(batch, static_cast<int>(i), pass.bodies, pass.slot, pass.packed);
-        pass.packedEntry[i] = entry;
+        pass.rowCount += slots;
+        pass.packedEntry[i] = static_cast<int>(i);
         pass.builtA[i] = a.transform.rotation;
         pass.builtB[i] = b.transform.rotation;
         ++pass.jointsBuilt;

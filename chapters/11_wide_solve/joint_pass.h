@@ -55,9 +55,9 @@ struct JointPass {
     };
     std::vector<BodyPose> poses;       // per entry: where it stands this substep
     JointRowBatch batch;               // one joint's rows, as chapter 8 builds them
-    PackedJointRows packed;            // this substep's rows, as the sweeps take them
-    PackedJointRows previous;          // last substep's, which a joint whose bodies barely turned keeps
-    std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out)
+    SingleJointRow single;             // a joint of one row (distance), built without the batch
+    PackedJointRows packed;            // this substep's rows, as the sweeps take them (listed joint i is entry i)
+    std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out this substep)
     std::vector<Quat> builtA, builtB;  // per listed joint: its bodies' rotations when its rows were built
     int rowCount = 0;                  // this substep's rows, used slots or not (the run report's)
     int jointsBuilt = 0, jointsKept = 0;  // this frame's substeps: joints whose rows were built, kept

@@ -37,19 +37,18 @@ void pushRow(const PackedJointRow& row, Real applied, SolverBodyState* states) {
     push(states, row.slotB, applied * row.moveLinearB, applied * row.moveAngularB);
 }
 
-PackedJointRow packRow(const JointRowBatch& batch, int slot, const std::vector<SolverBody>& bodies,
-                       const std::vector<int>& slotOfEntry) {
-    const ConstraintRow& row = batch.rows[slot];
+// One row with what the sweeps read, M^-1 J^T and the effective mass made here.
+void packRow(const ConstraintRow& row, const Softness& softness, bool fedBack, JointRowKind kind, Real error, int slot,
+             const std::vector<SolverBody>& bodies, const std::vector<int>& slotOfEntry, PackedJointRow& packed) {
     const SolverBody& a = bodies[static_cast<std::size_t>(row.bodyA)];
     const SolverBody& b = bodies[static_cast<std::size_t>(row.bodyB)];
-    PackedJointRow packed;
     packed.slotA = slotOfEntry[static_cast<std::size_t>(row.bodyA)];
     packed.slotB = slotOfEntry[static_cast<std::size_t>(row.bodyB)];
     packed.slot = slot;
-    packed.fedBack = batch.fedBack[slot];
+    packed.fedBack = fedBack;
     packed.turnOnly = row.linearA.isZero(0) && row.linearB.isZero(0);
-    packed.kind = batch.kind[slot];
-    packed.error = batch.error[slot];
+    packed.kind = kind;
+    packed.error = error;
     packed.linearA = row.linearA;
     packed.angularA = row.angularA;
     packed.linearB = row.linearB;
@@ -66,16 +65,14 @@ PackedJointRow packRow(const JointRowBatch& batch, int slot, const std::vector<S
     packed.lower = row.lower;
     packed.upper = row.upper;
     packed.impulse = row.impulse;
-    packed.soft = batch.softness[slot];
-    return packed;
+    packed.soft = softness;
 }
 
-PackedPointBlock packBlock(const JointRowBatch& batch, const std::vector<SolverBody>& bodies,
-                           const std::vector<int>& slotOfEntry) {
+void packBlock(const JointRowBatch& batch, const std::vector<SolverBody>& bodies, const std::vector<int>& slotOfEntry,
+               PackedPointBlock& block) {
     const ConstraintRow& row = batch.rows[0];
     const SolverBody& a = bodies[static_cast<std::size_t>(row.bodyA)];
     const SolverBody& b = bodies[static_cast<std::size_t>(row.bodyB)];
-    PackedPointBlock block;
     block.slotA = slotOfEntry[static_cast<std::size_t>(row.bodyA)];
     block.slotB = slotOfEntry[static_cast<std::size_t>(row.bodyB)];
     block.armA = batch.set.pointArmA;
@@ -92,7 +89,6 @@ PackedPointBlock packBlock(const JointRowBatch& batch, const std::vector<SolverB
         block.error[axis] = batch.error[axis];
     }
     block.soft = batch.softness[0];
-    return block;
 }
 
 // How fast the anchors part: B's anchor's velocity less A's (the point rows' J v).
@@ -140,45 +136,73 @@ void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
 
 }  // namespace
 
-void appendPackedJoint(const JointRowBatch& batch, int joint, const std::vector<SolverBody>& bodies,
-                       const std::vector<int>& slotOfEntry, PackedJointRows& packed) {
+int reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block) {
     PackedJoint entry;
     entry.joint = joint;
-    entry.slotCount = batch.count;
-    int begin = 0;
-    if (batch.set.pointBlock) {
-        entry.block = static_cast<int>(packed.blocks.size());
-        packed.blocks.push_back(packBlock(batch, bodies, slotOfEntry));
-        begin = 3;
-    }
     entry.firstRow = static_cast<int>(packed.rows.size());
-    for (int slot = begin; slot < batch.count; ++slot) {
-        if (!batch.used[slot]) continue;
-        PackedJointRow row = packRow(batch, slot, bodies, slotOfEntry);
-        if (row.effectiveMass == 0) continue;  // chapter 8's sweep skips it too
-        packed.rows.push_back(row);
+    entry.rowRoom = rows;
+    packed.rows.resize(packed.rows.size() + static_cast<std::size_t>(rows));
+    if (block) {
+        entry.blockRoom = static_cast<int>(packed.blocks.size());
+        packed.blocks.emplace_back();
     }
-    entry.rowCount = static_cast<int>(packed.rows.size()) - entry.firstRow;
     packed.joints.push_back(entry);
+    return static_cast<int>(packed.joints.size()) - 1;
 }
 
-void copyPackedJoint(const PackedJointRows& from, int entry, PackedJointRows& packed) {
-    PackedJoint joint = from.joints[static_cast<std::size_t>(entry)];
-    if (joint.block >= 0) {
-        packed.blocks.push_back(from.blocks[static_cast<std::size_t>(joint.block)]);
-        joint.block = static_cast<int>(packed.blocks.size()) - 1;
+bool writePackedJoint(const JointRowBatch& batch, const std::vector<SolverBody>& bodies,
+                      const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry) {
+    PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    emptyPackedJoint(packed, entry);
+    const int begin = batch.set.pointBlock ? 3 : 0;
+    if (batch.count - begin > joint.rowRoom || (batch.set.pointBlock && joint.blockRoom < 0)) return false;
+    joint.slotCount = batch.count;
+    if (batch.set.pointBlock) {
+        joint.block = joint.blockRoom;
+        packBlock(batch, bodies, slotOfEntry, packed.blocks[static_cast<std::size_t>(joint.block)]);
     }
-    const auto first = from.rows.begin() + joint.firstRow;
-    joint.firstRow = static_cast<int>(packed.rows.size());
-    packed.rows.insert(packed.rows.end(), first, first + joint.rowCount);
-    packed.joints.push_back(joint);
+    for (int slot = begin; slot < batch.count; ++slot) {
+        if (!batch.used[slot]) continue;
+        PackedJointRow& row = packed.rows[static_cast<std::size_t>(joint.firstRow + joint.rowCount)];
+        packRow(batch.rows[slot], batch.softness[slot], batch.fedBack[slot], batch.kind[slot], batch.error[slot], slot,
+                bodies, slotOfEntry, row);
+        if (row.effectiveMass == 0) continue;  // chapter 8's sweep skips it too: the next row overwrites it
+        ++joint.rowCount;
+    }
+    return true;
+}
+
+bool writePackedJoint(const SingleJointRow& single, const std::vector<SolverBody>& bodies,
+                      const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry) {
+    PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    emptyPackedJoint(packed, entry);
+    if (joint.rowRoom < 1) return false;
+    joint.slotCount = 1;
+    PackedJointRow& row = packed.rows[static_cast<std::size_t>(joint.firstRow)];
+    packRow(single.row, single.softness, single.fedBack, single.kind, single.error, 0, bodies, slotOfEntry, row);
+    joint.rowCount = row.effectiveMass == 0 ? 0 : 1;  // chapter 8's sweep skips a row without mass too
+    return true;
+}
+
+void emptyPackedJoint(PackedJointRows& packed, int entry) {
+    PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    joint.block = -1;
+    joint.rowCount = 0;
+    joint.slotCount = 0;
 }
 
 // [ch11-advance-errors]
 void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
-    for (PackedPointBlock& block : packed.blocks) block.error += h * anchorsRate(block, states);
-    for (PackedJointRow& row : packed.rows)
-        if (row.kind != JointRowKind::Free) row.error += h * rowRate(row, states);  // a motor's bias is a speed
+    for (const PackedJoint& joint : packed.joints) {
+        if (joint.block >= 0) {
+            PackedPointBlock& block = packed.blocks[static_cast<std::size_t>(joint.block)];
+            block.error += h * anchorsRate(block, states);
+        }
+        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
+            PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
+            if (row.kind != JointRowKind::Free) row.error += h * rowRate(row, states);  // a motor's bias is a speed
+        }
+    }
 }
 // [ch11-advance-errors]
 
@@ -197,14 +221,19 @@ void refreshPackedFeedback(PackedJointRows& packed, int entry, const JointFeedba
 }
 
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
-    for (const PackedPointBlock& block : packed.blocks) {
+    // Every block first, then every row, each in joint order.
+    for (const PackedJoint& joint : packed.joints) {
+        if (joint.block < 0) continue;
+        const PackedPointBlock& block = packed.blocks[static_cast<std::size_t>(joint.block)];
         const Vec3& impulse = block.impulse;
         push(states, block.slotA, -block.inverseMassA * impulse, -(block.inverseInertiaA * block.armA.cross(impulse)));
         push(states, block.slotB, block.inverseMassB * impulse, block.inverseInertiaB * block.armB.cross(impulse));
     }
-    for (const PackedJointRow& row : packed.rows) {
-        if (row.impulse != 0) pushRow(row, row.impulse, states);
-    }
+    for (const PackedJoint& joint : packed.joints)
+        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
+            const PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
+            if (row.impulse != 0) pushRow(row, row.impulse, states);
+        }
 }
 
 void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {

@@ -44,12 +44,16 @@ struct PackedPointBlock {
     Softness soft;
 };
 
-/// One joint: its block (if any), then its rows, in chapter 8's order.
+/// One joint: its block (if any), then its rows, in chapter 8's order. Each joint has its own
+/// room in the arrays for the whole frame (rowRoom rows from firstRow, and blockRoom), so a joint
+/// built again mid-frame writes over its own rows and a kept one stays where it is.
 struct PackedJoint {
     int joint = 0;                // the caller's index of the joint (its carried impulses)
     int slotCount = 0;            // the joint's slots, used or not
-    int block = -1;               // into PackedJointRows::blocks, or -1
+    int block = -1;               // into PackedJointRows::blocks, or -1 (none this substep)
     int firstRow = 0, rowCount = 0;  // into PackedJointRows::rows
+    int rowRoom = 0;              // rows reserved from firstRow
+    int blockRoom = -1;           // the block reserved for it, or -1
 };
 
 struct PackedJointRows {
@@ -63,14 +67,22 @@ struct PackedJointRows {
     std::vector<PackedJointRow> rows;
 };
 
-/// Appends one joint's rows (`batch`, built over the solver bodies `bodies`, entries
-/// `slotOfEntry` in the solve's slots) for the sweeps, each row's M^-1 J^T and effective mass made
-/// here (the batch needs neither); `joint` is the caller's index of it.
-void appendPackedJoint(const JointRowBatch& batch, int joint, const std::vector<SolverBody>& bodies,
-                       const std::vector<int>& slotOfEntry, PackedJointRows& packed);
+/// Reserves room for one more joint (`joint`, the caller's index of it): `rows` rows and, with
+/// `block`, a point block, empty until writePackedJoint fills them. Returns its entry.
+int reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block);
 
-/// Appends `from`'s joint `entry` (its block and rows, impulses included) as it is.
-void copyPackedJoint(const PackedJointRows& from, int entry, PackedJointRows& packed);
+/// Writes one joint's rows (`batch`, built over the solver bodies `bodies`, entries `slotOfEntry`
+/// in the solve's slots) into the room of `entry`, each row's M^-1 J^T and effective mass made
+/// here (the batch needs neither). False, and the entry left empty, if they do not fit its room.
+bool writePackedJoint(const JointRowBatch& batch, const std::vector<SolverBody>& bodies,
+                      const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry);
+
+/// The same for a joint of one row (SingleJointRow, slot 0).
+bool writePackedJoint(const SingleJointRow& single, const std::vector<SolverBody>& bodies,
+                      const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry);
+
+/// Leaves joint `entry` out of the sweeps (no block, no rows) until it is written again.
+void emptyPackedJoint(PackedJointRows& packed, int entry);
 
 /// Every row's and block's position error moved by what the velocities in `states` do to it over
 /// h: C += h J v, the first-order change (the rows' Jacobians are dC/dx).
