@@ -139,12 +139,15 @@ void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
 int reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block) {
     PackedJoint entry;
     entry.joint = joint;
-    entry.firstRow = static_cast<int>(packed.rows.size());
+    entry.firstRow = packed.rowsReserved;
     entry.rowRoom = rows;
-    packed.rows.resize(packed.rows.size() + static_cast<std::size_t>(rows));
+    packed.rowsReserved += rows;
+    if (packed.rows.size() < static_cast<std::size_t>(packed.rowsReserved))
+        packed.rows.resize(static_cast<std::size_t>(packed.rowsReserved));
     if (block) {
-        entry.blockRoom = static_cast<int>(packed.blocks.size());
-        packed.blocks.emplace_back();
+        entry.blockRoom = packed.blocksReserved++;
+        if (packed.blocks.size() < static_cast<std::size_t>(packed.blocksReserved))
+            packed.blocks.resize(static_cast<std::size_t>(packed.blocksReserved));
     }
     packed.joints.push_back(entry);
     return static_cast<int>(packed.joints.size()) - 1;
@@ -259,10 +262,11 @@ void keepPackedImpulses(const PackedJointRows& packed, std::vector<JointImpulses
 }
 
 void resetPackedImpulses(PackedJointRows& packed, std::vector<JointImpulses>& carried) {
-    for (PackedPointBlock& block : packed.blocks) block.impulse = Vec3::Zero();
-    for (PackedJointRow& row : packed.rows) row.impulse = 0;
-    for (const PackedJoint& joint : packed.joints)
+    for (const PackedJoint& joint : packed.joints) {
+        if (joint.block >= 0) packed.blocks[static_cast<std::size_t>(joint.block)].impulse = Vec3::Zero();
+        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) packed.rows[static_cast<std::size_t>(i)].impulse = 0;
         for (int slot = 0; slot < joint.slotCount; ++slot) carried[static_cast<std::size_t>(joint.joint)].slot[slot] = 0;
+    }
 }
 
 }  // namespace stepwise

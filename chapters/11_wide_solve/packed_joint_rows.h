@@ -57,14 +57,17 @@ struct PackedJoint {
 };
 
 struct PackedJointRows {
+    /// No joints; the rows and blocks keep their room (a frame lays them out again over the last
+    /// frame's, and only its joints' ranges are read).
     void clear() {
         joints.clear();
-        blocks.clear();
-        rows.clear();
+        rowsReserved = 0;
+        blocksReserved = 0;
     }
     std::vector<PackedJoint> joints;
-    std::vector<PackedPointBlock> blocks;
-    std::vector<PackedJointRow> rows;
+    std::vector<PackedPointBlock> blocks;  // the first blocksReserved are the joints'
+    std::vector<PackedJointRow> rows;      // the first rowsReserved are the joints'
+    int rowsReserved = 0, blocksReserved = 0;
 };
 
 /// Reserves room for one more joint (`joint`, the caller's index of it): `rows` rows and, with
