@@ -228,10 +228,61 @@ inline void sweepNormalRows(ManifoldBlock<N>& c, const PointTargets<N>& t, const
     }
 }
 
+// [ch11-single-point]
+/// A block whose every lane has one point (a ball, a capsule's end, a hull's corner on the
+/// ground: most manifolds of a pile of round shapes) has one normal row a lane, and chapter 4's
+/// row update is its exact answer: no block to invert, no corner to let go, no three empty rows
+/// swept. The row is swept kNormalSweeps times, as a failed block's rows are, so that a soft point
+/// (deeper than the slop) answers as in any block; for a rigid one the second sweep changes
+/// nothing but round-off.
+template <int N>
+inline void solveSinglePoint(ManifoldBlock<N>& c, const ContactSolveParams& params, bool useBias, BodyPack<N>& a,
+                             BodyPack<N>& b) {
+    const Pack<N> zero = Pack<N>::splat(0);
+    ManifoldPointPack<N>& p = c.point[0];
+    // pointSeparations and pointTargets for the one point.
+    const Pack<N> movedApart = dot(c.normal, b.deltaPosition - a.deltaPosition);
+    const Pack<N> separation = movedApart + dot(rotate(conjugate(b.deltaRotation), c.normal), p.armB) -
+                               dot(rotate(conjugate(a.deltaRotation), c.normal), p.armA) + p.adjustedSeparation;
+    Pack<N> bias = separation * Pack<N>::splat(1 / params.substep);
+    Pack<N> massScale = Pack<N>::splat(1), impulseScale = zero;
+    if (useBias) {
+        const Pack<N> excess = separation + Pack<N>::splat(params.slop);  // < 0: deeper than the slop
+        const Pack<N> push = max(c.biasRate * excess, Pack<N>::splat(-params.maxPushOutSpeed));
+        const Pack<N> deep = -excess;
+        bias = selectPositive(separation, bias, selectPositive(deep, push, zero));
+        massScale = selectPositive(deep, c.massScale, massScale);
+        impulseScale = selectPositive(deep, c.impulseScale, zero);
+    } else {
+        bias = selectPositive(separation, bias, zero);
+    }
+    const PackVec3<N> angularA = cross(p.armA, c.normal), angularB = cross(p.armB, c.normal);
+    const bool bounces = anyNegative(-c.restitution);
+    for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
+        const Pack<N> speed = dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(b.angularVelocity, angularB) -
+                              dot(a.angularVelocity, angularA);
+        if (bounces && sweep == 0) {  // as normalBlockStep keeps it: the fastest speed a closing gap closed at
+            const Pack<N> target = selectPositive(p.normalMass, speed + bias, zero);
+            const Pack<N> closes = min(separation, -target);
+            p.approachSpeed = selectPositive(closes, min(p.approachSpeed, speed), p.approachSpeed);
+        }
+        Pack<N> impulse = -(p.normalMass * massScale * (speed + bias)) - impulseScale * p.normalImpulse;
+        const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
+        impulse = accumulated - p.normalImpulse;
+        p.normalImpulse = accumulated;
+        if (bounces) p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
+        a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
+        a.angularVelocity = a.angularVelocity - impulse * p.turnA;
+        b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
+        b.angularVelocity = b.angularVelocity + impulse * p.turnB;
+    }
+}
+// [ch11-single-point]
+
 // [ch11-solve-block]
 /// One sweep over the block's points: the four normal rows as one block (or one at a time where
 /// the block would pull, with position feedback when `useBias`), then friction against the normal
-/// impulses just found.
+/// impulses just found. A block of single points takes solveSinglePointBlock instead.
 template <int N>
 inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
     BodyPack<N> a = gatherBodies<N>(states, c.slotA);
@@ -250,5 +301,17 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     scatterVelocities(states, c.slotB, b);
 }
 // [ch11-solve-block]
+
+/// solveBlock for a block of single points (ManifoldBlock::singlePoint).
+template <int N>
+inline void solveSinglePointBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params,
+                                  bool useBias) {
+    BodyPack<N> a = gatherBodies<N>(states, c.slotA);
+    BodyPack<N> b = gatherBodies<N>(states, c.slotB);
+    solveSinglePoint(c, params, useBias, a, b);
+    solveFriction(c, a, b);
+    scatterVelocities(states, c.slotA, a);
+    scatterVelocities(states, c.slotB, b);
+}
 }  // namespace STEPWISE_ISA
 }  // namespace stepwise

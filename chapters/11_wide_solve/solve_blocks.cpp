@@ -108,6 +108,7 @@ void fillScalarBlock(ManifoldBlock<1>& block, const World& world, int contactInd
                      const ContactSolveParams& params) {
     LaneInputs<1> inputs{};  // zeros where the contact has no point
     fillLane(block, inputs, 0, world, contactIndex, bodies, params);
+    block.singlePoint = block.pointCount[0] <= 1;
     fillBlockFields(block, inputs, params.carryScale, world.settings.warmStarting);
 }
 // [ch11-prepare-contact]
@@ -192,11 +193,17 @@ std::array<int, kMaxColours> colourForBlocks(ContactSolverScratch& scratch) {
     return counts;
 }
 
-/// The coloured contacts in the order their lanes are filled: colour by colour, and within a
-/// colour by the shock sweep's group (0 first: not swept). A colour's lanes share no body, so
-/// their order changes no bit of the solve; it puts a group's lanes side by side, and the sweep
-/// solves each group over the few blocks that hold it (solveHeldBlock). Two stable counting sorts.
-void orderLanes(ContactSolverScratch& scratch) {
+/// Whether a contact's lane goes to a block of single points (solveSinglePoint): 0 if so, else 1.
+int pointClass(const World& world, const ContactSolverScratch& scratch, std::size_t i) {
+    return world.contacts[static_cast<std::size_t>(scratch.contactOrder[i])].pointCount <= 1 ? 0 : 1;
+}
+
+/// The coloured contacts in the order their lanes are filled: colour by colour, within a colour by
+/// the shock sweep's group (0 first: not swept), and within a group single points first. A
+/// colour's lanes share no body, so their order changes no bit of the solve; it puts a group's
+/// lanes side by side, and the sweep solves each group over the few blocks that hold it
+/// (solveHeldBlock), and it fills whole blocks of single points. Three stable counting sorts.
+void orderLanes(const World& world, ContactSolverScratch& scratch) {
     std::vector<int>& byGroup = scratch.laneScratch;
     std::vector<int>& lanes = scratch.laneOrder;
     std::vector<int>& start = scratch.laneBuckets;
@@ -208,8 +215,15 @@ void orderLanes(ContactSolverScratch& scratch) {
         for (const int i : from) to[static_cast<std::size_t>(start[static_cast<std::size_t>(key[static_cast<std::size_t>(i)])]++)] = i;
     };
     lanes.clear();
-    for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i)
-        if (scratch.colours[i] >= 0) lanes.push_back(static_cast<int>(i));
+    std::vector<int>& classes = scratch.laneClass;
+    classes.resize(scratch.contactOrder.size());
+    for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i) {
+        if (scratch.colours[i] < 0) continue;
+        classes[i] = pointClass(world, scratch, i);
+        lanes.push_back(static_cast<int>(i));
+    }
+    countingSort(lanes, byGroup, 2, classes);
+    std::swap(lanes, byGroup);
     if (scratch.laneGroups > 0) {
         countingSort(lanes, byGroup, scratch.laneGroups + 1, scratch.laneGroupOf);
         std::swap(lanes, byGroup);
@@ -243,7 +257,7 @@ bool usableContact(const World& world, const Contact& contact, const SolverBodie
 void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const ContactSolveParams& params) {
     const std::vector<int>& order = scratch.contactOrder;
     colourForBlocks(scratch);
-    orderLanes(scratch);
+    orderLanes(world, scratch);
     scratch.wideBlocks.clear();
     scratch.scalarBlocks.clear();
     LaneInputs<kWideLanes>& inputs = scratch.laneInputs;
@@ -252,14 +266,18 @@ void buildWideBlocks(const World& world, ContactSolverScratch& scratch, const Co
         fillWide(scratch.wideBlocks.back(), inputs, params.carryScale, world.settings.warmStarting);
         for (int lane = lanes; lane < kWideLanes; ++lane) emptyLane(scratch.wideBlocks.back(), lane);
     };
-    int lane = kWideLanes, blockColour = -1;
+    int lane = kWideLanes, blockColour = -1, blockClass = -1;
     for (const int contact : scratch.laneOrder) {
         const auto i = static_cast<std::size_t>(contact);
-        if (lane == kWideLanes || scratch.colours[i] != blockColour) {  // a block per colour's kWideLanes
+        // A block per colour's kWideLanes, of single points or of larger manifolds, never both:
+        // a lane's answer must not depend on the lanes beside it.
+        if (lane == kWideLanes || scratch.colours[i] != blockColour || scratch.laneClass[i] != blockClass) {
             if (lane < kWideLanes) finishBlock(lane);
             scratch.wideBlocks.emplace_back();
             lane = 0;
             blockColour = scratch.colours[i];
+            blockClass = scratch.laneClass[i];
+            scratch.wideBlocks.back().singlePoint = blockClass == 0;
         }
         setLaneGroup(scratch.wideBlocks.back(), lane, scratch, i);
         fillLane(scratch.wideBlocks.back(), inputs, lane++, world, order[i], scratch.bodies, params);

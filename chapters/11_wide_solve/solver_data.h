@@ -95,6 +95,7 @@ struct ManifoldBlock {
     int slotB[N] = {};
     int contactIndex[N] = {};        // into World::contacts; -1 for an empty lane
     int pointCount[N] = {};
+    bool singlePoint = false;        // no lane has more than one point (solveSinglePoint)
     PackVec3<N> normal, tangent1, tangent2;
     Pack<N> friction, restitution;
     Pack<N> inverseMassA, inverseMassB;
