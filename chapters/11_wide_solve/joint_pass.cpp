@@ -120,10 +120,6 @@ void placeBodies(const World& world, const SolverBodies& bodies, JointPass& pass
     }
 }
 
-}  // namespace
-
-namespace {
-
 // Builds listed joint i's rows where its bodies stand now into its entry, which the frame's first
 // substep lays out; its slot count into `slots`. False (the entry left empty) if a row came out
 // non-finite. A joint of one row skips chapter 8's batch: the same rule, a tenth of the room.
