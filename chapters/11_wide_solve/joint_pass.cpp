@@ -85,8 +85,7 @@ Real turnSince(const Quat& built, const Quat& now) { return 2 * (now * built.con
 // Whether a joint's Jacobians depend on its bodies' turns alone: the point joints' rows run
 // along fixed axes through arms that turn with the bodies, their turn rows about axes that turn
 // with them. A distance joint's row runs along the line between the anchors and a slider's
-// through the gap between them, which the bodies' moves turn too: always built (kept while that
-// line turns as little as the arms may, a swinging chain's links stretch a fifth more).
+// through the gap between them, which the bodies' moves turn too: always built.
 bool rowsFollowTurnsAlone(JointType type) {
     return type == JointType::BallSocket || type == JointType::Hinge || type == JointType::ConeTwist ||
            type == JointType::Fixed;
