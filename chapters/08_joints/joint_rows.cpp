@@ -266,6 +266,14 @@ void addRowsOf(RowBuilder& builder, const JointDesc& joint, const JointFrame& fr
     }
 }
 
+// A built row's last steps: the bodies as the caller's list holds them, and the impulse carried
+// in, clamped to this step's bounds (zero if it is not finite).
+void seatRow(ConstraintRow& row, int rowBodyA, int rowBodyB, Real carried) {
+    row.bodyA = rowBodyA;
+    row.bodyB = rowBodyB;
+    row.impulse = std::isfinite(carried) ? std::clamp(carried, row.lower, row.upper) : Real(0);
+}
+
 // The point joints' slots 0-2 as one block, at the frame's arms.
 void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& a, const SolverBody& b) {
     // [ch08-point-mass]
@@ -366,13 +374,10 @@ bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointI
     set.rowCount = batch.count;
     for (int slot = 0; slot < batch.count; ++slot) {
         ConstraintRow& row = batch.rows[slot];
-        row.bodyA = rowBodyA;  // the rows name the bodies as the caller's list holds them
-        row.bodyB = rowBodyB;
+        seatRow(row, rowBodyA, rowBodyB, carried && slot < JointImpulses::kSlots ? carried->slot[slot] : Real(0));
         // The block solves slots 0-2 by its own mass; an unused slot has no Jacobian (mass 0).
         const bool inBlock = set.pointBlock && slot < 3;
         row.effectiveMass = inBlock || !batch.used[slot] || !needs.effectiveMasses ? Real(0) : effectiveMass(row, bodies);
-        const Real impulse = carried && slot < JointImpulses::kSlots ? carried->slot[slot] : Real(0);
-        row.impulse = std::isfinite(impulse) ? std::clamp(impulse, row.lower, row.upper) : Real(0);
     }
     return true;
 }
@@ -388,11 +393,7 @@ bool buildDistanceRow(SingleJointRow& out, const JointDesc& joint, const JointFr
     out.error = distance.error;
     applyFeedback(out.row, out.softness, out.fedBack, out.kind, out.error, feedback, h);
     if (!finiteRow(out.row)) return false;
-    out.row.bodyA = rowBodyA;
-    out.row.bodyB = rowBodyB;
-    out.row.effectiveMass = 0;
-    const Real impulse = carried ? carried->slot[0] : Real(0);
-    out.row.impulse = std::isfinite(impulse) ? std::clamp(impulse, out.row.lower, out.row.upper) : Real(0);
+    seatRow(out.row, rowBodyA, rowBodyB, carried ? carried->slot[0] : Real(0));
     return true;
 }
 

@@ -40,15 +40,23 @@ inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
 /// the frame's start plus how far the bodies have moved and turned since (adjustedSeparation holds
 /// the start's normal . (armB - armA) taken out, so the arms as turned now go in whole).
 template <int N>
+struct SeparationFrame {
+    Pack<N> movedApart;
+    PackVec3<N> normalSeenByA, normalSeenByB;  // n . (R arm) = (R^T n) . arm: turned back once per body
+};
+template <int N>
+inline SeparationFrame<N> separationFrame(const ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b) {
+    return {dot(c.normal, b.deltaPosition - a.deltaPosition), rotate(conjugate(a.deltaRotation), c.normal),
+            rotate(conjugate(b.deltaRotation), c.normal)};
+}
+template <int N>
+inline Pack<N> pointSeparation(const ManifoldPointPack<N>& p, const SeparationFrame<N>& f) {
+    return f.movedApart + dot(f.normalSeenByB, p.armB) - dot(f.normalSeenByA, p.armA) + p.adjustedSeparation;
+}
+template <int N>
 inline void pointSeparations(const ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b, Pack<N> separations[4]) {
-    const Pack<N> movedApart = dot(c.normal, b.deltaPosition - a.deltaPosition);
-    // n . (R arm) = (R^T n) . arm: the normal turned back once per body serves all four points.
-    const PackVec3<N> normalSeenByA = rotate(conjugate(a.deltaRotation), c.normal);
-    const PackVec3<N> normalSeenByB = rotate(conjugate(b.deltaRotation), c.normal);
-    for (int k = 0; k < 4; ++k) {
-        const ManifoldPointPack<N>& p = c.point[k];
-        separations[k] = movedApart + dot(normalSeenByB, p.armB) - dot(normalSeenByA, p.armA) + p.adjustedSeparation;
-    }
+    const SeparationFrame<N> frame = separationFrame(c, a, b);  // serves all four points
+    for (int k = 0; k < 4; ++k) separations[k] = pointSeparation(c.point[k], frame);
 }
 
 /// Entries of the normal block's inverse M = K^-1 by point pair (normalBlockInverse keeps the upper triangle).
@@ -94,30 +102,58 @@ struct PointTargets {
     Pack<N> bias[4], massScale[4], impulseScale[4], separations[4];
 };
 
+/// One point's bias, mass scale and impulse scale from its separation.
+template <int N>
+inline void pointTarget(const ManifoldBlock<N>& c, const Pack<N>& separation, const ContactSolveParams& params,
+                        bool useBias, Pack<N>& bias, Pack<N>& massScale, Pack<N>& impulseScale) {
+    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
+    bias = separation * Pack<N>::splat(1 / params.substep);
+    massScale = one;
+    impulseScale = zero;
+    if (useBias) {
+        const Pack<N> excess = separation + Pack<N>::splat(params.slop);  // < 0: deeper than the slop
+        const Pack<N> push = max(c.biasRate * excess, Pack<N>::splat(-params.maxPushOutSpeed));
+        const Pack<N> deep = -excess;
+        bias = selectPositive(separation, bias, selectPositive(deep, push, zero));
+        massScale = selectPositive(deep, c.massScale, one);
+        impulseScale = selectPositive(deep, c.impulseScale, zero);
+    } else {
+        bias = selectPositive(separation, bias, zero);
+    }
+}
+
 template <int N>
 inline void pointTargets(const ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b,
                          const ContactSolveParams& params, bool useBias, PointTargets<N>& t) {
-    const Pack<N> zero = Pack<N>::splat(0), one = Pack<N>::splat(1);
-    const Pack<N> inverseH = Pack<N>::splat(1 / params.substep);
-    const Pack<N> slop = Pack<N>::splat(params.slop);
-    const Pack<N> maxPush = Pack<N>::splat(-params.maxPushOutSpeed);
     pointSeparations(c, a, b, t.separations);
-    for (int k = 0; k < 4; ++k) {
-        const Pack<N> separation = t.separations[k];
-        t.bias[k] = separation * inverseH;
-        t.massScale[k] = one;
-        t.impulseScale[k] = zero;
-        if (useBias) {
-            const Pack<N> excess = separation + slop;  // < 0: deeper than the slop
-            const Pack<N> push = max(c.biasRate * excess, maxPush);
-            const Pack<N> deep = -excess;
-            t.bias[k] = selectPositive(separation, t.bias[k], selectPositive(deep, push, zero));
-            t.massScale[k] = selectPositive(deep, c.massScale, one);
-            t.impulseScale[k] = selectPositive(deep, c.impulseScale, zero);
-        } else {
-            t.bias[k] = selectPositive(separation, t.bias[k], zero);
-        }
-    }
+    for (int k = 0; k < 4; ++k) pointTarget(c, t.separations[k], params, useBias, t.bias[k], t.massScale[k], t.impulseScale[k]);
+}
+
+/// Restitution's record of a closing gap (the relax sweep looks one substep ahead): restitution
+/// reverses the fastest speed it closed at, not the speed at the frame's start, which the fall has
+/// not finished. The fastest: once stopped, a point stays a rounding error apart and "closes"
+/// again at gravity's speed. `target` is the row's speed plus bias, `speed` without the bias.
+template <int N>
+inline void keepApproachSpeed(ManifoldPointPack<N>& p, const Pack<N>& separation, const Pack<N>& target,
+                              const Pack<N>& speed) {
+    const Pack<N> closes = min(separation, -target);  // > 0: apart now, closed within h
+    p.approachSpeed = selectPositive(closes, min(p.approachSpeed, speed), p.approachSpeed);
+}
+
+/// How fast a point's two material points close along the normal (its row's J v).
+template <int N>
+inline Pack<N> normalRowSpeed(const ManifoldBlock<N>& c, const BodyPack<N>& a, const BodyPack<N>& b,
+                              const PackVec3<N>& angularA, const PackVec3<N>& angularB) {
+    return dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(b.angularVelocity, angularB) -
+           dot(a.angularVelocity, angularA);
+}
+
+/// Chapter 4's row update of one normal row, softened: the point's accumulated impulse after it.
+template <int N>
+inline Pack<N> normalRowImpulse(const ManifoldPointPack<N>& p, const Pack<N>& speed, const Pack<N>& bias,
+                                const Pack<N>& massScale, const Pack<N>& impulseScale) {
+    const Pack<N> impulse = -(p.normalMass * massScale * (speed + bias)) - impulseScale * p.normalImpulse;
+    return max(p.normalImpulse + impulse, Pack<N>::splat(0));
 }
 
 /// The four normal rows' change as one block, and where it holds (useBlock) or holds with the
@@ -143,14 +179,7 @@ inline void normalBlockStep(ManifoldBlock<N>& c, const BodyPack<N>& a, const Bod
     for (int k = 0; k < 4; ++k) {
         const Pack<N> speed = approach + dot(b.angularVelocity, angularB[k]) - dot(a.angularVelocity, angularA[k]) + t.bias[k];
         target[k] = selectPositive(c.point[k].normalMass, speed, zero);  // a missing point asks for nothing
-        if (!bounces) continue;
-        // A gap that a substep's motion closes (the relax sweep looks one substep ahead):
-        // restitution reverses the fastest speed it closed at, not the speed at the frame's start,
-        // which the fall has not finished. The fastest: once stopped, a point stays a rounding
-        // error apart and "closes" again at gravity's speed.
-        const Pack<N> closes = min(t.separations[k], -target[k]);  // > 0: apart now, closed within h
-        c.point[k].approachSpeed =
-            selectPositive(closes, min(c.point[k].approachSpeed, speed - t.bias[k]), c.point[k].approachSpeed);
+        if (bounces) keepApproachSpeed(c.point[k], t.separations[k], target[k], speed - t.bias[k]);
     }
     Pack<N> total[4], leastLoad = zero, softness = zero;
     for (int i = 0; i < 4; ++i) {
@@ -207,16 +236,13 @@ template <int N>
 inline void sweepNormalRows(ManifoldBlock<N>& c, const PointTargets<N>& t, const PackVec3<N> angularA[4],
                             const PackVec3<N> angularB[4], const Pack<N>& blockFails, bool bounces, BodyPack<N>& a,
                             BodyPack<N>& b) {
-    const Pack<N> zero = Pack<N>::splat(0);
     for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
         for (int k = 0; k < 4; ++k) {
             const int i = sweep % 2 == 0 ? k : 3 - k;
             ManifoldPointPack<N>& p = c.point[i];
-            const Pack<N> normalSpeed = dot(c.normal, b.linearVelocity - a.linearVelocity) +
-                                        dot(b.angularVelocity, angularB[i]) - dot(a.angularVelocity, angularA[i]);
-            Pack<N> impulse = -(p.normalMass * t.massScale[i] * (normalSpeed + t.bias[i])) - t.impulseScale[i] * p.normalImpulse;
-            const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
-            impulse = accumulated - p.normalImpulse;
+            const Pack<N> normalSpeed = normalRowSpeed(c, a, b, angularA[i], angularB[i]);
+            const Pack<N> accumulated = normalRowImpulse(p, normalSpeed, t.bias[i], t.massScale[i], t.impulseScale[i]);
+            const Pack<N> impulse = accumulated - p.normalImpulse;
             p.normalImpulse = selectPositive(blockFails, accumulated, p.normalImpulse);
             if (bounces)
                 p.maxNormalImpulse = selectPositive(blockFails, max(p.maxNormalImpulse, impulse), p.maxNormalImpulse);
@@ -238,37 +264,18 @@ inline void sweepNormalRows(ManifoldBlock<N>& c, const PointTargets<N>& t, const
 template <int N>
 inline void solveSinglePoint(ManifoldBlock<N>& c, const ContactSolveParams& params, bool useBias, BodyPack<N>& a,
                              BodyPack<N>& b) {
-    const Pack<N> zero = Pack<N>::splat(0);
     ManifoldPointPack<N>& p = c.point[0];
-    // pointSeparations and pointTargets for the one point.
-    const Pack<N> movedApart = dot(c.normal, b.deltaPosition - a.deltaPosition);
-    const Pack<N> separation = movedApart + dot(rotate(conjugate(b.deltaRotation), c.normal), p.armB) -
-                               dot(rotate(conjugate(a.deltaRotation), c.normal), p.armA) + p.adjustedSeparation;
-    Pack<N> bias = separation * Pack<N>::splat(1 / params.substep);
-    Pack<N> massScale = Pack<N>::splat(1), impulseScale = zero;
-    if (useBias) {
-        const Pack<N> excess = separation + Pack<N>::splat(params.slop);  // < 0: deeper than the slop
-        const Pack<N> push = max(c.biasRate * excess, Pack<N>::splat(-params.maxPushOutSpeed));
-        const Pack<N> deep = -excess;
-        bias = selectPositive(separation, bias, selectPositive(deep, push, zero));
-        massScale = selectPositive(deep, c.massScale, massScale);
-        impulseScale = selectPositive(deep, c.impulseScale, zero);
-    } else {
-        bias = selectPositive(separation, bias, zero);
-    }
+    const Pack<N> separation = pointSeparation(p, separationFrame(c, a, b));
+    Pack<N> bias, massScale, impulseScale;
+    pointTarget(c, separation, params, useBias, bias, massScale, impulseScale);
     const PackVec3<N> angularA = cross(p.armA, c.normal), angularB = cross(p.armB, c.normal);
     const bool bounces = anyNegative(-c.restitution);
     for (int sweep = 0; sweep < kNormalSweeps; ++sweep) {
-        const Pack<N> speed = dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(b.angularVelocity, angularB) -
-                              dot(a.angularVelocity, angularA);
-        if (bounces && sweep == 0) {  // as normalBlockStep keeps it: the fastest speed a closing gap closed at
-            const Pack<N> target = selectPositive(p.normalMass, speed + bias, zero);
-            const Pack<N> closes = min(separation, -target);
-            p.approachSpeed = selectPositive(closes, min(p.approachSpeed, speed), p.approachSpeed);
-        }
-        Pack<N> impulse = -(p.normalMass * massScale * (speed + bias)) - impulseScale * p.normalImpulse;
-        const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
-        impulse = accumulated - p.normalImpulse;
+        const Pack<N> speed = normalRowSpeed(c, a, b, angularA, angularB);
+        if (bounces && sweep == 0)  // as normalBlockStep keeps it, before the row moves
+            keepApproachSpeed(p, separation, selectPositive(p.normalMass, speed + bias, Pack<N>::splat(0)), speed);
+        const Pack<N> accumulated = normalRowImpulse(p, speed, bias, massScale, impulseScale);
+        const Pack<N> impulse = accumulated - p.normalImpulse;
         p.normalImpulse = accumulated;
         if (bounces) p.maxNormalImpulse = max(p.maxNormalImpulse, impulse);
         a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
@@ -312,6 +319,16 @@ inline void solveSinglePointBlock(ManifoldBlock<N>& c, SolverBodyState* states, 
     solveFriction(c, a, b);
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
+}
+
+/// A sweep of any block: single points one row a lane, others as one block. Two kernels, not one
+/// with a branch inside: the four-row kernel compiles as lean as without the other.
+template <int N>
+inline void solveAnyBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
+    if (c.singlePoint)
+        solveSinglePointBlock(c, states, params, useBias);
+    else
+        solveBlock(c, states, params, useBias);
 }
 }  // namespace STEPWISE_ISA
 }  // namespace stepwise

@@ -99,12 +99,7 @@ void warmStartAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states
 template <int N>
 void solveAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
               bool useBias) {
-    for (ManifoldBlock<N>& block : blocks) {
-        if (block.singlePoint)
-            solveSinglePointBlock(block, states, params, useBias);
-        else
-            solveBlock(block, states, params, useBias);
-    }
+    for (ManifoldBlock<N>& block : blocks) solveAnyBlock(block, states, params, useBias);
 }
 template <int N>
 void restitutionAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, Real threshold) {

@@ -136,7 +136,7 @@ void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
 
 }  // namespace
 
-int reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block) {
+void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block) {
     PackedJoint entry;
     entry.joint = joint;
     entry.firstRow = packed.rowsReserved;
@@ -150,7 +150,6 @@ int reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block)
             packed.blocks.resize(static_cast<std::size_t>(packed.blocksReserved));
     }
     packed.joints.push_back(entry);
-    return static_cast<int>(packed.joints.size()) - 1;
 }
 
 bool writePackedJoint(const JointRowBatch& batch, const std::vector<SolverBody>& bodies,

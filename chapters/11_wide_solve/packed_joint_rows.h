@@ -71,8 +71,8 @@ struct PackedJointRows {
 };
 
 /// Reserves room for one more joint (`joint`, the caller's index of it): `rows` rows and, with
-/// `block`, a point block, empty until writePackedJoint fills them. Returns its entry.
-int reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block);
+/// `block`, a point block, empty until writePackedJoint fills them. Its entry is the next one.
+void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block);
 
 /// Writes one joint's rows (`batch`, built over the solver bodies `bodies`, entries `slotOfEntry`
 /// in the solve's slots) into the room of `entry`, each row's M^-1 J^T and effective mass made

@@ -108,7 +108,7 @@ void fillScalarBlock(ManifoldBlock<1>& block, const World& world, int contactInd
                      const ContactSolveParams& params) {
     LaneInputs<1> inputs{};  // zeros where the contact has no point
     fillLane(block, inputs, 0, world, contactIndex, bodies, params);
-    block.singlePoint = block.pointCount[0] <= 1;
+    block.singlePoint = takesSinglePointRow(block.pointCount[0]);
     fillBlockFields(block, inputs, params.carryScale, world.settings.warmStarting);
 }
 // [ch11-prepare-contact]
@@ -195,7 +195,7 @@ std::array<int, kMaxColours> colourForBlocks(ContactSolverScratch& scratch) {
 
 /// Whether a contact's lane goes to a block of single points (solveSinglePoint): 0 if so, else 1.
 int pointClass(const World& world, const ContactSolverScratch& scratch, std::size_t i) {
-    return world.contacts[static_cast<std::size_t>(scratch.contactOrder[i])].pointCount <= 1 ? 0 : 1;
+    return takesSinglePointRow(world.contacts[static_cast<std::size_t>(scratch.contactOrder[i])].pointCount) ? 0 : 1;
 }
 
 /// The coloured contacts in the order their lanes are filled: colour by colour, within a colour by

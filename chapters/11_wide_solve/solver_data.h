@@ -84,6 +84,10 @@ struct RowMasses {
     Pack<N> twistMass;
 };
 
+/// Whether a manifold of `pointCount` points is solved by its one row (solveSinglePoint) in a
+/// block of such manifolds, rather than in a four-row block.
+constexpr bool takesSinglePointRow(int pointCount) { return pointCount <= 1; }
+
 /// Up to N manifolds solved side by side, one per lane.
 template <int N>
 struct ManifoldBlock {
@@ -95,7 +99,7 @@ struct ManifoldBlock {
     int slotB[N] = {};
     int contactIndex[N] = {};        // into World::contacts; -1 for an empty lane
     int pointCount[N] = {};
-    bool singlePoint = false;        // no lane has more than one point (solveSinglePoint)
+    bool singlePoint = false;        // every lane takes a single point's row (takesSinglePointRow)
     PackVec3<N> normal, tangent1, tangent2;
     Pack<N> friction, restitution;
     Pack<N> inverseMassA, inverseMassB;

@@ -19,12 +19,7 @@ void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodySta
 
 void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
                bool useBias) {
-    for (ManifoldBlock<kWideLanes>& block : blocks) {
-        if (block.singlePoint)
-            solveSinglePointBlock(block, states, params, useBias);
-        else
-            solveBlock(block, states, params, useBias);
-    }
+    for (ManifoldBlock<kWideLanes>& block : blocks) solveAnyBlock(block, states, params, useBias);
 }
 
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold) {
