@@ -13,6 +13,7 @@ namespace stepwise {
 namespace {
 
 using tolerance::kDegenerateFraction;
+using tolerance::kRoundOff;
 
 SimplexClosest vertexResult(const Vec3* points, int i) {
     SimplexClosest result;
@@ -154,7 +155,12 @@ SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale, FacePoint fa
         const Vec3 normal = ab.cross(ac);
         originSide[f] = -a.dot(normal);
         oppositeSide[f] = ad.dot(normal);
-        const bool flat = std::abs(oppositeSide[f]) <= kDegenerateFraction * ab.norm() * ac.norm() * ad.norm();
+        // Flat when the volume is within the triple product's own rounding (a few ulps of the
+        // product of the edges), the bar EPA's starting tetrahedron must clear too. A looser bar
+        // calls a needle's tetrahedron flat: the tetrahedron of a 27 m needle hull and a 6 cm
+        // box holds the origin with every sign clear (volume 21 ulps of that product), and
+        // judged flat GJK returned one of its faces, 1 mm from the origin, again and again.
+        const bool flat = std::abs(oppositeSide[f]) <= kRoundOff * ab.norm() * ac.norm() * ad.norm();
         degenerate = degenerate || flat;
     }
     for (int f = 0; f < 4; ++f) {

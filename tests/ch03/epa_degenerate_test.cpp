@@ -204,3 +204,67 @@ TEST_CASE("a sphere grazing a hull reads as touching, with the points where they
     CHECK((query.pointA - query.pointB).norm() < Real(1e-3));
     CHECK(std::abs((query.pointB - spherePose.position).norm() - Real(0.5)) < Real(1e-3));
 }
+
+namespace {
+
+/// The least reach of A - B over all directions, in double: the depth of an overlapping hull and
+/// box (the box in the hull's frame, axis-aligned). A - B is a polytope whose face normals are
+/// A's face normals, B's and the cross products of an edge of each; every plane through three
+/// corners of A and every line through two of them times B's axes covers those, and any extra
+/// direction only adds an upper bound, so the least reach over the list is exact.
+double leastReach(const std::vector<Eigen::Vector3d>& cornersA, const std::vector<Eigen::Vector3d>& cornersB) {
+    const auto reach = [&](const Eigen::Vector3d& d) {
+        double far = -1e300, near = 1e300;
+        for (const Eigen::Vector3d& p : cornersA) far = std::max(far, p.dot(d));
+        for (const Eigen::Vector3d& p : cornersB) near = std::min(near, p.dot(d));
+        return far - near;
+    };
+    double best = 1e300;
+    const auto tryAxis = [&](const Eigen::Vector3d& axis) {
+        if (axis.norm() < 1e-12) return;
+        best = std::min({best, reach(axis.normalized()), reach(-axis.normalized())});
+    };
+    const std::size_t n = cornersA.size();
+    for (int k = 0; k < 3; ++k) tryAxis(Eigen::Vector3d::Unit(k));
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) {
+            for (int k = 0; k < 3; ++k) tryAxis((cornersA[j] - cornersA[i]).cross(Eigen::Vector3d::Unit(k)));
+            for (std::size_t l = j + 1; l < n; ++l) tryAxis((cornersA[j] - cornersA[i]).cross(cornersA[l] - cornersA[i]));
+        }
+    return best;
+}
+
+}  // namespace
+
+TEST_CASE("a needle hull through a small box: GJK's thin tetrahedron still holds the origin", "[ch03][epa][degenerate]") {
+    // Found by fuzz_narrowphase: a hull 27 m long and 25 cm across, a 5.8 cm box at its origin,
+    // 3.4 cm outside the hull, overlapping it by 2.27 mm. GJK's tetrahedron around the origin is
+    // thin (its volume 21 rounding errors of the product of its edges) but every sign is clear;
+    // called flat, it gave GJK a face 1 mm from the origin until the loop stalled, EPA found no
+    // tetrahedron and the pair read as only touching, with A's point 3 mm inside A.
+    const std::vector<Vec3> corners = {
+        {Real(-0.000736827089), Real(-5.75346088), Real(-0.08875072)},  {Real(0.0641665459), Real(-2.68687224), Real(-0.0800795928)},
+        {Real(-0.0703765601), Real(13.4911318), Real(0.112587079)},     {Real(-0.109548934), Real(-12.0477695), Real(-0.128036723)},
+        {Real(-0.120633371), Real(1.09669828), Real(-0.0210574754)},    {Real(-0.118872635), Real(11.3152866), Real(-0.126456454)},
+        {Real(-0.143792897), Real(-13.554575), Real(-0.143792897)},     {Real(-0.0769545436), Real(10.5140896), Real(-0.0912454948)}};
+    const Real half = Real(0.0290673971);
+    const Transform pose{Vec3(-100, -100, -100), Quat(Real(-0.5), Real(-0.5), Real(-0.5), Real(-0.5))};
+    const Shape needle = Shape::convex(corners);
+    const ContactQuery query = collideShapes(needle, pose, Shape::box(Vec3::Constant(half)), pose);
+    REQUIRE(finiteQuery(query));
+    // Both shapes share one pose, so the truth can be found in that pose's frame.
+    std::vector<Eigen::Vector3d> cornersA, cornersB;
+    for (const Vec3& corner : corners) cornersA.push_back(corner.cast<double>());
+    for (int i = 0; i < 8; ++i) cornersB.emplace_back(i & 1 ? half : -half, i & 2 ? half : -half, i & 4 ? half : -half);
+    const double trueDepth = leastReach(cornersA, cornersB);
+    INFO("depth " << query.depth << " via " << query.routine << ", true depth " << trueDepth);
+    REQUIRE(trueDepth > 2e-3);
+    CHECK(query.intersect);
+    CHECK(std::abs(double(query.depth) - trueDepth) < 2e-5);
+    // The points on the surfaces: A's inside every face plane and on one, B's on the box.
+    const Vec3 localA = pose.applyInverse(query.pointA);
+    double outsideA = -1e300;
+    for (const HullFace& face : needle.hull->faces) outsideA = std::max(outsideA, double(face.normal.dot(localA) - face.offset));
+    CHECK(std::abs(outsideA) < 1e-4);
+    CHECK(std::abs(test::boxSurfaceDistance(query.pointB, Vec3::Constant(half), pose)) < 1e-4);
+}
