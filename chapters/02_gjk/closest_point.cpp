@@ -158,8 +158,8 @@ SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale, FacePoint fa
         // Flat when the volume is within the triple product's own rounding (a few ulps of the
         // product of the edges), the bar EPA's starting tetrahedron must clear too. A looser bar
         // calls a needle's tetrahedron flat: the tetrahedron of a 27 m needle hull and a 6 cm
-        // box holds the origin with every sign clear (volume 21 ulps of that product), and
-        // judged flat GJK returned one of its faces, 1 mm from the origin, again and again.
+        // box holds the origin with every sign clear (volume 21 ulps of that product); judged
+        // flat, GJK would return one of its faces, 1 mm from the origin, again and again.
         const bool flat = std::abs(oppositeSide[f]) <= kRoundOff * ab.norm() * ac.norm() * ad.norm();
         degenerate = degenerate || flat;
     }
