@@ -145,6 +145,7 @@ SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale, FacePoint fa
     Real bestDistanceSquared = kRealMax;
     bool anyOutside = false;
     bool degenerate = false;
+    bool solid = true;
     Real originSide[4] = {0, 0, 0, 0};
     Real oppositeSide[4] = {0, 0, 0, 0};
     for (int f = 0; f < 4; ++f) {
@@ -155,14 +156,21 @@ SimplexClosest closestOnTetrahedron(const Vec3* points, Real scale, FacePoint fa
         const Vec3 normal = ab.cross(ac);
         originSide[f] = -a.dot(normal);
         oppositeSide[f] = ad.dot(normal);
-        // Flat when the volume is within the triple product's own rounding (a few ulps of the
-        // product of the edges), the bar EPA's starting tetrahedron must clear too. A looser bar
-        // calls a needle's tetrahedron flat: the tetrahedron of a 27 m needle hull and a 6 cm
-        // box holds the origin with every sign clear (volume 21 ulps of that product); judged
-        // flat, GJK would return one of its faces, 1 mm from the origin, again and again.
-        const bool flat = std::abs(oppositeSide[f]) <= kRoundOff * ab.norm() * ac.norm() * ad.norm();
-        degenerate = degenerate || flat;
+        // Flat: a volume within a few hundred rounding errors of the product of the edges. Solid:
+        // clear of the triple product's own rounding (a few ulps of that product), the bar EPA's
+        // starting tetrahedron must clear too.
+        const Real edges = ab.norm() * ac.norm() * ad.norm();
+        degenerate = degenerate || std::abs(oppositeSide[f]) <= kDegenerateFraction * edges;
+        solid = solid && std::abs(oppositeSide[f]) > kRoundOff * edges;
     }
+    // A thin tetrahedron whose every sign is clear holds the origin when it lies on the inner
+    // side of all four faces. Of a 27 m needle hull and a 6 cm box GJK meets tetrahedra 21 ulps
+    // thick that hold the origin so; taken for flat, GJK would return one of their faces, 1 mm
+    // from the origin, again and again, and the pair would read as only touching.
+    bool holdsOrigin = solid;
+    for (int f = 0; f < 4; ++f)
+        holdsOrigin = holdsOrigin && ((originSide[f] > 0 && oppositeSide[f] > 0) || (originSide[f] < 0 && oppositeSide[f] < 0));
+    if (holdsOrigin) degenerate = false;
     for (int f = 0; f < 4; ++f) {
         // A flat tetrahedron has no inside; test every face instead of trusting the signs. All
         // four, not only the face whose test said flat: the test scales with each face's own
