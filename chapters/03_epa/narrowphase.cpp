@@ -113,15 +113,16 @@ ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, 
     }
     query.pointA = distance.pointA;
     query.pointB = distance.pointB;
-    if (gjk.intersect && !distance.separated &&
+    if (gjk.exit == GjkExit::Intersect && !distance.separated &&
         (distance.pointB - distance.pointA).norm() > gjkTolerances(proxyA, proxyB).touching) {
         // Overlapping within round-off, GJK's witness points are a blend of its last simplex's
         // points, together only in exact arithmetic: of a 56 m sliver hull touching a 1.2 mm box
         // they came out 9.8 cm apart. Touching shapes meet at the smaller one's extreme point
         // towards the other, on its surface and within the touching tolerance of the other's.
-        // Only where GJK's intersection test found them touching: where it found a separating
-        // plane and the distance could not measure the gap (a few millimetres across a 56 m
-        // sliver), the witness points are the better answer.
+        // Only where GJK's intersection test ended cleanly on the origin: where it found a
+        // separating plane, or stalled and only failed to find one, and the distance could not
+        // measure the gap (a centimetre across a 56 m sliver), the witness points are the better
+        // answer.
         const SupportPoint extreme = minkowskiSupport(proxyA, proxyB, query.normal);
         const bool smallerA = shapeScale(a) <= shapeScale(b);
         query.pointA = query.pointB = smallerA ? extreme.onA : extreme.onB;
