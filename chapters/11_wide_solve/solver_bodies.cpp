@@ -120,7 +120,25 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
     }
 }
 
+namespace {
+
+// A dynamic body spinning faster than kMostTurnPerSubstep / h keeps its axis and that speed. The
+// same few lines on both paths, before either, so that the wide and the scalar path agree.
+void holdSpin(SolverBodies& bodies, Real h) {
+    const Real most = kMostTurnPerSubstep / h;
+    for (std::size_t slot = static_cast<std::size_t>(std::max(bodies.firstDynamic, 1)); slot < bodies.states.size(); ++slot) {
+        Real* w = bodies.states[slot].angularVelocity;
+        const Real speedSquared = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+        if (!(speedSquared > most * most)) continue;
+        const Real scale = most / std::sqrt(speedSquared);
+        for (int k = 0; k < 3; ++k) w[k] *= scale;
+    }
+}
+
+}  // namespace
+
 void integratePositions(SolverBodies& bodies, Real h, SolverPath path) {
+    holdSpin(bodies, h);
     const int count = static_cast<int>(bodies.states.size());
     if (path == SolverPath::Wide) return integratePositionsWide(bodies.states.data(), count, h);
     for (int slot = 1; slot < count; ++slot) integratePositionsPack<1>(bodies.states.data(), &slot, h);
