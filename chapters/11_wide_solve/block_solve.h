@@ -36,9 +36,9 @@ inline void warmStartBlock(const ManifoldBlock<N>& c, SolverBodyState* states) {
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
 }
-/// Each point's separation from where its two material points are now: the separation found at
-/// the frame's start plus how far the bodies have moved and turned since (adjustedSeparation holds
-/// the start's normal . (armB - armA) taken out, so the arms as turned now go in whole).
+
+/// What every point of a manifold shares in its separation: how far the bodies have moved apart
+/// along the normal, and the normal turned back into each body's start frame.
 template <int N>
 struct SeparationFrame {
     Pack<N> movedApart;
@@ -49,6 +49,9 @@ inline SeparationFrame<N> separationFrame(const ManifoldBlock<N>& c, const BodyP
     return {dot(c.normal, b.deltaPosition - a.deltaPosition), rotate(conjugate(a.deltaRotation), c.normal),
             rotate(conjugate(b.deltaRotation), c.normal)};
 }
+/// Each point's separation from where its two material points are now: the separation found at
+/// the frame's start plus how far the bodies have moved and turned since (adjustedSeparation holds
+/// the start's normal . (armB - armA) taken out, so the arms as turned now go in whole).
 template <int N>
 inline Pack<N> pointSeparation(const ManifoldPointPack<N>& p, const SeparationFrame<N>& f) {
     return f.movedApart + dot(f.normalSeenByB, p.armB) - dot(f.normalSeenByA, p.armA) + p.adjustedSeparation;
