@@ -125,13 +125,16 @@ World buildStressScene(const StressParams& params, const std::string& name) {
 }
 
 StressParams readStressParams(const JsonCursor& cursor) {
-    cursor.expectObject({"count", "density", "shape", "drop_height", "seed"});
+    // "seed" is the same number under its older name, still read so that older files load.
+    cursor.expectObject({"count", "density", "shape", "drop_height", "arrangement", "seed"});
+    if (cursor.has("arrangement") && cursor.has("seed")) cursor.fail("give \"arrangement\" or its older name \"seed\", not both");
     StressParams params;
     if (auto v = cursor.optional("count")) params.count = v->integer(1, kStressMaxCount);
     if (auto v = cursor.optional("density")) params.density = v->choice(kDensities);
     if (auto v = cursor.optional("shape")) params.shape = v->choice(kShapes);
     if (auto v = cursor.optional("drop_height")) params.dropHeight = v->inRange(0, kStressMaxDropHeight);
-    if (auto v = cursor.optional("seed")) params.seed = static_cast<std::uint32_t>(v->integer(0, 1 << 30));
+    for (const char* key : {"arrangement", "seed"})
+        if (auto v = cursor.optional(key)) params.seed = static_cast<std::uint32_t>(v->integer(0, 1 << 30));
     return params;
 }
 
@@ -147,7 +150,7 @@ std::string stressSceneFile(const StressParams& params, const Settings& settings
                             {"density", toString(params.density)},
                             {"shape", toString(params.shape)},
                             {"drop_height", tidyNumber(params.dropHeight)},
-                            {"seed", params.seed}}}};
+                            {"arrangement", params.seed}}}};
     return scene.dump(2) + "\n";
 }
 

@@ -49,7 +49,7 @@ World buildStressScene(const StressParams& params, const std::string& name = "sa
 const Names<StressShape>& stressShapeNames();
 
 /// Reads the generator's parameters from a scene file ({ "count": 1000, "density": "sparse",
-/// "shape": "mixed", "drop_height": 2, "seed": 5 }, every key optional). Throws SceneError
+/// "shape": "mixed", "drop_height": 2, "arrangement": 5 }, every key optional). Throws SceneError
 /// naming the JSON path of a bad value.
 StressParams readStressParams(const JsonCursor& cursor);
 
