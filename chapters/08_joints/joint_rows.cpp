@@ -382,21 +382,6 @@ bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointI
     return true;
 }
 
-bool buildDistanceRow(SingleJointRow& out, const JointDesc& joint, const JointFrame& frame, int rowBodyA, int rowBodyB,
-                      Real h, const JointFeedback& feedback, const JointImpulses* carried) {
-    const DistanceRow distance = distanceRow(joint, frame, h);
-    // RowBuilder::spring and ::equality, then the batch's last steps for slot 0.
-    out.row = distance.row;
-    out.softness = distance.spring ? distance.springSoftness : Softness{};
-    out.fedBack = false;
-    out.kind = distance.spring ? JointRowKind::Spring : JointRowKind::Equality;
-    out.error = distance.error;
-    applyFeedback(out.row, out.softness, out.fedBack, out.kind, out.error, feedback, h);
-    if (!finiteRow(out.row)) return false;
-    seatRow(out.row, rowBodyA, rowBodyB, carried ? carried->slot[0] : Real(0));
-    return true;
-}
-
 void appendJointRows(JointRows& out, const JointDesc& joint, int jointIndex, const JointFrame& frame, int rowBodyA,
                      int rowBodyB, const std::vector<SolverBody>& bodies, Real h, const JointFeedback& feedback,
                      const JointImpulses* carried) {

@@ -112,26 +112,6 @@ bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointI
                         const JointFeedback& feedback, const JointImpulses* carried,
                         const JointBatchNeeds& needs = JointBatchNeeds{});
 
-/// A joint of one row (a distance joint) as buildJointRowBatch builds its slot 0, without the
-/// batch around it: a solve that packs rows itself builds such joints every substep, and the batch
-/// is most of the work of one row.
-struct SingleJointRow {
-    ConstraintRow row;      // effectiveMass left 0, as JointBatchNeeds{.., false} leaves it
-    Softness softness;
-    bool fedBack = false;
-    JointRowKind kind = JointRowKind::Free;
-    Real error = 0;
-};
-
-/// Whether `joint` has one row and buildDistanceRow builds it.
-constexpr bool hasSingleRow(JointType type) { return type == JointType::Distance; }
-
-/// Slot 0 of the distance joint `joint` at `frame` between rowBodyA and rowBodyB, its impulse from
-/// `carried` (nullptr: zero) clamped to its bounds: buildJointRowBatch's numbers. False if the row
-/// came out non-finite.
-bool buildDistanceRow(SingleJointRow& out, const JointDesc& joint, const JointFrame& frame, int rowBodyA, int rowBodyB,
-                      Real h, const JointFeedback& feedback, const JointImpulses* carried);
-
 /// Appends the rows of World::joints[jointIndex] for a step of h, effective masses filled in,
 /// accumulated impulses loaded from World::jointImpulses when `carryImpulses` (and clamped to
 /// this step's bounds), zero otherwise.

@@ -92,9 +92,9 @@ bool rowsFollowTurnsAlone(JointType type) {
 }
 
 // Whether listed joint i may keep last substep's rows.
-bool keepsRows(const World& world, const JointPass& pass, std::size_t i) {
+bool keepsRows(const JointPass& pass, std::size_t i) {
     if (pass.packedEntry[i] < 0) return false;  // left out last substep: built again
-    if (!rowsFollowTurnsAlone(world.joints[static_cast<std::size_t>(pass.joints[i])].type)) return false;
+    if (!pass.packed.joints[i].keepable) return false;  // its rows turn with the bodies' moves (rowsFollowTurnsAlone)
     const Quat& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])].transform.rotation;
     const Quat& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])].transform.rotation;
     return turnSince(pass.builtA[i], a) <= kJointRowsKeptTurn && turnSince(pass.builtB[i], b) <= kJointRowsKeptTurn;
@@ -121,18 +121,19 @@ void placeBodies(const World& world, const SolverBodies& bodies, JointPass& pass
 
 // Builds listed joint i's rows where its bodies stand now into its entry, which the frame's first
 // substep lays out; its slot count into `slots`. False (the entry left empty) if a row came out
-// non-finite. A joint of one row skips chapter 8's batch: the same rule, a tenth of the room.
+// non-finite. A joint of one row skips chapter 8's batch and is written straight into its room
+// (writeDistanceJoint): the same rule, a tenth of the room.
 bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback, bool firstSubstep, std::size_t i,
                       const JointFrame& frame, JointPass& pass, int& slots) {
     const int entry = static_cast<int>(i);
     const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
     JointImpulses& carried = pass.carried[i];
-    if (hasSingleRow(joint.type)) {
-        SingleJointRow& single = pass.single;
-        const bool built = buildDistanceRow(single, joint, frame, pass.entryA[i], pass.entryB[i], h, feedback, &carried);
-        if (firstSubstep) reservePackedJoint(pass.packed, entry, 1, /*block=*/false);
-        if (!built || !writePackedJoint(single, pass.bodies, pass.slot, pass.packed, entry)) return false;
-        carried.slot[0] = single.row.impulse;
+    if (joint.type == JointType::Distance) {  // one row
+        if (firstSubstep) reservePackedJoint(pass.packed, entry, 1, /*block=*/false, /*keepable=*/false);
+        if (!writeDistanceJoint(joint, frame, pass.entryA[i], pass.entryB[i], h, feedback, carried.slot[0], pass.bodies,
+                                pass.slot, pass.packed, entry))
+            return false;
+        carried.slot[0] = pass.packed.rows[static_cast<std::size_t>(pass.packed.joints[i].firstRow)].impulse;
         slots = 1;
         return true;
     }
@@ -142,7 +143,8 @@ bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback,
     if (firstSubstep) {
         // A joint's slots depend on its description alone; one not built yet gets them all.
         const bool pointBlock = joint.type != JointType::Distance && joint.type != JointType::Slider;
-        reservePackedJoint(pass.packed, entry, built ? batch.count : JointRowBatch::kMaxRows, pointBlock);
+        reservePackedJoint(pass.packed, entry, built ? batch.count : JointRowBatch::kMaxRows, pointBlock,
+                           rowsFollowTurnsAlone(joint.type));
     }
     if (!built || !writePackedJoint(batch, pass.bodies, pass.slot, pass.packed, entry)) return false;
     // Every slot carries its impulse clamped to this substep's bounds; the sweeps' own rows
@@ -170,7 +172,7 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
     pass.builtA.resize(pass.joints.size());
     pass.builtB.resize(pass.joints.size());
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
-        if (!firstSubstep && keepsRows(world, pass, i)) {
+        if (!firstSubstep && keepsRows(pass, i)) {
             // Kept: last substep's rows, their impulses the sweeps ended with, their errors moved.
             pass.rowCount += pass.packed.joints[i].slotCount;
             refreshPackedFeedback(pass.packed, static_cast<int>(i), feedback, h);

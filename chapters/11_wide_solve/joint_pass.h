@@ -55,7 +55,6 @@ struct JointPass {
     };
     std::vector<BodyPose> poses;       // per entry: where it stands this substep
     JointRowBatch batch;               // one joint's rows, as chapter 8 builds them
-    SingleJointRow single;             // a joint of one row (distance), built without the batch
     PackedJointRows packed;            // this substep's rows, as the sweeps take them (listed joint i is entry i)
     std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out this substep)
     std::vector<Quat> builtA, builtB;  // per listed joint: its bodies' rotations when its rows were built

@@ -1,6 +1,10 @@
 #include "11_wide_solve/packed_joint_rows.h"
 
+#include "06_manifolds/stabilisation.h"
+#include "11_wide_solve/lanes.h"
+
 #include <algorithm>
+#include <cmath>
 
 namespace stepwise {
 
@@ -26,8 +30,9 @@ void pushTurn(SolverBodyState* states, int slot, const Vec3& angular) {
     for (int k = 0; k < 3; ++k) s.angularVelocity[k] += angular[k];
 }
 
-// The row's impulse change `applied` into its bodies' velocities.
-void pushRow(const PackedJointRow& row, Real applied, SolverBodyState* states) {
+// The row's impulse change `applied` into its bodies' velocities: inlined by force, as the lanes'
+// kernels are (three sweeps a substep call it for every row; a call was a tenth of a chain's frame).
+STEPWISE_LANE_INLINE void pushRow(const PackedJointRow& row, Real applied, SolverBodyState* states) {
     if (row.turnOnly) {
         pushTurn(states, row.slotA, applied * row.moveAngularA);
         pushTurn(states, row.slotB, applied * row.moveAngularB);
@@ -35,6 +40,18 @@ void pushRow(const PackedJointRow& row, Real applied, SolverBodyState* states) {
     }
     push(states, row.slotA, applied * row.moveLinearA, applied * row.moveAngularA);
     push(states, row.slotB, applied * row.moveLinearB, applied * row.moveAngularB);
+}
+
+// A packed row's M^-1 J^T and effective mass, from its Jacobian and its bodies' inverse masses.
+void setMoves(const SolverBody& a, const SolverBody& b, PackedJointRow& packed) {
+    packed.moveLinearA = a.inverseMass * packed.linearA;
+    packed.moveAngularA = a.inverseInertia * packed.angularA;
+    packed.moveLinearB = b.inverseMass * packed.linearB;
+    packed.moveAngularB = b.inverseInertia * packed.angularB;
+    // Chapter 4's effectiveMass, 1 / (J M^-1 J^T), with M^-1 J^T made once above.
+    const Real inverseEffectiveMass = a.inverseMass * packed.linearA.squaredNorm() + packed.angularA.dot(packed.moveAngularA) +
+                                      b.inverseMass * packed.linearB.squaredNorm() + packed.angularB.dot(packed.moveAngularB);
+    packed.effectiveMass = inverseEffectiveMass > 0 ? 1 / inverseEffectiveMass : 0;
 }
 
 // One row with what the sweeps read, M^-1 J^T and the effective mass made here.
@@ -53,14 +70,7 @@ void packRow(const ConstraintRow& row, const Softness& softness, bool fedBack, J
     packed.angularA = row.angularA;
     packed.linearB = row.linearB;
     packed.angularB = row.angularB;
-    packed.moveLinearA = a.inverseMass * row.linearA;
-    packed.moveAngularA = a.inverseInertia * row.angularA;
-    packed.moveLinearB = b.inverseMass * row.linearB;
-    packed.moveAngularB = b.inverseInertia * row.angularB;
-    // Chapter 4's effectiveMass, 1 / (J M^-1 J^T), with M^-1 J^T made once above.
-    const Real inverseEffectiveMass = a.inverseMass * row.linearA.squaredNorm() + row.angularA.dot(packed.moveAngularA) +
-                                      b.inverseMass * row.linearB.squaredNorm() + row.angularB.dot(packed.moveAngularB);
-    packed.effectiveMass = inverseEffectiveMass > 0 ? 1 / inverseEffectiveMass : 0;
+    setMoves(a, b, packed);
     packed.bias = row.bias;
     packed.lower = row.lower;
     packed.upper = row.upper;
@@ -136,9 +146,10 @@ void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
 
 }  // namespace
 
-void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block) {
+void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable) {
     PackedJoint entry;
     entry.joint = joint;
+    entry.keepable = keepable;
     entry.firstRow = packed.rowsReserved;
     entry.rowRoom = rows;
     packed.rowsReserved += rows;
@@ -174,17 +185,45 @@ bool writePackedJoint(const JointRowBatch& batch, const std::vector<SolverBody>&
     return true;
 }
 
-bool writePackedJoint(const SingleJointRow& single, const std::vector<SolverBody>& bodies,
-                      const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry) {
-    PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+// [ch11-distance-row]
+bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int entryA, int entryB, Real h,
+                        const JointFeedback& feedback, Real carried, const std::vector<SolverBody>& bodies,
+                        const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry) {
+    PackedJoint& packedJoint = packed.joints[static_cast<std::size_t>(entry)];
     emptyPackedJoint(packed, entry);
-    if (joint.rowRoom < 1) return false;
-    joint.slotCount = 1;
-    PackedJointRow& row = packed.rows[static_cast<std::size_t>(joint.firstRow)];
-    packRow(single.row, single.softness, single.fedBack, single.kind, single.error, 0, bodies, slotOfEntry, row);
-    joint.rowCount = row.effectiveMass == 0 ? 0 : 1;  // chapter 8's sweep skips a row without mass too
+    if (packedJoint.rowRoom < 1) return false;
+    PackedJointRow& row = packed.rows[static_cast<std::size_t>(packedJoint.firstRow)];
+    // Chapter 8's distanceRow: along the line between the anchors, C = its length less the rest length.
+    const Vec3 gap = frame.anchorB - frame.anchorA;
+    const Real length = gap.norm();
+    const Vec3 direction = length > Real(1e-9) ? Vec3(gap / length) : Vec3::Zero();
+    row.linearA = -direction;  // chapter 4's pointVelocityRow
+    row.angularA = -frame.armA.cross(direction);
+    row.linearB = direction;
+    row.angularB = frame.armB.cross(direction);
+    row.error = length - joint.length.value_or(length);
+    const bool spring = joint.springHertz > 0;
+    row.kind = spring ? JointRowKind::Spring : JointRowKind::Equality;
+    row.soft = spring ? makeSoftness(joint.springHertz, joint.springDampingRatio, h) : Softness{};
+    row.fedBack = false;
+    row.turnOnly = direction.isZero(0);
+    jointRowFeedback(row.bias, row.soft, row.fedBack, row.kind, row.error, /*movesPoints=*/!row.turnOnly, feedback, h);
+    // Chapter 8's finiteRow: x - x is 0 for every finite x.
+    const Real finite = (direction - direction).sum() + (row.angularA - row.angularA).sum() +
+                        (row.angularB - row.angularB).sum() + (row.bias - row.bias);
+    if (finite != 0) return false;
+    row.lower = -kRealMax;
+    row.upper = kRealMax;
+    row.impulse = std::isfinite(carried) ? std::clamp(carried, row.lower, row.upper) : Real(0);
+    row.slot = 0;
+    row.slotA = slotOfEntry[static_cast<std::size_t>(entryA)];
+    row.slotB = slotOfEntry[static_cast<std::size_t>(entryB)];
+    setMoves(bodies[static_cast<std::size_t>(entryA)], bodies[static_cast<std::size_t>(entryB)], row);
+    packedJoint.slotCount = 1;
+    packedJoint.rowCount = row.effectiveMass == 0 ? 0 : 1;  // chapter 8's sweep skips a row without mass too
     return true;
 }
+// [ch11-distance-row]
 
 void emptyPackedJoint(PackedJointRows& packed, int entry) {
     PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
@@ -196,6 +235,7 @@ void emptyPackedJoint(PackedJointRows& packed, int entry) {
 // [ch11-advance-errors]
 void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
     for (const PackedJoint& joint : packed.joints) {
+        if (!joint.keepable) continue;  // built again where the bodies stand next substep
         if (joint.block >= 0) {
             PackedPointBlock& block = packed.blocks[static_cast<std::size_t>(joint.block)];
             block.error += h * anchorsRate(block, states);

@@ -9,6 +9,7 @@
 // Jacobian's effect (an unused slot, a joint whose bodies cannot both move it) are left out: the
 // sweeps skip them anyway. The rules (bias, softness, clamping, the point block) are chapter 8's.
 
+#include "08_joints/joint_frame.h"
 #include "08_joints/joint_rows.h"
 #include "11_wide_solve/solver_data.h"
 
@@ -54,6 +55,7 @@ struct PackedJoint {
     int firstRow = 0, rowCount = 0;  // into PackedJointRows::rows
     int rowRoom = 0;              // rows reserved from firstRow
     int blockRoom = -1;           // the block reserved for it, or -1
+    bool keepable = true;         // its rows may be kept to the next substep (else built every substep)
 };
 
 struct PackedJointRows {
@@ -72,7 +74,8 @@ struct PackedJointRows {
 
 /// Reserves room for one more joint (`joint`, the caller's index of it): `rows` rows and, with
 /// `block`, a point block, empty until writePackedJoint fills them. Its entry is the next one.
-void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block);
+/// `keepable` false: its rows are built every substep, so advancePackedErrors leaves them be.
+void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable);
 
 /// Writes one joint's rows (`batch`, built over the solver bodies `bodies`, entries `slotOfEntry`
 /// in the solve's slots) into the room of `entry`, each row's M^-1 J^T and effective mass made
@@ -80,15 +83,20 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
 bool writePackedJoint(const JointRowBatch& batch, const std::vector<SolverBody>& bodies,
                       const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry);
 
-/// The same for a joint of one row (SingleJointRow, slot 0).
-bool writePackedJoint(const SingleJointRow& single, const std::vector<SolverBody>& bodies,
-                      const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry);
+/// Joint `entry`'s one row for the distance joint `joint` where `frame` (chapter 8's jointRowFrame)
+/// has its anchors, between the entries `entryA` and `entryB` of `bodies`, its impulse `carried`
+/// clamped to its bounds: the numbers buildJointRowBatch and writePackedJoint make, written straight
+/// into the room (a swinging chain builds every joint every substep, and the rows in between were
+/// most of that work). False, the entry left empty, if the row came out non-finite or has no room.
+bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int entryA, int entryB, Real h,
+                        const JointFeedback& feedback, Real carried, const std::vector<SolverBody>& bodies,
+                        const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry);
 
 /// Leaves joint `entry` out of the sweeps (no block, no rows) until it is written again.
 void emptyPackedJoint(PackedJointRows& packed, int entry);
 
-/// Every row's and block's position error moved by what the velocities in `states` do to it over
-/// h: C += h J v, the first-order change (the rows' Jacobians are dC/dx).
+/// Every keepable joint's rows' and block's position error moved by what the velocities in
+/// `states` do to it over h: C += h J v, the first-order change (the rows' Jacobians are dC/dx).
 void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h);
 
 /// Joint `entry`'s biases, softness and fedBack made again from its rows' errors by chapter 8's

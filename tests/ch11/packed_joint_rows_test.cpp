@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace stepwise;
@@ -114,4 +115,77 @@ TEST_CASE("packed joint rows sweep as chapter 8's rows do", "[ch11][joints]") {
             CHECK(packedTestAngular(bodies.states[0]) == Vec3::Zero());
         }
     }
+}
+
+TEST_CASE("a distance joint's row is written straight into its room with chapter 8's numbers", "[ch11][joints]") {
+    // writeDistanceJoint skips chapter 8's batch; the row it writes must be the batch's to the bit:
+    // rigid and as a spring, stretched and slack, and with coincident anchors (no direction: a
+    // row without mass, which the sweeps leave out).
+    const Real h = Real(1) / Real(600);
+    const World gallery = packedTestStirred(buildJointGallery(), 7);
+    SolverBodies bodies;
+    prepareBodies(gallery, bodies);
+    JointPass pass;
+    prepareJointPass(gallery, bodies, 1, pass);
+    buildJointRows(gallery, bodies, h, /*firstSubstep=*/true, pass);
+    const JointFeedback feedback = fastJointFeedback(gallery.settings, h);
+    int checked = 0;
+    for (std::size_t i = 0; i < pass.joints.size(); ++i) {
+        JointDesc joint = gallery.joints[static_cast<std::size_t>(pass.joints[i])];
+        if (joint.type != JointType::Distance) continue;
+        const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
+        const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
+        const Real carried = Real(0.03);
+        for (const Real springHertz : {Real(0), Real(4)})
+            for (const Real length : {Real(0.5), Real(3)})
+                for (const bool coincident : {false, true}) {
+                    INFO("spring " << springHertz << " Hz, length " << length << " m, coincident " << coincident);
+                    joint.springHertz = springHertz;
+                    joint.springDampingRatio = Real(0.3);
+                    joint.length = length;
+                    JointFrame frame = jointRowFrame(joint, a.transform, a.center, b.transform, b.center);
+                    if (coincident) frame.anchorB = frame.anchorA;
+                    JointImpulses impulses;
+                    impulses.slot[0] = carried;
+                    // Chapter 8's batch, packed as every other joint is.
+                    JointRowBatch batch;
+                    REQUIRE(buildJointRowBatch(batch, joint, 0, frame, pass.entryA[i], pass.entryB[i], pass.bodies, h,
+                                               feedback, &impulses, JointBatchNeeds{false, false}));
+                    PackedJointRows viaBatch, straight;
+                    reservePackedJoint(viaBatch, 0, JointRowBatch::kMaxRows, false, false);
+                    reservePackedJoint(straight, 0, 1, false, false);
+                    REQUIRE(writePackedJoint(batch, pass.bodies, pass.slot, viaBatch, 0));
+                    REQUIRE(writeDistanceJoint(joint, frame, pass.entryA[i], pass.entryB[i], h, feedback, carried,
+                                               pass.bodies, pass.slot, straight, 0));
+                    REQUIRE(straight.joints[0].rowCount == viaBatch.joints[0].rowCount);
+                    CHECK(straight.joints[0].rowCount == (coincident ? 0 : 1));
+                    const PackedJointRow& x = straight.rows[0];
+                    const PackedJointRow& y = viaBatch.rows[0];
+                    CHECK((x.linearA == y.linearA && x.angularA == y.angularA && x.linearB == y.linearB &&
+                           x.angularB == y.angularB));
+                    CHECK((x.moveLinearA == y.moveLinearA && x.moveAngularA == y.moveAngularA &&
+                           x.moveLinearB == y.moveLinearB && x.moveAngularB == y.moveAngularB));
+                    CHECK(x.effectiveMass == y.effectiveMass);
+                    CHECK(x.error == y.error);
+                    CHECK(x.bias == y.bias);
+                    CHECK((x.soft.biasRate == y.soft.biasRate && x.soft.massScale == y.soft.massScale &&
+                           x.soft.impulseScale == y.soft.impulseScale));
+                    CHECK((x.kind == y.kind && x.fedBack == y.fedBack && x.turnOnly == y.turnOnly));
+                    CHECK((x.impulse == y.impulse && x.lower == y.lower && x.upper == y.upper));
+                    CHECK((x.slotA == y.slotA && x.slotB == y.slotB && x.slot == y.slot));
+                    ++checked;
+                }
+        // A non-finite anchor: refused, the room left empty, as chapter 8's batch refuses it.
+        JointFrame broken = jointRowFrame(joint, a.transform, a.center, b.transform, b.center);
+        broken.anchorB.x() = std::numeric_limits<Real>::quiet_NaN();
+        PackedJointRows straight;
+        reservePackedJoint(straight, 0, 1, false, false);
+        CHECK_FALSE(writeDistanceJoint(joint, broken, pass.entryA[i], pass.entryB[i], h, feedback, 0, pass.bodies,
+                                       pass.slot, straight, 0));
+        CHECK(straight.joints[0].rowCount == 0);
+        JointRowBatch batch;
+        CHECK_FALSE(buildJointRowBatch(batch, joint, 0, broken, pass.entryA[i], pass.entryB[i], pass.bodies, h, feedback,
+                                       nullptr, JointBatchNeeds{false, false}));
+    }
+    CHECK(checked >= 8);
 }
