@@ -22,10 +22,17 @@ struct SimplexClosest {
     bool degenerate = false;             // a zero-length, -area or -volume simplex was met
 };
 
+/// The arithmetic the closest point is found in. Working: Real's. Double: double whatever Real
+/// is, for the walks float cannot finish: on a feature whose points lie tens of metres from the
+/// origin while the origin is millimetres from it, a float sum of them carries eps |p| and turns
+/// the closest point's direction by eps |p| / |v| (gjkDistance's second walk).
+enum class SimplexPrecision { Working, Double };
+
 /// Closest point to the origin of the simplex spanned by points[0..count-1] (1 <= count <= 4).
 /// `scale` (m) is the size of the shapes: lengths, areas and volumes below a few rounding
 /// errors of it count as zero, so the answer does not depend on units.
 SimplexClosest closestPointToOrigin(const Vec3* points, int count, Real scale,
-                                    FacePoint facePoint = FacePoint::Projection);
+                                    FacePoint facePoint = FacePoint::Projection,
+                                    SimplexPrecision precision = SimplexPrecision::Working);
 
 }  // namespace stepwise

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace stepwise {
 
@@ -32,30 +33,28 @@ ConvexProxy coreOf(const ConvexProxy& proxy, Shape& storage, Real& radius) {
 }
 // [ch02-cores]
 
-}  // namespace
-
-GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int maxIterations) {
-    GjkDistanceResult result;
-    if (!isValidProxy(a) || !isValidProxy(b)) {
-        result.exit = GjkExit::Degenerate;
-        return result;
-    }
-    // Tolerances from the whole shapes, the walk on their cores.
-    const GjkTolerances tolerances = gjkTolerances(a, b);
-    Shape coreStorageA, coreStorageB;
-    Real radiusA = 0, radiusB = 0;
-    const RelativePair pair = seenFromA(coreOf(a, coreStorageA, radiusA), coreOf(b, coreStorageB, radiusB));
-    const Real touchingSquared = tolerances.touching * tolerances.touching;
-
-    Walk walk = startWalk(pair, tolerances);
-    result.iterations = 1;
-    GjkExit exit = walk.v.squaredNorm() <= touchingSquared ? GjkExit::Intersect : GjkExit::IterationCap;
+// One walk of the distance query, its simplex's closest points found in `precision`.
+struct DistanceWalk {
+    Walk walk;
+    GjkExit exit = GjkExit::IterationCap;
     Real lowerBound = -kRealMax;  // the best support plane's distance from the origin (cores)
+    int iterations = 1;
+};
+
+DistanceWalk walkToDistance(const RelativePair& pair, const GjkTolerances& tolerances, int maxIterations,
+                            SimplexPrecision precision) {
+    const Real touchingSquared = tolerances.touching * tolerances.touching;
+    DistanceWalk run;
+    Walk& walk = run.walk;
+    walk = startWalk(pair, tolerances);
+    GjkExit& exit = run.exit;
+    exit = walk.v.squaredNorm() <= touchingSquared ? GjkExit::Intersect : GjkExit::IterationCap;
+    Real& lowerBound = run.lowerBound;
     // [ch02-distance-loop]
-    while (exit == GjkExit::IterationCap && result.iterations < maxIterations) {
+    while (exit == GjkExit::IterationCap && run.iterations < maxIterations) {
         const Vec3 direction = -walk.v;
         const SupportPoint point = minkowskiSupport(pair.a, pair.b, direction);
-        ++result.iterations;
+        ++run.iterations;
         lowerBound = std::max(lowerBound, walk.v.dot(point.w) / walk.v.norm());
 
         // Bounds on the distance: |v| from above (v is a point of A - B), v.w / |v| from below
@@ -70,7 +69,7 @@ GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int ma
             exit = GjkExit::RepeatedSupport;
             break;
         }
-        addAndReduce(walk, point, tolerances.scale);
+        addAndReduce(walk, point, tolerances.scale, FacePoint::Projection, precision);
         const Real newDistanceSquared = walk.v.squaredNorm();
         if (!std::isfinite(newDistanceSquared)) {
             exit = GjkExit::Degenerate;
@@ -86,6 +85,46 @@ GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int ma
         }
     }
     // [ch02-distance-loop]
+    return run;
+}
+
+// Whether the walk proved a gap: it converged, or a support plane it met leaves the origin
+// outside by more than the touching tolerance.
+bool provesGap(const DistanceWalk& run, const GjkTolerances& tolerances) {
+    return run.exit == GjkExit::Separated || run.lowerBound > tolerances.touching;
+}
+
+}  // namespace
+
+GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int maxIterations) {
+    GjkDistanceResult result;
+    if (!isValidProxy(a) || !isValidProxy(b)) {
+        result.exit = GjkExit::Degenerate;
+        return result;
+    }
+    // Tolerances from the whole shapes, the walk on their cores.
+    const GjkTolerances tolerances = gjkTolerances(a, b);
+    Shape coreStorageA, coreStorageB;
+    Real radiusA = 0, radiusB = 0;
+    const RelativePair pair = seenFromA(coreOf(a, coreStorageA, radiusA), coreOf(b, coreStorageB, radiusB));
+    DistanceWalk run = walkToDistance(pair, tolerances, maxIterations, SimplexPrecision::Working);
+    // [ch02-second-walk]
+    // A float walk that stops on a rounding floor without a proof walks again with its simplex's
+    // closest point found in double. Where the nearest feature's points lie tens of metres from the
+    // origin and the origin millimetres from the feature (a 1.2 mm box beside a 56 m slab), a
+    // float closest point carries eps |p| and turns by eps |p| / |v|, and the support plane it
+    // points at misses the gap by centimetres. The support points stay float: only the sums
+    // that cancel are made wider. In a double build, and for every walk that ends cleanly, the
+    // first walk stands.
+    if (std::is_same<Real, float>::value && run.exit != GjkExit::Intersect && !provesGap(run, tolerances)) {
+        DistanceWalk precise = walkToDistance(pair, tolerances, maxIterations, SimplexPrecision::Double);
+        precise.iterations += run.iterations;
+        run = precise;
+    }
+    // [ch02-second-walk]
+    const Walk& walk = run.walk;
+    const GjkExit exit = run.exit;
+    result.iterations = run.iterations;
 
     // [ch02-closest-points]
     // v = sum_i weight_i (a_i - b_i), so the same weights applied to the shape points give the
@@ -101,7 +140,7 @@ GjkDistanceResult gjkDistance(const ConvexProxy& a, const ConvexProxy& b, int ma
     // upper bound of the distance, not the distance. It proves a gap only with a support plane that
     // leaves the origin outside; without one the cores count as touching, as gjkIntersect's verdict
     // counts them.
-    const bool proven = exit == GjkExit::Separated || lowerBound > tolerances.touching;
+    const bool proven = provesGap(run, tolerances);
     const Real coreDistance = exit == GjkExit::Intersect || !proven ? Real(0) : walk.v.norm();
     const Vec3 axisAToB = coreDistance > 0 ? Vec3(-walk.v / coreDistance) : Vec3::Zero();
     result.pointA = coreA + radiusA * axisAToB + pair.offset;

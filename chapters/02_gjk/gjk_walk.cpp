@@ -44,12 +44,12 @@ bool alreadyInSimplex(const Simplex& simplex, const Vec3& w, Real tolerance) {
 // [ch02-reduce]
 // Adds a support point, finds the closest point of the grown simplex to the origin, and keeps
 // only the vertices of the feature that holds it (at most 4 survive; usually fewer).
-void addAndReduce(Walk& walk, const SupportPoint& point, Real scale, FacePoint facePoint) {
+void addAndReduce(Walk& walk, const SupportPoint& point, Real scale, FacePoint facePoint, SimplexPrecision precision) {
     Simplex& simplex = walk.simplex;
     simplex.vertices[simplex.count++] = point;
     Vec3 points[4];
     for (int i = 0; i < simplex.count; ++i) points[i] = simplex.vertices[i].w;
-    const SimplexClosest closest = closestPointToOrigin(points, simplex.count, scale, facePoint);
+    const SimplexClosest closest = closestPointToOrigin(points, simplex.count, scale, facePoint, precision);
 
     const int newest = simplex.count - 1;
     bool keptNewest = false;

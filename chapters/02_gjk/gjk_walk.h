@@ -44,7 +44,8 @@ bool alreadyInSimplex(const Simplex& simplex, const Vec3& w, Real tolerance);
 
 /// Adds a support point, finds the closest point of the grown simplex to the origin, and keeps
 /// only the vertices of the feature that holds it.
-void addAndReduce(Walk& walk, const SupportPoint& point, Real scale, FacePoint facePoint = FacePoint::Projection);
+void addAndReduce(Walk& walk, const SupportPoint& point, Real scale, FacePoint facePoint = FacePoint::Projection,
+                  SimplexPrecision precision = SimplexPrecision::Working);
 
 /// Moves the simplex's shape points back to world coordinates.
 void toWorld(Simplex& simplex, const Vec3& offset);

@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 using namespace stepwise;
 using namespace stepwise::test;
@@ -73,4 +75,78 @@ TEST_CASE("a small box on a 40 m ground box: GJK agrees with the oracle on touch
         }
     }
     CHECK(checked > 8000);
+}
+
+namespace {
+
+/// The distance from the origin to the hull of `points` (separated), in double, by brute force:
+/// every vertex, every edge's and every triangle's closest point, kept when no point of the set
+/// lies beyond its support plane.
+double hullDistanceFromOrigin(const std::vector<Eigen::Vector3d>& points) {
+    double best = std::numeric_limits<double>::max();
+    const auto consider = [&](const Eigen::Vector3d& x) {
+        const double squared = x.squaredNorm();
+        if (squared == 0) return;
+        for (const Eigen::Vector3d& p : points)
+            if (p.dot(x) < squared * (1 - 1e-9)) return;
+        best = std::min(best, std::sqrt(squared));
+    };
+    const std::size_t n = points.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        consider(points[i]);
+        for (std::size_t j = i + 1; j < n; ++j) {
+            const Eigen::Vector3d ab = points[j] - points[i];
+            const double t = -points[i].dot(ab) / ab.squaredNorm();
+            if (t > 0 && t < 1) consider(points[i] + t * ab);
+            for (std::size_t k = j + 1; k < n; ++k) {
+                const Eigen::Vector3d ac = points[k] - points[i];
+                const Eigen::Vector3d normal = ab.cross(ac);
+                const double normalSquared = normal.squaredNorm();
+                if (normalSquared < 1e-30) continue;
+                const Eigen::Vector3d x = normal * (normal.dot(points[i]) / normalSquared);
+                const double v = normal.dot(ac.cross(points[i])) / normalSquared;
+                const double w = normal.dot(points[i].cross(ab)) / normalSquared;
+                if (v >= 0 && w >= 0 && v + w <= 1) consider(x);
+            }
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+TEST_CASE("a 1.2 mm box 9 mm from a 56 m slab: the distance query finds the gap", "[ch02][gjk][scale]") {
+    // Found by fuzz_narrowphase (tests/fuzz/regressions/narrowphase/tiny-box-beside-thin-slab): the
+    // nearest feature of A - B is a segment whose ends lie about 40 m from the origin. A float sum
+    // of them carries eps |p|, which turns the closest point by eps |p| / |v|, and the support
+    // plane it points at misses the 9 mm gap: the float walk stopped on a rounding floor and the
+    // pair read as touching, its points 8.8 mm apart. The second walk, its closest point in double,
+    // finds the gap.
+    const std::vector<Vec3> corners = {
+        Vec3(Real(15.7181301), Real(-0.00279964437), Real(-13.5600805)),
+        Vec3(Real(27.9950047), Real(0.00279972982), Real(27.8147392)),
+        Vec3(Real(27.9949608), Real(0.00279972982), Real(27.9676456)),
+        Vec3(Real(-3.79030108), Real(0.00223821169), Real(-22.0898056)),
+        Vec3(Real(-27.9950047), Real(-0.00279972982), Real(-27.9950047)),
+        Vec3(Real(-27.8360462), Real(-0.000896216428), Real(-27.9950047))};
+    const Real half = Real(0.000616979029);
+    const Shape slab = Shape::convex(corners);
+    const Shape box = Shape::box(Vec3::Constant(half));
+    const Transform pose{Vec3::Constant(-100), Quat(Real(-0.5), Real(-0.5), Real(-0.5), Real(-0.5))};
+    // Exact, in the frame both share: A - B's points are the slab's corners less the box's.
+    std::vector<Eigen::Vector3d> difference;
+    for (const Vec3& corner : slab.hull->vertices)
+        for (int k = 0; k < 8; ++k) {
+            const Eigen::Vector3d offset(k & 1 ? half : -half, k & 2 ? half : -half, k & 4 ? half : -half);
+            difference.push_back(corner.cast<double>() - offset);
+        }
+    const double exact = hullDistanceFromOrigin(difference);
+    REQUIRE(exact == Approx(0.0087872).margin(1e-6));
+    const ConvexProxy a{&slab, pose, SupportMode::Extents}, b{&box, pose, SupportMode::Extents};
+    const GjkDistanceResult distance = gjkDistance(a, b);
+    INFO("distance " << distance.distance << " m, exact " << exact << " m, exit " << static_cast<int>(distance.exit));
+    CHECK(distance.separated);
+    CHECK(std::abs(double(distance.distance) - exact) < 2e-5);
+    // The witness points are the gap apart, along the axis.
+    CHECK(std::abs(double((distance.pointB - distance.pointA).norm()) - exact) < 2e-5);
 }
