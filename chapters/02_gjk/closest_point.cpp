@@ -20,19 +20,8 @@ using tolerance::kRoundOff;
 // Real = float cannot finish (SimplexPrecision::Double). Their tolerances stay the working
 // type's: the points themselves carry its rounding.
 template <typename S>
-struct ClosestIn {
-    using V = Eigen::Matrix<S, 3, 1>;
-    V point = V::Zero();
-    S weights[4] = {0, 0, 0, 0};
-    int kept[4] = {0, 0, 0, 0};
-    int keptCount = 0;
-    bool inside = false;
-    bool degenerate = false;
-};
-
-template <typename S>
-ClosestIn<S> vertexResult(const Eigen::Matrix<S, 3, 1>* points, int i) {
-    ClosestIn<S> result;
+SimplexClosestOf<S> vertexResult(const Eigen::Matrix<S, 3, 1>* points, int i) {
+    SimplexClosestOf<S> result;
     result.point = points[i];
     result.weights[i] = 1;
     result.kept[0] = i;
@@ -42,8 +31,8 @@ ClosestIn<S> vertexResult(const Eigen::Matrix<S, 3, 1>* points, int i) {
 
 // Point a + t (b - a) of edge ij.
 template <typename S>
-ClosestIn<S> edgeResult(const Eigen::Matrix<S, 3, 1>* points, int i, int j, S t) {
-    ClosestIn<S> result;
+SimplexClosestOf<S> edgeResult(const Eigen::Matrix<S, 3, 1>* points, int i, int j, S t) {
+    SimplexClosestOf<S> result;
     result.point = points[i] + t * (points[j] - points[i]);
     result.weights[i] = 1 - t;
     result.weights[j] = t;
@@ -54,7 +43,7 @@ ClosestIn<S> edgeResult(const Eigen::Matrix<S, 3, 1>* points, int i, int j, S t)
 }
 
 template <typename S>
-ClosestIn<S> closestOnSegment(const Eigen::Matrix<S, 3, 1>* points, int i, int j, S scale) {
+SimplexClosestOf<S> closestOnSegment(const Eigen::Matrix<S, 3, 1>* points, int i, int j, S scale) {
     using V = Eigen::Matrix<S, 3, 1>;
     const S fraction = S(kDegenerateFraction);
     const V& a = points[i];
@@ -62,7 +51,7 @@ ClosestIn<S> closestOnSegment(const Eigen::Matrix<S, 3, 1>* points, int i, int j
     const S lengthSquared = ab.squaredNorm();
     if (lengthSquared <= fraction * fraction * scale * scale) {
         // Both points coincide: the segment is a point; keep the nearer one.
-        ClosestIn<S> result = vertexResult(points, points[j].squaredNorm() < a.squaredNorm() ? j : i);
+        SimplexClosestOf<S> result = vertexResult(points, points[j].squaredNorm() < a.squaredNorm() ? j : i);
         result.degenerate = true;
         return result;
     }
@@ -78,7 +67,7 @@ ClosestIn<S> closestOnSegment(const Eigen::Matrix<S, 3, 1>* points, int i, int j
 // from each vertex; va, vb, vc are (twice) the signed areas that give the barycentric
 // coordinates of the origin's projection onto the plane.
 template <typename S>
-ClosestIn<S> closestOnTriangle(const Eigen::Matrix<S, 3, 1>* points, int ia, int ib, int ic, S scale,
+SimplexClosestOf<S> closestOnTriangle(const Eigen::Matrix<S, 3, 1>* points, int ia, int ib, int ic, S scale,
                                FacePoint facePoint) {
     using V = Eigen::Matrix<S, 3, 1>;
     const S fraction = S(kDegenerateFraction);
@@ -116,8 +105,8 @@ ClosestIn<S> closestOnTriangle(const Eigen::Matrix<S, 3, 1>* points, int ia, int
     // above): a sliver is a triangle thinner than 256 rounding errors, not thinner than 0.3
     // degrees, which the Minkowski difference of a 100:1 needle and a small box routinely is.
     const auto nearestEdge = [&](bool degenerate) {
-        ClosestIn<S> best = closestOnSegment(points, ia, ib, scale);
-        for (const ClosestIn<S>& edge : {closestOnSegment(points, ia, ic, scale), closestOnSegment(points, ib, ic, scale)})
+        SimplexClosestOf<S> best = closestOnSegment(points, ia, ib, scale);
+        for (const SimplexClosestOf<S>& edge : {closestOnSegment(points, ia, ic, scale), closestOnSegment(points, ib, ic, scale)})
             if (edge.point.squaredNorm() < best.point.squaredNorm()) best = edge;
         best.degenerate = best.degenerate || degenerate;
         return best;
@@ -139,7 +128,7 @@ ClosestIn<S> closestOnTriangle(const Eigen::Matrix<S, 3, 1>* points, int ia, int
     // outside the box (found by fuzz_narrowphase). The accurate weights decide: clearly outside
     // the triangle, the nearest edge holds the closest point.
     if (std::min({v, w, 1 - v - w}) < -fraction) return nearestEdge(false);
-    ClosestIn<S> result;
+    SimplexClosestOf<S> result;
     // The point itself as the projection onto the plane, not as a + v ab + w ac: that sum
     // carries an absolute rounding error of eps |a|, which near contact (|point| << |a|) turns
     // its direction by up to eps |a| / |point|. The normal comes from the edges alone, so this
@@ -163,11 +152,11 @@ ClosestIn<S> closestOnTriangle(const Eigen::Matrix<S, 3, 1>* points, int ia, int
 // some face plane (opposite the fourth vertex). The closest point is then on one of those faces,
 // and the nearest face answer wins. Inside every face plane means inside the tetrahedron.
 template <typename S>
-ClosestIn<S> closestOnTetrahedron(const Eigen::Matrix<S, 3, 1>* points, S scale, FacePoint facePoint) {
+SimplexClosestOf<S> closestOnTetrahedron(const Eigen::Matrix<S, 3, 1>* points, S scale, FacePoint facePoint) {
     using V = Eigen::Matrix<S, 3, 1>;
     // Each face, listed with the vertex opposite it.
     static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
-    ClosestIn<S> best;
+    SimplexClosestOf<S> best;
     S bestDistanceSquared = std::numeric_limits<S>::max();
     bool anyOutside = false;
     bool degenerate = false;
@@ -206,7 +195,7 @@ ClosestIn<S> closestOnTetrahedron(const Eigen::Matrix<S, 3, 1>* points, S scale,
             degenerate || (originSide[f] > 0 && oppositeSide[f] < 0) || (originSide[f] < 0 && oppositeSide[f] > 0);
         if (!outside) continue;
         anyOutside = true;
-        ClosestIn<S> onFace = closestOnTriangle(points, kFaces[f][0], kFaces[f][1], kFaces[f][2], scale, facePoint);
+        SimplexClosestOf<S> onFace = closestOnTriangle(points, kFaces[f][0], kFaces[f][1], kFaces[f][2], scale, facePoint);
         const S distanceSquared = onFace.point.squaredNorm();
         if (distanceSquared < bestDistanceSquared) {
             bestDistanceSquared = distanceSquared;
@@ -220,7 +209,7 @@ ClosestIn<S> closestOnTetrahedron(const Eigen::Matrix<S, 3, 1>* points, S scale,
     // Inside (or on the boundary): the origin is its own closest point. Its barycentric weight
     // for each vertex is the volume of the tetrahedron with that vertex replaced by the origin,
     // over the whole volume: originSide / oppositeSide of the face opposite the vertex.
-    ClosestIn<S> inside;
+    SimplexClosestOf<S> inside;
     inside.inside = true;
     inside.keptCount = 4;
     for (int f = 0; f < 4; ++f) {
@@ -233,7 +222,7 @@ ClosestIn<S> closestOnTetrahedron(const Eigen::Matrix<S, 3, 1>* points, S scale,
 
 
 template <typename S>
-ClosestIn<S> closestIn(const Eigen::Matrix<S, 3, 1>* points, int count, S scale, FacePoint facePoint) {
+SimplexClosestOf<S> closestIn(const Eigen::Matrix<S, 3, 1>* points, int count, S scale, FacePoint facePoint) {
     switch (count) {
         case 1: return vertexResult(points, 0);
         case 2: return closestOnSegment(points, 0, 1, scale);
@@ -242,10 +231,9 @@ ClosestIn<S> closestIn(const Eigen::Matrix<S, 3, 1>* points, int count, S scale,
     }
 }
 
-template <typename S>
-SimplexClosest toWorking(const ClosestIn<S>& in) {
+SimplexClosest toWorking(const SimplexClosestOf<double>& in) {
     SimplexClosest out;
-    out.point = in.point.template cast<Real>();
+    out.point = in.point.cast<Real>();
     for (int i = 0; i < 4; ++i) {
         out.weights[i] = static_cast<Real>(in.weights[i]);
         out.kept[i] = in.kept[i];
@@ -260,7 +248,7 @@ SimplexClosest toWorking(const ClosestIn<S>& in) {
 
 SimplexClosest closestPointToOrigin(const Vec3* points, int count, Real scale, FacePoint facePoint,
                                     SimplexPrecision precision) {
-    if (precision == SimplexPrecision::Working) return toWorking(closestIn(points, count, scale, facePoint));
+    if (precision == SimplexPrecision::Working) return closestIn(points, count, scale, facePoint);
     Eigen::Vector3d wide[4];
     for (int i = 0; i < count; ++i) wide[i] = points[i].cast<double>();
     return toWorking(closestIn(wide, count, static_cast<double>(scale), facePoint));

@@ -13,14 +13,17 @@ namespace stepwise {
 /// BarycentricSum is the textbook a + v ab + w ac, kept so the bench can show what it costs.
 enum class FacePoint { Projection, BarycentricSum };
 
-struct SimplexClosest {
-    Vec3 point = Vec3::Zero();           // closest point of the simplex to the origin
-    Real weights[4] = {0, 0, 0, 0};      // barycentric weights of the input points, summing to 1
+/// The answer in the scalar S it was found in (Real; double for SimplexPrecision::Double).
+template <typename S>
+struct SimplexClosestOf {
+    Eigen::Matrix<S, 3, 1> point = Eigen::Matrix<S, 3, 1>::Zero();  // closest point of the simplex to the origin
+    S weights[4] = {0, 0, 0, 0};         // barycentric weights of the input points, summing to 1
     int kept[4] = {0, 0, 0, 0};          // input indices of the smallest feature holding point
     int keptCount = 0;
     bool inside = false;                 // tetrahedron only: the origin is inside or on it
     bool degenerate = false;             // a zero-length, -area or -volume simplex was met
 };
+using SimplexClosest = SimplexClosestOf<Real>;
 
 /// The arithmetic the closest point is found in. Working: Real's. Double: double whatever Real
 /// is, for the walks float cannot finish: on a feature whose points lie tens of metres from the

@@ -44,12 +44,11 @@ struct DistanceWalk {
 DistanceWalk walkToDistance(const RelativePair& pair, const GjkTolerances& tolerances, int maxIterations,
                             SimplexPrecision precision) {
     const Real touchingSquared = tolerances.touching * tolerances.touching;
-    DistanceWalk run;
+    DistanceWalk run{startWalk(pair, tolerances)};
     Walk& walk = run.walk;
-    walk = startWalk(pair, tolerances);
     GjkExit& exit = run.exit;
-    exit = walk.v.squaredNorm() <= touchingSquared ? GjkExit::Intersect : GjkExit::IterationCap;
     Real& lowerBound = run.lowerBound;
+    exit = walk.v.squaredNorm() <= touchingSquared ? GjkExit::Intersect : GjkExit::IterationCap;
     // [ch02-distance-loop]
     while (exit == GjkExit::IterationCap && run.iterations < maxIterations) {
         const Vec3 direction = -walk.v;

@@ -229,20 +229,29 @@ struct DistanceRow {
     Softness springSoftness;
 };
 
+}  // namespace
+
 // [ch08-distance-row]
-DistanceRow distanceRow(const JointDesc& joint, const JointFrame& frame, Real h) {
+DistanceLine distanceLine(const JointDesc& joint, const JointFrame& frame) {
     const Vec3 gap = frame.anchorB - frame.anchorA;
     const Real length = gap.norm();
     // Coincident anchors leave no direction to hold the length along: the row is empty (and skipped).
     const Vec3 direction = length > Real(1e-9) ? Vec3(gap / length) : Vec3::Zero();
+    return {direction, length - joint.length.value_or(length)};
+}
+
+static DistanceRow distanceRow(const JointDesc& joint, const JointFrame& frame, Real h) {
+    const DistanceLine line = distanceLine(joint, frame);
     DistanceRow out;
-    out.row = linearRow(joint.bodyA, joint.bodyB, frame.armA, frame.armB, direction);
-    out.error = length - joint.length.value_or(length);
+    out.row = linearRow(joint.bodyA, joint.bodyB, frame.armA, frame.armB, line.direction);
+    out.error = line.error;
     out.spring = joint.springHertz > 0;
     if (out.spring) out.springSoftness = makeSoftness(joint.springHertz, joint.springDampingRatio, h);
     return out;
 }
 // [ch08-distance-row]
+
+namespace {
 
 void addDistanceRow(RowBuilder& builder, const JointDesc& joint, const JointFrame& frame, Real h) {
     const DistanceRow distance = distanceRow(joint, frame, h);

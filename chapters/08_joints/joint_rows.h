@@ -112,6 +112,14 @@ bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointI
                         const JointFeedback& feedback, const JointImpulses* carried,
                         const JointBatchNeeds& needs = JointBatchNeeds{});
 
+/// A distance joint's line where `frame` has its anchors: the unit direction from A's anchor to
+/// B's (zero where they coincide) and the row's error, the length less the rest length.
+struct DistanceLine {
+    Vec3 direction = Vec3::Zero();
+    Real error = 0;
+};
+DistanceLine distanceLine(const JointDesc& joint, const JointFrame& frame);
+
 /// Appends the rows of World::joints[jointIndex] for a step of h, effective masses filled in,
 /// accumulated impulses loaded from World::jointImpulses when `carryImpulses` (and clamped to
 /// this step's bounds), zero otherwise.

@@ -193,15 +193,14 @@ bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int ent
     emptyPackedJoint(packed, entry);
     if (packedJoint.rowRoom < 1) return false;
     PackedJointRow& row = packed.rows[static_cast<std::size_t>(packedJoint.firstRow)];
-    // Chapter 8's distanceRow: along the line between the anchors, C = its length less the rest length.
-    const Vec3 gap = frame.anchorB - frame.anchorA;
-    const Real length = gap.norm();
-    const Vec3 direction = length > Real(1e-9) ? Vec3(gap / length) : Vec3::Zero();
-    row.linearA = -direction;  // chapter 4's pointVelocityRow
+    // Chapter 8's distance row: along the line between the anchors, J as chapter 4's pointVelocityRow.
+    const DistanceLine line = distanceLine(joint, frame);
+    const Vec3& direction = line.direction;
+    row.linearA = -direction;
     row.angularA = -frame.armA.cross(direction);
     row.linearB = direction;
     row.angularB = frame.armB.cross(direction);
-    row.error = length - joint.length.value_or(length);
+    row.error = line.error;
     const bool spring = joint.springHertz > 0;
     row.kind = spring ? JointRowKind::Spring : JointRowKind::Equality;
     row.soft = spring ? makeSoftness(joint.springHertz, joint.springDampingRatio, h) : Softness{};
