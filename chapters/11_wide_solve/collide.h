@@ -5,14 +5,42 @@
 namespace stepwise {
 inline namespace STEPWISE_ISA {
 
+/// A point's normal row as the bodies are turned now. The solve's rows keep the arms and the
+/// inverse inertia of the frame's start, which is right while a body turns little in a frame; a
+/// thin stick spinning about its length turns far, and a (1 + e) impulse through the start's
+/// inverse inertia then turns it about what is now a heavy axis: energy from nowhere. Seen from
+/// each body's start frame the row is exact and costs no new inertia: with R the turn since the
+/// start, (R r) x n = R (r x R^T n) and the inverse inertia now is R I0^-1 R^T, so the row's lever
+/// is r x (R^T n), its speed reads the spin turned back (R^T w), and its impulse turns the body
+/// by I0^-1 times the lever, turned forwards once at the end.
+template <int N>
+struct TurnedRow {
+    PackVec3<N> leverA, leverB, turnA, turnB;
+    Pack<N> mass;  // 1 / (J M^-1 J^T) as the bodies are turned now; 0 for a missing point
+};
+template <int N>
+inline TurnedRow<N> turnedRow(const ManifoldBlock<N>& c, const ManifoldPointPack<N>& p, const SeparationFrame<N>& f) {
+    TurnedRow<N> row;
+    row.leverA = cross(p.armA, f.normalSeenByA);
+    row.leverB = cross(p.armB, f.normalSeenByB);
+    row.turnA = c.inverseInertiaA * row.leverA;
+    row.turnB = c.inverseInertiaB * row.leverB;
+    const Pack<N> inverseMass = c.inverseMassA + c.inverseMassB + dot(row.leverA, row.turnA) + dot(row.leverB, row.turnB);
+    row.mass = selectPositive(p.normalMass, Pack<N>::splat(1) / max(inverseMass, Pack<N>::splat(Real(1e-30))),
+                              Pack<N>::splat(0));
+    return row;
+}
+
 // [ch11-collide]
 /// Guendelman, Bridson and Fedkiw's collisions before contacts ("Nonconvex rigid bodies with
 /// stacking", SIGGRAPH 2003), in the substep where they happen: each point that approaches faster
 /// than the restitution threshold, with restitution, and touches or closes within two substeps,
-/// gets the impulse that reverses its normal speed times e, on the speeds as they are now. Swept
-/// until nothing approaches, the impulses travel down a row of touching balls one pair at a time,
-/// which the contact solve, spreading an impact over every touching pair at once, cannot do
-/// (Newton's cradle). Returns whether any point was struck.
+/// gets the impulse that reverses its normal speed times e, on the speeds as they are now, along
+/// its row as the bodies are turned now (turnedRow: an impulse that reverses a speed times e <= 1
+/// along the true row can only take energy away). Swept until nothing approaches, the impulses
+/// travel down a row of touching balls one pair at a time, which the contact solve, spreading an
+/// impact over every touching pair at once, cannot do (Newton's cradle). Returns whether any
+/// point was struck.
 template <int N>
 inline bool collideBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params) {
     if (!anyNegative(-c.restitution)) return false;  // no lane bounces
@@ -22,13 +50,15 @@ inline bool collideBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Con
     const Pack<N> fastApproach = Pack<N>::splat(-params.restitutionThreshold);
     const Pack<N> h = Pack<N>::splat(params.substep);
     const Pack<N> margin = Pack<N>::splat(Real(1e-4));
-    Pack<N> separations[4];
-    pointSeparations(c, a, b, separations);
+    const SeparationFrame<N> frame = separationFrame(c, a, b);
+    PackVec3<N> spinA = rotate(conjugate(a.deltaRotation), a.angularVelocity);
+    PackVec3<N> spinB = rotate(conjugate(b.deltaRotation), b.angularVelocity);
     Pack<N> struck = zero;
-    for (int k = 0; k < 4; ++k) {
-        ManifoldPointPack<N>& p = c.point[k];
-        const Pack<N> separation = separations[k];
-        const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
+    for (ManifoldPointPack<N>& p : c.point) {
+        const Pack<N> separation = pointSeparation(p, frame);
+        const TurnedRow<N> row = turnedRow(c, p, frame);
+        const Pack<N> normalSpeed =
+            dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(spinB, row.leverB) - dot(spinA, row.leverA);
         // > 0 where all three hold: faster than the threshold, restitution, a real point.
         const Pack<N> fast = min(min(fastApproach - normalSpeed, c.restitution), p.normalMass);
         // Touching, or closing within two substeps: the relax sweep of this substep looks one
@@ -37,23 +67,31 @@ inline bool collideBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Con
         // of a gap that closes exactly then. The price: a ball may bounce up to two substeps'
         // travel early, which puts the apex (1 - e^2) times that higher.
         const Pack<N> closes = margin - (separation + normalSpeed * (h + h));
-        const Pack<N> mass = selectPositive(fast, selectNonNegative(closes, p.normalMass, zero), zero);
+        const Pack<N> mass = selectPositive(fast, selectNonNegative(closes, row.mass, zero), zero);
         const Pack<N> impulse = -((one + c.restitution) * mass * normalSpeed);
-        applyImpulse(c, p.armA, p.armB, impulse * c.normal, a, b);
+        a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
+        b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
+        spinA = spinA - impulse * row.turnA;
+        spinB = spinB + impulse * row.turnB;
         // Its impact is spent: the restitution after the substeps must not reverse it again.
         p.approachSpeed = selectPositive(mass, zero, p.approachSpeed);
         struck = max(struck, mass);
     }
+    if (!anyNegative(-struck)) return false;
+    // Only struck lanes take the spin turned forwards: the others keep their bits.
+    a.angularVelocity = select(struck, rotate(a.deltaRotation, spinA), a.angularVelocity);
+    b.angularVelocity = select(struck, rotate(b.deltaRotation, spinB), b.angularVelocity);
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
-    return anyNegative(-struck);
+    return true;
 }
 // [ch11-collide]
 
 /// After the last substep (Box3D's order): a point with restitution that approached faster than
 /// the threshold and pushed this frame gets its normal speed set to -e times the approach speed,
-/// push only. Without restitution a point is left as the relax sweep left it (Box2D v3 skips it
-/// too), so a scene without restitution has no pass to run.
+/// push only, along its row as the bodies are turned now (turnedRow). Without restitution a point
+/// is left as the relax sweep left it (Box2D v3 skips it too), so a scene without restitution has
+/// no pass to run.
 template <int N>
 inline void restitutionBlock(ManifoldBlock<N>& c, SolverBodyState* states, Real threshold) {
     if (!anyNegative(-c.restitution)) return;  // no lane bounces
@@ -61,18 +99,31 @@ inline void restitutionBlock(ManifoldBlock<N>& c, SolverBodyState* states, Real 
     BodyPack<N> b = gatherBodies<N>(states, c.slotB);
     const Pack<N> zero = Pack<N>::splat(0);
     const Pack<N> fastApproach = Pack<N>::splat(-threshold);
+    const SeparationFrame<N> frame = separationFrame(c, a, b);
+    PackVec3<N> spinA = rotate(conjugate(a.deltaRotation), a.angularVelocity);
+    PackVec3<N> spinB = rotate(conjugate(b.deltaRotation), b.angularVelocity);
+    Pack<N> moved = zero;  // > 0 where any impulse (push or release) changed the lane
     for (ManifoldPointPack<N>& p : c.point) {
         // Lanes where the rule does not apply get a zero mass, so a zero impulse.
         const Pack<N> applies =
             selectPositive(c.restitution, selectPositive(fastApproach - p.approachSpeed, p.maxNormalImpulse, zero), zero);
-        const Pack<N> mass = selectPositive(applies, p.normalMass, zero);
-        const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
+        const TurnedRow<N> row = turnedRow(c, p, frame);
+        const Pack<N> mass = selectPositive(applies, row.mass, zero);
+        const Pack<N> normalSpeed =
+            dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(spinB, row.leverB) - dot(spinA, row.leverA);
         Pack<N> impulse = -(mass * (normalSpeed + c.restitution * p.approachSpeed));
         const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
         impulse = accumulated - p.normalImpulse;
         p.normalImpulse = accumulated;
-        applyImpulse(c, p.armA, p.armB, impulse * c.normal, a, b);
+        a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
+        b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
+        spinA = spinA - impulse * row.turnA;
+        spinB = spinB + impulse * row.turnB;
+        moved = max(moved, max(impulse, -impulse));
     }
+    if (!anyNegative(-moved)) return;
+    a.angularVelocity = select(moved, rotate(a.deltaRotation, spinA), a.angularVelocity);
+    b.angularVelocity = select(moved, rotate(b.deltaRotation, spinB), b.angularVelocity);
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
 }

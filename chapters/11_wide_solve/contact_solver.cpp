@@ -322,6 +322,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
         restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
     }
+    holdSpin(scratch.bodies, h);
     writeBodiesBack(world, scratch.bodies);
     storeBlocks(scratch, world);
     if (linked) {

@@ -22,16 +22,20 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
                          const std::vector<Wrench>* forces = nullptr);
 // [ch11-most-turn]
 /// The most a dynamic body turns in one substep, rad (Box2D v3's b2_maxRotation). The contacts'
-/// points and separations are built at the frame's start and moved to first order in the
-/// bodies' turns; a body turning a radian a substep leaves them meaningless (without the bound a
+/// points are found at the frame's start and their rows keep the start's arms; a body turning a
+/// radian a substep leaves them meaningless (without the bound a
 /// 1.3 g plate spun to 800 rad/s by a landing leaves at 5e5 m/s in the next frame's solve,
 /// tests/ch11/fast_solve_test.cpp). No resting or rolling body comes near: 0.785 rad a substep
 /// is 471 rad/s at ten substeps of a 60 Hz frame.
 constexpr Real kMostTurnPerSubstep = Real(0.25) * kPi;
 // [ch11-most-turn]
 
-/// Chapter 1's position step for the moving bodies, a dynamic body's spin first held to
-/// kMostTurnPerSubstep / h.
+/// A dynamic body spinning faster than kMostTurnPerSubstep / h keeps its axis and that speed:
+/// before every position step, and once more as the frame's solve ends, so that no body leaves the
+/// solve (restitution's pushes come after the last step) spinning faster than the next frame takes.
+void holdSpin(SolverBodies& bodies, Real h);
+
+/// Chapter 1's position step for the moving bodies, a dynamic body's spin first held (holdSpin).
 void integratePositions(SolverBodies& bodies, Real h, SolverPath path);
 /// Where a slot's body stands now: its centre of mass and rotation at the frame's start moved by
 /// the substeps so far (what writeBodiesBack stores, and what joints and springs are built at).

@@ -120,10 +120,7 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
     }
 }
 
-namespace {
-
-// A dynamic body spinning faster than kMostTurnPerSubstep / h keeps its axis and that speed. The
-// same few lines on both paths, before either, so that the wide and the scalar path agree.
+// The same few lines on both paths, before either, so that the wide and the scalar path agree.
 void holdSpin(SolverBodies& bodies, Real h) {
     const Real most = kMostTurnPerSubstep / h;
     for (std::size_t slot = static_cast<std::size_t>(std::max(bodies.firstDynamic, 1)); slot < bodies.states.size(); ++slot) {
@@ -134,8 +131,6 @@ void holdSpin(SolverBodies& bodies, Real h) {
         for (int k = 0; k < 3; ++k) w[k] *= scale;
     }
 }
-
-}  // namespace
 
 void integratePositions(SolverBodies& bodies, Real h, SolverPath path) {
     holdSpin(bodies, h);

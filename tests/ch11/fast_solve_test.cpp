@@ -259,25 +259,47 @@ TEST_CASE("a heavy pair dropped on a light ball resting on a heavy ball comes to
     }
 }
 
+TEST_CASE("a stick spinning about its length bounces off the floor without gaining energy", "[ch11][fast]") {
+    // Found by fuzz_stepper: a 24 kg box 85 cm long and 8 cm thick, restitution 0.78, lands
+    // spinning about its length and turns about 50 degrees a frame. Collisions before contacts
+    // struck it through the frame's start inverse inertia, whose light axis (the length) had
+    // turned away: each bounce spun it about what was now a heavy axis, from 968 J to 13,000 J in
+    // 100 frames. Through the row as the bodies are turned now (turnedRow), a bounce with e <= 1
+    // can only take energy away.
+    for (SolverPath path : {SolverPath::Wide, SolverPath::Scalar}) {
+        World world = loadSceneFile("tests/ch11/data/spinning-stick.json");
+        Pipeline pipeline = pipelineFor(world, path);
+        const double start = computeEnergy(world).total();
+        double most = start;
+        for (int frame = 0; frame < 100; ++frame) {
+            pipeline.step(world);
+            most = std::max(most, computeEnergy(world).total());
+        }
+        INFO((path == SolverPath::Wide ? "wide" : "scalar") << ": energy " << start << " J, most in any frame " << most
+                                                            << " J, after 100 frames " << computeEnergy(world).total() << " J");
+        CHECK(most <= start + 1e-3 * start);
+    }
+}
+
 TEST_CASE("a plate spun to 800 rad/s by a landing does not launch itself", "[ch11][fast]") {
     // Found by fuzz_stepper: a 1.3 g plate 0.6 mm thick lands beside a 37 kg cylinder and spins
     // at 800 rad/s, about a radian per substep of the next frame's solve (14 substeps); the
     // contacts built at the frame's start then no longer describe it, and without a bound on the
     // turn per substep it left at 5e5 m/s and the scene's energy went from 1,790 J to 7e10 J.
+    // The bound holds inside the solve (holdSpin before each position step and as the solve
+    // ends); chapter 7's impact stage after it may spin the plate faster, which the next frame's
+    // solve holds again. What must never happen is energy from nowhere, in any frame.
     World world = loadSceneFile("tests/ch11/data/spun-plate.json");
-    const Real h = world.settings.dt / Real(world.settings.solverIterations);
     Pipeline pipeline = makeChapter11Pipeline(world);
     const double start = computeEnergy(world).total();
-    double fastestTurn = 0;
+    double most = start;
     for (int frame = 0; frame < 100; ++frame) {
         pipeline.step(world);
-        for (const Motion& motion : world.motions) {
-            REQUIRE(motion.linearVelocity.allFinite());
-            fastestTurn = std::max(fastestTurn, double(motion.angularVelocity.norm()));
-        }
+        for (const Motion& motion : world.motions) REQUIRE(motion.linearVelocity.allFinite());
+        most = std::max(most, computeEnergy(world).total());
     }
     const double end = computeEnergy(world).total();
-    INFO("energy " << start << " J -> " << end << " J, fastest spin " << fastestTurn << " rad/s");
+    INFO("energy " << start << " J -> " << end << " J, most in any frame " << most << " J");
     CHECK(end <= start);
-    CHECK(fastestTurn <= double(kMostTurnPerSubstep / h) * 1.0001);
+    CHECK(most <= start + 1e-3 * start);
 }
