@@ -287,7 +287,15 @@ int plannedJointSolveIterations(const World& world, Real dt, std::vector<int>& c
     const int scene = std::max(1, settings.solverIterations);
     const bool substepped =
         settings.stabilisation == Stabilisation::Relax || settings.stabilisation == Stabilisation::SoftStep;
-    if (!settings.planIterations || world.joints.empty() || !world.springs.empty() || !substepped) return scene;
+    if (!settings.planIterations || world.joints.empty() || !world.springs.empty() || !substepped) {
+        // The scene's own count, written into the plan: the solve stage runs what the plan says.
+        plan.shockPropagation = false;
+        plan.reason = PlanReason::SceneCount;
+        plan.iterations = scene;
+        plan.mostIterations = std::max(plan.mostIterations, scene);
+        plan.fewestIterations = plan.fewestIterations > 0 ? std::min(plan.fewestIterations, scene) : scene;
+        return scene;
+    }
     contacts.clear();
     const auto bodyCount = static_cast<int>(world.bodies.size());
     for (std::size_t i = 0; i < world.contacts.size(); ++i) {
