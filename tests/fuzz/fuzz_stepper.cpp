@@ -159,6 +159,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         world.joints.push_back(joint);
     }
 
+    // The scene's own count or "auto" (the planner's, from 10): drawn last, so that the inputs
+    // kept before the draw existed still build their scenes, and so that every run is one a scene
+    // file can say (the format has no "auto from 14").
+    if (input.flag()) world.settings.planIterations = false;
+    else world.settings.solverIterations = Settings{}.solverIterations;
+    // Then the rest of the settings a scene may choose, each draw after the last (a byte past an
+    // input's end reads as 0: the default of each).
+    world.settings.stabilisation = Stabilisation(input.integer(0, 3) ^ 1);  // 0: Relax, the default
+    world.settings.ccd = CcdMode(input.integer(0, 2));
+    world.settings.manifoldContacts = !input.flag();
+    world.settings.sleeping = !input.flag();
+
     // STEPWISE_FUZZ_SCENE=1 prints the scene (as a scene file) before stepping it: a failing input
     // becomes a file `stepwise run` can replay and a test can load.
     if (std::getenv("STEPWISE_FUZZ_SCENE")) std::fprintf(stderr, "%s\n", saveSceneToString(world).c_str());
