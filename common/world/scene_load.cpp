@@ -22,7 +22,7 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
                          "broadphase", "ccd", "integrator", "gyroscopic", "solver", "restitution_threshold", "stabilisation", "contact_points",
                          "sleeping", "sleep_speed", "time_to_sleep", "contact_hertz", "contact_damping_ratio",
                          "joint_hertz", "joint_damping_ratio", "max_push_out_speed", "bounds_margin",
-                         "active_edges"},
+                         "active_edges", "plan_iterations"},
                         &errors);
     Settings settings;
     // Each key on its own: one bad value does not hide the next.
@@ -36,8 +36,12 @@ Settings readSettings(const JsonCursor& cursor, ErrorList& errors) {
         if (v.json().is_string() && v.json().get<std::string>() == "auto") return;  // the default
         if (v.json().is_string()) v.fail("must be \"auto\" or an integer");
         settings.solverIterations = v.integer(0, 1000);
-        settings.planIterations = false;
+        // The core format's default written out is the default: a scene that states every
+        // default (as the format's own example does) runs as one that states none. Any other
+        // number is the count as it stands; plan_iterations says otherwise for either.
+        settings.planIterations = settings.solverIterations == Settings{}.solverIterations;
     });
+    read("plan_iterations", [&](const JsonCursor& v) { settings.planIterations = v.boolean(); });
     read("baumgarte", [&](const JsonCursor& v) { settings.baumgarte = v.inRange(0, 1); });
     read("slop", [&](const JsonCursor& v) { settings.slop = v.nonNegative(); });
     read("restitution_threshold", [&](const JsonCursor& v) { settings.restitutionThreshold = v.nonNegative(); });

@@ -68,6 +68,7 @@ std::string saveSceneToString(const World& world) {
                          {"substeps", s.substeps},
                          {"solver_iterations", s.planIterations && s.solverIterations == Settings{}.solverIterations
                                                    ? Json("auto") : Json(s.solverIterations)},
+                         {"plan_iterations", s.planIterations},
                          {"baumgarte", tidyNumber(s.baumgarte)},
                          {"slop", tidyNumber(s.slop)},
                          {"warm_starting", s.warmStarting},

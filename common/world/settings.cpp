@@ -11,7 +11,7 @@ const std::vector<SettingUse>& settingUses() {
         {"contact_hertz", 6},  {"contact_damping_ratio", 6},                {"max_push_out_speed", 6},
         {"joint_hertz", 11},   {"joint_damping_ratio", 11},
         {"sleeping", 10},      {"sleep_speed", 10},      {"time_to_sleep", 10},  {"bounds_margin", 10},
-        {"active_edges", 13},
+        {"active_edges", 13},  {"plan_iterations", 12},
     };
     return uses;
 }

@@ -26,9 +26,9 @@ struct Settings {
     Real dt = Real(1.0 / 60.0);                       // s per frame
     int substeps = 1;                                 // stage passes per frame
     int solverIterations = 10;                        // velocity iterations per substep
-    // solver_iterations "auto" (the default): chapter 10's solve may raise the count above
-    // solverIterations when touching bodies' masses differ by more than 100 to 1; a number in
-    // the scene file (false here) is used as it stands.
+    // solver_iterations "auto" (the default, and 10 written out): chapter 12's planner may change
+    // the count from solverIterations; any other number in the scene file (false here) is used as
+    // it stands, unless the file's plan_iterations says otherwise.
     bool planIterations = true;
     Real baumgarte = Real(0.2);                       // fraction of the position error fed back per step
     Real slop = Real(0.005);                          // m of penetration left uncorrected

@@ -316,10 +316,21 @@ TEST_CASE("solver_iterations is \"auto\" or a number, and saves as it was read",
     const World automatic = loadSceneFromString(R"({"settings": {"solver_iterations": "auto"}})");
     CHECK(automatic.settings.planIterations);
     CHECK(automatic.settings.solverIterations == 10);
-    const World fixed = loadSceneFromString(R"({"settings": {"solver_iterations": 10}})");
+    // The core format's default, 10, written out, is the default: the format's own example
+    // states it, and a scene that states every default runs as one that states none.
+    const World stated = loadSceneFromString(R"({"settings": {"solver_iterations": 10}})");
+    CHECK(stated.settings.planIterations);
+    CHECK(stated.settings.solverIterations == 10);
+    // Any other number is the count as it stands; plan_iterations says otherwise for either.
+    const World fixed = loadSceneFromString(R"({"settings": {"solver_iterations": 14}})");
     CHECK_FALSE(fixed.settings.planIterations);
-    CHECK(fixed.settings.solverIterations == 10);
-    for (const World* world : {&automatic, &fixed}) {
+    CHECK(fixed.settings.solverIterations == 14);
+    const World fixedTen = loadSceneFromString(R"({"settings": {"solver_iterations": 10, "plan_iterations": false}})");
+    CHECK_FALSE(fixedTen.settings.planIterations);
+    const World plannedFrom14 = loadSceneFromString(R"({"settings": {"plan_iterations": true, "solver_iterations": 14}})");
+    CHECK(plannedFrom14.settings.planIterations);
+    CHECK(plannedFrom14.settings.solverIterations == 14);
+    for (const World* world : {&automatic, &stated, &fixed, &fixedTen, &plannedFrom14}) {
         const World again = loadSceneFromString(saveSceneToString(*world));
         CHECK(again.settings.planIterations == world->settings.planIterations);
         CHECK(again.settings.solverIterations == world->settings.solverIterations);
@@ -331,6 +342,12 @@ TEST_CASE("solver_iterations is \"auto\" or a number, and saves as it was read",
     } catch (const SceneError& error) {
         CHECK(std::string(error.what()).find("settings.solver_iterations") != std::string::npos);
         CHECK(std::string(error.what()).find(R"(must be "auto" or an integer)") != std::string::npos);
+    }
+    try {
+        loadSceneFromString(R"({"settings": {"plan_iterations": "yes"}})");
+        FAIL("a word for plan_iterations was accepted");
+    } catch (const SceneError& error) {
+        CHECK(std::string(error.what()).find("settings.plan_iterations") != std::string::npos);
     }
 }
 

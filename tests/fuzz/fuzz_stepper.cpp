@@ -159,9 +159,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         world.joints.push_back(joint);
     }
 
-    // The scene's own count or "auto" (the planner's, from 10): drawn last, so that the inputs
-    // kept before the draw existed still build their scenes, and so that every run is one a scene
-    // file can say (the format has no "auto from 14").
+    // The scene's own count or "auto" (the planner's, from 10): both are what users write. Drawn
+    // after every older draw, so that the inputs kept before it existed still build their scenes.
     if (input.flag()) world.settings.planIterations = false;
     else world.settings.solverIterations = Settings{}.solverIterations;
     // Then the rest of the settings a scene may choose, each draw after the last (a byte past an
