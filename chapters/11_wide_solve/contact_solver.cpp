@@ -223,7 +223,7 @@ void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolve
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
         solveAll(scratch.scalarBlocks, states, params, true);
         stats.ms(SolvePhase::Solve) += clock.lap();
-        integratePositions(scratch.bodies, h, path);
+        integratePositions(scratch.bodies, h, params.mostSpin, path);
         // What the move did to the errors of rows the next substep may keep (the frame's last
         // substep hands none on: the next frame builds every joint).
         if (joints && substep + 1 < substeps) advanceJointErrors(*joints, states, h);
@@ -302,6 +302,9 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         return finishFrame(world, solverStats);
     }
     ContactSolveParams params = solveParams(world.settings, h, dt);
+    // No body enters the solve spinning faster than it may turn in it: chapter 7's impacts after
+    // the last solve may have spun one up, and the first substep's rows would take it whole.
+    holdSpin(scratch.bodies, params.mostSpin);
     // Carried impulses were a substep's of the last plan: scaled to this frame's substep.
     if (plan.previousIterations > 0 && plan.previousIterations != substeps)
         params.carryScale = static_cast<Real>(plan.previousIterations) / static_cast<Real>(substeps);
@@ -322,7 +325,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
         restitutionWide(scratch.wideBlocks, states, params.restitutionThreshold);
         restitutionAll(scratch.scalarBlocks, states, params.restitutionThreshold);
     }
-    holdSpin(scratch.bodies, h);
+    holdSpin(scratch.bodies, params.mostSpin);
     writeBodiesBack(world, scratch.bodies);
     storeBlocks(scratch, world);
     if (linked) {

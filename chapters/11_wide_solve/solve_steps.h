@@ -21,22 +21,28 @@ ContactSolveParams solveParams(const Settings& settings, Real h, Real frame);
 void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstSubstep, SolverPath path,
                          const std::vector<Wrench>* forces = nullptr);
 // [ch11-most-turn]
-/// The most a dynamic body turns in one substep, rad (Box2D v3's b2_maxRotation). The contacts'
-/// points are found at the frame's start and their rows keep the start's arms; a body turning a
-/// radian a substep leaves them meaningless (without the bound a
-/// 1.3 g plate spun to 800 rad/s by a landing leaves at 5e5 m/s in the next frame's solve,
-/// tests/ch11/fast_solve_test.cpp). No resting or rolling body comes near: 0.785 rad a substep
-/// is 471 rad/s at ten substeps of a 60 Hz frame.
+/// The most a dynamic body turns in one substep, rad (Box2D v3's b2_maxRotation): chapter 1's
+/// rotation series and the contacts' separations stay meaningful at it.
 constexpr Real kMostTurnPerSubstep = Real(0.25) * kPi;
+/// The most a dynamic body turns in one solve, rad. The contacts' points are found, and their rows
+/// (arms, the bodies' inverse inertia) built, once a solve; a body that turns further no longer
+/// has them: a needle spun about its length to an eighth of a turn a substep turned 11 rad in a frame of
+/// 25 substeps, and its frame-start inverse inertia, struck through by a ground contact, threw it
+/// off at 295 m/s (found by fuzz_stepper). Box2D v3, which builds its rows once a step of four
+/// substeps, lets a body turn four eighths of a turn a step: half a turn, as here. At 60 Hz: 188 rad/s.
+constexpr Real kMostTurnPerSolve = kPi;
+/// The fastest a dynamic body spins in a solve of `solveTime` seconds in substeps of h, rad/s:
+/// within both bounds.
+Real mostSpin(Real h, Real solveTime);
 // [ch11-most-turn]
 
-/// A dynamic body spinning faster than kMostTurnPerSubstep / h keeps its axis and that speed:
+/// A dynamic body spinning faster than `most` (rad/s, mostSpin) keeps its axis and that speed:
 /// before every position step, and once more as the frame's solve ends, so that no body leaves the
 /// solve (restitution's pushes come after the last step) spinning faster than the next frame takes.
-void holdSpin(SolverBodies& bodies, Real h);
+void holdSpin(SolverBodies& bodies, Real most);
 
 /// Chapter 1's position step for the moving bodies, a dynamic body's spin first held (holdSpin).
-void integratePositions(SolverBodies& bodies, Real h, SolverPath path);
+void integratePositions(SolverBodies& bodies, Real h, Real mostSpin, SolverPath path);
 /// Where a slot's body stands now: its centre of mass and rotation at the frame's start moved by
 /// the substeps so far (what writeBodiesBack stores, and what joints and springs are built at).
 struct SlotPose {

@@ -70,6 +70,7 @@ ContactSolveParams solveParams(const Settings& settings, Real h, Real frame) {
     params.slop = settings.slop;
     params.maxPushOutSpeed = settings.maxPushOutSpeed;
     params.restitutionThreshold = settings.restitutionThreshold;
+    params.mostSpin = mostSpin(h, frame);
     if (settings.stabilisation == Stabilisation::SoftStep) {
         // Chapter 6's soft contacts: Box2D v3's 30 Hz (at most a quarter of the substep rate),
         // twice as stiff against a body that cannot move.
@@ -120,9 +121,10 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
     }
 }
 
+Real mostSpin(Real h, Real solveTime) { return std::min(kMostTurnPerSubstep / h, kMostTurnPerSolve / solveTime); }
+
 // The same few lines on both paths, before either, so that the wide and the scalar path agree.
-void holdSpin(SolverBodies& bodies, Real h) {
-    const Real most = kMostTurnPerSubstep / h;
+void holdSpin(SolverBodies& bodies, Real most) {
     for (std::size_t slot = static_cast<std::size_t>(std::max(bodies.firstDynamic, 1)); slot < bodies.states.size(); ++slot) {
         Real* w = bodies.states[slot].angularVelocity;
         const Real speedSquared = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
@@ -132,8 +134,8 @@ void holdSpin(SolverBodies& bodies, Real h) {
     }
 }
 
-void integratePositions(SolverBodies& bodies, Real h, SolverPath path) {
-    holdSpin(bodies, h);
+void integratePositions(SolverBodies& bodies, Real h, Real mostSpin, SolverPath path) {
+    holdSpin(bodies, mostSpin);
     const int count = static_cast<int>(bodies.states.size());
     if (path == SolverPath::Wide) return integratePositionsWide(bodies.states.data(), count, h);
     for (int slot = 1; slot < count; ++slot) integratePositionsPack<1>(bodies.states.data(), &slot, h);

@@ -170,6 +170,7 @@ struct ContactSolveParams {
     /// impulse is a force times the substep, so when the planner changes the substep count the
     /// same force is last frame's count over this frame's times the impulse (1 when unchanged).
     Real carryScale = 1;
+    Real mostSpin = 0;  // rad/s: the fastest a dynamic body spins in this solve (mostSpin in solve_steps.h)
 };
 
 }  // namespace stepwise

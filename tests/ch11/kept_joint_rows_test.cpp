@@ -35,7 +35,7 @@ void keptTestStir(SolverBodies& bodies, unsigned seed, Real spin) {
 /// One substep's move as the solve makes it: the positions, then what the move did to the errors,
 /// then the next substep's rows.
 void keptTestSubstep(const World& world, SolverBodies& bodies, Real h, JointPass& pass) {
-    integratePositions(bodies, h, SolverPath::Scalar);
+    integratePositions(bodies, h, kMostTurnPerSubstep / h, SolverPath::Scalar);
     advanceJointErrors(pass, bodies.states.data(), h);
     buildJointRows(world, bodies, h, /*firstSubstep=*/false, pass);
 }
