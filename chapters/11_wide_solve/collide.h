@@ -89,9 +89,11 @@ inline bool collideBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Con
 
 /// After the last substep (Box3D's order): a point with restitution that approached faster than
 /// the threshold and pushed this frame gets its normal speed set to -e times the approach speed,
-/// push only, along its row as the bodies are turned now (turnedRow). Without restitution a point
-/// is left as the relax sweep left it (Box2D v3 skips it too), so a scene without restitution has
-/// no pass to run.
+/// push only. Without restitution a point is left as the relax sweep left it (Box2D v3 skips it
+/// too), so a scene without restitution has no pass to run. Its row is the solve's own (the
+/// frame-start arms), not turnedRow: the approach speed it reverses was read along that row by the
+/// sweeps, and a target read along one row and met along another can add energy (a 10 t box
+/// spinning at 10.5 rad/s gained 193 kJ in one frame that way).
 template <int N>
 inline void restitutionBlock(ManifoldBlock<N>& c, SolverBodyState* states, Real threshold) {
     if (!anyNegative(-c.restitution)) return;  // no lane bounces
@@ -99,31 +101,18 @@ inline void restitutionBlock(ManifoldBlock<N>& c, SolverBodyState* states, Real 
     BodyPack<N> b = gatherBodies<N>(states, c.slotB);
     const Pack<N> zero = Pack<N>::splat(0);
     const Pack<N> fastApproach = Pack<N>::splat(-threshold);
-    const SeparationFrame<N> frame = separationFrame(c, a, b);
-    PackVec3<N> spinA = rotate(conjugate(a.deltaRotation), a.angularVelocity);
-    PackVec3<N> spinB = rotate(conjugate(b.deltaRotation), b.angularVelocity);
-    Pack<N> moved = zero;  // > 0 where any impulse (push or release) changed the lane
     for (ManifoldPointPack<N>& p : c.point) {
         // Lanes where the rule does not apply get a zero mass, so a zero impulse.
         const Pack<N> applies =
             selectPositive(c.restitution, selectPositive(fastApproach - p.approachSpeed, p.maxNormalImpulse, zero), zero);
-        const TurnedRow<N> row = turnedRow(c, p, frame);
-        const Pack<N> mass = selectPositive(applies, row.mass, zero);
-        const Pack<N> normalSpeed =
-            dot(c.normal, b.linearVelocity - a.linearVelocity) + dot(spinB, row.leverB) - dot(spinA, row.leverA);
+        const Pack<N> mass = selectPositive(applies, p.normalMass, zero);
+        const Pack<N> normalSpeed = dot(c.normal, relativeVelocity(a, b, p.armA, p.armB));
         Pack<N> impulse = -(mass * (normalSpeed + c.restitution * p.approachSpeed));
         const Pack<N> accumulated = max(p.normalImpulse + impulse, zero);
         impulse = accumulated - p.normalImpulse;
         p.normalImpulse = accumulated;
-        a.linearVelocity = a.linearVelocity - (c.inverseMassA * impulse) * c.normal;
-        b.linearVelocity = b.linearVelocity + (c.inverseMassB * impulse) * c.normal;
-        spinA = spinA - impulse * row.turnA;
-        spinB = spinB + impulse * row.turnB;
-        moved = max(moved, max(impulse, -impulse));
+        applyImpulse(c, p.armA, p.armB, impulse * c.normal, a, b);
     }
-    if (!anyNegative(-moved)) return;
-    a.angularVelocity = select(moved, rotate(a.deltaRotation, spinA), a.angularVelocity);
-    b.angularVelocity = select(moved, rotate(b.deltaRotation, spinB), b.angularVelocity);
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
 }
