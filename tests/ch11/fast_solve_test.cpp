@@ -8,6 +8,7 @@
 #include "11_wide_solve/colouring.h"
 #include "11_wide_solve/solve_steps.h"
 #include "10_skip_work/scenes.h"
+#include "support/most_energy.h"
 #include "world/scene.h"
 #include "world/state_hash.h"
 
@@ -270,11 +271,7 @@ TEST_CASE("a stick spinning about its length bounces off the floor without gaini
         World world = loadSceneFile("tests/ch11/data/spinning-stick.json");
         Pipeline pipeline = pipelineFor(world, path);
         const double start = computeEnergy(world).total();
-        double most = start;
-        for (int frame = 0; frame < 100; ++frame) {
-            pipeline.step(world);
-            most = std::max(most, computeEnergy(world).total());
-        }
+        const double most = test::mostEnergyOver(world, pipeline, 100);
         INFO((path == SolverPath::Wide ? "wide" : "scalar") << ": energy " << start << " J, most in any frame " << most
                                                             << " J, after 100 frames " << computeEnergy(world).total() << " J");
         CHECK(most <= start + 1e-3 * start);

@@ -1,11 +1,10 @@
 // Bounces in the planned solve: restitution may only take energy, however few substeps the
 // planner takes and however far a body turns in them.
 #include "12_planner/chapter.h"
+#include "support/most_energy.h"
 #include "world/scene.h"
 
 #include <catch2/catch.hpp>
-
-#include <algorithm>
 
 using namespace stepwise;
 
@@ -22,11 +21,7 @@ TEST_CASE("restitution reverses an approach along the row it was read on", "[ch1
         options.solverPath = path;
         Pipeline pipeline = makeChapter12Pipeline(world, options);
         const double start = computeEnergy(world).total();
-        double most = start;
-        for (int frame = 0; frame < 100; ++frame) {
-            pipeline.step(world);
-            most = std::max(most, computeEnergy(world).total());
-        }
+        const double most = test::mostEnergyOver(world, pipeline, 100);
         INFO((path == SolverPath::Wide ? "wide" : "scalar") << ": energy " << start << " J, most in any frame " << most
                                                             << " J, after 100 frames " << computeEnergy(world).total() << " J");
         CHECK(most <= start);
