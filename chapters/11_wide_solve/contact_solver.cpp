@@ -183,11 +183,43 @@ SolverStats gatherContacts(const World& world, ContactSolverScratch& scratch) {
     return solverStats;
 }
 
+/// The dynamic slots the contacts touch, each once (the bodies whose turn ends a piece).
+void findTouched(ContactSolverScratch& scratch) {
+    const int firstDynamic = scratch.bodies.firstDynamic;
+    scratch.touchedFlag.assign(scratch.bodies.states.size(), 0);
+    scratch.touched.clear();
+    for (const std::vector<int>* slots : {&scratch.slotA, &scratch.slotB})
+        for (const int slot : *slots) {
+            if (slot < firstDynamic || scratch.touchedFlag[static_cast<std::size_t>(slot)]) continue;
+            scratch.touchedFlag[static_cast<std::size_t>(slot)] = 1;
+            scratch.touched.push_back(slot);
+        }
+}
+
+// [ch11-turned-far-rule]
+/// Whether a touched body has turned since the piece began, or would after one more substep of h
+/// at its spin now, further than kMostTurnPerPiece: the turn 2 |v| of its quaternion v + w, and
+/// |w| h more.
+bool turnedFar(const SolverBodyState* states, const std::vector<int>& touched, Real h) {
+    const Real most = kMostTurnPerPiece * kMostTurnPerPiece;
+    for (const int slot : touched) {
+        const SolverBodyState& s = states[slot];
+        const Real turned = 4 * (s.deltaRotation[0] * s.deltaRotation[0] + s.deltaRotation[1] * s.deltaRotation[1] +
+                                 s.deltaRotation[2] * s.deltaRotation[2]);
+        const Real next = h * h * (s.angularVelocity[0] * s.angularVelocity[0] + s.angularVelocity[1] * s.angularVelocity[1] +
+                                   s.angularVelocity[2] * s.angularVelocity[2]);
+        if (2 * (turned + next) <= most) continue;  // (a + b)^2 <= 2 (a^2 + b^2): far within
+        if (turned + next + 2 * std::sqrt(turned * next) > most) return true;
+    }
+    return false;
+}
+// [ch11-turned-far-rule]
+
 // [ch11-substeps]
 /// The frame's substeps: integrate the velocities, collide, warm start, one biased sweep, move the
 /// bodies, one relax sweep. Scalar and wide blocks take each pass in turn.
-void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolveParams& params, int substeps,
-                 SolverPath path, bool collisions, PhaseClock& clock) {
+int runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolveParams& params, int substeps,
+                SolverPath path, bool collisions, PhaseClock& clock) {
     FastSolveStats& stats = scratch.stats;
     SolverBodyState* states = scratch.bodies.states.data();
     const Real h = params.substep;
@@ -233,7 +265,9 @@ void runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolve
         solveAll(scratch.scalarBlocks, states, params, false);
         if (joints) keepJointImpulses(*joints);
         stats.ms(SolvePhase::Relax) += clock.lap();
+        if (substep + 1 < substeps && turnedFar(states, scratch.touched, h)) return substep + 1;
     }
+    return substeps;
 }
 // [ch11-substeps]
 
@@ -263,51 +297,65 @@ void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame) {
     total.points = frame.points;
     total.wideBlocks = frame.wideBlocks;
     total.overflow = frame.overflow;
+    total.pieces += frame.pieces;
     for (std::size_t phase = 0; phase < kSolvePhaseCount; ++phase) total.phaseMs[phase] += frame.phaseMs[phase];
 }
 
 
-// [ch11-solve-fast]
-void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scratch) {
-    if (!(dt > 0) || !std::isfinite(dt)) return;
-    scratch.stats = FastSolveStats{};
+namespace {
+
+/// One solve of `pieceTime` seconds in `substeps` substeps, its rows built where the bodies stand
+/// as it begins; `frameTime` bounds the spin (mostSpin). solveFast runs one a frame, or several
+/// (solvePieces).
+int solvePiece(World& world, Real h, Real frameTime, int substeps, bool firstPiece, SolverPath path,
+               ContactSolverScratch& scratch) {
     FastSolveStats& stats = scratch.stats;
+    const std::array<double, kSolvePhaseCount> phaseMs = stats.phaseMs;  // the frame's so far
+    const int pieces = stats.pieces + 1;
+    stats = FastSolveStats{};
+    stats.phaseMs = phaseMs;
+    stats.pieces = pieces;
     PhaseClock clock(scratch.timePhases);
-    // Contacts found at an earlier substep of the frame (Settings::substeps > 1, collision once per
-    // frame) are where their bodies were then: their points move with the bodies first.
-    if (world.step.substep > 0 && world.step.contactsFoundAtSubstep < world.step.substep) followContactAnchors(world);
     scratch.contactOrder.clear();
     scratch.slotA.clear();
     scratch.slotB.clear();
-    if (everyBodyAsleep(world)) return finishFrame(world, SolverStats{});  // nothing to gather or move
+    if (everyBodyAsleep(world)) {  // nothing to gather or move
+        finishFrame(world, SolverStats{});
+        return substeps;
+    }
     const IterationPlan& plan = world.step.iterationPlan;  // this frame's (the plan stage's)
-    const int substeps = std::max(1, plan.iterations);
-    const Real h = dt / static_cast<Real>(substeps);
     const bool linked = needsJointPass(world);  // joints, springs or drag
     if (world.contacts.empty() && noneAsleep(world) && !linked) {
         // Nothing touches: no solver state to gather, the bodies move on their own (kinematic
         // ones by chapter 1's step).
         stats.bodies = static_cast<int>(world.motions.size());
         moveFreeBodies(world, h, substeps);
-        return finishFrame(world, SolverStats{});
+        finishFrame(world, SolverStats{});
+        return substeps;
     }
     prepareBodies(world, scratch.bodies);
     stats.bodies = static_cast<int>(scratch.bodies.states.size()) - scratch.bodies.firstDynamic;
-    if (stats.bodies == 0 && scratch.bodies.firstDynamic == 1) return finishFrame(world, SolverStats{});  // nothing moves
+    if (stats.bodies == 0 && scratch.bodies.firstDynamic == 1) {  // nothing moves
+        finishFrame(world, SolverStats{});
+        return substeps;
+    }
     SolverStats solverStats = gatherContacts(world, scratch);
     // Every body moves in the substeps, touching or not (chapter 6's solve says why); nothing
     // touches and nothing sleeps: the bodies fly free.
     if (stats.manifolds == 0 && !linked && stats.bodies == static_cast<int>(world.motions.size())) {
         moveFreeBodies(world, h, substeps);
-        return finishFrame(world, solverStats);
+        finishFrame(world, solverStats);
+        return substeps;
     }
-    ContactSolveParams params = solveParams(world.settings, h, dt);
+    ContactSolveParams params = solveParams(world.settings, h, frameTime);
     // No body enters the solve spinning faster than it may turn in it: chapter 7's impacts after
     // the last solve may have spun one up, and the first substep's rows would take it whole.
     holdSpin(scratch.bodies, params.mostSpin);
     // Carried impulses were a substep's of the last plan: scaled to this frame's substep.
-    if (plan.previousIterations > 0 && plan.previousIterations != substeps)
-        params.carryScale = static_cast<Real>(plan.previousIterations) / static_cast<Real>(substeps);
+    const int planned = std::max(1, plan.iterations);
+    if (firstPiece && plan.previousIterations > 0 && plan.previousIterations != planned)
+        params.carryScale = static_cast<Real>(plan.previousIterations) / static_cast<Real>(planned);
+    findTouched(scratch);
     const bool extended = scratch.extension && plan.shockPropagation;
     buildBlocks(world, scratch, params, path, extended);
     if (linked) {
@@ -317,7 +365,7 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     stats.ms(SolvePhase::Prepare) += clock.lap();
     // Scenes without restitution (most) have no collisions to sweep.
     const bool collisions = anyRestitution(scratch.wideBlocks) || anyRestitution(scratch.scalarBlocks);
-    runSubsteps(world, scratch, params, substeps, path, collisions, clock);
+    const int ran = runSubsteps(world, scratch, params, substeps, path, collisions, clock);
     if (extended) scratch.extension->finish(scratch, params);
     stats.ms(SolvePhase::Relax) += clock.lap();
     SolverBodyState* states = scratch.bodies.states.data();
@@ -339,6 +387,57 @@ void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scr
     solverStats.contactPoints = stats.points;
     solverStats.rows = stats.points + 3 * stats.manifolds;  // normal rows, and three friction rows per manifold
     finishFrame(world, solverStats);
+    return ran;
+}
+
+}  // namespace
+
+int substepsForTurns(const World& world, Real dt, int substeps) {
+    // The fastest turn, over the frame, of an awake dynamic body some contact touches, at no more
+    // than the spin a solve of the frame allows in substeps short enough (kMostTurnPerSolve).
+    const Real most = kMostTurnPerSolve / dt;
+    Real fastest = 0;
+    for (const Contact& contact : world.contacts) {
+        if (contact.pointCount <= 0) continue;
+        for (const int body : {contact.bodyA, contact.bodyB}) {
+            if (body < 0 || static_cast<std::size_t>(body) >= world.bodies.size()) continue;
+            const Body& shape = world.bodies[static_cast<std::size_t>(body)];
+            // A ball's rows stand at any turn: its arms reach its centre, its inertia is the same every way.
+            if (shape.type != BodyType::Dynamic || shape.shape.type == ShapeType::Sphere) continue;
+            const Motion* motion = world.motionOf(body);
+            if (!motion || motion->asleep) continue;
+            const Real spin = motion->angularVelocity.norm();
+            if (std::isfinite(spin)) fastest = std::max(fastest, std::min(spin, most));
+        }
+    }
+    const Real turn = fastest * dt;
+    if (!(turn > kMostTurnPerPiece * static_cast<Real>(substeps))) return substeps;
+    return static_cast<int>(std::ceil(turn / kMostTurnPerPiece - Real(1e-3)));
+}
+
+// [ch11-solve-fast]
+void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scratch) {
+    if (!(dt > 0) || !std::isfinite(dt)) return;
+    scratch.stats = FastSolveStats{};
+    // Contacts found at an earlier substep of the frame (Settings::substeps > 1, collision once per
+    // frame) are where their bodies were then: their points move with the bodies first.
+    if (world.step.substep > 0 && world.step.contactsFoundAtSubstep < world.step.substep) followContactAnchors(world);
+    IterationPlan& plan = world.step.iterationPlan;
+    const int planned = std::max(1, plan.iterations);
+    const int substeps = substepsForTurns(world, dt, planned);
+    // More substeps than the plan's: the frame's count is theirs (the next frame scales the
+    // impulses it carries by it).
+    if (substeps > planned) plan.iterations = substeps;
+    const Real h = dt / static_cast<Real>(substeps);
+    // [ch11-pieces]
+    // One piece unless a touched body turns far (turnedFar): then its rows are built again where
+    // the bodies stand, and the contacts' points move with the bodies, as between the substeps
+    // of Settings::substeps.
+    for (int done = 0; done < substeps;) {
+        if (done > 0) followContactAnchors(world);
+        done += solvePiece(world, h, dt, substeps - done, done == 0, path, scratch);
+    }
+    // [ch11-pieces]
 }
 // [ch11-solve-fast]
 

@@ -43,13 +43,14 @@ struct FastSolveStats {
     int points = 0;
     int wideBlocks = 0;      // blocks of kWideLanes lanes (their fill: manifolds in them / lanes)
     int overflow = 0;        // manifolds past the last colour, solved one at a time
+    int pieces = 0;          // solves the frame took (more than one where a touched body turned far)
     // Where the solve's time went, ms per phase (the bench's profile of the solve stage).
     std::array<double, kSolvePhaseCount> phaseMs{};
     double& ms(SolvePhase phase) { return phaseMs[static_cast<std::size_t>(phase)]; }
     double ms(SolvePhase phase) const { return phaseMs[static_cast<std::size_t>(phase)]; }
 };
 
-/// total's phase times += frame's; the counts become frame's.
+/// total's phase times and pieces += frame's; the other counts become frame's.
 void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame);
 
 struct ContactSolverScratch;
@@ -89,6 +90,8 @@ struct ContactSolverScratch {
     std::vector<std::uint8_t> laneHeldIsA;
     std::shared_ptr<SolveExtension> extension;  // none: the plain solve
     std::shared_ptr<JointPass> joints;          // joints, springs and drag (joint_pass.h); made when a scene has them
+    std::vector<int> touched;                   // the dynamic slots the contacts touch (turnedFar)
+    std::vector<std::uint8_t> touchedFlag;
     FastSolveStats stats;
     bool timePhases = false;  // fill stats.phaseMs (the bench's profile); off, the solve reads no clock
 };
@@ -117,5 +120,10 @@ void planSceneCount(World& world);
 /// skipped: they are static for the solve), builds the contacts' blocks, steps, writes poses,
 /// velocities and carried impulses back.
 void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scratch);
+
+/// The substeps a frame's solve needs so that no awake dynamic body a contact touches turns more
+/// than kMostTurnPerPiece in one (at its spin as the frame begins, held to kMostTurnPerSolve per
+/// frame; a ball's rows stand at any turn): the plan's `substeps`, or more.
+int substepsForTurns(const World& world, Real dt, int substeps);
 
 }  // namespace stepwise

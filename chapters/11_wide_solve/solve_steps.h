@@ -31,6 +31,14 @@ constexpr Real kMostTurnPerSubstep = Real(0.25) * kPi;
 /// off at 295 m/s (found by fuzz_stepper). Box2D v3, which builds its rows once a step of four
 /// substeps, lets a body turn four eighths of a turn a step: half a turn, as here. At 60 Hz: 188 rad/s.
 constexpr Real kMostTurnPerSolve = kPi;
+/// The most a body a contact touches turns before the solve builds its rows again, rad: the solve
+/// runs as pieces, each with its rows built where the bodies stand as it begins, a new piece
+/// wherever a touched body has turned this far (turnedFar). A needle's arms and its inverse
+/// inertia in world axes are wrong once it has turned a good part of a radian, and a contact
+/// pushed through them adds energy: 24 needles, plates and sticks spun at 40 to 200 rad/s on a
+/// floor gained up to 55 times their energy in a frame with one piece a frame, 0.3 times at
+/// pieces of half a radian, nothing at a quarter (tests/ch11/turn_pieces_test.cpp).
+constexpr Real kMostTurnPerPiece = Real(0.25);
 /// The fastest a dynamic body spins in a solve of `solveTime` seconds in substeps of h, rad/s:
 /// within both bounds.
 Real mostSpin(Real h, Real solveTime);
