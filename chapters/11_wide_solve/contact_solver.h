@@ -121,9 +121,4 @@ void planSceneCount(World& world);
 /// velocities and carried impulses back.
 void solveFast(World& world, Real dt, SolverPath path, ContactSolverScratch& scratch);
 
-/// The substeps a frame's solve needs so that no awake dynamic body a contact touches turns more
-/// than kMostTurnPerPiece in one (at its spin as the frame begins, held to kMostTurnPerSolve per
-/// frame; a ball's rows stand at any turn): the plan's `substeps`, or more.
-int substepsForTurns(const World& world, Real dt, int substeps);
-
 }  // namespace stepwise
