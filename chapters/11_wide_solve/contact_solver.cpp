@@ -49,12 +49,15 @@ bool validContactRecord(const World& world, const Contact& contact) {
     const int count = static_cast<int>(world.bodies.size());
     if (contact.bodyA < 0 || contact.bodyB < 0 || contact.bodyA >= count || contact.bodyB >= count) return false;
     if (contact.pointCount <= 0 || contact.pointCount > 4 || contact.bodyA == contact.bodyB) return false;
-    if (!contact.normal.allFinite() || std::abs(contact.normal.norm() - 1) > Real(1e-3)) return false;
-    for (int i = 0; i < contact.pointCount; ++i)
-        if (!contact.points[i].pointA.allFinite() || !contact.points[i].pointB.allFinite() ||
-            !std::isfinite(contact.points[i].depth))
-            return false;
-    return true;
+    // x - x is 0 for every finite x and NaN otherwise: one sum says whether all of them are finite
+    // (the planner and the solve both ask, for every contact, every frame).
+    Real probe = (contact.normal - contact.normal).sum();
+    for (int i = 0; i < contact.pointCount; ++i) {
+        const ContactPoint& point = contact.points[i];
+        probe += (point.pointA - point.pointA).sum() + (point.pointB - point.pointB).sum() + (point.depth - point.depth);
+    }
+    if (probe != 0) return false;
+    return std::abs(contact.normal.norm() - 1) <= Real(1e-3);
 }
 
 namespace {
