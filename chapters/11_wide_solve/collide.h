@@ -94,14 +94,14 @@ inline bool collideBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Con
 /// frame-start arms), not turnedRow: the approach speed it reverses was read along that row by the
 /// sweeps, and a target read along one row and met along another can add energy (a 10 t box
 /// spinning at 10.5 rad/s gained 193 kJ in one frame that way).
-/// That row stands for the true one only while the bodies turn little in the frame: a point whose
-/// row a body's turn since the frame began misreads by more than the threshold (staleRowSpeed)
+/// That row stands for the true one only while the bodies turn little in the solve's piece: a point
+/// whose row a body's turn since the piece began misreads by more than the threshold (staleRowSpeed)
 /// cannot tell a bounce from a rest, and gets no restitution here; collideBlock, along the rows
 /// as turned, has struck it where it struck (a needle spinning half a turn a frame on a bouncy
 /// floor took the stale row's 40 m/s for an approach and left at 39 m/s).
 template <int N>
 inline Pack<N> staleRowSpeed(const BodyPack<N>& a, const BodyPack<N>& b, const ManifoldPointPack<N>& p) {
-    const PackVec3<N> movedA = rotate(a.deltaRotation, p.armA) - p.armA;  // the arm's tip since the frame began
+    const PackVec3<N> movedA = rotate(a.deltaRotation, p.armA) - p.armA;  // the arm's tip since the piece began
     const PackVec3<N> movedB = rotate(b.deltaRotation, p.armB) - p.armB;
     return sqrt(dot(a.angularVelocity, a.angularVelocity) * dot(movedA, movedA)) +
            sqrt(dot(b.angularVelocity, b.angularVelocity) * dot(movedB, movedB));

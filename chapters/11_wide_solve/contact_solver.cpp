@@ -276,9 +276,9 @@ void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame) {
 
 namespace {
 
-/// One solve of `pieceTime` seconds in `substeps` substeps, its rows built where the bodies stand
-/// as it begins; `frameTime` bounds the spin (mostSpin). solveFast runs one a frame, or several
-/// (solvePieces).
+/// One piece of the frame's solve: up to `substeps` substeps of h, its rows built where the bodies
+/// stand as it begins, ended early where a touched body turns far (turnedFar); `frameTime` bounds
+/// the spin (mostSpin). Returns the substeps it ran. solveFast runs one a frame, or several.
 int solvePiece(World& world, Real h, Real frameTime, int substeps, bool firstPiece, SolverPath path,
                ContactSolverScratch& scratch) {
     FastSolveStats& stats = scratch.stats;

@@ -23,8 +23,8 @@ namespace stepwise {
 struct alignas(64) SolverBodyState {
     Real linearVelocity[3] = {0, 0, 0};    // of the centre of mass, m/s
     Real angularVelocity[3] = {0, 0, 0};   // rad/s
-    Real deltaPosition[3] = {0, 0, 0};     // centre of mass moved since the frame began, m
-    Real deltaRotation[4] = {0, 0, 0, 1};  // x y z w: turned since the frame began
+    Real deltaPosition[3] = {0, 0, 0};     // centre of mass moved since the solve (its piece) began, m
+    Real deltaRotation[4] = {0, 0, 0, 1};  // x y z w: turned since the solve (its piece) began
 };
 
 /// What the solve reads of a body once per frame or substep.
