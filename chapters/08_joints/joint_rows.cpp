@@ -303,41 +303,6 @@ void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& 
 
 }  // namespace
 
-// [ch08-bias]
-// C = 0 wanted: the error goes back in by the feedback's rule. The push back is capped
-// (kMaxJointPushOutSpeed, kMaxJointPushOutTurn): a joint that starts 25 cm apart would otherwise
-// ask for 40 m/s, and what a static body pushes back with stays in the bodies as momentum that no
-// relax pass takes out (uncapped, scenes/two-box-stack.json's distance joint throws its 65 kg ball
-// 12 m up). A limit not reached is speculative: the row only stops the bodies from closing the
-// gap by more than it is in this step. Passed, it is fed back like an equality.
-void jointRowFeedback(Real& bias, Softness& softness, bool& fedBack, JointRowKind kind, Real error, bool movesPoints,
-                      const JointFeedback& feedback, Real h) {
-    switch (kind) {
-        case JointRowKind::Free: return;
-        case JointRowKind::Spring: bias = -softness.biasRate * error; return;
-        case JointRowKind::Limit:
-            if (error > 0) {
-                bias = -error / h;
-                softness = Softness{};
-                fedBack = false;
-                return;
-            }
-            break;  // passed: an equality
-        case JointRowKind::Equality: break;
-    }
-    Softness soft;
-    bias = 0;
-    if (feedback.kind == JointFeedback::Kind::Baumgarte) bias = -feedback.baumgarte * error / h;
-    if (feedback.kind == JointFeedback::Kind::Soft) {
-        soft = feedback.soft;
-        bias = -soft.biasRate * error;
-    }
-    const Real cap = movesPoints ? kMaxJointPushOutSpeed : kMaxJointPushOutTurn;
-    bias = std::clamp(bias, -cap, cap);
-    softness = soft;
-    fedBack = true;
-}
-// [ch08-bias]
 
 namespace {
 

@@ -197,6 +197,7 @@ int runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolveP
     const Real h = params.substep;
     JointPass* joints = scratch.joints && needsJointPass(world) ? scratch.joints.get() : nullptr;
     const bool forces = joints && (!world.springs.empty() || !world.dampings.empty());
+    int ran = substeps;
     for (int substep = 0; substep < substeps; ++substep) {
         if (forces) evaluateSubstepForces(world, scratch.bodies, *joints);
         integrateVelocities(world, scratch.bodies, h, substep == 0, path, forces ? &joints->forces : nullptr);
@@ -235,11 +236,14 @@ int runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolveP
         if (joints) solveJoints(*joints, states, /*relax=*/true);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
         solveAll(scratch.scalarBlocks, states, params, false);
-        if (joints) keepJointImpulses(*joints);
         stats.ms(SolvePhase::Relax) += clock.lap();
-        if (substep + 1 < substeps && turnedFar(states, scratch.touched, h)) return substep + 1;
+        if (substep + 1 < substeps && turnedFar(states, scratch.touched, h)) {
+            ran = substep + 1;
+            break;
+        }
     }
-    return substeps;
+    if (joints) keepJointImpulses(*joints);
+    return ran;
 }
 // [ch11-substeps]
 

@@ -3,6 +3,7 @@
 
 #include "01_integrators/integrate.h"
 #include "08_joints/joint_frame.h"
+#include "11_wide_solve/lanes.h"
 #include "11_wide_solve/solve_steps.h"
 
 #include <algorithm>
@@ -42,6 +43,17 @@ int entryFor(const World& world, const SolverBodies& bodies, int body, JointPass
     return entry;
 }
 
+// Centre to anchor of entry `entry`'s body as the piece began, world axes: where the solve's turn
+// since then (SolverBodyState::deltaRotation) carries it from (slotPose's rotation is that turn
+// after the start's).
+Vec3 startArm(const World& world, const SolverBodies& bodies, const JointPass& pass, int entry, const Vec3& localAnchor) {
+    const int slot = pass.slot[static_cast<std::size_t>(entry)];
+    const int body = pass.worldBody[static_cast<std::size_t>(entry)];
+    if (slot == 0) return world.bodies[static_cast<std::size_t>(body)].transform.apply(localAnchor) - pass.bodies[static_cast<std::size_t>(entry)].center;
+    const SolverBodyInfo& info = bodies.info[static_cast<std::size_t>(slot)];
+    return info.startRotation * (localAnchor - world.motionOf(body)->localCenter);
+}
+
 }  // namespace
 
 void prepareJointPass(const World& world, const SolverBodies& bodies, Real carryScale, JointPass& pass) {
@@ -52,6 +64,8 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
     pass.slot.clear();
     pass.bodies.clear();
     pass.carried.clear();
+    pass.startArmA.clear();
+    pass.startArmB.clear();
     pass.jointsBuilt = 0;
     pass.jointsKept = 0;
     pass.entryOfBody.assign(world.bodies.size(), -1);
@@ -65,12 +79,15 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
         pass.joints.push_back(jointIndex);
         pass.entryA.push_back(entryFor(world, bodies, joint.bodyA, pass));
         pass.entryB.push_back(entryFor(world, bodies, joint.bodyB, pass));
+        pass.startArmA.push_back(startArm(world, bodies, pass, pass.entryA.back(), joint.localAnchorA));
+        pass.startArmB.push_back(startArm(world, bodies, pass, pass.entryB.back(), joint.localAnchorB));
         JointImpulses carried;
         if (world.settings.warmStarting && static_cast<std::size_t>(jointIndex) < world.jointImpulses.size())
             for (int k = 0; k < JointImpulses::kSlots; ++k)
                 carried.slot[k] = carryScale * world.jointImpulses[static_cast<std::size_t>(jointIndex)].slot[k];
         pass.carried.push_back(carried);
     }
+    pass.placedAt.assign(pass.bodies.size(), -1);
 }
 
 namespace {
@@ -79,8 +96,13 @@ namespace {
 // (writePackedJoint): the batch leaves both out.
 constexpr JointBatchNeeds kPackedNeeds{/*pointJacobians=*/false, /*effectiveMasses=*/false};
 
-// The angle of the turn from `built` to `now` (small-angle form, 2 |v| of the quotient).
-Real turnSince(const Quat& built, const Quat& now) { return 2 * (now * built.conjugate()).vec().norm(); }
+// Whether the turn from `built` to `now` is at most `most` in the small-angle form, 2 |v| of the
+// quotient, without making it: |v|^2 = 1 - w^2, and w of the quotient of two unit quaternions is
+// their dot product.
+bool turnedAtMost(const Quat& built, const Quat& now, Real most) {
+    const Real w = built.coeffs().dot(now.coeffs());
+    return 1 - w * w <= most * most / 4;
+}
 
 // Whether a joint's Jacobians depend on its bodies' turns alone: the point joints' rows run
 // along fixed axes through arms that turn with the bodies, their turn rows about axes that turn
@@ -91,32 +113,50 @@ bool rowsFollowTurnsAlone(JointType type) {
            type == JointType::Fixed;
 }
 
-// Whether listed joint i may keep last substep's rows.
-bool keepsRows(const JointPass& pass, std::size_t i) {
-    if (pass.packedEntry[i] < 0) return false;  // left out last substep: built again
-    if (!pass.packed.joints[i].keepable) return false;  // its rows turn with the bodies' moves (rowsFollowTurnsAlone)
-    const Quat& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])].transform.rotation;
-    const Quat& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])].transform.rotation;
-    return turnSince(pass.builtA[i], a) <= kJointRowsKeptTurn && turnSince(pass.builtB[i], b) <= kJointRowsKeptTurn;
+// A slot's turn since the piece began (slot 0 does not turn).
+Quat turnOf(const SolverBodies& bodies, int slot) {
+    const Real* q = bodies.states[static_cast<std::size_t>(slot)].deltaRotation;
+    return slot == 0 ? Quat::Identity() : Quat(q[3], q[0], q[1], q[2]);
 }
 
-// Where each body stands now: its start moved by the substeps so far (slot 0 does not move).
-void placeBodies(const World& world, const SolverBodies& bodies, JointPass& pass) {
-    pass.poses.resize(pass.bodies.size());
-    for (std::size_t e = 0; e < pass.bodies.size(); ++e) {
-        const int slot = pass.slot[e];
-        const int body = pass.worldBody[e];
-        JointPass::BodyPose& pose = pass.poses[e];
+// `arm` turned by the unit quaternion q: v + 2w (u x v) + 2 u x (u x v), written out so that it
+// inlines (Eigen's quaternion product with a vector is a call).
+STEPWISE_LANE_INLINE Vec3 turned(const Quat& q, const Vec3& arm) {
+    const Vec3 u = q.vec();
+    const Vec3 t = 2 * u.cross(arm);
+    return arm + q.w() * t + u.cross(t);
+}
+
+// Whether listed joint i may keep last substep's rows.
+bool keepsRows(const SolverBodies& bodies, const JointPass& pass, std::size_t i) {
+    if (pass.packedEntry[i] < 0) return false;  // left out last substep: built again
+    if (!pass.packed.joints[i].keepable) return false;  // its rows turn with the bodies' moves (rowsFollowTurnsAlone)
+    // Both turns are measured from the piece's start, so their quotient is the turn since the build.
+    const Quat a = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
+    const Quat b = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
+    return turnedAtMost(pass.builtA[i], a, kJointRowsKeptTurn) && turnedAtMost(pass.builtB[i], b, kJointRowsKeptTurn);
+}
+
+// A distance joint's anchors and arms now, from the arms as the piece began turned by the bodies'
+// turns since and the centres moved by their moves: the distance row needs nothing else of the
+// poses. The same numbers as chapter 8's jointRowFrame to rounding.
+JointFrame distanceFrame(const SolverBodies& bodies, const JointPass& pass, std::size_t i) {
+    JointFrame frame;
+    const auto place = [&](int entry, const Vec3& startArm, Vec3& arm, Vec3& anchor) {
+        const int slot = pass.slot[static_cast<std::size_t>(entry)];
+        const Vec3& center = pass.bodies[static_cast<std::size_t>(entry)].center;
         if (slot == 0) {
-            pose.transform = world.bodies[static_cast<std::size_t>(body)].transform;
-            pose.center = pass.bodies[e].center;
-            continue;
+            arm = startArm;
+            anchor = center + arm;
+            return;
         }
-        const SlotPose now = slotPose(bodies, slot);
-        pose.transform.rotation = now.rotation;
-        pose.transform.position = now.center - now.rotation * world.motionOf(body)->localCenter;
-        pose.center = now.center;
-    }
+        const Real* moved = bodies.states[static_cast<std::size_t>(slot)].deltaPosition;
+        arm = turned(turnOf(bodies, slot), startArm);
+        anchor = center + Vec3(moved[0], moved[1], moved[2]) + arm;
+    };
+    place(pass.entryA[i], pass.startArmA[i], frame.armA, frame.anchorA);
+    place(pass.entryB[i], pass.startArmB[i], frame.armB, frame.anchorB);
+    return frame;
 }
 
 // Builds listed joint i's rows where its bodies stand now into its entry, which the frame's first
@@ -148,10 +188,72 @@ bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback,
     }
     if (!built || !writePackedJoint(batch, pass.bodies, pass.slot, pass.packed, entry)) return false;
     // Every slot carries its impulse clamped to this substep's bounds; the sweeps' own rows
-    // overwrite theirs when the substep ends (keepJointImpulses).
+    // overwrite theirs when the piece ends or the joint is built again (keepJointImpulses).
     for (int slot = 0; slot < batch.count; ++slot) carried.slot[slot] = batch.rows[slot].impulse;
     slots = batch.count;
     return true;
+}
+
+}  // namespace
+
+const JointPass::BodyPose& placeJointBody(const World& world, const SolverBodies& bodies, JointPass& pass, std::size_t e) {
+    JointPass::BodyPose& pose = pass.poses[e];
+    if (pass.placedAt[e] == pass.substepStamp) return pose;
+    pass.placedAt[e] = pass.substepStamp;
+    const int slot = pass.slot[e];
+    const int body = pass.worldBody[e];
+    if (slot == 0) {
+        pose.transform = world.bodies[static_cast<std::size_t>(body)].transform;
+        pose.center = pass.bodies[e].center;
+        return pose;
+    }
+    const SlotPose now = slotPose(bodies, slot);
+    pose.transform.rotation = now.rotation;
+    pose.transform.position = now.center - now.rotation * world.motionOf(body)->localCenter;
+    pose.center = now.center;
+    return pose;
+}
+
+namespace {
+
+// [ch11-distance-kept]
+// Whether listed distance joint i may keep last substep's row with its anchors now in `frame`:
+// neither body has turned more than kJointRowsKeptTurn since the row was built, nor has the line
+// between the anchors (the row's direction). Its error is then the line's own, exact, and only
+// its Jacobian and effective mass are the build's.
+bool keepsDistanceRow(const SolverBodies& bodies, JointPass& pass, std::size_t i, const JointDesc& joint,
+                      const JointFrame& frame) {
+    if (pass.packedEntry[i] < 0) return false;
+    const PackedJoint& packedJoint = pass.packed.joints[i];
+    if (packedJoint.rowCount != 1) return false;  // a row without mass or direction: built again
+    const Quat a = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
+    const Quat b = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
+    if (!turnedAtMost(pass.builtA[i], a, kJointRowsKeptTurn) || !turnedAtMost(pass.builtB[i], b, kJointRowsKeptTurn))
+        return false;
+    PackedJointRow& row = pass.packed.rows[static_cast<std::size_t>(packedJoint.firstRow)];
+    const Vec3 gap = frame.anchorB - frame.anchorA;
+    const Real length = gap.norm();
+    // The sine of the line's turn from the built direction (row.linearB), squared, without dividing.
+    if (!(gap.cross(row.linearB).squaredNorm() <= kJointRowsKeptTurn * kJointRowsKeptTurn * length * length))
+        return false;
+    row.error = length - joint.length.value_or(length);
+    return true;
+}
+// [ch11-distance-kept]
+
+// Listed joint i's frame where its bodies stand now, by chapter 8's jointRowFrame.
+JointFrame placedFrame(const World& world, const SolverBodies& bodies, JointPass& pass, std::size_t i, const JointDesc& joint) {
+    const JointPass::BodyPose& a = placeJointBody(world, bodies, pass, static_cast<std::size_t>(pass.entryA[i]));
+    const JointPass::BodyPose& b = placeJointBody(world, bodies, pass, static_cast<std::size_t>(pass.entryB[i]));
+    return jointRowFrame(joint, a.transform, a.center, b.transform, b.center);
+}
+
+// Listed joint i keeps last substep's rows, their impulses the sweeps ended with, their errors
+// moved (a distance joint's measured); the biases are made again from the errors.
+void keepJoint(JointPass& pass, std::size_t i, const JointFeedback& feedback, Real h) {
+    pass.rowCount += pass.packed.joints[i].slotCount;
+    refreshPackedFeedback(pass.packed, static_cast<int>(i), feedback, h);
+    ++pass.jointsKept;
 }
 
 }  // namespace
@@ -168,21 +270,24 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
     }
     if (pass.joints.empty()) return;
     const JointFeedback feedback = fastJointFeedback(world.settings, h);
-    placeBodies(world, bodies, pass);
+    ++pass.substepStamp;  // the poses made last substep are stale
+    pass.poses.resize(pass.bodies.size());
     pass.builtA.resize(pass.joints.size());
     pass.builtB.resize(pass.joints.size());
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
-        if (!firstSubstep && keepsRows(pass, i)) {
-            // Kept: last substep's rows, their impulses the sweeps ended with, their errors moved.
-            pass.rowCount += pass.packed.joints[i].slotCount;
-            refreshPackedFeedback(pass.packed, static_cast<int>(i), feedback, h);
-            ++pass.jointsKept;
+        const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
+        const bool distance = joint.type == JointType::Distance;
+        if (!firstSubstep && !distance && keepsRows(bodies, pass, i)) {
+            keepJoint(pass, i, feedback, h);
             continue;
         }
-        const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
-        const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
-        const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
-        const JointFrame frame = jointRowFrame(joint, a.transform, a.center, b.transform, b.center);
+        const JointFrame frame = distance ? distanceFrame(bodies, pass, i) : placedFrame(world, bodies, pass, i, joint);
+        if (!firstSubstep && distance && keepsDistanceRow(bodies, pass, i, joint, frame)) {
+            keepJoint(pass, i, feedback, h);
+            continue;
+        }
+        // Built again from the impulses its rows ended the last substep with.
+        if (!firstSubstep) keepPackedImpulsesOf(pass.packed, static_cast<int>(i), pass.carried);
         pass.packedEntry[i] = -1;
         int slots = 0;
         if (!buildListedJoint(world, h, feedback, firstSubstep, i, frame, pass, slots)) {
@@ -192,8 +297,8 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         }
         pass.rowCount += slots;
         pass.packedEntry[i] = static_cast<int>(i);
-        pass.builtA[i] = a.transform.rotation;
-        pass.builtB[i] = b.transform.rotation;
+        pass.builtA[i] = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
+        pass.builtB[i] = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
         ++pass.jointsBuilt;
     }
 }

@@ -7,8 +7,9 @@
 // in one graph the same way). What makes them fast is what makes the contacts fast: one pass
 // over everything per substep, no second solve.
 //
-// A joint's rows are built every substep where its bodies stand then (their moves since the frame
-// began, SolverBodyState), with the frame's inverse inertia, as the contacts take it; the relax
+// A joint's rows are built where its bodies stand in the substep (their moves since the piece
+// began, SolverBodyState), or kept from the last substep while its bodies have barely turned
+// (kJointRowsKeptTurn), with the frame's inverse inertia, as the contacts take it; the relax
 // pass takes the same rows with the feedback taken out. Building them once a frame and moving
 // only their errors to first order does not do: a chain's link swinging 8 cm across its
 // neighbour in a frame stretches by 1.3 cm to first order. Moving the Jacobians and keeping the
@@ -53,11 +54,14 @@ struct JointPass {
         Transform transform;
         Vec3 center = Vec3::Zero();
     };
-    std::vector<BodyPose> poses;       // per entry: where it stands this substep
+    std::vector<BodyPose> poses;       // per entry: where it stands this substep, once a joint built asks
+    std::vector<int> placedAt;         // per entry: the substep its pose was made for (-1: none yet)
+    int substepStamp = 0;              // counts the substeps buildJointRows has run
+    std::vector<Vec3> startArmA, startArmB;  // per listed joint: centre to anchor as the piece began, world axes
     JointRowBatch batch;               // one joint's rows, as chapter 8 builds them
     PackedJointRows packed;            // this substep's rows, as the sweeps take them (listed joint i is entry i)
     std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out this substep)
-    std::vector<Quat> builtA, builtB;  // per listed joint: its bodies' rotations when its rows were built
+    std::vector<Quat> builtA, builtB;  // per listed joint: its bodies' turns since the piece began, when its rows were built
     int rowCount = 0;                  // this substep's rows, used slots or not (the run report's)
     int jointsBuilt = 0, jointsKept = 0;  // this frame's substeps: joints whose rows were built, kept
     int invalidSkipped = 0;            // joints left out this substep: their rows came out non-finite
@@ -78,16 +82,23 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
 /// A joint keeps last substep's rows while neither body has turned more than this since they were
 /// built (rad): its Jacobians then stand where the arms and axes were, and its errors move to first
 /// order (advanceJointErrors). A frozen arm of length r misplaces its anchor by about
-/// turn^2 r / 2, 12.5 micrometres for a 1 m arm at this turn, where the joints' own error at rest
-/// is a millimetre; the frame's first substep always builds.
-constexpr Real kJointRowsKeptTurn = Real(0.005);
+/// turn^2 r / 2, 50 micrometres for a 1 m arm at this turn (a ragdoll's arms are a fifth of
+/// that), where the joints' own error at rest is a millimetre; the frame's first substep always
+/// builds. Against 5 mrad it saves 4.8% of the instructions of the 100-ragdoll field's first 120
+/// frames; 20 mrad would save 2.9% more for four times the misplacement.
+constexpr Real kJointRowsKeptTurn = Real(0.01);
 // [ch11-kept-turn]
 
 /// The rows for a substep of h, where the bodies stand now, from the carried impulses; after the
 /// frame's first substep, a point joint (ball socket, hinge, cone twist, fixed) whose bodies have
 /// turned at most kJointRowsKeptTurn since its rows were built keeps them, its biases made again
-/// from its moved errors.
+/// from its moved errors, and so does a distance joint whose line between the anchors has turned
+/// no more either, its error measured.
 void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool firstSubstep, JointPass& pass);
+
+/// Where entry `entry` of the pass stands this substep: its start moved by the substeps so far
+/// (slot 0 does not move). Made once a substep, when a joint built in it first asks.
+const JointPass::BodyPose& placeJointBody(const World& world, const SolverBodies& bodies, JointPass& pass, std::size_t entry);
 
 /// Every row's position error moved by the velocities the bodies moved with in this substep
 /// (after the biased pass, before the relax pass).
@@ -101,7 +112,8 @@ void warmStartJoints(JointPass& pass, SolverBodyState* states, bool warmStarting
 void solveJoints(JointPass& pass, SolverBodyState* states, bool relax);
 
 
-/// The impulses the substep ended with, carried to the next one.
+/// The impulses the sweeps ended with, into the joints' carried ones: once, when the piece's
+/// substeps end (a joint built again mid-piece takes its own first, buildJointRows).
 void keepJointImpulses(JointPass& pass);
 
 /// The carried impulses back into World::jointImpulses.

@@ -285,18 +285,22 @@ void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
     }
 }
 
-void keepPackedImpulses(const PackedJointRows& packed, std::vector<JointImpulses>& carried) {
-    for (const PackedJoint& joint : packed.joints) {
-        JointImpulses& impulses = carried[static_cast<std::size_t>(joint.joint)];
-        if (joint.block >= 0) {
-            const Vec3& impulse = packed.blocks[static_cast<std::size_t>(joint.block)].impulse;
-            for (int axis = 0; axis < 3; ++axis) impulses.slot[axis] = impulse[axis];
-        }
-        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
-            const PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
-            impulses.slot[row.slot] = row.impulse;
-        }
+void keepPackedImpulsesOf(const PackedJointRows& packed, int entry, std::vector<JointImpulses>& carried) {
+    const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    JointImpulses& impulses = carried[static_cast<std::size_t>(joint.joint)];
+    if (joint.block >= 0) {
+        const Vec3& impulse = packed.blocks[static_cast<std::size_t>(joint.block)].impulse;
+        for (int axis = 0; axis < 3; ++axis) impulses.slot[axis] = impulse[axis];
     }
+    for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
+        const PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
+        impulses.slot[row.slot] = row.impulse;
+    }
+}
+
+void keepPackedImpulses(const PackedJointRows& packed, std::vector<JointImpulses>& carried) {
+    for (std::size_t entry = 0; entry < packed.joints.size(); ++entry)
+        keepPackedImpulsesOf(packed, static_cast<int>(entry), carried);
 }
 
 void resetPackedImpulses(PackedJointRows& packed, std::vector<JointImpulses>& carried) {

@@ -113,6 +113,9 @@ void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax);
 /// the slots the sweeps leave out keep what they hold.
 void keepPackedImpulses(const PackedJointRows& packed, std::vector<JointImpulses>& carried);
 
+/// The same for joint `entry` alone.
+void keepPackedImpulsesOf(const PackedJointRows& packed, int entry, std::vector<JointImpulses>& carried);
+
 /// Every impulse zero, in the sweeps and in `carried` (a solve without warm starting).
 void resetPackedImpulses(PackedJointRows& packed, std::vector<JointImpulses>& carried);
 

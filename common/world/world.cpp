@@ -30,16 +30,6 @@ int World::findBody(const std::string& bodyName) const {
     return -1;
 }
 
-Motion* World::motionOf(int bodyIndex) {
-    const int motionIndex = bodies[bodyIndex].motionIndex;
-    return motionIndex < 0 ? nullptr : &motions[motionIndex];
-}
-
-const Motion* World::motionOf(int bodyIndex) const {
-    const int motionIndex = bodies[bodyIndex].motionIndex;
-    return motionIndex < 0 ? nullptr : &motions[motionIndex];
-}
-
 int World::dynamicBodyCount() const {
     int count = 0;
     for (const Body& body : bodies) count += body.type == BodyType::Dynamic;

@@ -130,8 +130,15 @@ struct World {
     long frame = 0;
 
     int findBody(const std::string& bodyName) const;  // -1 when absent
-    Motion* motionOf(int bodyIndex);
-    const Motion* motionOf(int bodyIndex) const;
+    // Inline: the solves and the planner ask it for every contact's bodies every frame.
+    Motion* motionOf(int bodyIndex) {
+        const int motionIndex = bodies[static_cast<std::size_t>(bodyIndex)].motionIndex;
+        return motionIndex < 0 ? nullptr : &motions[static_cast<std::size_t>(motionIndex)];
+    }
+    const Motion* motionOf(int bodyIndex) const {
+        const int motionIndex = bodies[static_cast<std::size_t>(bodyIndex)].motionIndex;
+        return motionIndex < 0 ? nullptr : &motions[static_cast<std::size_t>(motionIndex)];
+    }
     int dynamicBodyCount() const;
 };
 

@@ -68,8 +68,8 @@ TEST_CASE("packed joint rows sweep as chapter 8's rows do", "[ch11][joints]") {
             const JointFeedback feedback = fastJointFeedback(world.settings, h);
             for (std::size_t i = 0; i < pass.joints.size(); ++i) {
                 const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
-                const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
-                const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
+                const JointPass::BodyPose a = placeJointBody(world, bodies, pass, static_cast<std::size_t>(pass.entryA[i]));
+                const JointPass::BodyPose b = placeJointBody(world, bodies, pass, static_cast<std::size_t>(pass.entryB[i]));
                 appendJointRows(rows, joint, static_cast<int>(i), jointRowFrame(joint, a.transform, a.center, b.transform, b.center),
                                 pass.entryA[i], pass.entryB[i], pass.bodies, h, feedback, &pass.carried[i]);
             }
@@ -133,8 +133,8 @@ TEST_CASE("a distance joint's row is written straight into its room with chapter
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
         JointDesc joint = gallery.joints[static_cast<std::size_t>(pass.joints[i])];
         if (joint.type != JointType::Distance) continue;
-        const JointPass::BodyPose& a = pass.poses[static_cast<std::size_t>(pass.entryA[i])];
-        const JointPass::BodyPose& b = pass.poses[static_cast<std::size_t>(pass.entryB[i])];
+        const JointPass::BodyPose a = placeJointBody(gallery, bodies, pass, static_cast<std::size_t>(pass.entryA[i]));
+        const JointPass::BodyPose b = placeJointBody(gallery, bodies, pass, static_cast<std::size_t>(pass.entryB[i]));
         const Real carried = Real(0.03);
         for (const Real springHertz : {Real(0), Real(4)})
             for (const Real length : {Real(0.5), Real(3)})

@@ -75,7 +75,7 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
         for (std::size_t column : {11u, 12u, 13u, 14u, 15u}) CHECK(rowOf[scene]["fast step"][column] == rowOf[scene]["scalar solve"][column]);
     }
     // The profile's last column: the share of joint row builds a joint kept its last substep's rows
-    // (chapter 11). A falling pile keeps most; a swinging chain of distance joints none.
+    // (chapter 11). A falling pile keeps most, and so does a swinging chain of distance joints.
     std::map<std::string, double> kept;
     std::istringstream printed(run.printed);
     bool inProfile = false;
@@ -89,7 +89,7 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
     REQUIRE(kept.size() == jointScenes.size());
     CHECK(kept["ragdoll pile"] > 0.5);
     CHECK(kept["100 ragdolls"] > 0.5);
-    CHECK(kept["20-link chain"] == 0);
+    CHECK(kept["20-link chain"] > 0.5);  // its links swing less than kJointRowsKeptTurn in most substeps
     CHECK(run.printed.find("Bullet skipped") != std::string::npos);
     CHECK(run.printed.find("angular-pile-300") != std::string::npos);
     CHECK(run.printed.find("ragdoll-field-20") != std::string::npos);  // the ragdolls asleep and awake
