@@ -150,3 +150,25 @@ TEST_CASE("a 1.2 mm box 9 mm from a 56 m slab: the distance query finds the gap"
     // The witness points are the gap apart, along the axis.
     CHECK(std::abs(double((distance.pointB - distance.pointA).norm()) - exact) < 2e-5);
 }
+
+TEST_CASE("a stalled walk beside a sliver of A - B still finds the gap", "[ch02][gjk][scale]") {
+    // A 56 m hull (two of its seven points the same, two 0.5 mm apart) and a 1.2 mm box whose
+    // centre lies 6.9 mm outside it, 100 m from the origin (a fuzz_narrowphase find): the boolean
+    // walk stalls on a tetrahedron whose support plane towards the origin does not separate.
+    const std::vector<Vec3> points = {
+        {Real(28.0050468), Real(27.994957), Real(27.9898319)},  {Real(27.994957), Real(-27.9870796), Real(-21.8470459)},
+        {Real(0.0240386482), Real(-21.8470459), Real(-27.9884357)}, {Real(-27.984869), Real(-27.994957), Real(-27.994957)},
+        {Real(28.0045738), Real(27.994957), Real(27.994957)},   {Real(-27.984869), Real(-27.994957), Real(-27.994957)},
+        {Real(-24.4106827), Real(-28.0024471), Real(-24.4817524)}};
+    const Shape hull = Shape::convex(points);
+    const Shape speck = Shape::box(Vec3::Constant(Real(0.000616979029)));
+    Transform pose;
+    pose.position = Vec3(-100, -100, -100);
+    pose.rotation = Quat(Real(-0.5), Real(-0.5), Real(-0.5), Real(-0.5));
+    const ConvexProxy a{&hull, pose}, b{&speck, pose};
+    const GjkDistanceResult distance = gjkDistance(a, b);
+    REQUIRE(distance.separated);
+    CHECK(distance.distance == Approx(0.00704).margin(0.0002));
+    CHECK_FALSE(gjkIntersect(a, b).intersect);
+    CHECK_FALSE(gjkIntersect(b, a).intersect);
+}
