@@ -3,7 +3,6 @@
 
 #include "01_integrators/integrate.h"
 #include "08_joints/joint_frame.h"
-#include "11_wide_solve/lanes.h"
 #include "11_wide_solve/solve_steps.h"
 
 #include <algorithm>
@@ -119,22 +118,19 @@ Quat turnOf(const SolverBodies& bodies, int slot) {
     return slot == 0 ? Quat::Identity() : Quat(q[3], q[0], q[1], q[2]);
 }
 
-// `arm` turned by the unit quaternion q: v + 2w (u x v) + 2 u x (u x v), written out so that it
-// inlines (Eigen's quaternion product with a vector is a call).
-STEPWISE_LANE_INLINE Vec3 turned(const Quat& q, const Vec3& arm) {
-    const Vec3 u = q.vec();
-    const Vec3 t = 2 * u.cross(arm);
-    return arm + q.w() * t + u.cross(t);
+// Whether neither body of listed joint i has turned more than kJointRowsKeptTurn since its rows
+// were built. Both turns are measured from the piece's start, so their quotient is the turn since.
+bool bodiesTurnedLittle(const SolverBodies& bodies, const JointPass& pass, std::size_t i) {
+    const Quat a = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
+    const Quat b = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
+    return turnedAtMost(pass.builtA[i], a, kJointRowsKeptTurn) && turnedAtMost(pass.builtB[i], b, kJointRowsKeptTurn);
 }
 
 // Whether listed joint i may keep last substep's rows.
 bool keepsRows(const SolverBodies& bodies, const JointPass& pass, std::size_t i) {
     if (pass.packedEntry[i] < 0) return false;  // left out last substep: built again
     if (!pass.packed.joints[i].keepable) return false;  // its rows turn with the bodies' moves (rowsFollowTurnsAlone)
-    // Both turns are measured from the piece's start, so their quotient is the turn since the build.
-    const Quat a = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
-    const Quat b = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
-    return turnedAtMost(pass.builtA[i], a, kJointRowsKeptTurn) && turnedAtMost(pass.builtB[i], b, kJointRowsKeptTurn);
+    return bodiesTurnedLittle(bodies, pass, i);
 }
 
 // A distance joint's anchors and arms now, from the arms as the piece began turned by the bodies'
@@ -151,7 +147,7 @@ JointFrame distanceFrame(const SolverBodies& bodies, const JointPass& pass, std:
             return;
         }
         const Real* moved = bodies.states[static_cast<std::size_t>(slot)].deltaPosition;
-        arm = turned(turnOf(bodies, slot), startArm);
+        arm = turnOf(bodies, slot) * startArm;
         anchor = center + Vec3(moved[0], moved[1], moved[2]) + arm;
     };
     place(pass.entryA[i], pass.startArmA[i], frame.armA, frame.anchorA);
@@ -226,10 +222,7 @@ bool keepsDistanceRow(const SolverBodies& bodies, JointPass& pass, std::size_t i
     if (pass.packedEntry[i] < 0) return false;
     const PackedJoint& packedJoint = pass.packed.joints[i];
     if (packedJoint.rowCount != 1) return false;  // a row without mass or direction: built again
-    const Quat a = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
-    const Quat b = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
-    if (!turnedAtMost(pass.builtA[i], a, kJointRowsKeptTurn) || !turnedAtMost(pass.builtB[i], b, kJointRowsKeptTurn))
-        return false;
+    if (!bodiesTurnedLittle(bodies, pass, i)) return false;
     PackedJointRow& row = pass.packed.rows[static_cast<std::size_t>(packedJoint.firstRow)];
     const Vec3 gap = frame.anchorB - frame.anchorA;
     const Real length = gap.norm();

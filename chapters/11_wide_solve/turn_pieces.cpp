@@ -5,30 +5,26 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace stepwise {
 
 int substepsForTurns(const World& world, Real dt, int substeps) {
     // The fastest turn, over the frame, of an awake dynamic body some contact touches, at no more
     // than the spin a solve of the frame allows in substeps short enough (kMostTurnPerSolve).
-    // Each body once: marked by the contacts, then read once (a pile has three contacts a body).
     const Real most = kMostTurnPerSolve / dt;
-    std::vector<char> touched(world.bodies.size(), 0);
+    Real fastestSquared = 0;
     for (const Contact& contact : world.contacts) {
         if (contact.pointCount <= 0) continue;
-        for (const int body : {contact.bodyA, contact.bodyB})
-            if (body >= 0 && static_cast<std::size_t>(body) < world.bodies.size()) touched[static_cast<std::size_t>(body)] = 1;
-    }
-    Real fastestSquared = 0;
-    for (const Motion& motion : world.motions) {
-        const std::size_t body = static_cast<std::size_t>(motion.bodyIndex);
-        if (body >= world.bodies.size() || !touched[body] || motion.asleep) continue;
-        const Body& shape = world.bodies[body];
-        // A ball's rows stand at any turn: its arms reach its centre, its inertia is the same every way.
-        if (shape.type != BodyType::Dynamic || shape.shape.type == ShapeType::Sphere) continue;
-        const Real spinSquared = motion.angularVelocity.squaredNorm();
-        if (std::isfinite(spinSquared)) fastestSquared = std::max(fastestSquared, spinSquared);
+        for (const int body : {contact.bodyA, contact.bodyB}) {
+            if (body < 0 || static_cast<std::size_t>(body) >= world.bodies.size()) continue;
+            const Body& shape = world.bodies[static_cast<std::size_t>(body)];
+            // A ball's rows stand at any turn: its arms reach its centre, its inertia is the same every way.
+            if (shape.type != BodyType::Dynamic || shape.shape.type == ShapeType::Sphere) continue;
+            const Motion* motion = world.motionOf(body);
+            if (!motion || motion->asleep) continue;
+            const Real spinSquared = motion->angularVelocity.squaredNorm();  // the root once, below
+            if (std::isfinite(spinSquared)) fastestSquared = std::max(fastestSquared, spinSquared);
+        }
     }
     const Real turn = std::min(std::sqrt(fastestSquared), most) * dt;
     if (!(turn > kMostTurnPerPiece * static_cast<Real>(substeps))) return substeps;
