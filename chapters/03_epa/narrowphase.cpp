@@ -1,5 +1,6 @@
-// Picks the routine for a pair of shapes and runs it: a closed form when the pair has one,
-// otherwise GJK for the yes/no answer and EPA for the depth.
+// Picks the routine for a pair of shapes and runs it: a closed form when the pair has one; for a
+// round shape against any other, the distance between the cores while they are apart; otherwise
+// GJK for the yes/no answer and EPA for the depth.
 #include "03_epa/narrowphase.h"
 
 #include "03_epa/closed_form.h"
@@ -131,6 +132,42 @@ ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, 
 }
 // [ch03-gjk-epa]
 
+// [ch03-round-cores]
+/// A sphere or a capsule against a shape without a closed form (a box, a hull, a cylinder): the
+/// distance between the round shape's core (its centre, its segment) and the other shape answers
+/// exactly while the cores are apart: apart by more than the radii, the shapes are that far
+/// apart; within them, they overlap by the radii less the distance, along the line between the
+/// cores. One distance walk does it, where GJK's yes-or-no walk and EPA on the rounded shape
+/// would take two and answer only to EPA's tolerance (van den Bergen, "Collision Detection in
+/// Interactive 3D Environments", 2003, collides rounded shapes this way, as Jolt and Box2D do).
+/// Only cores that overlap, or a walk that cannot prove its gap, go on to GJK and EPA.
+bool collideRoundCores(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
+                       const CollideOptions& options, ContactQuery& query) {
+    const ConvexProxy proxyA{&a, ta, options.supportMode};
+    const ConvexProxy proxyB{&b, tb, options.supportMode};
+    const GjkDistanceResult distance = gjkDistance(proxyA, proxyB);
+    query.routine = "round_cores";
+    query.gjkIterations = distance.iterations;
+    if (distance.separated) {
+        if (!options.separationDistance) return true;  // apart; the caller asked no distance
+        const Vec3 gap = distance.pointB - distance.pointA;
+        const Real length = gap.norm();
+        if (!(length > 0) || !isFinite(length)) return false;
+        query.depth = -distance.distance;
+        query.normal = gap / length;
+    } else if (distance.radiusOverlap > 0) {  // proven: the cores are apart
+        query.intersect = true;
+        query.depth = distance.radiusOverlap;
+        query.normal = distance.axis;
+    } else {
+        return false;  // the cores overlap or touch within round-off: EPA's case
+    }
+    query.pointA = distance.pointA;
+    query.pointB = distance.pointB;
+    return true;
+}
+// [ch03-round-cores]
+
 }  // namespace
 
 // [ch03-dispatch]
@@ -146,9 +183,11 @@ ContactQuery collideShapes(const Shape& a, const Transform& ta, const Shape& b, 
     const Vec3 origin = ta.position;
     const Transform localA{Vec3::Zero(), ta.rotation.normalized()};
     const Transform localB{tb.position - origin, tb.rotation.normalized()};
-    ContactQuery query = options.closedForms && hasClosedForm(a.type, b.type)
-                             ? collideClosedForm(a, localA, b, localB)
-                             : collideGjkEpa(a, localA, b, localB, options);
+    ContactQuery query;
+    if (options.closedForms && hasClosedForm(a.type, b.type))
+        query = collideClosedForm(a, localA, b, localB);
+    else if (!(options.closedForms && (isRound(a) || isRound(b)) && collideRoundCores(a, localA, b, localB, options, query)))
+        query = collideGjkEpa(a, localA, b, localB, options);
     query.pointA += origin;
     query.pointB += origin;
     // The last line of defence of "never NaN": a non-finite answer becomes "no contact".

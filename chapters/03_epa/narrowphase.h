@@ -27,7 +27,7 @@ struct ContactQuery {
 struct CollideOptions {
     EpaSettings epa;
     SupportMode supportMode = SupportMode::Extents;
-    bool closedForms = true;          // false: every pair through GJK + EPA (tests, bench)
+    bool closedForms = true;          // false: every pair through GJK + EPA, round ones too (tests, bench)
     bool separationDistance = true;   // run GJK distance on separated pairs to fill depth
 };
 
