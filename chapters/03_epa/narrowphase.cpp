@@ -55,49 +55,6 @@ ContactQuery collideClosedForm(const Shape& a, const Transform& ta, const Shape&
     return swapped(collideCapsuleSphere(b.radius, b.halfHeight, tb, ta.position, a.radius));
 }
 
-// [ch03-face-axes]
-/// Where GJK stopped on a degenerate simplex around the origin and EPA found no volume to grow
-/// (a 0.6 mm box 7 mm inside a 56 m sliver hull: the fuzz regression speck-box-inside-sliver-hull),
-/// two polytopes still have their faces: along each face normal the overlap is the reach of A
-/// less that of B, and the least of them bounds the depth from above (Gregorius, "The Separating
-/// Axis Test between Convex Polyhedra", GDC 2013; edge axes left out, so a depth across two edges
-/// reads deeper than it is). True with the least overlap and its axis in `query` when every face
-/// overlaps by more than `touching`; false otherwise (a face separates them, or they only touch),
-/// and the caller answers as before.
-bool faceAxesOverlap(const ConvexProxy& a, const ConvexProxy& b, Real touching, ContactQuery& query) {
-    Real least = kRealMax;
-    Vec3 axis = Vec3::Zero();
-    const auto consider = [&](const Vec3& normal) {  // unit, from A towards B
-        const SupportPoint reach = minkowskiSupport(a, b, normal);
-        const Real overlap = normal.dot(reach.w);
-        if (overlap < least) {
-            least = overlap;
-            axis = normal;
-        }
-    };
-    const auto faces = [&](const ConvexProxy& proxy, Real sign) {
-        const Shape& shape = *proxy.shape;
-        if (shape.type == ShapeType::Box) {
-            for (int k = 0; k < 3; ++k)
-                for (const Real side : {Real(1), Real(-1)}) consider(sign * side * (proxy.transform.rotation * Vec3::Unit(k)));
-            return true;
-        }
-        if (shape.type != ShapeType::Convex || !shape.hull) return false;
-        for (const HullFace& face : shape.hull->faces) consider(sign * (proxy.transform.rotation * face.normal));
-        return true;
-    };
-    if (!faces(a, Real(1)) || !faces(b, Real(-1))) return false;
-    if (!(least > touching) || !isFinite(least)) return false;
-    const SupportPoint deepest = minkowskiSupport(a, b, axis);
-    query.intersect = true;
-    query.depth = least;
-    query.normal = axis;
-    query.pointB = deepest.onB;  // B's point deepest along the axis
-    query.pointA = deepest.onB + least * axis;
-    return true;
-}
-// [ch03-face-axes]
-
 // [ch03-gjk-epa]
 ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
                            const CollideOptions& options) {
@@ -123,9 +80,7 @@ ContactQuery collideGjkEpa(const Shape& a, const Transform& ta, const Shape& b, 
         // A - B has no volume around the origin: the shapes touch, or GJK's tolerance took a gap of
         // a fraction of a millimetre for contact (a cylinder's rim, a flat simplex). EPA's depth
         // is then only the least reach along a few trial directions, centimetres off; the distance
-        // query below says which it is. Two polytopes that overlap by more than touching say so
-        // along their faces.
-        if (faceAxesOverlap(proxyA, proxyB, gjkTolerances(proxyA, proxyB).touching, query)) return query;
+        // query below says which it is.
         touchingNormal = epa.normal;
     }
     if (!options.separationDistance && !gjk.intersect) return query;
