@@ -183,10 +183,12 @@ ContactQuery collideShapes(const Shape& a, const Transform& ta, const Shape& b, 
     const Vec3 origin = ta.position;
     const Transform localA{Vec3::Zero(), ta.rotation.normalized()};
     const Transform localB{tb.position - origin, tb.rotation.normalized()};
+    const bool closedForm = options.closedForms && hasClosedForm(a.type, b.type);
+    const bool roundCores = options.closedForms && (isRound(a) || isRound(b));
     ContactQuery query;
-    if (options.closedForms && hasClosedForm(a.type, b.type))
+    if (closedForm)
         query = collideClosedForm(a, localA, b, localB);
-    else if (!(options.closedForms && (isRound(a) || isRound(b)) && collideRoundCores(a, localA, b, localB, options, query)))
+    else if (!roundCores || !collideRoundCores(a, localA, b, localB, options, query))
         query = collideGjkEpa(a, localA, b, localB, options);
     query.pointA += origin;
     query.pointB += origin;

@@ -71,7 +71,8 @@ TEST_CASE("A sphere or a capsule sunk into a hull reads its depth from the cores
         const double trueDepth = double(radius) - coreDistance;
         // Cores apart (a tenth of the radius at least) and the radius reaching in by a tenth or more.
         if (coreDistance < 0.1 * radius || trueDepth < 0.1 * radius) continue;
-        const ContactQuery query = collideShapes(round, roundPose, boxHull(half), boxPose);
+        const Shape hull = boxHull(half);
+        const ContactQuery query = collideShapes(round, roundPose, hull, boxPose);
         REQUIRE(finiteQuery(query));
         CHECK(std::string(query.routine) == "round_cores");
         CHECK(query.intersect);
@@ -79,7 +80,7 @@ TEST_CASE("A sphere or a capsule sunk into a hull reads its depth from the cores
         // pointA - pointB = depth * normal, and the normal leaves the round shape's core.
         CHECK((query.pointA - query.pointB - query.depth * query.normal).norm() <= Real(1e-5));
         coreErrors.push_back(std::abs(double(query.depth) - trueDepth));
-        const ContactQuery viaEpa = collideShapes(round, roundPose, boxHull(half), boxPose, epaOnly);
+        const ContactQuery viaEpa = collideShapes(round, roundPose, hull, boxPose, epaOnly);
         REQUIRE(finiteQuery(viaEpa));
         epaErrors.push_back(std::abs(double(viaEpa.depth) - trueDepth));
     }
