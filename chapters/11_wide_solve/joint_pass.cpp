@@ -155,6 +155,8 @@ JointFrame distanceFrame(const SolverBodies& bodies, const JointPass& pass, std:
     return frame;
 }
 
+int slotOfListed(const JointPass& pass, int entry) { return pass.slot[static_cast<std::size_t>(entry)]; }
+
 // Builds listed joint i's rows where its bodies stand now into its entry, which the frame's first
 // substep lays out; its slot count into `slots`. False (the entry left empty) if a row came out
 // non-finite. A joint of one row skips chapter 8's batch and is written straight into its room
@@ -165,11 +167,12 @@ bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback,
     const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
     JointImpulses& carried = pass.carried[i];
     if (joint.type == JointType::Distance) {  // one row
-        if (firstSubstep) reservePackedJoint(pass.packed, entry, 1, /*block=*/false, /*keepable=*/false);
+        if (firstSubstep)
+            reservePackedJoint(pass.packed, entry, 1, /*block=*/false, /*keepable=*/false, slotOfListed(pass, pass.entryA[i]),
+                               slotOfListed(pass, pass.entryB[i]));
         if (!writeDistanceJoint(joint, frame, pass.entryA[i], pass.entryB[i], h, feedback, carried.slot[0], pass.bodies,
                                 pass.slot, pass.packed, entry))
             return false;
-        carried.slot[0] = pass.packed.rows[static_cast<std::size_t>(pass.packed.joints[i].firstRow)].impulse;
         slots = 1;
         return true;
     }
@@ -177,10 +180,12 @@ bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback,
     const bool built = buildJointRowBatch(batch, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i],
                                           pass.bodies, h, feedback, &carried, kPackedNeeds);
     if (firstSubstep) {
-        // A joint's slots depend on its description alone; one not built yet gets them all.
         const bool pointBlock = joint.type != JointType::Distance && joint.type != JointType::Slider;
+        // A joint's slots depend on its description alone; one not built yet gets them all (a
+        // point block whose K is singular goes as three rows: room for every slot).
         reservePackedJoint(pass.packed, entry, built ? batch.count : JointRowBatch::kMaxRows, pointBlock,
-                           rowsFollowTurnsAlone(joint.type));
+                           rowsFollowTurnsAlone(joint.type), slotOfListed(pass, pass.entryA[i]),
+                           slotOfListed(pass, pass.entryB[i]));
     }
     if (!built || !writePackedJoint(batch, pass.bodies, pass.slot, pass.packed, entry)) return false;
     // Every slot carries its impulse clamped to this substep's bounds; the sweeps' own rows
@@ -223,13 +228,14 @@ bool keepsDistanceRow(const SolverBodies& bodies, JointPass& pass, std::size_t i
     const PackedJoint& packedJoint = pass.packed.joints[i];
     if (packedJoint.rowCount != 1) return false;  // a row without mass or direction: built again
     if (!bodiesTurnedLittle(bodies, pass, i)) return false;
-    PackedJointRow& row = pass.packed.rows[static_cast<std::size_t>(packedJoint.firstRow)];
+    PackedJointRow row = packedRowOf(pass.packed, static_cast<int>(i), 0);
     const Vec3 gap = frame.anchorB - frame.anchorA;
     const Real length = gap.norm();
     // The sine of the line's turn from the built direction (row.linearB), squared, without dividing.
     if (!(gap.cross(row.linearB).squaredNorm() <= kJointRowsKeptTurn * kJointRowsKeptTurn * length * length))
         return false;
     row.error = length - joint.length.value_or(length);
+    storePackedRow(pass.packed, static_cast<int>(i), 0, row);
     return true;
 }
 // [ch11-distance-kept]

@@ -10,38 +10,6 @@ namespace stepwise {
 
 namespace {
 
-Vec3 linearOf(const SolverBodyState& s) { return Vec3(s.linearVelocity[0], s.linearVelocity[1], s.linearVelocity[2]); }
-Vec3 angularOf(const SolverBodyState& s) { return Vec3(s.angularVelocity[0], s.angularVelocity[1], s.angularVelocity[2]); }
-
-// Slot 0 never moves: every push on it is zero (its inverse mass is), and it is not written, so
-// that a static body's velocity stays exactly zero.
-void push(SolverBodyState* states, int slot, const Vec3& linear, const Vec3& angular) {
-    if (slot == 0) return;
-    SolverBodyState& s = states[slot];
-    for (int k = 0; k < 3; ++k) {
-        s.linearVelocity[k] += linear[k];
-        s.angularVelocity[k] += angular[k];
-    }
-}
-
-void pushTurn(SolverBodyState* states, int slot, const Vec3& angular) {
-    if (slot == 0) return;
-    SolverBodyState& s = states[slot];
-    for (int k = 0; k < 3; ++k) s.angularVelocity[k] += angular[k];
-}
-
-// The row's impulse change `applied` into its bodies' velocities: inlined by force, as the lanes'
-// kernels are (three sweeps a substep call it for every row; a call was a tenth of a chain's frame).
-STEPWISE_LANE_INLINE void pushRow(const PackedJointRow& row, Real applied, SolverBodyState* states) {
-    if (row.turnOnly) {
-        pushTurn(states, row.slotA, applied * row.moveAngularA);
-        pushTurn(states, row.slotB, applied * row.moveAngularB);
-        return;
-    }
-    push(states, row.slotA, applied * row.moveLinearA, applied * row.moveAngularA);
-    push(states, row.slotB, applied * row.moveLinearB, applied * row.moveAngularB);
-}
-
 // A packed row's M^-1 J^T and effective mass, from its Jacobian and its bodies' inverse masses.
 void setMoves(const SolverBody& a, const SolverBody& b, PackedJointRow& packed) {
     packed.moveLinearA = a.inverseMass * packed.linearA;
@@ -101,98 +69,259 @@ void packBlock(const JointRowBatch& batch, const std::vector<SolverBody>& bodies
     block.soft = batch.softness[0];
 }
 
-// How fast the anchors part: B's anchor's velocity less A's (the point rows' J v).
-Vec3 anchorsRate(const PackedPointBlock& block, const SolverBodyState* states) {
-    const SolverBodyState& a = states[block.slotA];
-    const SolverBodyState& b = states[block.slotB];
-    return linearOf(b) + angularOf(b).cross(block.armB) - linearOf(a) - angularOf(a).cross(block.armA);
+}  // namespace
+
+// A lane of the layout as one row or block: the scalar work (building, feedback, impulses back)
+// reads and writes a joint's lane through these; the sweeps read the lanes whole.
+namespace {
+
+Real& at(PackVec3<kWideLanes>& v, int axis, int lane) { return (axis == 0 ? v.x : axis == 1 ? v.y : v.z)[lane]; }
+Real at(const PackVec3<kWideLanes>& v, int axis, int lane) { return (axis == 0 ? v.x : axis == 1 ? v.y : v.z)[lane]; }
+
+void storeVec(PackVec3<kWideLanes>& to, int lane, const Vec3& v) {
+    to.x[lane] = v.x();
+    to.y[lane] = v.y();
+    to.z[lane] = v.z();
+}
+Vec3 loadVec(const PackVec3<kWideLanes>& from, int lane) { return Vec3(from.x[lane], from.y[lane], from.z[lane]); }
+
+void storeMat(Pack<kWideLanes> (&to)[9], int lane, const Mat3& m) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) to[3 * i + j][lane] = m(i, j);
+}
+Mat3 loadMat(const Pack<kWideLanes> (&from)[9], int lane) {
+    Mat3 m;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m(i, j) = from[3 * i + j][lane];
+    return m;
 }
 
-// The block's impulse: the anchors' relative velocity to the bias, softened (chapter 8's
-// solveJointRows).
-void solveBlock(PackedPointBlock& block, SolverBodyState* states, bool relax) {
-    const Vec3 relative = anchorsRate(block, states);
-    Vec3 bias = block.bias;
-    for (int axis = 0; axis < 3; ++axis)
-        if (relax && block.fedBack[axis]) bias[axis] = 0;
-    const Softness soft = relax && block.fedBack[0] ? Softness{} : block.soft;
-    const Vec3 impulse = soft.massScale * (block.mass * (bias - relative)) - soft.impulseScale * block.impulse;
-    block.impulse += impulse;
-    push(states, block.slotA, -block.inverseMassA * impulse, -(block.inverseInertiaA * block.armA.cross(impulse)));
-    push(states, block.slotB, block.inverseMassB * impulse, block.inverseInertiaB * block.armB.cross(impulse));
+void storeRow(JointRowLanes& to, int lane, const PackedJointRow& row, bool keepable) {
+    storeVec(to.linearA, lane, row.linearA);
+    storeVec(to.angularA, lane, row.angularA);
+    storeVec(to.linearB, lane, row.linearB);
+    storeVec(to.angularB, lane, row.angularB);
+    storeVec(to.moveLinearA, lane, row.moveLinearA);
+    storeVec(to.moveAngularA, lane, row.moveAngularA);
+    storeVec(to.moveLinearB, lane, row.moveLinearB);
+    storeVec(to.moveAngularB, lane, row.moveAngularB);
+    to.effectiveMass[lane] = row.effectiveMass;
+    to.bias[lane] = row.bias;
+    to.lower[lane] = row.lower;
+    to.upper[lane] = row.upper;
+    to.impulse[lane] = row.impulse;
+    to.error[lane] = row.error;
+    to.biasRate[lane] = row.soft.biasRate;
+    to.massScale[lane] = row.soft.massScale;
+    to.impulseScale[lane] = row.soft.impulseScale;
+    to.fedBack[lane] = row.fedBack ? 1 : 0;
+    to.advances[lane] = keepable && row.kind != JointRowKind::Free ? 1 : 0;  // a motor's bias is a speed
+    to.slot[lane] = row.slot;
+    to.kind[lane] = row.kind;
+    to.turnOnly[lane] = row.turnOnly;
 }
 
-// [ch11-packed-sweep]
-// How fast the row's C changes: J v (a turn-only row without its zero linear part).
-Real rowRate(const PackedJointRow& row, const SolverBodyState* states) {
-    const SolverBodyState& a = states[row.slotA];
-    const SolverBodyState& b = states[row.slotB];
-    if (row.turnOnly) return row.angularA.dot(angularOf(a)) + row.angularB.dot(angularOf(b));
-    return row.linearA.dot(linearOf(a)) + row.angularA.dot(angularOf(a)) + row.linearB.dot(linearOf(b)) +
-           row.angularB.dot(angularOf(b));
+PackedJointRow loadRow(const JointRowLanes& from, int lane) {
+    PackedJointRow row;
+    row.linearA = loadVec(from.linearA, lane);
+    row.angularA = loadVec(from.angularA, lane);
+    row.linearB = loadVec(from.linearB, lane);
+    row.angularB = loadVec(from.angularB, lane);
+    row.moveLinearA = loadVec(from.moveLinearA, lane);
+    row.moveAngularA = loadVec(from.moveAngularA, lane);
+    row.moveLinearB = loadVec(from.moveLinearB, lane);
+    row.moveAngularB = loadVec(from.moveAngularB, lane);
+    row.effectiveMass = from.effectiveMass[lane];
+    row.bias = from.bias[lane];
+    row.lower = from.lower[lane];
+    row.upper = from.upper[lane];
+    row.impulse = from.impulse[lane];
+    row.error = from.error[lane];
+    row.soft = Softness{from.biasRate[lane], from.massScale[lane], from.impulseScale[lane]};
+    row.fedBack = from.fedBack[lane] != 0;
+    row.slot = from.slot[lane];
+    row.kind = from.kind[lane];
+    row.turnOnly = from.turnOnly[lane];
+    return row;
 }
 
-void solveRow(PackedJointRow& row, SolverBodyState* states, bool relax) {
-    const Real velocity = rowRate(row, states);
-    const bool plain = relax && row.fedBack;  // the relax pass: no bias, rigid
-    const Softness soft = plain ? Softness{} : row.soft;
-    const Real bias = plain ? Real(0) : row.bias;
-    const Real previous = row.impulse;
-    const Real increment = soft.massScale * row.effectiveMass * (bias - velocity) - soft.impulseScale * previous;
-    row.impulse = std::clamp(previous + increment, row.lower, row.upper);
-    pushRow(row, row.impulse - previous, states);
+void storeBlock(JointBlockLanes& to, int lane, const PackedPointBlock& block) {
+    storeVec(to.armA, lane, block.armA);
+    storeVec(to.armB, lane, block.armB);
+    storeMat(to.mass, lane, block.mass);
+    to.inverseMassA[lane] = block.inverseMassA;
+    to.inverseMassB[lane] = block.inverseMassB;
+    storeMat(to.inverseInertiaA, lane, block.inverseInertiaA);
+    storeMat(to.inverseInertiaB, lane, block.inverseInertiaB);
+    storeVec(to.bias, lane, block.bias);
+    storeVec(to.impulse, lane, block.impulse);
+    storeVec(to.error, lane, block.error);
+    to.biasRate[lane] = block.soft.biasRate;
+    to.massScale[lane] = block.soft.massScale;
+    to.impulseScale[lane] = block.soft.impulseScale;
+    for (int axis = 0; axis < 3; ++axis) to.fedBack[axis][lane] = block.fedBack[axis] ? 1 : 0;
+    to.present[lane] = 1;
 }
-// [ch11-packed-sweep]
+
+// Every field of the lane zero: no mass, no Jacobian, no impulse; the sweeps change nothing by it.
+void zeroRow(JointRowLanes& to, int lane) {
+    storeRow(to, lane, PackedJointRow{}, false);
+    to.massScale[lane] = 0;
+}
+void zeroBlock(JointBlockLanes& to, int lane) {
+    storeBlock(to, lane, PackedPointBlock{});
+    to.massScale[lane] = 0;
+    to.present[lane] = 0;
+}
 
 }  // namespace
 
-void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable) {
+// [ch11-joint-groups]
+void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable, int slotA, int slotB) {
+    const auto last = [&](int slot) -> int& {
+        if (packed.lastGroupOfSlot.size() <= static_cast<std::size_t>(slot))
+            packed.lastGroupOfSlot.resize(static_cast<std::size_t>(slot) + 1, -1);
+        return packed.lastGroupOfSlot[static_cast<std::size_t>(slot)];
+    };
+    // After every group holding an earlier joint of either moving body (slot 0 does not move, and
+    // any number of lanes may read it), in the first such group with a free lane.
+    int g = 0;
+    if (slotA != 0) g = std::max(g, last(slotA) + 1);
+    if (slotB != 0) g = std::max(g, last(slotB) + 1);
+    while (g < packed.groupCount && packed.groups[static_cast<std::size_t>(g)].lanes == kWideLanes) ++g;
+    if (g == packed.groupCount) {
+        if (packed.groups.size() <= static_cast<std::size_t>(g)) packed.groups.emplace_back();
+        JointLaneGroup& fresh = packed.groups[static_cast<std::size_t>(g)];
+        fresh.lanes = 0;
+        fresh.blocks = false;
+        fresh.rowCount = 0;
+        fresh.rowsInUse = 0;
+        for (int lane = 0; lane < kWideLanes; ++lane) fresh.slotA[lane] = fresh.slotB[lane] = 0;
+        fresh.block = JointBlockLanes{};  // every lane zero: no block
+
+        ++packed.groupCount;
+    }
+    JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
     PackedJoint entry;
     entry.joint = joint;
     entry.keepable = keepable;
-    entry.firstRow = packed.rowsReserved;
+    entry.group = g;
+    entry.lane = group.lanes++;
     entry.rowRoom = rows;
-    packed.rowsReserved += rows;
-    if (packed.rows.size() < static_cast<std::size_t>(packed.rowsReserved))
-        packed.rows.resize(static_cast<std::size_t>(packed.rowsReserved));
-    if (block) {
-        entry.blockRoom = packed.blocksReserved++;
-        if (packed.blocks.size() < static_cast<std::size_t>(packed.blocksReserved))
-            packed.blocks.resize(static_cast<std::size_t>(packed.blocksReserved));
+    entry.blockRoom = block;
+    group.slotA[entry.lane] = slotA;
+    group.slotB[entry.lane] = slotB;
+    group.blocks = group.blocks || block;
+    if (rows > group.rowCount) {  // room only: a row is zeroed when a lane first writes it (rowToWrite)
+        if (group.rows.size() < static_cast<std::size_t>(rows)) group.rows.resize(static_cast<std::size_t>(rows));
+        group.rowCount = rows;
     }
+    if (slotA != 0) last(slotA) = g;
+    if (slotB != 0) last(slotB) = g;
     packed.joints.push_back(entry);
 }
+// [ch11-joint-groups]
+
+PackedJointRow packedRowOf(const PackedJointRows& packed, int entry, int k) {
+    const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(joint.group)];
+    PackedJointRow row = loadRow(group.rows[static_cast<std::size_t>(k)], joint.lane);
+    row.slotA = group.slotA[joint.lane];
+    row.slotB = group.slotB[joint.lane];
+    return row;
+}
+
+void storePackedRow(PackedJointRows& packed, int entry, int k, const PackedJointRow& row) {
+    const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    storeRow(packed.groups[static_cast<std::size_t>(joint.group)].rows[static_cast<std::size_t>(k)], joint.lane, row,
+             joint.keepable);
+}
+
+PackedPointBlock packedBlockOf(const PackedJointRows& packed, int entry) {
+    const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(joint.group)];
+    const JointBlockLanes& from = group.block;
+    const int lane = joint.lane;
+    PackedPointBlock block;
+    block.slotA = group.slotA[lane];
+    block.slotB = group.slotB[lane];
+    block.armA = loadVec(from.armA, lane);
+    block.armB = loadVec(from.armB, lane);
+    block.mass = loadMat(from.mass, lane);
+    block.inverseMassA = from.inverseMassA[lane];
+    block.inverseMassB = from.inverseMassB[lane];
+    block.inverseInertiaA = loadMat(from.inverseInertiaA, lane);
+    block.inverseInertiaB = loadMat(from.inverseInertiaB, lane);
+    block.bias = loadVec(from.bias, lane);
+    block.impulse = loadVec(from.impulse, lane);
+    block.error = loadVec(from.error, lane);
+    block.soft = Softness{from.biasRate[lane], from.massScale[lane], from.impulseScale[lane]};
+    for (int axis = 0; axis < 3; ++axis) block.fedBack[axis] = from.fedBack[axis][lane] != 0;
+    return block;
+}
+
+namespace {
+
+// Row k of the group, for a lane to write: the rows past those in use hold the last frame's, so the
+// sweeps' reach grows over zeroed rows.
+JointRowLanes& rowToWrite(JointLaneGroup& group, int k) {
+    for (; group.rowsInUse <= k; ++group.rowsInUse) group.rows[static_cast<std::size_t>(group.rowsInUse)] = JointRowLanes{};
+    return group.rows[static_cast<std::size_t>(k)];
+}
+
+// Joint `entry`'s rows from `from` on, and its block unless `keepBlock`, zero: what a joint built
+// again with fewer rows, or left out, leaves behind.
+void clearFrom(PackedJointRows& packed, int entry, int from, bool keepBlock) {
+    PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    JointLaneGroup& group = packed.groups[static_cast<std::size_t>(joint.group)];
+    for (int k = from; k < joint.rowCount; ++k) zeroRow(group.rows[static_cast<std::size_t>(k)], joint.lane);
+    if (joint.hasBlock && !keepBlock) zeroBlock(group.block, joint.lane);
+}
+
+}  // namespace
 
 bool writePackedJoint(const JointRowBatch& batch, const std::vector<SolverBody>& bodies,
                       const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry) {
     PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
-    emptyPackedJoint(packed, entry);
     const int begin = batch.set.pointBlock ? 3 : 0;
-    if (batch.count - begin > joint.rowRoom || (batch.set.pointBlock && joint.blockRoom < 0)) return false;
-    joint.slotCount = batch.count;
-    if (batch.set.pointBlock) {
-        joint.block = joint.blockRoom;
-        packBlock(batch, bodies, slotOfEntry, packed.blocks[static_cast<std::size_t>(joint.block)]);
+    if (batch.count - begin > joint.rowRoom || (batch.set.pointBlock && !joint.blockRoom)) {
+        emptyPackedJoint(packed, entry);
+        return false;
     }
+    JointLaneGroup& group = packed.groups[static_cast<std::size_t>(joint.group)];
+    const int rowsBefore = joint.rowCount;
+    const bool blockBefore = joint.hasBlock;
+    joint.slotCount = batch.count;
+    joint.hasBlock = batch.set.pointBlock;
+    if (joint.hasBlock) {
+        PackedPointBlock block;
+        packBlock(batch, bodies, slotOfEntry, block);
+        storeBlock(group.block, joint.lane, block);
+    } else if (blockBefore) {
+        zeroBlock(group.block, joint.lane);
+    }
+    joint.rowCount = 0;
     for (int slot = begin; slot < batch.count; ++slot) {
         if (!batch.used[slot]) continue;
-        PackedJointRow& row = packed.rows[static_cast<std::size_t>(joint.firstRow + joint.rowCount)];
+        PackedJointRow row;
         packRow(batch.rows[slot], batch.softness[slot], batch.fedBack[slot], batch.kind[slot], batch.error[slot], slot,
                 bodies, slotOfEntry, row);
-        if (row.effectiveMass == 0) continue;  // chapter 8's sweep skips it too: the next row overwrites it
+        if (row.effectiveMass == 0) continue;  // chapter 8's sweep skips it too
+        storeRow(rowToWrite(group, joint.rowCount), joint.lane, row, joint.keepable);
         ++joint.rowCount;
     }
+    for (int k = joint.rowCount; k < rowsBefore; ++k) zeroRow(group.rows[static_cast<std::size_t>(k)], joint.lane);
     return true;
 }
 
 // [ch11-distance-row]
 bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int entryA, int entryB, Real h,
-                        const JointFeedback& feedback, Real carried, const std::vector<SolverBody>& bodies,
+                        const JointFeedback& feedback, Real& carried, const std::vector<SolverBody>& bodies,
                         const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry) {
     PackedJoint& packedJoint = packed.joints[static_cast<std::size_t>(entry)];
     emptyPackedJoint(packed, entry);
     if (packedJoint.rowRoom < 1) return false;
-    PackedJointRow& row = packed.rows[static_cast<std::size_t>(packedJoint.firstRow)];
+    PackedJointRow row;
     // Chapter 8's distance row: along the line between the anchors, J as chapter 4's pointVelocityRow.
     const DistanceLine line = distanceLine(joint, frame);
     const Vec3& direction = line.direction;
@@ -219,82 +348,61 @@ bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int ent
     row.slotB = slotOfEntry[static_cast<std::size_t>(entryB)];
     setMoves(bodies[static_cast<std::size_t>(entryA)], bodies[static_cast<std::size_t>(entryB)], row);
     packedJoint.slotCount = 1;
-    packedJoint.rowCount = row.effectiveMass == 0 ? 0 : 1;  // chapter 8's sweep skips a row without mass too
+    carried = row.impulse;
+    if (row.effectiveMass == 0) return true;  // chapter 8's sweep skips a row without mass too
+    storeRow(rowToWrite(packed.groups[static_cast<std::size_t>(packedJoint.group)], 0), packedJoint.lane, row,
+             packedJoint.keepable);
+    packedJoint.rowCount = 1;
     return true;
 }
 // [ch11-distance-row]
 
 void emptyPackedJoint(PackedJointRows& packed, int entry) {
+    clearFrom(packed, entry, 0, /*keepBlock=*/false);
     PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
-    joint.block = -1;
+    joint.hasBlock = false;
     joint.rowCount = 0;
     joint.slotCount = 0;
 }
 
-// [ch11-advance-errors]
-void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
-    for (const PackedJoint& joint : packed.joints) {
-        if (!joint.keepable) continue;  // built again where the bodies stand next substep
-        if (joint.block >= 0) {
-            PackedPointBlock& block = packed.blocks[static_cast<std::size_t>(joint.block)];
-            block.error += h * anchorsRate(block, states);
-        }
-        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
-            PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
-            if (row.kind != JointRowKind::Free) row.error += h * rowRate(row, states);  // a motor's bias is a speed
-        }
-    }
-}
-// [ch11-advance-errors]
-
 void refreshPackedFeedback(PackedJointRows& packed, int entry, const JointFeedback& feedback, Real h) {
     const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
-    if (joint.block >= 0) {
-        PackedPointBlock& block = packed.blocks[static_cast<std::size_t>(joint.block)];
-        for (int axis = 0; axis < 3; ++axis)
-            jointRowFeedback(block.bias[axis], block.soft, block.fedBack[axis], JointRowKind::Equality,
-                             block.error[axis], /*movesPoints=*/true, feedback, h);
-    }
-    for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
-        PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
-        jointRowFeedback(row.bias, row.soft, row.fedBack, row.kind, row.error, !row.turnOnly, feedback, h);
-    }
-}
-
-void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
-    // Every block first, then every row, each in joint order.
-    for (const PackedJoint& joint : packed.joints) {
-        if (joint.block < 0) continue;
-        const PackedPointBlock& block = packed.blocks[static_cast<std::size_t>(joint.block)];
-        const Vec3& impulse = block.impulse;
-        push(states, block.slotA, -block.inverseMassA * impulse, -(block.inverseInertiaA * block.armA.cross(impulse)));
-        push(states, block.slotB, block.inverseMassB * impulse, block.inverseInertiaB * block.armB.cross(impulse));
-    }
-    for (const PackedJoint& joint : packed.joints)
-        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
-            const PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
-            if (row.impulse != 0) pushRow(row, row.impulse, states);
+    JointLaneGroup& group = packed.groups[static_cast<std::size_t>(joint.group)];
+    const int lane = joint.lane;
+    if (joint.hasBlock) {
+        JointBlockLanes& block = group.block;
+        Softness soft{block.biasRate[lane], block.massScale[lane], block.impulseScale[lane]};
+        for (int axis = 0; axis < 3; ++axis) {
+            bool fedBack = block.fedBack[axis][lane] != 0;
+            jointRowFeedback(at(block.bias, axis, lane), soft, fedBack, JointRowKind::Equality, at(block.error, axis, lane),
+                             /*movesPoints=*/true, feedback, h);
+            block.fedBack[axis][lane] = fedBack ? 1 : 0;
         }
-}
-
-void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
-    for (const PackedJoint& joint : packed.joints) {
-        if (joint.block >= 0) solveBlock(packed.blocks[static_cast<std::size_t>(joint.block)], states, relax);
-        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i)
-            solveRow(packed.rows[static_cast<std::size_t>(i)], states, relax);
+        block.biasRate[lane] = soft.biasRate;
+        block.massScale[lane] = soft.massScale;
+        block.impulseScale[lane] = soft.impulseScale;
+    }
+    for (int k = 0; k < joint.rowCount; ++k) {
+        JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
+        Softness soft{row.biasRate[lane], row.massScale[lane], row.impulseScale[lane]};
+        bool fedBack = row.fedBack[lane] != 0;
+        jointRowFeedback(row.bias[lane], soft, fedBack, row.kind[lane], row.error[lane], !row.turnOnly[lane], feedback, h);
+        row.fedBack[lane] = fedBack ? 1 : 0;
+        row.biasRate[lane] = soft.biasRate;
+        row.massScale[lane] = soft.massScale;
+        row.impulseScale[lane] = soft.impulseScale;
     }
 }
 
 void keepPackedImpulsesOf(const PackedJointRows& packed, int entry, std::vector<JointImpulses>& carried) {
     const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(joint.group)];
     JointImpulses& impulses = carried[static_cast<std::size_t>(joint.joint)];
-    if (joint.block >= 0) {
-        const Vec3& impulse = packed.blocks[static_cast<std::size_t>(joint.block)].impulse;
-        for (int axis = 0; axis < 3; ++axis) impulses.slot[axis] = impulse[axis];
-    }
-    for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) {
-        const PackedJointRow& row = packed.rows[static_cast<std::size_t>(i)];
-        impulses.slot[row.slot] = row.impulse;
+    if (joint.hasBlock)
+        for (int axis = 0; axis < 3; ++axis) impulses.slot[axis] = at(group.block.impulse, axis, joint.lane);
+    for (int k = 0; k < joint.rowCount; ++k) {
+        const JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
+        impulses.slot[row.slot[joint.lane]] = row.impulse[joint.lane];
     }
 }
 
@@ -305,8 +413,10 @@ void keepPackedImpulses(const PackedJointRows& packed, std::vector<JointImpulses
 
 void resetPackedImpulses(PackedJointRows& packed, std::vector<JointImpulses>& carried) {
     for (const PackedJoint& joint : packed.joints) {
-        if (joint.block >= 0) packed.blocks[static_cast<std::size_t>(joint.block)].impulse = Vec3::Zero();
-        for (int i = joint.firstRow; i < joint.firstRow + joint.rowCount; ++i) packed.rows[static_cast<std::size_t>(i)].impulse = 0;
+        JointLaneGroup& group = packed.groups[static_cast<std::size_t>(joint.group)];
+        if (joint.hasBlock)
+            for (int axis = 0; axis < 3; ++axis) at(group.block.impulse, axis, joint.lane) = 0;
+        for (int k = 0; k < joint.rowCount; ++k) group.rows[static_cast<std::size_t>(k)].impulse[joint.lane] = 0;
         for (int slot = 0; slot < joint.slotCount; ++slot) carried[static_cast<std::size_t>(joint.joint)].slot[slot] = 0;
     }
 }

@@ -45,37 +45,92 @@ struct PackedPointBlock {
     Softness soft;
 };
 
-/// One joint: its block (if any), then its rows, in chapter 8's order. Each joint has its own
-/// room in the arrays for the whole frame (rowRoom rows from firstRow, and blockRoom), so a joint
-/// built again mid-frame writes over its own rows and a kept one stays where it is.
+/// Row k of up to kWideLanes joints, one joint per lane: what the sweeps read and write, laid out
+/// as the contacts' blocks are, so that one stream of SIMD instructions sweeps a row of every
+/// joint of a group at once. A lane without such a row holds zeros: no Jacobian, no mass, no
+/// impulse, so its sweep changes nothing.
+struct JointRowLanes {
+    PackVec3<kWideLanes> linearA, angularA, linearB, angularB;                  // J
+    PackVec3<kWideLanes> moveLinearA, moveAngularA, moveLinearB, moveAngularB;  // M^-1 J^T
+    Pack<kWideLanes> effectiveMass, bias, lower, upper, impulse, error;
+    Pack<kWideLanes> biasRate, massScale, impulseScale;  // the row's Softness
+    Pack<kWideLanes> fedBack;   // 1 where the relax pass takes the bias and softness out
+    Pack<kWideLanes> advances;  // 1 where the substeps move the error (advancePackedErrors)
+    // What only the scalar work per joint reads (feedback, impulses back):
+    int slot[kWideLanes] = {};
+    JointRowKind kind[kWideLanes] = {};
+    bool turnOnly[kWideLanes] = {};
+};
+
+/// The point blocks of a group's joints, one per lane (zeros where a joint has none).
+struct JointBlockLanes {
+    PackVec3<kWideLanes> armA, armB;
+    Pack<kWideLanes> mass[9];  // K^-1, row by row
+    Pack<kWideLanes> inverseMassA, inverseMassB;
+    Pack<kWideLanes> inverseInertiaA[9], inverseInertiaB[9];  // row by row (as the frame made them)
+    PackVec3<kWideLanes> bias, impulse, error;
+    Pack<kWideLanes> biasRate, massScale, impulseScale;
+    Pack<kWideLanes> fedBack[3];
+    Pack<kWideLanes> present;  // 1 where the lane's joint has a block (the substeps move its error)
+};
+
+// [ch11-joint-lanes]
+/// Up to kWideLanes joints that share no moving body, swept side by side. Groups are laid out in
+/// the sweep's order of joints so that every body meets its joints in that order (a joint goes
+/// into the first group after every group that holds one of its bodies' earlier joints): the
+/// sweep over the groups then gives the same numbers as the sweep joint after joint.
+struct JointLaneGroup {
+    int slotA[kWideLanes] = {}, slotB[kWideLanes] = {};  // the bodies' solver slots (0: an empty lane)
+    int lanes = 0;       // lanes holding a joint
+    bool blocks = false;  // some lane has a point block
+    int rowCount = 0;    // rows with room: the most any lane's joint reserved
+    int rowsInUse = 0;   // rows the sweeps take: the most any lane's joint has written this frame
+    JointBlockLanes block;
+    std::vector<JointRowLanes> rows;
+};
+// [ch11-joint-lanes]
+
+/// One joint: its group and lane, whether it has a block, its rows there, in chapter 8's order.
+/// Each joint keeps its lane and room for the whole frame, so a joint built again mid-frame
+/// writes over its own rows and a kept one stays where it is.
 struct PackedJoint {
     int joint = 0;                // the caller's index of the joint (its carried impulses)
     int slotCount = 0;            // the joint's slots, used or not
-    int block = -1;               // into PackedJointRows::blocks, or -1 (none this substep)
-    int firstRow = 0, rowCount = 0;  // into PackedJointRows::rows
-    int rowRoom = 0;              // rows reserved from firstRow
-    int blockRoom = -1;           // the block reserved for it, or -1
+    bool hasBlock = false;        // its point block is in use this substep
+    bool blockRoom = false;       // a point block is reserved for it
+    int rowCount = 0;             // rows in use, from row 0 of its group
+    int rowRoom = 0;              // rows reserved
+    int group = 0, lane = 0;      // into PackedJointRows::groups
     bool keepable = true;         // its rows may be kept to the next substep (else built every substep)
 };
 
 struct PackedJointRows {
-    /// No joints; the rows and blocks keep their room (a frame lays them out again over the last
-    /// frame's, and only its joints' ranges are read).
+    /// No joints; the groups keep their room (a frame lays them out again over the last frame's).
     void clear() {
         joints.clear();
-        rowsReserved = 0;
-        blocksReserved = 0;
+        groupCount = 0;
+        lastGroupOfSlot.clear();
     }
     std::vector<PackedJoint> joints;
-    std::vector<PackedPointBlock> blocks;  // the first blocksReserved are the joints'
-    std::vector<PackedJointRow> rows;      // the first rowsReserved are the joints'
-    int rowsReserved = 0, blocksReserved = 0;
+    std::vector<JointLaneGroup> groups;  // the first groupCount are this frame's
+    int groupCount = 0;
+    std::vector<int> lastGroupOfSlot;    // per solver slot: the last group holding one of its joints
 };
 
-/// Reserves room for one more joint (`joint`, the caller's index of it): `rows` rows and, with
-/// `block`, a point block, empty until writePackedJoint fills them. Its entry is the next one.
-/// `keepable` false: its rows are built every substep, so advancePackedErrors leaves them be.
-void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable);
+/// Reserves room for one more joint (`joint`, the caller's index of it) between the solver slots
+/// `slotA` and `slotB`: `rows` rows and, with `block`, a point block, empty until writePackedJoint
+/// fills them, in the first group after every group holding a joint of either body. Its entry is
+/// the next one. `keepable` false: its rows are built every substep, so advancePackedErrors leaves
+/// them be.
+void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable, int slotA = 0,
+                        int slotB = 0);
+
+/// Row k of joint `entry` as one row (what the sweeps read of it).
+PackedJointRow packedRowOf(const PackedJointRows& packed, int entry, int k);
+/// Writes row k of joint `entry`.
+void storePackedRow(PackedJointRows& packed, int entry, int k, const PackedJointRow& row);
+/// Joint `entry`'s point block (zeros if it has none).
+PackedPointBlock packedBlockOf(const PackedJointRows& packed, int entry);
 
 /// Writes one joint's rows (`batch`, built over the solver bodies `bodies`, entries `slotOfEntry`
 /// in the solve's slots) into the room of `entry`, each row's M^-1 J^T and effective mass made
@@ -85,11 +140,11 @@ bool writePackedJoint(const JointRowBatch& batch, const std::vector<SolverBody>&
 
 /// Joint `entry`'s one row for the distance joint `joint` where `frame` (chapter 8's jointRowFrame)
 /// has its anchors, between the entries `entryA` and `entryB` of `bodies`, its impulse `carried`
-/// clamped to its bounds: the numbers buildJointRowBatch and writePackedJoint make, written straight
+/// clamped to its bounds (and written back so): the numbers buildJointRowBatch and writePackedJoint make, written straight
 /// into the room (a swinging chain builds every joint every substep, and the rows in between were
 /// most of that work). False, the entry left empty, if the row came out non-finite or has no room.
 bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int entryA, int entryB, Real h,
-                        const JointFeedback& feedback, Real carried, const std::vector<SolverBody>& bodies,
+                        const JointFeedback& feedback, Real& carried, const std::vector<SolverBody>& bodies,
                         const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry);
 
 /// Leaves joint `entry` out of the sweeps (no block, no rows) until it is written again.
@@ -106,7 +161,8 @@ void refreshPackedFeedback(PackedJointRows& packed, int entry, const JointFeedba
 /// The carried impulses applied to the bodies.
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states);
 
-/// One Gauss-Seidel sweep, joint after joint: biased, or (`relax`) without the feedback.
+/// One Gauss-Seidel sweep, joint after joint (group after group, the same numbers): biased, or
+/// (`relax`) without the feedback.
 void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax);
 
 /// The sweeps' impulses back into the joints' carried impulses (`carried`, by PackedJoint::joint);

@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
 #include <random>
 
 using namespace stepwise;
@@ -52,12 +53,14 @@ JointRowBatch keptTestFresh(const World& world, const SolverBodies& bodies, Join
     return batch;
 }
 
-/// The packed row of `slot` in joint entry `entry`, or nullptr.
-const PackedJointRow* keptTestRow(const PackedJointRows& packed, int entry, int slot) {
+/// The packed row of `slot` in joint entry `entry`, if it has one.
+std::optional<PackedJointRow> keptTestRow(const PackedJointRows& packed, int entry, int slot) {
     const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
-    for (int r = joint.firstRow; r < joint.firstRow + joint.rowCount; ++r)
-        if (packed.rows[static_cast<std::size_t>(r)].slot == slot) return &packed.rows[static_cast<std::size_t>(r)];
-    return nullptr;
+    for (int k = 0; k < joint.rowCount; ++k) {
+        const PackedJointRow row = packedRowOf(packed, entry, k);
+        if (row.slot == slot) return row;
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -89,7 +92,7 @@ TEST_CASE("a point joint whose bodies barely turn keeps its rows, its errors mov
                     // Kept or built again, its error is the line's own length against its rest length.
                     ++distances;
                     const JointRowBatch fresh = keptTestFresh(world, bodies, pass, i, h);
-                    const PackedJointRow* row = keptTestRow(pass.packed, entry, 0);
+                    const std::optional<PackedJointRow> row = keptTestRow(pass.packed, entry, 0);
                     if (row && fresh.used[0]) CHECK(std::abs(row->error - fresh.error[0]) <= Real(1e-6));
                 }
                 if (!point) continue;
@@ -98,15 +101,15 @@ TEST_CASE("a point joint whose bodies barely turn keeps its rows, its errors mov
                 // Second order in the turn, a few micrometres (or microradians) here.
                 const Real tolerance = Real(2e-5);
                 const PackedJoint& packedJoint = pass.packed.joints[static_cast<std::size_t>(entry)];
-                if (packedJoint.block >= 0) {
-                    const Vec3& gap = pass.packed.blocks[static_cast<std::size_t>(packedJoint.block)].error;
+                if (packedJoint.hasBlock) {
+                    const Vec3 gap = packedBlockOf(pass.packed, entry).error;
                     for (int axis = 0; axis < 3; ++axis) CHECK(std::abs(gap[axis] - fresh.error[axis]) <= tolerance);
                 }
                 // The turn rows off a hinge's axis are measured along directions made from the
                 // axis, which may differ between builds: their pair is compared as a length.
                 Real keptAcross = 0, freshAcross = 0;
                 for (int slot = 3; slot < fresh.count; ++slot) {
-                    const PackedJointRow* row = keptTestRow(pass.packed, entry, slot);
+                    const std::optional<PackedJointRow> row = keptTestRow(pass.packed, entry, slot);
                     if (!row || !fresh.used[slot]) continue;
                     if (joint.type == JointType::Hinge && slot <= 4) {
                         keptAcross += row->error * row->error;

@@ -1,0 +1,228 @@
+// The joints' three sweeps (warm start, biased pass, relax pass) and the errors' advance, a group
+// of joints at a time, one joint per lane (packed_joint_rows.h). Built for the wide solve's
+// instruction set (chapters/CMakeLists.txt). Every lane does chapter 8's arithmetic in the order
+// the scalar rows did it, sums of three products as Eigen rounds them (ch11-eigen-order below), so
+// the groups give the same numbers as a sweep joint after joint.
+#include "11_wide_solve/packed_joint_rows.h"
+
+#include "11_wide_solve/body_pack.h"
+
+namespace stepwise {
+
+namespace {
+
+constexpr int N = kWideLanes;
+using Lanes = Pack<N>;
+using LaneVec = PackVec3<N>;
+
+/// The velocities of one side's body in every lane (and, in the AVX2 float build, the two floats
+/// that share their row of the state, carried back as they were read).
+struct LaneBodies {
+    LaneVec linear, angular;
+    Lanes rest[2];
+};
+
+// [ch11-joint-lane-gather]
+#if defined(__AVX2__) && !defined(STEPWISE_DOUBLE) && STEPWISE_WIDE_BYTES == 32
+// Eight states' first rows (v, w, two floats of the delta position) loaded whole and transposed,
+// as the contacts gather theirs (body_pack_avx2.h).
+LaneBodies gatherVelocities(const SolverBodyState* states, const int* slots) {
+    __m256 row[8];
+    for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
+    transpose8(row);
+    LaneBodies body;
+    Lanes* fields[8] = {&body.linear.x,  &body.linear.y,  &body.linear.z, &body.angular.x,
+                        &body.angular.y, &body.angular.z, &body.rest[0],  &body.rest[1]};
+    for (int k = 0; k < 8; ++k) _mm256_store_ps(fields[k]->data(), row[k]);
+    return body;
+}
+
+// Slot 0 is never written: its lanes pushed nothing, and several lanes may read it.
+void scatterVelocities(SolverBodyState* states, const int* slots, const LaneBodies& body) {
+    __m256 row[8] = {_mm256_load_ps(body.linear.x.data()),  _mm256_load_ps(body.linear.y.data()),
+                     _mm256_load_ps(body.linear.z.data()),  _mm256_load_ps(body.angular.x.data()),
+                     _mm256_load_ps(body.angular.y.data()), _mm256_load_ps(body.angular.z.data()),
+                     _mm256_load_ps(body.rest[0].data()),   _mm256_load_ps(body.rest[1].data())};
+    transpose8(row);
+    for (int i = 0; i < 8; ++i)
+        if (slots[i] != 0) _mm256_store_ps(reinterpret_cast<float*>(&states[slots[i]]), row[i]);
+}
+#else
+LaneBodies gatherVelocities(const SolverBodyState* states, const int* slots) {
+    LaneBodies body;
+    for (int i = 0; i < N; ++i) {
+        const SolverBodyState& s = states[slots[i]];
+        body.linear.x[i] = s.linearVelocity[0];
+        body.linear.y[i] = s.linearVelocity[1];
+        body.linear.z[i] = s.linearVelocity[2];
+        body.angular.x[i] = s.angularVelocity[0];
+        body.angular.y[i] = s.angularVelocity[1];
+        body.angular.z[i] = s.angularVelocity[2];
+    }
+    return body;
+}
+
+// Slot 0 is never written: its lanes pushed nothing, and several lanes may read it.
+void scatterVelocities(SolverBodyState* states, const int* slots, const LaneBodies& body) {
+    for (int i = 0; i < N; ++i) {
+        if (slots[i] == 0) continue;
+        SolverBodyState& s = states[slots[i]];
+        s.linearVelocity[0] = body.linear.x[i];
+        s.linearVelocity[1] = body.linear.y[i];
+        s.linearVelocity[2] = body.linear.z[i];
+        s.angularVelocity[0] = body.angular.x[i];
+        s.angularVelocity[1] = body.angular.y[i];
+        s.angularVelocity[2] = body.angular.z[i];
+    }
+}
+#endif
+// [ch11-joint-lane-gather]
+
+// [ch11-eigen-order]
+// How Eigen rounds a 3-vector dot product and a 3x3 matrix times a vector, which the scalar sweep
+// used: with floats (four to an SSE register, so three do not fill one) every sum goes
+// x0 + (x1 + x2); with doubles (two to a register) the dot product and the matrix's first two rows
+// go (x0 + x1) + x2, its last row x0 + (x1 + x2). tests/ch11/joint_lanes_test.cpp holds the lanes
+// to the scalar sweep's bits.
+#if defined(STEPWISE_DOUBLE)
+Lanes dot3(const LaneVec& a, const LaneVec& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+LaneVec times(const Lanes (&m)[9], const LaneVec& v) {
+    return {(m[0] * v.x + m[1] * v.y) + m[2] * v.z, (m[3] * v.x + m[4] * v.y) + m[5] * v.z,
+            m[6] * v.x + (m[7] * v.y + m[8] * v.z)};
+}
+#else
+Lanes dot3(const LaneVec& a, const LaneVec& b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
+LaneVec times(const Lanes (&m)[9], const LaneVec& v) {
+    return {m[0] * v.x + (m[1] * v.y + m[2] * v.z), m[3] * v.x + (m[4] * v.y + m[5] * v.z),
+            m[6] * v.x + (m[7] * v.y + m[8] * v.z)};
+}
+#endif
+// [ch11-eigen-order]
+LaneVec negated(const LaneVec& v) { return {-v.x, -v.y, -v.z}; }
+
+// How fast the anchors part: B's anchor's velocity less A's (the point rows' J v).
+LaneVec anchorsRate(const JointBlockLanes& block, const LaneBodies& a, const LaneBodies& b) {
+    return ((b.linear + cross(b.angular, block.armB)) - a.linear) - cross(a.angular, block.armA);
+}
+
+// The block's impulse change into both bodies.
+void pushBlock(const JointBlockLanes& block, const LaneVec& impulse, LaneBodies& a, LaneBodies& b) {
+    a.linear = a.linear + (-block.inverseMassA) * impulse;
+    a.angular = a.angular + negated(times(block.inverseInertiaA, cross(block.armA, impulse)));
+    b.linear = b.linear + block.inverseMassB * impulse;
+    b.angular = b.angular + times(block.inverseInertiaB, cross(block.armB, impulse));
+}
+
+// How fast the row's C changes: J v.
+Lanes rowRate(const JointRowLanes& row, const LaneBodies& a, const LaneBodies& b) {
+    return ((dot3(row.linearA, a.linear) + dot3(row.angularA, a.angular)) + dot3(row.linearB, b.linear)) +
+           dot3(row.angularB, b.angular);
+}
+
+void pushRow(const JointRowLanes& row, const Lanes& applied, LaneBodies& a, LaneBodies& b) {
+    a.linear = a.linear + applied * row.moveLinearA;
+    a.angular = a.angular + applied * row.moveAngularA;
+    b.linear = b.linear + applied * row.moveLinearB;
+    b.angular = b.angular + applied * row.moveAngularB;
+}
+
+// [ch11-joint-lane-solve]
+// The block's impulse: the anchors' relative velocity to the bias, softened (chapter 8's
+// solveJointRows); the relax pass takes the bias and softness out of the rows fed back.
+void solveBlock(JointBlockLanes& block, bool relax, LaneBodies& a, LaneBodies& b) {
+    const LaneVec relative = anchorsRate(block, a, b);
+    LaneVec bias = block.bias;
+    Lanes massScale = block.massScale, impulseScale = block.impulseScale;
+    if (relax) {
+        const Lanes zero = Lanes::splat(0);
+        bias = {selectPositive(block.fedBack[0], zero, bias.x), selectPositive(block.fedBack[1], zero, bias.y),
+                selectPositive(block.fedBack[2], zero, bias.z)};
+        massScale = selectPositive(block.fedBack[0], Lanes::splat(1), massScale);
+        impulseScale = selectPositive(block.fedBack[0], zero, impulseScale);
+    }
+    // Eigen makes s (K^-1 v) as (K^-1 s) v: the scale goes into the matrix first.
+    Lanes scaledMass[9];
+    for (int k = 0; k < 9; ++k) scaledMass[k] = block.mass[k] * massScale;
+    const LaneVec impulse = times(scaledMass, bias - relative) - impulseScale * block.impulse;
+    block.impulse = block.impulse + impulse;
+    pushBlock(block, impulse, a, b);
+}
+
+void solveRow(JointRowLanes& row, bool relax, LaneBodies& a, LaneBodies& b) {
+    const Lanes velocity = rowRate(row, a, b);
+    Lanes bias = row.bias, massScale = row.massScale, impulseScale = row.impulseScale;
+    if (relax) {  // no bias, rigid
+        bias = selectPositive(row.fedBack, Lanes::splat(0), bias);
+        massScale = selectPositive(row.fedBack, Lanes::splat(1), massScale);
+        impulseScale = selectPositive(row.fedBack, Lanes::splat(0), impulseScale);
+    }
+    const Lanes previous = row.impulse;
+    const Lanes increment = massScale * row.effectiveMass * (bias - velocity) - impulseScale * previous;
+    // std::clamp as libstdc++ writes it: min(max(value, lower), upper).
+    const Lanes total = previous + increment;
+    row.impulse = min(row.upper, max(row.lower, total));
+    pushRow(row, row.impulse - previous, a, b);
+}
+// [ch11-joint-lane-solve]
+
+}  // namespace
+
+void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
+    // Every block first, then every row, each group in order: every body meets its joints' blocks
+    // and then their rows in the sweep's order of joints.
+    for (int g = 0; g < packed.groupCount; ++g) {
+        const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
+        if (!group.blocks) continue;
+        LaneBodies a = gatherVelocities(states, group.slotA), b = gatherVelocities(states, group.slotB);
+        pushBlock(group.block, group.block.impulse, a, b);
+        scatterVelocities(states, group.slotA, a);
+        scatterVelocities(states, group.slotB, b);
+    }
+    for (int g = 0; g < packed.groupCount; ++g) {
+        const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
+        if (group.rowsInUse == 0) continue;
+        LaneBodies a = gatherVelocities(states, group.slotA), b = gatherVelocities(states, group.slotB);
+        for (int k = 0; k < group.rowsInUse; ++k) {
+            const JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
+            pushRow(row, row.impulse, a, b);
+        }
+        scatterVelocities(states, group.slotA, a);
+        scatterVelocities(states, group.slotB, b);
+    }
+}
+
+// [ch11-packed-sweep]
+void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
+    for (int g = 0; g < packed.groupCount; ++g) {
+        JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
+        LaneBodies a = gatherVelocities(states, group.slotA), b = gatherVelocities(states, group.slotB);
+        if (group.blocks) solveBlock(group.block, relax, a, b);
+        for (int k = 0; k < group.rowsInUse; ++k) solveRow(group.rows[static_cast<std::size_t>(k)], relax, a, b);
+        scatterVelocities(states, group.slotA, a);
+        scatterVelocities(states, group.slotB, b);
+    }
+}
+// [ch11-packed-sweep]
+
+// [ch11-advance-errors]
+void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
+    const Lanes step = Lanes::splat(h);
+    for (int g = 0; g < packed.groupCount; ++g) {
+        JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
+        const LaneBodies a = gatherVelocities(states, group.slotA), b = gatherVelocities(states, group.slotB);
+        if (group.blocks) {
+            JointBlockLanes& block = group.block;
+            const LaneVec moved = block.error + step * anchorsRate(block, a, b);
+            block.error = {selectPositive(block.present, moved.x, block.error.x),
+                           selectPositive(block.present, moved.y, block.error.y),
+                           selectPositive(block.present, moved.z, block.error.z)};
+        }
+        for (int k = 0; k < group.rowsInUse; ++k) {
+            JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
+            row.error = selectPositive(row.advances, row.error + step * rowRate(row, a, b), row.error);
+        }
+    }
+}
+// [ch11-advance-errors]
+
+}  // namespace stepwise

@@ -1,0 +1,193 @@
+// The fast solve sweeps its joints a group at a time, one joint per lane (packed_joint_rows.h):
+// the joints of a group share no moving body, and every body meets its joints in the sweep's
+// order. The sweep over the groups must then give the same bits as the sweep joint after joint,
+// which this file writes out with Eigen, the rows read back one lane at a time.
+#include "08_joints/scenes.h"
+#include "11_wide_solve/joint_pass.h"
+#include "11_wide_solve/scenes.h"
+#include "11_wide_solve/solve_steps.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <random>
+
+using namespace stepwise;
+
+namespace {
+
+Vec3 lanesTestLinear(const SolverBodyState& s) { return Vec3(s.linearVelocity[0], s.linearVelocity[1], s.linearVelocity[2]); }
+Vec3 lanesTestAngular(const SolverBodyState& s) { return Vec3(s.angularVelocity[0], s.angularVelocity[1], s.angularVelocity[2]); }
+
+void lanesTestPush(std::vector<SolverBodyState>& states, int slot, const Vec3& linear, const Vec3& angular) {
+    if (slot == 0) return;
+    SolverBodyState& s = states[static_cast<std::size_t>(slot)];
+    for (int k = 0; k < 3; ++k) {
+        s.linearVelocity[k] += linear[k];
+        s.angularVelocity[k] += angular[k];
+    }
+}
+
+Vec3 lanesTestAnchorsRate(const PackedPointBlock& block, const std::vector<SolverBodyState>& states) {
+    const SolverBodyState& a = states[static_cast<std::size_t>(block.slotA)];
+    const SolverBodyState& b = states[static_cast<std::size_t>(block.slotB)];
+    return lanesTestLinear(b) + lanesTestAngular(b).cross(block.armB) - lanesTestLinear(a) - lanesTestAngular(a).cross(block.armA);
+}
+
+void lanesTestPushBlock(const PackedPointBlock& block, const Vec3& impulse, std::vector<SolverBodyState>& states) {
+    lanesTestPush(states, block.slotA, -block.inverseMassA * impulse, -(block.inverseInertiaA * block.armA.cross(impulse)));
+    lanesTestPush(states, block.slotB, block.inverseMassB * impulse, block.inverseInertiaB * block.armB.cross(impulse));
+}
+
+Real lanesTestRowRate(const PackedJointRow& row, const std::vector<SolverBodyState>& states) {
+    const SolverBodyState& a = states[static_cast<std::size_t>(row.slotA)];
+    const SolverBodyState& b = states[static_cast<std::size_t>(row.slotB)];
+    return row.linearA.dot(lanesTestLinear(a)) + row.angularA.dot(lanesTestAngular(a)) + row.linearB.dot(lanesTestLinear(b)) +
+           row.angularB.dot(lanesTestAngular(b));
+}
+
+void lanesTestPushRow(const PackedJointRow& row, Real applied, std::vector<SolverBodyState>& states) {
+    lanesTestPush(states, row.slotA, applied * row.moveLinearA, applied * row.moveAngularA);
+    lanesTestPush(states, row.slotB, applied * row.moveLinearB, applied * row.moveAngularB);
+}
+
+/// One joint's rows and block read back from the lanes.
+struct LanesTestJoint {
+    bool hasBlock = false;
+    PackedPointBlock block;
+    std::vector<PackedJointRow> rows;
+};
+
+std::vector<LanesTestJoint> lanesTestRead(const PackedJointRows& packed) {
+    std::vector<LanesTestJoint> joints(packed.joints.size());
+    for (std::size_t e = 0; e < packed.joints.size(); ++e) {
+        joints[e].hasBlock = packed.joints[e].hasBlock;
+        if (joints[e].hasBlock) joints[e].block = packedBlockOf(packed, static_cast<int>(e));
+        for (int k = 0; k < packed.joints[e].rowCount; ++k) joints[e].rows.push_back(packedRowOf(packed, static_cast<int>(e), k));
+    }
+    return joints;
+}
+
+// The sweeps joint after joint, as chapter 11 wrote them before the lanes.
+void lanesTestWarmStart(const std::vector<LanesTestJoint>& joints, std::vector<SolverBodyState>& states) {
+    for (const LanesTestJoint& joint : joints)
+        if (joint.hasBlock) lanesTestPushBlock(joint.block, joint.block.impulse, states);
+    for (const LanesTestJoint& joint : joints)
+        for (const PackedJointRow& row : joint.rows)
+            if (row.impulse != 0) lanesTestPushRow(row, row.impulse, states);
+}
+
+void lanesTestSweep(std::vector<LanesTestJoint>& joints, std::vector<SolverBodyState>& states, bool relax) {
+    for (LanesTestJoint& joint : joints) {
+        if (joint.hasBlock) {
+            PackedPointBlock& block = joint.block;
+            const Vec3 relative = lanesTestAnchorsRate(block, states);
+            Vec3 bias = block.bias;
+            for (int axis = 0; axis < 3; ++axis)
+                if (relax && block.fedBack[axis]) bias[axis] = 0;
+            const Softness soft = relax && block.fedBack[0] ? Softness{} : block.soft;
+            const Vec3 impulse = soft.massScale * (block.mass * (bias - relative)) - soft.impulseScale * block.impulse;
+            block.impulse += impulse;
+            lanesTestPushBlock(block, impulse, states);
+        }
+        for (PackedJointRow& row : joint.rows) {
+            const Real velocity = lanesTestRowRate(row, states);
+            const bool plain = relax && row.fedBack;
+            const Softness soft = plain ? Softness{} : row.soft;
+            const Real bias = plain ? Real(0) : row.bias;
+            const Real previous = row.impulse;
+            const Real increment = soft.massScale * row.effectiveMass * (bias - velocity) - soft.impulseScale * previous;
+            row.impulse = std::clamp(previous + increment, row.lower, row.upper);
+            lanesTestPushRow(row, row.impulse - previous, states);
+        }
+    }
+}
+
+void lanesTestAdvance(std::vector<LanesTestJoint>& joints, const PackedJointRows& packed,
+                      const std::vector<SolverBodyState>& states, Real h) {
+    for (std::size_t e = 0; e < joints.size(); ++e) {
+        if (!packed.joints[e].keepable) continue;
+        if (joints[e].hasBlock) joints[e].block.error += h * lanesTestAnchorsRate(joints[e].block, states);
+        for (PackedJointRow& row : joints[e].rows)
+            if (row.kind != JointRowKind::Free) row.error += h * lanesTestRowRate(row, states);
+    }
+}
+
+bool lanesTestSameBits(const std::vector<SolverBodyState>& a, const std::vector<SolverBodyState>& b) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (std::memcmp(a[i].linearVelocity, b[i].linearVelocity, sizeof(a[i].linearVelocity)) != 0 ||
+            std::memcmp(a[i].angularVelocity, b[i].angularVelocity, sizeof(a[i].angularVelocity)) != 0)
+            return false;
+    return true;
+}
+
+bool lanesTestSameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof(Real)) == 0; }
+
+/// Every impulse and error of the lanes against the joint-after-joint sweep's.
+void lanesTestCompare(const PackedJointRows& packed, const std::vector<LanesTestJoint>& reference) {
+    const std::vector<LanesTestJoint> lanes = lanesTestRead(packed);
+    for (std::size_t e = 0; e < lanes.size(); ++e) {
+        if (lanes[e].hasBlock)
+            for (int axis = 0; axis < 3; ++axis) {
+                CHECK(lanesTestSameBits(lanes[e].block.impulse[axis], reference[e].block.impulse[axis]));
+                CHECK(lanesTestSameBits(lanes[e].block.error[axis], reference[e].block.error[axis]));
+            }
+        for (std::size_t k = 0; k < lanes[e].rows.size(); ++k) {
+            CHECK(lanesTestSameBits(lanes[e].rows[k].impulse, reference[e].rows[k].impulse));
+            CHECK(lanesTestSameBits(lanes[e].rows[k].error, reference[e].rows[k].error));
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the joints' lane groups sweep with the same bits as one joint after another", "[ch11][joints]") {
+    const Real h = Real(1) / Real(600);
+    for (const World& start : {buildJointGallery(), buildRagdollPile(3), buildJointsSandbox(), buildRagdollField(12)}) {
+        for (unsigned seed = 1; seed <= 3; ++seed) {
+            INFO(start.name << ", seed " << seed);
+            World world = start;
+            std::mt19937 rng(seed);
+            std::uniform_real_distribution<Real> uniform(-2, 2);
+            for (Motion& motion : world.motions) {
+                motion.linearVelocity = Vec3(uniform(rng), uniform(rng), uniform(rng));
+                motion.angularVelocity = Vec3(uniform(rng), uniform(rng), uniform(rng));
+            }
+            world.jointImpulses.assign(world.joints.size(), JointImpulses{});
+            for (JointImpulses& impulses : world.jointImpulses)
+                for (Real& slot : impulses.slot) slot = uniform(rng) * Real(0.02);
+            SolverBodies bodies;
+            prepareBodies(world, bodies);
+            JointPass pass;
+            prepareJointPass(world, bodies, 1, pass);
+            buildJointRows(world, bodies, h, /*firstSubstep=*/true, pass);
+            REQUIRE(pass.packed.groupCount > 0);
+            // Groups hold joints that share no moving body.
+            for (int g = 0; g < pass.packed.groupCount; ++g) {
+                const JointLaneGroup& group = pass.packed.groups[static_cast<std::size_t>(g)];
+                std::vector<int> slots;
+                for (int lane = 0; lane < group.lanes; ++lane)
+                    for (const int slot : {group.slotA[lane], group.slotB[lane]})
+                        if (slot != 0) slots.push_back(slot);
+                std::sort(slots.begin(), slots.end());
+                CHECK(std::adjacent_find(slots.begin(), slots.end()) == slots.end());
+            }
+
+            std::vector<LanesTestJoint> reference = lanesTestRead(pass.packed);
+            std::vector<SolverBodyState> expected = bodies.states;
+            SolverBodyState* states = bodies.states.data();
+            lanesTestWarmStart(reference, expected);
+            warmStartJoints(pass, states, true);
+            CHECK(lanesTestSameBits(bodies.states, expected));
+            lanesTestSweep(reference, expected, /*relax=*/false);
+            solveJoints(pass, states, /*relax=*/false);
+            CHECK(lanesTestSameBits(bodies.states, expected));
+            lanesTestAdvance(reference, pass.packed, expected, h);
+            advanceJointErrors(pass, states, h);
+            lanesTestSweep(reference, expected, /*relax=*/true);
+            solveJoints(pass, states, /*relax=*/true);
+            CHECK(lanesTestSameBits(bodies.states, expected));
+            lanesTestCompare(pass.packed, reference);
+        }
+    }
+}
