@@ -1,8 +1,9 @@
 #pragma once
 // Joints, springs and drag in the fast solve. The contacts are coloured and solved many at a
 // time; a joint needs more than a contact row does (up to ten rows, limits that switch on and
-// off, motors), and a scene has far fewer of them, so they are solved one at a time, with chapter
-// 8's rows, in the same substeps as the contacts and on the same bodies: warm started, the soft
+// off, motors), and a scene has far fewer of them, so they are solved in chapter 8's order, with
+// its rows (eight at a time where they share no body: packed_joint_rows.h), in the same substeps
+// as the contacts and on the same bodies: warm started, the soft
 // step's biased pass, the relax pass, every substep (Box2D v3 and Box3D solve joints and contacts
 // in one graph the same way). What makes them fast is what makes the contacts fast: one pass
 // over everything per substep, no second solve.

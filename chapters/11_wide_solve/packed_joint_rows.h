@@ -8,6 +8,10 @@
 // are packed, and the sweeps read and write the solve's body states by slot. Rows without a
 // Jacobian's effect (an unused slot, a joint whose bodies cannot both move it) are left out: the
 // sweeps skip them anyway. The rules (bias, softness, clamping, the point block) are chapter 8's.
+// The rows lie in lanes, as the contacts' blocks do: row k of a group of joints that share no
+// moving body side by side (JointLaneGroup), swept a group at a time (packed_joint_sweep.cpp).
+// PackedJointRow and PackedPointBlock are one lane's row and block, as the build writes them and
+// tests read them back.
 
 #include "08_joints/joint_frame.h"
 #include "08_joints/joint_rows.h"

@@ -22,7 +22,6 @@ struct LaneBodies {
     Lanes rest[2];
 };
 
-// [ch11-joint-lane-gather]
 #if defined(__AVX2__) && !defined(STEPWISE_DOUBLE) && STEPWISE_WIDE_BYTES == 32
 // Eight states' first rows (v, w, two floats of the delta position) loaded whole and transposed,
 // as the contacts gather theirs (body_pack_avx2.h).
@@ -76,7 +75,6 @@ void scatterVelocities(SolverBodyState* states, const int* slots, const LaneBodi
     }
 }
 #endif
-// [ch11-joint-lane-gather]
 
 // [ch11-eigen-order]
 // How Eigen rounds a 3-vector dot product and a 3x3 matrix times a vector, which the scalar sweep
@@ -191,7 +189,6 @@ void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
     }
 }
 
-// [ch11-packed-sweep]
 void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
     for (int g = 0; g < packed.groupCount; ++g) {
         JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
@@ -202,7 +199,6 @@ void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
         scatterVelocities(states, group.slotB, b);
     }
 }
-// [ch11-packed-sweep]
 
 // [ch11-advance-errors]
 void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
