@@ -273,11 +273,16 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
     pass.poses.resize(pass.bodies.size());
     pass.builtA.resize(pass.joints.size());
     pass.builtB.resize(pass.joints.size());
+    pass.keptLanes.assign(static_cast<std::size_t>(pass.packed.groupCount), 0u);
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const bool distance = joint.type == JointType::Distance;
         if (!firstSubstep && !distance && keepsRows(bodies, pass, i)) {
-            keepJoint(pass, i, feedback, h);
+            // Its biases are made again below, with the other kept joints of its group at once.
+            const PackedJoint& kept = pass.packed.joints[i];
+            pass.keptLanes[static_cast<std::size_t>(kept.group)] |= 1u << kept.lane;
+            pass.rowCount += kept.slotCount;
+            ++pass.jointsKept;
             continue;
         }
         const JointFrame frame = distance ? distanceFrame(bodies, pass, i) : placedFrame(world, bodies, pass, i, joint);
@@ -300,6 +305,9 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         pass.builtB[i] = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
         ++pass.jointsBuilt;
     }
+    for (std::size_t g = 0; g < pass.keptLanes.size(); ++g)  // none on the frame's first substep
+        if (pass.keptLanes[g] != 0)
+            refreshPackedFeedbackLanes(pass.packed, static_cast<int>(g), pass.keptLanes[g], feedback, h);
 }
 // [ch11-joint-rows]
 

@@ -211,6 +211,7 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
     entry.blockRoom = block;
     group.slotA[entry.lane] = slotA;
     group.slotB[entry.lane] = slotB;
+    group.entry[entry.lane] = static_cast<int>(packed.joints.size());
     group.blocks = group.blocks || block;
     if (rows > group.rowCount) {  // room only: a row is zeroed when a lane first writes it (rowToWrite)
         if (group.rows.size() < static_cast<std::size_t>(rows)) group.rows.resize(static_cast<std::size_t>(rows));

@@ -85,6 +85,7 @@ struct JointBlockLanes {
 /// sweep over the groups then gives the same numbers as the sweep joint after joint.
 struct JointLaneGroup {
     int slotA[kWideLanes] = {}, slotB[kWideLanes] = {};  // the bodies' solver slots (0: an empty lane)
+    int entry[kWideLanes] = {};  // each lane's joint (PackedJointRows::joints)
     int lanes = 0;       // lanes holding a joint
     bool blocks = false;  // some lane has a point block
     int rowCount = 0;    // rows with room: the most any lane's joint reserved
@@ -161,6 +162,10 @@ void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states,
 /// Joint `entry`'s biases, softness and fedBack made again from its rows' errors by chapter 8's
 /// rule (jointRowFeedback), for a substep of h.
 void refreshPackedFeedback(PackedJointRows& packed, int entry, const JointFeedback& feedback, Real h);
+
+/// The same for the lanes of group `group` set in `lanes` (bit i: lane i), all at once: what a
+/// substep does for the joints it keeps. Any feedback kind; the soft step's runs in lanes.
+void refreshPackedFeedbackLanes(PackedJointRows& packed, int group, unsigned lanes, const JointFeedback& feedback, Real h);
 
 /// The carried impulses applied to the bodies.
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states);

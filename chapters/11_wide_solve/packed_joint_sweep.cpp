@@ -96,7 +96,18 @@ LaneVec times(const Lanes (&m)[9], const LaneVec& v) {
 }
 #endif
 // [ch11-eigen-order]
-LaneVec negated(const LaneVec& v) { return {-v.x, -v.y, -v.z}; }
+// Negation that flips the sign of zero too, as the scalar code's unary minus does (lanes.h's
+// operator- is 0 - a).
+Lanes negated(const Lanes& a) {
+#if defined(STEPWISE_VECTOR_PACKS)
+    return Lanes{-a.v};
+#else
+    Lanes result;
+    for (int i = 0; i < N; ++i) result[i] = -a[i];
+    return result;
+#endif
+}
+LaneVec negated(const LaneVec& v) { return {negated(v.x), negated(v.y), negated(v.z)}; }
 
 // How fast the anchors part: B's anchor's velocity less A's (the point rows' J v).
 LaneVec anchorsRate(const JointBlockLanes& block, const LaneBodies& a, const LaneBodies& b) {
@@ -105,7 +116,7 @@ LaneVec anchorsRate(const JointBlockLanes& block, const LaneBodies& a, const Lan
 
 // The block's impulse change into both bodies.
 void pushBlock(const JointBlockLanes& block, const LaneVec& impulse, LaneBodies& a, LaneBodies& b) {
-    a.linear = a.linear + (-block.inverseMassA) * impulse;
+    a.linear = a.linear + negated(block.inverseMassA) * impulse;
     a.angular = a.angular + negated(times(block.inverseInertiaA, cross(block.armA, impulse)));
     b.linear = b.linear + block.inverseMassB * impulse;
     b.angular = b.angular + times(block.inverseInertiaB, cross(block.armB, impulse));
@@ -199,6 +210,67 @@ void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
         scatterVelocities(states, group.slotB, b);
     }
 }
+
+// [ch11-lane-feedback]
+// Chapter 8's jointRowFeedback for the soft step, in lanes: the same rule and the same arithmetic,
+// each lane's kind picking its case. Lanes outside `lanes` keep what they hold.
+void refreshPackedFeedbackLanes(PackedJointRows& packed, int g, unsigned lanes, const JointFeedback& feedback, Real h) {
+    JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
+    if (feedback.kind != JointFeedback::Kind::Soft) {  // chapter 8's other rules, lane by lane
+        for (int lane = 0; lane < N; ++lane)
+            if (lanes >> lane & 1u) refreshPackedFeedback(packed, group.entry[lane], feedback, h);
+        return;
+    }
+    Lanes kept = Lanes::splat(0), keptBlock = Lanes::splat(0);
+    for (int lane = 0; lane < N; ++lane) {
+        kept[lane] = lanes >> lane & 1u ? 1 : 0;
+        keptBlock[lane] = kept[lane] * group.block.present[lane];
+    }
+    const Lanes zero = Lanes::splat(0), one = Lanes::splat(1);
+    const Lanes fedRate = Lanes::splat(feedback.soft.biasRate), fedMass = Lanes::splat(feedback.soft.massScale),
+                fedImpulse = Lanes::splat(feedback.soft.impulseScale);
+    const auto fedBias = [&](const Lanes& error, const Lanes& cap) {  // clamp(-rate C, -cap, cap)
+        return min(cap, max(negated(cap), negated(fedRate) * error));
+    };
+    if (group.blocks) {  // a point block is an equality on all three axes, its rows move points
+        JointBlockLanes& block = group.block;
+        const Lanes cap = Lanes::splat(kMaxJointPushOutSpeed);
+        Lanes* bias[3] = {&block.bias.x, &block.bias.y, &block.bias.z};
+        const Lanes* error[3] = {&block.error.x, &block.error.y, &block.error.z};
+        for (int axis = 0; axis < 3; ++axis) {
+            *bias[axis] = selectPositive(keptBlock, fedBias(*error[axis], cap), *bias[axis]);
+            block.fedBack[axis] = selectPositive(keptBlock, one, block.fedBack[axis]);
+        }
+        block.biasRate = selectPositive(keptBlock, fedRate, block.biasRate);
+        block.massScale = selectPositive(keptBlock, fedMass, block.massScale);
+        block.impulseScale = selectPositive(keptBlock, fedImpulse, block.impulseScale);
+    }
+    const Lanes step = Lanes::splat(h);
+    for (int k = 0; k < group.rowsInUse; ++k) {
+        JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
+        Lanes spring = zero, passed = zero, opened = zero, cap = zero;  // 1 per lane in its case
+        for (int lane = 0; lane < N; ++lane) {
+            if (!(lanes >> lane & 1u) || k >= packed.joints[static_cast<std::size_t>(group.entry[lane])].rowCount) continue;
+            const JointRowKind kind = row.kind[lane];
+            spring[lane] = kind == JointRowKind::Spring ? 1 : 0;
+            const bool open = kind == JointRowKind::Limit && row.error[lane] > 0;
+            opened[lane] = open ? 1 : 0;
+            passed[lane] = (kind == JointRowKind::Equality || kind == JointRowKind::Limit) && !open ? 1 : 0;
+            cap[lane] = row.turnOnly[lane] ? kMaxJointPushOutTurn : kMaxJointPushOutSpeed;
+        }
+        // A spring: its own rate. A limit not reached: speculative, rigid, not fed back.
+        Lanes bias = selectPositive(spring, negated(row.biasRate) * row.error, row.bias);
+        bias = selectPositive(opened, negated(row.error) / step, bias);
+        // An equality, or a limit passed: the soft step's feedback, capped.
+        bias = selectPositive(passed, fedBias(row.error, cap), bias);
+        row.bias = bias;
+        row.biasRate = selectPositive(opened, zero, selectPositive(passed, fedRate, row.biasRate));
+        row.massScale = selectPositive(opened, one, selectPositive(passed, fedMass, row.massScale));
+        row.impulseScale = selectPositive(opened, zero, selectPositive(passed, fedImpulse, row.impulseScale));
+        row.fedBack = selectPositive(opened, zero, selectPositive(passed, one, row.fedBack));
+    }
+}
+// [ch11-lane-feedback]
 
 // [ch11-advance-errors]
 void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
