@@ -116,6 +116,10 @@ void storeRow(JointRowLanes& to, int lane, const PackedJointRow& row, bool keepa
     to.impulseScale[lane] = row.soft.impulseScale;
     to.fedBack[lane] = row.fedBack ? 1 : 0;
     to.advances[lane] = keepable && row.kind != JointRowKind::Free ? 1 : 0;  // a motor's bias is a speed
+    to.isSpring[lane] = row.kind == JointRowKind::Spring ? 1 : 0;
+    to.isLimit[lane] = row.kind == JointRowKind::Limit ? 1 : 0;
+    to.isEquality[lane] = row.kind == JointRowKind::Equality ? 1 : 0;
+    to.pushCap[lane] = row.turnOnly ? kMaxJointPushOutTurn : kMaxJointPushOutSpeed;
     to.slot[lane] = row.slot;
     to.kind[lane] = row.kind;
     to.turnOnly[lane] = row.turnOnly;

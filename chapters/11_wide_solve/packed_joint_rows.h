@@ -60,6 +60,8 @@ struct JointRowLanes {
     Pack<kWideLanes> biasRate, massScale, impulseScale;  // the row's Softness
     Pack<kWideLanes> fedBack;   // 1 where the relax pass takes the bias and softness out
     Pack<kWideLanes> advances;  // 1 where the substeps move the error (advancePackedErrors)
+    Pack<kWideLanes> isSpring, isLimit, isEquality;  // 1 where the row is of that kind (its feedback's case)
+    Pack<kWideLanes> pushCap;   // its feedback's cap: kMaxJointPushOutSpeed, or Turn for a turn-only row
     // What only the scalar work per joint reads (feedback, impulses back):
     int slot[kWideLanes] = {};
     JointRowKind kind[kWideLanes] = {};

@@ -246,18 +246,13 @@ void refreshPackedFeedbackLanes(PackedJointRows& packed, int g, unsigned lanes, 
         block.impulseScale = selectPositive(keptBlock, fedImpulse, block.impulseScale);
     }
     const Lanes step = Lanes::splat(h);
-    for (int k = 0; k < group.rowsInUse; ++k) {
+    for (int k = 0; k < group.rowsInUse; ++k) {  // the rows' kinds: chapter 8's jointRowFeedback
         JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
-        Lanes spring = zero, passed = zero, opened = zero, cap = zero;  // 1 per lane in its case
-        for (int lane = 0; lane < N; ++lane) {
-            if (!(lanes >> lane & 1u) || k >= packed.joints[static_cast<std::size_t>(group.entry[lane])].rowCount) continue;
-            const JointRowKind kind = row.kind[lane];
-            spring[lane] = kind == JointRowKind::Spring ? 1 : 0;
-            const bool open = kind == JointRowKind::Limit && row.error[lane] > 0;
-            opened[lane] = open ? 1 : 0;
-            passed[lane] = (kind == JointRowKind::Equality || kind == JointRowKind::Limit) && !open ? 1 : 0;
-            cap[lane] = row.turnOnly[lane] ? kMaxJointPushOutTurn : kMaxJointPushOutSpeed;
-        }
+        // 1 per kept lane in its case (a lane past its joint's rows is zero, of kind Free: none).
+        const Lanes spring = kept * row.isSpring;
+        const Lanes opened = kept * selectPositive(row.error, row.isLimit, zero);
+        const Lanes passed = kept * row.isEquality + (kept * row.isLimit - opened);
+        const Lanes& cap = row.pushCap;
         // A spring: its own rate. A limit not reached: speculative, rigid, not fed back.
         Lanes bias = selectPositive(spring, negated(row.biasRate) * row.error, row.bias);
         bias = selectPositive(opened, negated(row.error) / step, bias);

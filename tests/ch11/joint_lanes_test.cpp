@@ -1,7 +1,8 @@
 // The fast solve sweeps its joints a group at a time, one joint per lane (packed_joint_rows.h):
 // the joints of a group share no moving body, and every body meets its joints in the sweep's
 // order. The sweep over the groups must then give the same bits as the sweep joint after joint,
-// which this file writes out with Eigen, the rows read back one lane at a time.
+// which this file writes out with Eigen, the rows read back one lane at a time; and the feedback a
+// kept joint's rows make again, a group at a time, must be chapter 8's rule row by row.
 #include "08_joints/scenes.h"
 #include "11_wide_solve/joint_pass.h"
 #include "11_wide_solve/scenes.h"
@@ -139,6 +140,39 @@ void lanesTestCompare(const PackedJointRows& packed, const std::vector<LanesTest
     }
 }
 
+/// The feedback made again from the moved errors, a group at a time, against joint after joint
+/// (refreshPackedFeedback, chapter 8's rule per row), every field it writes bit for bit.
+void lanesTestFeedback(PackedJointRows& packed, const JointFeedback& feedback, Real h) {
+    PackedJointRows scalar = packed;
+    for (std::size_t e = 0; e < packed.joints.size(); ++e) refreshPackedFeedback(scalar, static_cast<int>(e), feedback, h);
+    for (int g = 0; g < packed.groupCount; ++g) {
+        const unsigned all = (1u << packed.groups[static_cast<std::size_t>(g)].lanes) - 1u;
+        refreshPackedFeedbackLanes(packed, g, all, feedback, h);
+    }
+    int compared = 0;
+    for (std::size_t e = 0; e < packed.joints.size(); ++e) {
+        const int entry = static_cast<int>(e);
+        if (packed.joints[e].hasBlock) {
+            const PackedPointBlock a = packedBlockOf(packed, entry), b = packedBlockOf(scalar, entry);
+            for (int axis = 0; axis < 3; ++axis) {
+                CHECK(lanesTestSameBits(a.bias[axis], b.bias[axis]));
+                CHECK(a.fedBack[axis] == b.fedBack[axis]);
+            }
+            CHECK((lanesTestSameBits(a.soft.massScale, b.soft.massScale) && lanesTestSameBits(a.soft.impulseScale, b.soft.impulseScale)));
+        }
+        for (int k = 0; k < packed.joints[e].rowCount; ++k) {
+            const PackedJointRow a = packedRowOf(packed, entry, k), b = packedRowOf(scalar, entry, k);
+            INFO("joint " << e << " row " << k << " kind " << static_cast<int>(a.kind));
+            CHECK(lanesTestSameBits(a.bias, b.bias));
+            CHECK(a.fedBack == b.fedBack);
+            CHECK((lanesTestSameBits(a.soft.biasRate, b.soft.biasRate) && lanesTestSameBits(a.soft.massScale, b.soft.massScale) &&
+                   lanesTestSameBits(a.soft.impulseScale, b.soft.impulseScale)));
+            ++compared;
+        }
+    }
+    CHECK(compared > 0);
+}
+
 }  // namespace
 
 TEST_CASE("the joints' lane groups sweep with the same bits as one joint after another", "[ch11][joints]") {
@@ -184,6 +218,21 @@ TEST_CASE("the joints' lane groups sweep with the same bits as one joint after a
             CHECK(lanesTestSameBits(bodies.states, expected));
             lanesTestAdvance(reference, pass.packed, expected, h);
             advanceJointErrors(pass, states, h);
+            lanesTestFeedback(pass.packed, fastJointFeedback(world.settings, h), h);
+            // The relax pass reads the remade feedback (checked above): the reference takes it too.
+            const std::vector<LanesTestJoint> remade = lanesTestRead(pass.packed);
+            for (std::size_t e = 0; e < reference.size(); ++e) {
+                if (reference[e].hasBlock) {
+                    reference[e].block.bias = remade[e].block.bias;
+                    reference[e].block.soft = remade[e].block.soft;
+                    for (int axis = 0; axis < 3; ++axis) reference[e].block.fedBack[axis] = remade[e].block.fedBack[axis];
+                }
+                for (std::size_t k = 0; k < reference[e].rows.size(); ++k) {
+                    reference[e].rows[k].bias = remade[e].rows[k].bias;
+                    reference[e].rows[k].soft = remade[e].rows[k].soft;
+                    reference[e].rows[k].fedBack = remade[e].rows[k].fedBack;
+                }
+            }
             lanesTestSweep(reference, expected, /*relax=*/true);
             solveJoints(pass, states, /*relax=*/true);
             CHECK(lanesTestSameBits(bodies.states, expected));
