@@ -228,14 +228,15 @@ bool keepsDistanceRow(const SolverBodies& bodies, JointPass& pass, std::size_t i
     const PackedJoint& packedJoint = pass.packed.joints[i];
     if (packedJoint.rowCount != 1) return false;  // a row without mass or direction: built again
     if (!bodiesTurnedLittle(bodies, pass, i)) return false;
-    PackedJointRow row = packedRowOf(pass.packed, static_cast<int>(i), 0);
+    JointRowLanes& row = pass.packed.groups[static_cast<std::size_t>(packedJoint.group)].rows[0];
+    const int lane = packedJoint.lane;
+    const Vec3 direction(row.linearB.x[lane], row.linearB.y[lane], row.linearB.z[lane]);  // the built direction
     const Vec3 gap = frame.anchorB - frame.anchorA;
     const Real length = gap.norm();
-    // The sine of the line's turn from the built direction (row.linearB), squared, without dividing.
-    if (!(gap.cross(row.linearB).squaredNorm() <= kJointRowsKeptTurn * kJointRowsKeptTurn * length * length))
+    // The sine of the line's turn from the built direction, squared, without dividing.
+    if (!(gap.cross(direction).squaredNorm() <= kJointRowsKeptTurn * kJointRowsKeptTurn * length * length))
         return false;
-    row.error = length - joint.length.value_or(length);
-    storePackedRow(pass.packed, static_cast<int>(i), 0, row);
+    row.error[lane] = length - joint.length.value_or(length);
     return true;
 }
 // [ch11-distance-kept]

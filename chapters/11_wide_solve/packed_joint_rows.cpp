@@ -189,15 +189,18 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
     };
     // After every group holding an earlier joint of either moving body (slot 0 does not move, and
     // any number of lanes may read it), in the first such group with a free lane.
-    int g = 0;
+    const auto full = [&](int group) { return packed.groups[static_cast<std::size_t>(group)].lanes == kWideLanes; };
+    while (packed.firstOpenGroup < packed.groupCount && full(packed.firstOpenGroup)) ++packed.firstOpenGroup;
+    int g = packed.firstOpenGroup;
     if (slotA != 0) g = std::max(g, last(slotA) + 1);
     if (slotB != 0) g = std::max(g, last(slotB) + 1);
-    while (g < packed.groupCount && packed.groups[static_cast<std::size_t>(g)].lanes == kWideLanes) ++g;
+    while (g < packed.groupCount && full(g)) ++g;
     if (g == packed.groupCount) {
         if (packed.groups.size() <= static_cast<std::size_t>(g)) packed.groups.emplace_back();
         JointLaneGroup& fresh = packed.groups[static_cast<std::size_t>(g)];
         fresh.lanes = 0;
         fresh.blocks = false;
+        fresh.keepable = false;
         fresh.rowCount = 0;
         fresh.rowsInUse = 0;
         for (int lane = 0; lane < kWideLanes; ++lane) fresh.slotA[lane] = fresh.slotB[lane] = 0;
@@ -217,6 +220,7 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
     group.slotB[entry.lane] = slotB;
     group.entry[entry.lane] = static_cast<int>(packed.joints.size());
     group.blocks = group.blocks || block;
+    group.keepable = group.keepable || keepable;
     if (rows > group.rowCount) {  // room only: a row is zeroed when a lane first writes it (rowToWrite)
         if (group.rows.size() < static_cast<std::size_t>(rows)) group.rows.resize(static_cast<std::size_t>(rows));
         group.rowCount = rows;
@@ -324,8 +328,10 @@ bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int ent
                         const JointFeedback& feedback, Real& carried, const std::vector<SolverBody>& bodies,
                         const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry) {
     PackedJoint& packedJoint = packed.joints[static_cast<std::size_t>(entry)];
-    emptyPackedJoint(packed, entry);
-    if (packedJoint.rowRoom < 1) return false;
+    if (packedJoint.rowRoom < 1) {
+        emptyPackedJoint(packed, entry);
+        return false;
+    }
     PackedJointRow row;
     // Chapter 8's distance row: along the line between the anchors, J as chapter 4's pointVelocityRow.
     const DistanceLine line = distanceLine(joint, frame);
@@ -344,7 +350,10 @@ bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int ent
     // Chapter 8's finiteRow: x - x is 0 for every finite x.
     const Real finite = (direction - direction).sum() + (row.angularA - row.angularA).sum() +
                         (row.angularB - row.angularB).sum() + (row.bias - row.bias);
-    if (finite != 0) return false;
+    if (finite != 0) {
+        emptyPackedJoint(packed, entry);
+        return false;
+    }
     row.lower = -kRealMax;
     row.upper = kRealMax;
     row.impulse = std::isfinite(carried) ? std::clamp(carried, row.lower, row.upper) : Real(0);
@@ -352,9 +361,13 @@ bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int ent
     row.slotA = slotOfEntry[static_cast<std::size_t>(entryA)];
     row.slotB = slotOfEntry[static_cast<std::size_t>(entryB)];
     setMoves(bodies[static_cast<std::size_t>(entryA)], bodies[static_cast<std::size_t>(entryB)], row);
-    packedJoint.slotCount = 1;
     carried = row.impulse;
-    if (row.effectiveMass == 0) return true;  // chapter 8's sweep skips a row without mass too
+    if (row.effectiveMass == 0) {  // chapter 8's sweep skips a row without mass too
+        emptyPackedJoint(packed, entry);
+        packedJoint.slotCount = 1;
+        return true;
+    }
+    packedJoint.slotCount = 1;
     storeRow(rowToWrite(packed.groups[static_cast<std::size_t>(packedJoint.group)], 0), packedJoint.lane, row,
              packedJoint.keepable);
     packedJoint.rowCount = 1;

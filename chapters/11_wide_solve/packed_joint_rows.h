@@ -90,6 +90,7 @@ struct JointLaneGroup {
     int entry[kWideLanes] = {};  // each lane's joint (PackedJointRows::joints)
     int lanes = 0;       // lanes holding a joint
     bool blocks = false;  // some lane has a point block
+    bool keepable = false;  // some lane's joint may keep its rows (advancePackedErrors moves their errors)
     int rowCount = 0;    // rows with room: the most any lane's joint reserved
     int rowsInUse = 0;   // rows the sweeps take: the most any lane's joint has written this frame
     JointBlockLanes block;
@@ -116,11 +117,13 @@ struct PackedJointRows {
     void clear() {
         joints.clear();
         groupCount = 0;
+        firstOpenGroup = 0;
         lastGroupOfSlot.clear();
     }
     std::vector<PackedJoint> joints;
     std::vector<JointLaneGroup> groups;  // the first groupCount are this frame's
     int groupCount = 0;
+    int firstOpenGroup = 0;              // every group before it is full
     std::vector<int> lastGroupOfSlot;    // per solver slot: the last group holding one of its joints
 };
 

@@ -25,7 +25,7 @@ struct LaneBodies {
 #if defined(__AVX2__) && !defined(STEPWISE_DOUBLE) && STEPWISE_WIDE_BYTES == 32
 // Eight states' first rows (v, w, two floats of the delta position) loaded whole and transposed,
 // as the contacts gather theirs (body_pack_avx2.h).
-LaneBodies gatherVelocities(const SolverBodyState* states, const int* slots) {
+LaneBodies gatherAll(const SolverBodyState* states, const int* slots) {
     __m256 row[8];
     for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
     transpose8(row);
@@ -37,7 +37,7 @@ LaneBodies gatherVelocities(const SolverBodyState* states, const int* slots) {
 }
 
 // Slot 0 is never written: its lanes pushed nothing, and several lanes may read it.
-void scatterVelocities(SolverBodyState* states, const int* slots, const LaneBodies& body) {
+void scatterAll(SolverBodyState* states, const int* slots, const LaneBodies& body) {
     __m256 row[8] = {_mm256_load_ps(body.linear.x.data()),  _mm256_load_ps(body.linear.y.data()),
                      _mm256_load_ps(body.linear.z.data()),  _mm256_load_ps(body.angular.x.data()),
                      _mm256_load_ps(body.angular.y.data()), _mm256_load_ps(body.angular.z.data()),
@@ -47,7 +47,7 @@ void scatterVelocities(SolverBodyState* states, const int* slots, const LaneBodi
         if (slots[i] != 0) _mm256_store_ps(reinterpret_cast<float*>(&states[slots[i]]), row[i]);
 }
 #else
-LaneBodies gatherVelocities(const SolverBodyState* states, const int* slots) {
+LaneBodies gatherAll(const SolverBodyState* states, const int* slots) {
     LaneBodies body;
     for (int i = 0; i < N; ++i) {
         const SolverBodyState& s = states[slots[i]];
@@ -62,7 +62,7 @@ LaneBodies gatherVelocities(const SolverBodyState* states, const int* slots) {
 }
 
 // Slot 0 is never written: its lanes pushed nothing, and several lanes may read it.
-void scatterVelocities(SolverBodyState* states, const int* slots, const LaneBodies& body) {
+void scatterAll(SolverBodyState* states, const int* slots, const LaneBodies& body) {
     for (int i = 0; i < N; ++i) {
         if (slots[i] == 0) continue;
         SolverBodyState& s = states[slots[i]];
@@ -75,6 +75,41 @@ void scatterVelocities(SolverBodyState* states, const int* slots, const LaneBodi
     }
 }
 #endif
+
+// A group of one joint (a chain's links each share a body with the next, so each group holds one)
+// reads and writes its two bodies alone, the other lanes zero: the full gather's eight loads and
+// transposes cost more than the row they feed.
+Lanes firstLane(Real value) {
+#if defined(__AVX2__) && !defined(STEPWISE_DOUBLE) && STEPWISE_WIDE_BYTES == 32
+    return Lanes{reinterpret_cast<Lanes::Values>(_mm256_setr_ps(value, 0, 0, 0, 0, 0, 0, 0))};
+#else
+    Lanes lanes = Lanes::splat(0);
+    lanes[0] = value;
+    return lanes;
+#endif
+}
+
+STEPWISE_LANE_INLINE LaneBodies gatherVelocities(const SolverBodyState* states, const JointLaneGroup& group, const int* slots) {
+    if (group.lanes > 1) return gatherAll(states, slots);
+    const SolverBodyState& s = states[slots[0]];
+    LaneBodies body;
+    body.linear = {firstLane(s.linearVelocity[0]), firstLane(s.linearVelocity[1]), firstLane(s.linearVelocity[2])};
+    body.angular = {firstLane(s.angularVelocity[0]), firstLane(s.angularVelocity[1]), firstLane(s.angularVelocity[2])};
+    return body;
+}
+
+STEPWISE_LANE_INLINE void scatterVelocities(SolverBodyState* states, const JointLaneGroup& group, const int* slots,
+                                            const LaneBodies& body) {
+    if (group.lanes > 1) return scatterAll(states, slots, body);
+    if (slots[0] == 0) return;
+    SolverBodyState& s = states[slots[0]];
+    s.linearVelocity[0] = body.linear.x[0];
+    s.linearVelocity[1] = body.linear.y[0];
+    s.linearVelocity[2] = body.linear.z[0];
+    s.angularVelocity[0] = body.angular.x[0];
+    s.angularVelocity[1] = body.angular.y[0];
+    s.angularVelocity[2] = body.angular.z[0];
+}
 
 // [ch11-eigen-order]
 // How Eigen rounds a 3-vector dot product and a 3x3 matrix times a vector, which the scalar sweep
@@ -182,32 +217,32 @@ void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
     for (int g = 0; g < packed.groupCount; ++g) {
         const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
         if (!group.blocks) continue;
-        LaneBodies a = gatherVelocities(states, group.slotA), b = gatherVelocities(states, group.slotB);
+        LaneBodies a = gatherVelocities(states, group, group.slotA), b = gatherVelocities(states, group, group.slotB);
         pushBlock(group.block, group.block.impulse, a, b);
-        scatterVelocities(states, group.slotA, a);
-        scatterVelocities(states, group.slotB, b);
+        scatterVelocities(states, group, group.slotA, a);
+        scatterVelocities(states, group, group.slotB, b);
     }
     for (int g = 0; g < packed.groupCount; ++g) {
         const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
         if (group.rowsInUse == 0) continue;
-        LaneBodies a = gatherVelocities(states, group.slotA), b = gatherVelocities(states, group.slotB);
+        LaneBodies a = gatherVelocities(states, group, group.slotA), b = gatherVelocities(states, group, group.slotB);
         for (int k = 0; k < group.rowsInUse; ++k) {
             const JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
             pushRow(row, row.impulse, a, b);
         }
-        scatterVelocities(states, group.slotA, a);
-        scatterVelocities(states, group.slotB, b);
+        scatterVelocities(states, group, group.slotA, a);
+        scatterVelocities(states, group, group.slotB, b);
     }
 }
 
 void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
     for (int g = 0; g < packed.groupCount; ++g) {
         JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
-        LaneBodies a = gatherVelocities(states, group.slotA), b = gatherVelocities(states, group.slotB);
+        LaneBodies a = gatherVelocities(states, group, group.slotA), b = gatherVelocities(states, group, group.slotB);
         if (group.blocks) solveBlock(group.block, relax, a, b);
         for (int k = 0; k < group.rowsInUse; ++k) solveRow(group.rows[static_cast<std::size_t>(k)], relax, a, b);
-        scatterVelocities(states, group.slotA, a);
-        scatterVelocities(states, group.slotB, b);
+        scatterVelocities(states, group, group.slotA, a);
+        scatterVelocities(states, group, group.slotB, b);
     }
 }
 
@@ -272,7 +307,8 @@ void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states,
     const Lanes step = Lanes::splat(h);
     for (int g = 0; g < packed.groupCount; ++g) {
         JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
-        const LaneBodies a = gatherVelocities(states, group.slotA), b = gatherVelocities(states, group.slotB);
+        if (!group.keepable) continue;  // rows built every substep: their errors are measured
+        const LaneBodies a = gatherVelocities(states, group, group.slotA), b = gatherVelocities(states, group, group.slotB);
         if (group.blocks) {
             JointBlockLanes& block = group.block;
             const LaneVec moved = block.error + step * anchorsRate(block, a, b);
