@@ -204,7 +204,6 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
         fresh.rowCount = 0;
         fresh.rowsInUse = 0;
         for (int lane = 0; lane < kWideLanes; ++lane) fresh.slotA[lane] = fresh.slotB[lane] = 0;
-        fresh.block = JointBlockLanes{};  // every lane zero: no block
 
         ++packed.groupCount;
     }
@@ -219,6 +218,7 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
     group.slotA[entry.lane] = slotA;
     group.slotB[entry.lane] = slotB;
     group.entry[entry.lane] = static_cast<int>(packed.joints.size());
+    if (block && !group.blocks) group.block = JointBlockLanes{};  // every lane zero until its joint writes it
     group.blocks = group.blocks || block;
     group.keepable = group.keepable || keepable;
     if (rows > group.rowCount) {  // room only: a row is zeroed when a lane first writes it (rowToWrite)

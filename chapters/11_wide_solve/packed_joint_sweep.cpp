@@ -7,6 +7,8 @@
 
 #include "11_wide_solve/body_pack.h"
 
+#include <type_traits>
+
 namespace stepwise {
 
 namespace {
@@ -76,39 +78,64 @@ void scatterAll(SolverBodyState* states, const int* slots, const LaneBodies& bod
 }
 #endif
 
-// A group of one joint (a chain's links each share a body with the next, so each group holds one)
-// reads and writes its two bodies alone, the other lanes zero: the full gather's eight loads and
-// transposes cost more than the row they feed.
-Lanes firstLane(Real value) {
-#if defined(__AVX2__) && !defined(STEPWISE_DOUBLE) && STEPWISE_WIDE_BYTES == 32
-    return Lanes{reinterpret_cast<Lanes::Values>(_mm256_setr_ps(value, 0, 0, 0, 0, 0, 0, 0))};
+// [ch11-lane-view]
+// The kernels below are written once, over a view of the group: all its lanes at once (AllLanes,
+// SIMD), or one lane read as plain numbers (OneLane): a group of one joint (a chain's links each
+// share a body with the next, so each group holds one) is swept as the scalar code would, without
+// gathering eight lanes for one. The arithmetic is the same either way, so are the bits.
+struct AllLanes {
+    using Value = Lanes;
+    STEPWISE_LANE_INLINE Value operator()(const Lanes& field) const { return field; }
+    STEPWISE_LANE_INLINE void put(Lanes& field, const Value& value) const { field = value; }
+};
+struct OneLane {
+    using Value = Real;
+    int lane = 0;
+    STEPWISE_LANE_INLINE Value operator()(const Lanes& field) const { return field[lane]; }
+    STEPWISE_LANE_INLINE void put(Lanes& field, Value value) const { field[lane] = value; }
+};
+// [ch11-lane-view]
+
+template <class T>
+struct Vec {
+    T x, y, z;
+};
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> operator+(const Vec<T>& a, const Vec<T>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> operator-(const Vec<T>& a, const Vec<T>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> operator*(const T& s, const Vec<T>& a) { return {s * a.x, s * a.y, s * a.z}; }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+// Negation that flips the sign of zero too, as the scalar code's unary minus does (lanes.h's
+// operator- is 0 - a).
+STEPWISE_LANE_INLINE Real negated(Real a) { return -a; }
+STEPWISE_LANE_INLINE Lanes negated(const Lanes& a) {
+#if defined(STEPWISE_VECTOR_PACKS)
+    return Lanes{-a.v};
 #else
-    Lanes lanes = Lanes::splat(0);
-    lanes[0] = value;
-    return lanes;
+    Lanes result;
+    for (int i = 0; i < N; ++i) result[i] = -a[i];
+    return result;
 #endif
 }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> negated(const Vec<T>& v) { return {negated(v.x), negated(v.y), negated(v.z)}; }
 
-STEPWISE_LANE_INLINE LaneBodies gatherVelocities(const SolverBodyState* states, const JointLaneGroup& group, const int* slots) {
-    if (group.lanes > 1) return gatherAll(states, slots);
-    const SolverBodyState& s = states[slots[0]];
-    LaneBodies body;
-    body.linear = {firstLane(s.linearVelocity[0]), firstLane(s.linearVelocity[1]), firstLane(s.linearVelocity[2])};
-    body.angular = {firstLane(s.angularVelocity[0]), firstLane(s.angularVelocity[1]), firstLane(s.angularVelocity[2])};
-    return body;
-}
-
-STEPWISE_LANE_INLINE void scatterVelocities(SolverBodyState* states, const JointLaneGroup& group, const int* slots,
-                                            const LaneBodies& body) {
-    if (group.lanes > 1) return scatterAll(states, slots, body);
-    if (slots[0] == 0) return;
-    SolverBodyState& s = states[slots[0]];
-    s.linearVelocity[0] = body.linear.x[0];
-    s.linearVelocity[1] = body.linear.y[0];
-    s.linearVelocity[2] = body.linear.z[0];
-    s.angularVelocity[0] = body.angular.x[0];
-    s.angularVelocity[1] = body.angular.y[0];
-    s.angularVelocity[2] = body.angular.z[0];
+// Per lane: test > 0 ? a : b, and libstdc++'s min and max (the first when neither is less).
+STEPWISE_LANE_INLINE Real pick(Real test, Real a, Real b) { return test > 0 ? a : b; }
+STEPWISE_LANE_INLINE Lanes pick(const Lanes& test, const Lanes& a, const Lanes& b) { return selectPositive(test, a, b); }
+STEPWISE_LANE_INLINE Real least(Real a, Real b) { return a < b ? a : b; }
+STEPWISE_LANE_INLINE Lanes least(const Lanes& a, const Lanes& b) { return min(a, b); }
+STEPWISE_LANE_INLINE Real most(Real a, Real b) { return a > b ? a : b; }
+STEPWISE_LANE_INLINE Lanes most(const Lanes& a, const Lanes& b) { return max(a, b); }
+template <class T>
+STEPWISE_LANE_INLINE T constant(Real value) {
+    if constexpr (std::is_same_v<T, Real>) return value; else return Lanes::splat(value);
 }
 
 // [ch11-eigen-order]
@@ -118,96 +145,217 @@ STEPWISE_LANE_INLINE void scatterVelocities(SolverBodyState* states, const Joint
 // go (x0 + x1) + x2, its last row x0 + (x1 + x2). tests/ch11/joint_lanes_test.cpp holds the lanes
 // to the scalar sweep's bits.
 #if defined(STEPWISE_DOUBLE)
-Lanes dot3(const LaneVec& a, const LaneVec& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
-LaneVec times(const Lanes (&m)[9], const LaneVec& v) {
+template <class T>
+STEPWISE_LANE_INLINE T dot3(const Vec<T>& a, const Vec<T>& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> times(const T (&m)[9], const Vec<T>& v) {
     return {(m[0] * v.x + m[1] * v.y) + m[2] * v.z, (m[3] * v.x + m[4] * v.y) + m[5] * v.z,
             m[6] * v.x + (m[7] * v.y + m[8] * v.z)};
 }
 #else
-Lanes dot3(const LaneVec& a, const LaneVec& b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
-LaneVec times(const Lanes (&m)[9], const LaneVec& v) {
+template <class T>
+STEPWISE_LANE_INLINE T dot3(const Vec<T>& a, const Vec<T>& b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> times(const T (&m)[9], const Vec<T>& v) {
     return {m[0] * v.x + (m[1] * v.y + m[2] * v.z), m[3] * v.x + (m[4] * v.y + m[5] * v.z),
             m[6] * v.x + (m[7] * v.y + m[8] * v.z)};
 }
 #endif
 // [ch11-eigen-order]
-// Negation that flips the sign of zero too, as the scalar code's unary minus does (lanes.h's
-// operator- is 0 - a).
-Lanes negated(const Lanes& a) {
-#if defined(STEPWISE_VECTOR_PACKS)
-    return Lanes{-a.v};
-#else
-    Lanes result;
-    for (int i = 0; i < N; ++i) result[i] = -a[i];
-    return result;
-#endif
+
+/// One side's bodies' velocities in the view.
+template <class T>
+struct Bodies {
+    Vec<T> linear, angular;
+};
+
+template <class View>
+STEPWISE_LANE_INLINE Vec<typename View::Value> load(const View& view, const PackVec3<N>& field) {
+    return {view(field.x), view(field.y), view(field.z)};
 }
-LaneVec negated(const LaneVec& v) { return {negated(v.x), negated(v.y), negated(v.z)}; }
+template <class View>
+STEPWISE_LANE_INLINE void put(const View& view, PackVec3<N>& field, const Vec<typename View::Value>& value) {
+    view.put(field.x, value.x);
+    view.put(field.y, value.y);
+    view.put(field.z, value.z);
+}
+template <class View>
+STEPWISE_LANE_INLINE void loadMatrix(const View& view, const Lanes (&field)[9], typename View::Value (&m)[9]) {
+    for (int k = 0; k < 9; ++k) m[k] = view(field[k]);
+}
+
+// The bodies of a group, all lanes: gathered (with the two floats that share their row of the
+// state in the AVX2 build) and scattered back.
+struct WideBodies {
+    Bodies<Lanes> side;
+    Lanes rest[2];
+};
+
+WideBodies gatherWide(const SolverBodyState* states, const int* slots) {
+    const LaneBodies all = gatherAll(states, slots);
+    return {{{all.linear.x, all.linear.y, all.linear.z}, {all.angular.x, all.angular.y, all.angular.z}}, {all.rest[0], all.rest[1]}};
+}
+void scatterWide(SolverBodyState* states, const int* slots, const WideBodies& body) {
+    LaneBodies all;
+    all.linear = {body.side.linear.x, body.side.linear.y, body.side.linear.z};
+    all.angular = {body.side.angular.x, body.side.angular.y, body.side.angular.z};
+    all.rest[0] = body.rest[0];
+    all.rest[1] = body.rest[1];
+    scatterAll(states, slots, all);
+}
+
+// One body's velocities as plain numbers, and back (slot 0 never written).
+Bodies<Real> gatherOne(const SolverBodyState* states, int slot) {
+    const SolverBodyState& s = states[slot];
+    return {{s.linearVelocity[0], s.linearVelocity[1], s.linearVelocity[2]},
+            {s.angularVelocity[0], s.angularVelocity[1], s.angularVelocity[2]}};
+}
+void scatterOne(SolverBodyState* states, int slot, const Bodies<Real>& body) {
+    if (slot == 0) return;
+    SolverBodyState& s = states[slot];
+    s.linearVelocity[0] = body.linear.x;
+    s.linearVelocity[1] = body.linear.y;
+    s.linearVelocity[2] = body.linear.z;
+    s.angularVelocity[0] = body.angular.x;
+    s.angularVelocity[1] = body.angular.y;
+    s.angularVelocity[2] = body.angular.z;
+}
 
 // How fast the anchors part: B's anchor's velocity less A's (the point rows' J v).
-LaneVec anchorsRate(const JointBlockLanes& block, const LaneBodies& a, const LaneBodies& b) {
-    return ((b.linear + cross(b.angular, block.armB)) - a.linear) - cross(a.angular, block.armA);
+template <class View, class T = typename View::Value>
+STEPWISE_LANE_INLINE Vec<T> anchorsRate(const View& view, const JointBlockLanes& block, const Bodies<T>& a, const Bodies<T>& b) {
+    return ((b.linear + cross(b.angular, load(view, block.armB))) - a.linear) - cross(a.angular, load(view, block.armA));
 }
 
 // The block's impulse change into both bodies.
-void pushBlock(const JointBlockLanes& block, const LaneVec& impulse, LaneBodies& a, LaneBodies& b) {
-    a.linear = a.linear + negated(block.inverseMassA) * impulse;
-    a.angular = a.angular + negated(times(block.inverseInertiaA, cross(block.armA, impulse)));
-    b.linear = b.linear + block.inverseMassB * impulse;
-    b.angular = b.angular + times(block.inverseInertiaB, cross(block.armB, impulse));
+template <class View, class T = typename View::Value>
+STEPWISE_LANE_INLINE void pushBlock(const View& view, const JointBlockLanes& block, const Vec<T>& impulse, Bodies<T>& a,
+                                    Bodies<T>& b) {
+    T inertiaA[9], inertiaB[9];
+    loadMatrix(view, block.inverseInertiaA, inertiaA);
+    loadMatrix(view, block.inverseInertiaB, inertiaB);
+    a.linear = a.linear + negated(view(block.inverseMassA)) * impulse;
+    a.angular = a.angular + negated(times(inertiaA, cross(load(view, block.armA), impulse)));
+    b.linear = b.linear + view(block.inverseMassB) * impulse;
+    b.angular = b.angular + times(inertiaB, cross(load(view, block.armB), impulse));
 }
 
 // How fast the row's C changes: J v.
-Lanes rowRate(const JointRowLanes& row, const LaneBodies& a, const LaneBodies& b) {
-    return ((dot3(row.linearA, a.linear) + dot3(row.angularA, a.angular)) + dot3(row.linearB, b.linear)) +
-           dot3(row.angularB, b.angular);
+template <class View, class T = typename View::Value>
+STEPWISE_LANE_INLINE T rowRate(const View& view, const JointRowLanes& row, const Bodies<T>& a, const Bodies<T>& b) {
+    return ((dot3(load(view, row.linearA), a.linear) + dot3(load(view, row.angularA), a.angular)) +
+            dot3(load(view, row.linearB), b.linear)) +
+           dot3(load(view, row.angularB), b.angular);
 }
 
-void pushRow(const JointRowLanes& row, const Lanes& applied, LaneBodies& a, LaneBodies& b) {
-    a.linear = a.linear + applied * row.moveLinearA;
-    a.angular = a.angular + applied * row.moveAngularA;
-    b.linear = b.linear + applied * row.moveLinearB;
-    b.angular = b.angular + applied * row.moveAngularB;
+template <class View, class T = typename View::Value>
+STEPWISE_LANE_INLINE void pushRow(const View& view, const JointRowLanes& row, const T& applied, Bodies<T>& a, Bodies<T>& b) {
+    a.linear = a.linear + applied * load(view, row.moveLinearA);
+    a.angular = a.angular + applied * load(view, row.moveAngularA);
+    b.linear = b.linear + applied * load(view, row.moveLinearB);
+    b.angular = b.angular + applied * load(view, row.moveAngularB);
 }
 
 // [ch11-joint-lane-solve]
 // The block's impulse: the anchors' relative velocity to the bias, softened (chapter 8's
 // solveJointRows); the relax pass takes the bias and softness out of the rows fed back.
-void solveBlock(JointBlockLanes& block, bool relax, LaneBodies& a, LaneBodies& b) {
-    const LaneVec relative = anchorsRate(block, a, b);
-    LaneVec bias = block.bias;
-    Lanes massScale = block.massScale, impulseScale = block.impulseScale;
+template <class View, class T = typename View::Value>
+STEPWISE_LANE_INLINE void solveBlock(const View& view, JointBlockLanes& block, bool relax, Bodies<T>& a, Bodies<T>& b) {
+    const Vec<T> relative = anchorsRate(view, block, a, b);
+    Vec<T> bias = load(view, block.bias);
+    T massScale = view(block.massScale), impulseScale = view(block.impulseScale);
     if (relax) {
-        const Lanes zero = Lanes::splat(0);
-        bias = {selectPositive(block.fedBack[0], zero, bias.x), selectPositive(block.fedBack[1], zero, bias.y),
-                selectPositive(block.fedBack[2], zero, bias.z)};
-        massScale = selectPositive(block.fedBack[0], Lanes::splat(1), massScale);
-        impulseScale = selectPositive(block.fedBack[0], zero, impulseScale);
+        const T zero = constant<T>(0);
+        bias = {pick(view(block.fedBack[0]), zero, bias.x), pick(view(block.fedBack[1]), zero, bias.y),
+                pick(view(block.fedBack[2]), zero, bias.z)};
+        massScale = pick(view(block.fedBack[0]), constant<T>(1), massScale);
+        impulseScale = pick(view(block.fedBack[0]), zero, impulseScale);
     }
     // Eigen makes s (K^-1 v) as (K^-1 s) v: the scale goes into the matrix first.
-    Lanes scaledMass[9];
-    for (int k = 0; k < 9; ++k) scaledMass[k] = block.mass[k] * massScale;
-    const LaneVec impulse = times(scaledMass, bias - relative) - impulseScale * block.impulse;
-    block.impulse = block.impulse + impulse;
-    pushBlock(block, impulse, a, b);
+    T scaledMass[9];
+    for (int k = 0; k < 9; ++k) scaledMass[k] = view(block.mass[k]) * massScale;
+    const Vec<T> accumulated = load(view, block.impulse);
+    const Vec<T> impulse = times(scaledMass, bias - relative) - impulseScale * accumulated;
+    put(view, block.impulse, accumulated + impulse);
+    pushBlock(view, block, impulse, a, b);
 }
 
-void solveRow(JointRowLanes& row, bool relax, LaneBodies& a, LaneBodies& b) {
-    const Lanes velocity = rowRate(row, a, b);
-    Lanes bias = row.bias, massScale = row.massScale, impulseScale = row.impulseScale;
+template <class View, class T = typename View::Value>
+STEPWISE_LANE_INLINE void solveRow(const View& view, JointRowLanes& row, bool relax, Bodies<T>& a, Bodies<T>& b) {
+    const T velocity = rowRate(view, row, a, b);
+    T bias = view(row.bias), massScale = view(row.massScale), impulseScale = view(row.impulseScale);
     if (relax) {  // no bias, rigid
-        bias = selectPositive(row.fedBack, Lanes::splat(0), bias);
-        massScale = selectPositive(row.fedBack, Lanes::splat(1), massScale);
-        impulseScale = selectPositive(row.fedBack, Lanes::splat(0), impulseScale);
+        const T fedBack = view(row.fedBack);
+        bias = pick(fedBack, constant<T>(0), bias);
+        massScale = pick(fedBack, constant<T>(1), massScale);
+        impulseScale = pick(fedBack, constant<T>(0), impulseScale);
     }
-    const Lanes previous = row.impulse;
-    const Lanes increment = massScale * row.effectiveMass * (bias - velocity) - impulseScale * previous;
+    const T previous = view(row.impulse);
+    const T increment = massScale * view(row.effectiveMass) * (bias - velocity) - impulseScale * previous;
     // std::clamp as libstdc++ writes it: min(max(value, lower), upper).
-    const Lanes total = previous + increment;
-    row.impulse = min(row.upper, max(row.lower, total));
-    pushRow(row, row.impulse - previous, a, b);
+    const T impulse = least(view(row.upper), most(view(row.lower), previous + increment));
+    view.put(row.impulse, impulse);
+    pushRow(view, row, impulse - previous, a, b);
 }
 // [ch11-joint-lane-solve]
+
+// One group's sweep (solve), warm start parts and errors' advance, over a view.
+template <class View, class T = typename View::Value>
+void sweepGroup(const View& view, JointLaneGroup& group, bool relax, Bodies<T>& a, Bodies<T>& b) {
+    if (group.blocks) solveBlock(view, group.block, relax, a, b);
+    for (int k = 0; k < group.rowsInUse; ++k) solveRow(view, group.rows[static_cast<std::size_t>(k)], relax, a, b);
+}
+
+template <class View, class T = typename View::Value>
+void warmBlock(const View& view, const JointLaneGroup& group, Bodies<T>& a, Bodies<T>& b) {
+    pushBlock(view, group.block, load(view, group.block.impulse), a, b);
+}
+
+template <class View, class T = typename View::Value>
+void warmRows(const View& view, const JointLaneGroup& group, Bodies<T>& a, Bodies<T>& b) {
+    for (int k = 0; k < group.rowsInUse; ++k) {
+        const JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
+        pushRow(view, row, view(row.impulse), a, b);
+    }
+}
+
+template <class View, class T = typename View::Value>
+void advanceGroup(const View& view, JointLaneGroup& group, const Bodies<T>& a, const Bodies<T>& b, Real h) {
+    const T step = constant<T>(h);
+    if (group.blocks) {
+        JointBlockLanes& block = group.block;
+        const Vec<T> error = load(view, block.error);
+        const Vec<T> moved = error + step * anchorsRate(view, block, a, b);
+        const T present = view(block.present);
+        put(view, block.error, {pick(present, moved.x, error.x), pick(present, moved.y, error.y), pick(present, moved.z, error.z)});
+    }
+    for (int k = 0; k < group.rowsInUse; ++k) {
+        JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
+        const T error = view(row.error);
+        view.put(row.error, pick(view(row.advances), error + step * rowRate(view, row, a, b), error));
+    }
+}
+
+// Runs `work(view, a, b)` on a group's bodies, gathered and scattered back (`write`): a group of
+// one joint as plain numbers, any other all lanes at once.
+template <class Work>
+STEPWISE_LANE_INLINE void onGroup(const SolverBodyState* in, SolverBodyState* out, const JointLaneGroup& group, Work&& work) {
+    if (group.lanes == 1) {
+        Bodies<Real> a = gatherOne(in, group.slotA[0]), b = gatherOne(in, group.slotB[0]);
+        work(OneLane{0}, a, b);
+        if (out) {
+            scatterOne(out, group.slotA[0], a);
+            scatterOne(out, group.slotB[0], b);
+        }
+        return;
+    }
+    WideBodies a = gatherWide(in, group.slotA), b = gatherWide(in, group.slotB);
+    work(AllLanes{}, a.side, b.side);
+    if (out) {
+        scatterWide(out, group.slotA, a);
+        scatterWide(out, group.slotB, b);
+    }
+}
 
 }  // namespace
 
@@ -217,32 +365,19 @@ void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
     for (int g = 0; g < packed.groupCount; ++g) {
         const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
         if (!group.blocks) continue;
-        LaneBodies a = gatherVelocities(states, group, group.slotA), b = gatherVelocities(states, group, group.slotB);
-        pushBlock(group.block, group.block.impulse, a, b);
-        scatterVelocities(states, group, group.slotA, a);
-        scatterVelocities(states, group, group.slotB, b);
+        onGroup(states, states, group, [&](const auto& view, auto& a, auto& b) { warmBlock(view, group, a, b); });
     }
     for (int g = 0; g < packed.groupCount; ++g) {
         const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
         if (group.rowsInUse == 0) continue;
-        LaneBodies a = gatherVelocities(states, group, group.slotA), b = gatherVelocities(states, group, group.slotB);
-        for (int k = 0; k < group.rowsInUse; ++k) {
-            const JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
-            pushRow(row, row.impulse, a, b);
-        }
-        scatterVelocities(states, group, group.slotA, a);
-        scatterVelocities(states, group, group.slotB, b);
+        onGroup(states, states, group, [&](const auto& view, auto& a, auto& b) { warmRows(view, group, a, b); });
     }
 }
 
 void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
     for (int g = 0; g < packed.groupCount; ++g) {
         JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
-        LaneBodies a = gatherVelocities(states, group, group.slotA), b = gatherVelocities(states, group, group.slotB);
-        if (group.blocks) solveBlock(group.block, relax, a, b);
-        for (int k = 0; k < group.rowsInUse; ++k) solveRow(group.rows[static_cast<std::size_t>(k)], relax, a, b);
-        scatterVelocities(states, group, group.slotA, a);
-        scatterVelocities(states, group, group.slotB, b);
+        onGroup(states, states, group, [&](const auto& view, auto& a, auto& b) { sweepGroup(view, group, relax, a, b); });
     }
 }
 
@@ -304,22 +439,10 @@ void refreshPackedFeedbackLanes(PackedJointRows& packed, int g, unsigned lanes, 
 
 // [ch11-advance-errors]
 void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
-    const Lanes step = Lanes::splat(h);
     for (int g = 0; g < packed.groupCount; ++g) {
         JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
         if (!group.keepable) continue;  // rows built every substep: their errors are measured
-        const LaneBodies a = gatherVelocities(states, group, group.slotA), b = gatherVelocities(states, group, group.slotB);
-        if (group.blocks) {
-            JointBlockLanes& block = group.block;
-            const LaneVec moved = block.error + step * anchorsRate(block, a, b);
-            block.error = {selectPositive(block.present, moved.x, block.error.x),
-                           selectPositive(block.present, moved.y, block.error.y),
-                           selectPositive(block.present, moved.z, block.error.z)};
-        }
-        for (int k = 0; k < group.rowsInUse; ++k) {
-            JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
-            row.error = selectPositive(row.advances, row.error + step * rowRate(row, a, b), row.error);
-        }
+        onGroup(states, nullptr, group, [&](const auto& view, auto& a, auto& b) { advanceGroup(view, group, a, b, h); });
     }
 }
 // [ch11-advance-errors]
