@@ -15,65 +15,85 @@ namespace {
 
 constexpr int N = kWideLanes;
 using Lanes = Pack<N>;
-using LaneVec = PackVec3<N>;
 
-/// The velocities of one side's body in every lane (and, in the AVX2 float build, the two floats
-/// that share their row of the state, carried back as they were read).
-struct LaneBodies {
-    LaneVec linear, angular;
+template <class T>
+struct Vec {
+    T x, y, z;
+};
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> operator+(const Vec<T>& a, const Vec<T>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> operator-(const Vec<T>& a, const Vec<T>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> operator*(const T& s, const Vec<T>& a) { return {s * a.x, s * a.y, s * a.z}; }
+template <class T>
+STEPWISE_LANE_INLINE Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+/// One side's bodies' velocities in the view.
+template <class T>
+struct Bodies {
+    Vec<T> linear, angular;
+};
+
+/// A group's bodies, all lanes (and, in the AVX2 float build, the two floats that share their row
+/// of the state, carried back as they were read).
+struct WideBodies {
+    Bodies<Lanes> side;
     Lanes rest[2];
 };
 
 #if defined(__AVX2__) && !defined(STEPWISE_DOUBLE) && STEPWISE_WIDE_BYTES == 32
 // Eight states' first rows (v, w, two floats of the delta position) loaded whole and transposed,
 // as the contacts gather theirs (body_pack_avx2.h).
-LaneBodies gatherAll(const SolverBodyState* states, const int* slots) {
+WideBodies gatherAll(const SolverBodyState* states, const int* slots) {
     __m256 row[8];
     for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
     transpose8(row);
-    LaneBodies body;
-    Lanes* fields[8] = {&body.linear.x,  &body.linear.y,  &body.linear.z, &body.angular.x,
-                        &body.angular.y, &body.angular.z, &body.rest[0],  &body.rest[1]};
+    WideBodies body;
+    Lanes* fields[8] = {&body.side.linear.x,  &body.side.linear.y,  &body.side.linear.z, &body.side.angular.x,
+                        &body.side.angular.y, &body.side.angular.z, &body.rest[0],  &body.rest[1]};
     for (int k = 0; k < 8; ++k) _mm256_store_ps(fields[k]->data(), row[k]);
     return body;
 }
 
 // Slot 0 is never written: its lanes pushed nothing, and several lanes may read it.
-void scatterAll(SolverBodyState* states, const int* slots, const LaneBodies& body) {
-    __m256 row[8] = {_mm256_load_ps(body.linear.x.data()),  _mm256_load_ps(body.linear.y.data()),
-                     _mm256_load_ps(body.linear.z.data()),  _mm256_load_ps(body.angular.x.data()),
-                     _mm256_load_ps(body.angular.y.data()), _mm256_load_ps(body.angular.z.data()),
+void scatterAll(SolverBodyState* states, const int* slots, const WideBodies& body) {
+    __m256 row[8] = {_mm256_load_ps(body.side.linear.x.data()),  _mm256_load_ps(body.side.linear.y.data()),
+                     _mm256_load_ps(body.side.linear.z.data()),  _mm256_load_ps(body.side.angular.x.data()),
+                     _mm256_load_ps(body.side.angular.y.data()), _mm256_load_ps(body.side.angular.z.data()),
                      _mm256_load_ps(body.rest[0].data()),   _mm256_load_ps(body.rest[1].data())};
     transpose8(row);
     for (int i = 0; i < 8; ++i)
         if (slots[i] != 0) _mm256_store_ps(reinterpret_cast<float*>(&states[slots[i]]), row[i]);
 }
 #else
-LaneBodies gatherAll(const SolverBodyState* states, const int* slots) {
-    LaneBodies body;
+WideBodies gatherAll(const SolverBodyState* states, const int* slots) {
+    WideBodies body;
     for (int i = 0; i < N; ++i) {
         const SolverBodyState& s = states[slots[i]];
-        body.linear.x[i] = s.linearVelocity[0];
-        body.linear.y[i] = s.linearVelocity[1];
-        body.linear.z[i] = s.linearVelocity[2];
-        body.angular.x[i] = s.angularVelocity[0];
-        body.angular.y[i] = s.angularVelocity[1];
-        body.angular.z[i] = s.angularVelocity[2];
+        body.side.linear.x[i] = s.linearVelocity[0];
+        body.side.linear.y[i] = s.linearVelocity[1];
+        body.side.linear.z[i] = s.linearVelocity[2];
+        body.side.angular.x[i] = s.angularVelocity[0];
+        body.side.angular.y[i] = s.angularVelocity[1];
+        body.side.angular.z[i] = s.angularVelocity[2];
     }
     return body;
 }
 
 // Slot 0 is never written: its lanes pushed nothing, and several lanes may read it.
-void scatterAll(SolverBodyState* states, const int* slots, const LaneBodies& body) {
+void scatterAll(SolverBodyState* states, const int* slots, const WideBodies& body) {
     for (int i = 0; i < N; ++i) {
         if (slots[i] == 0) continue;
         SolverBodyState& s = states[slots[i]];
-        s.linearVelocity[0] = body.linear.x[i];
-        s.linearVelocity[1] = body.linear.y[i];
-        s.linearVelocity[2] = body.linear.z[i];
-        s.angularVelocity[0] = body.angular.x[i];
-        s.angularVelocity[1] = body.angular.y[i];
-        s.angularVelocity[2] = body.angular.z[i];
+        s.linearVelocity[0] = body.side.linear.x[i];
+        s.linearVelocity[1] = body.side.linear.y[i];
+        s.linearVelocity[2] = body.side.linear.z[i];
+        s.angularVelocity[0] = body.side.angular.x[i];
+        s.angularVelocity[1] = body.side.angular.y[i];
+        s.angularVelocity[2] = body.side.angular.z[i];
     }
 }
 #endif
@@ -95,21 +115,6 @@ struct OneLane {
     STEPWISE_LANE_INLINE void put(Lanes& field, Value value) const { field[lane] = value; }
 };
 // [ch11-lane-view]
-
-template <class T>
-struct Vec {
-    T x, y, z;
-};
-template <class T>
-STEPWISE_LANE_INLINE Vec<T> operator+(const Vec<T>& a, const Vec<T>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-template <class T>
-STEPWISE_LANE_INLINE Vec<T> operator-(const Vec<T>& a, const Vec<T>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-template <class T>
-STEPWISE_LANE_INLINE Vec<T> operator*(const T& s, const Vec<T>& a) { return {s * a.x, s * a.y, s * a.z}; }
-template <class T>
-STEPWISE_LANE_INLINE Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 
 // Negation that flips the sign of zero too, as the scalar code's unary minus does (lanes.h's
 // operator- is 0 - a).
@@ -163,12 +168,6 @@ STEPWISE_LANE_INLINE Vec<T> times(const T (&m)[9], const Vec<T>& v) {
 #endif
 // [ch11-eigen-order]
 
-/// One side's bodies' velocities in the view.
-template <class T>
-struct Bodies {
-    Vec<T> linear, angular;
-};
-
 template <class View>
 STEPWISE_LANE_INLINE Vec<typename View::Value> load(const View& view, const PackVec3<N>& field) {
     return {view(field.x), view(field.y), view(field.z)};
@@ -182,26 +181,6 @@ STEPWISE_LANE_INLINE void put(const View& view, PackVec3<N>& field, const Vec<ty
 template <class View>
 STEPWISE_LANE_INLINE void loadMatrix(const View& view, const Lanes (&field)[9], typename View::Value (&m)[9]) {
     for (int k = 0; k < 9; ++k) m[k] = view(field[k]);
-}
-
-// The bodies of a group, all lanes: gathered (with the two floats that share their row of the
-// state in the AVX2 build) and scattered back.
-struct WideBodies {
-    Bodies<Lanes> side;
-    Lanes rest[2];
-};
-
-WideBodies gatherWide(const SolverBodyState* states, const int* slots) {
-    const LaneBodies all = gatherAll(states, slots);
-    return {{{all.linear.x, all.linear.y, all.linear.z}, {all.angular.x, all.angular.y, all.angular.z}}, {all.rest[0], all.rest[1]}};
-}
-void scatterWide(SolverBodyState* states, const int* slots, const WideBodies& body) {
-    LaneBodies all;
-    all.linear = {body.side.linear.x, body.side.linear.y, body.side.linear.z};
-    all.angular = {body.side.angular.x, body.side.angular.y, body.side.angular.z};
-    all.rest[0] = body.rest[0];
-    all.rest[1] = body.rest[1];
-    scatterAll(states, slots, all);
 }
 
 // One body's velocities as plain numbers, and back (slot 0 never written).
@@ -349,11 +328,11 @@ STEPWISE_LANE_INLINE void onGroup(const SolverBodyState* in, SolverBodyState* ou
         }
         return;
     }
-    WideBodies a = gatherWide(in, group.slotA), b = gatherWide(in, group.slotB);
+    WideBodies a = gatherAll(in, group.slotA), b = gatherAll(in, group.slotB);
     work(AllLanes{}, a.side, b.side);
     if (out) {
-        scatterWide(out, group.slotA, a);
-        scatterWide(out, group.slotB, b);
+        scatterAll(out, group.slotA, a);
+        scatterAll(out, group.slotB, b);
     }
 }
 
