@@ -8,6 +8,7 @@
 #include "10_skip_work/scenes.h"
 #include "11_wide_solve/chapter.h"
 #include "11_wide_solve/colouring.h"
+#include "11_wide_solve/joint_pass.h"
 #include "11_wide_solve/solve_steps.h"
 
 #include <algorithm>
@@ -245,10 +246,17 @@ bool jointsFigure(const std::string& path) {
     svg.polygon(view, {{double(lowX) - 0.5, 0}, {double(highX) + 0.5, 0}, {double(highX) + 0.5, -0.15}, {double(lowX) - 0.5, -0.15}},
                 "fill:#ddd;stroke:#999");
     const std::vector<int> counts = drawColouredContacts(svg, view, world, scratch, 4);
-    for (const JointDesc& joint : world.joints)
-        svg.line(view, side(world.bodies[static_cast<std::size_t>(joint.bodyA)].transform.position),
-                 side(world.bodies[static_cast<std::size_t>(joint.bodyB)].transform.position),
-                 "stroke:#222;stroke-width:2;stroke-dasharray:3 3");
+    // The joints' lane groups, as the fast solve lays them out at the frame's first substep.
+    JointPass pass;
+    prepareJointPass(world, bodies, 1, pass);
+    buildJointRows(world, bodies, world.settings.dt / Real(std::max(1, world.settings.solverIterations)), true, pass);
+    for (std::size_t i = 0; i < pass.joints.size(); ++i) {
+        const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
+        const Vec3& a = world.bodies[static_cast<std::size_t>(joint.bodyA)].transform.position;
+        const Vec3& b = world.bodies[static_cast<std::size_t>(joint.bodyB)].transform.position;
+        svg.line(view, side(a), side(b), "stroke:#222;stroke-width:2;stroke-dasharray:3 3");
+        svg.text(view, side((a + b) / 2), std::to_string(pass.packed.joints[i].group + 1), "fill:#a00;font-size:13px;font-weight:bold");
+    }
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         if (isStatic(world, static_cast<int>(i))) continue;
         const bool box = world.bodies[i].name.rfind("ragdoll", 0) != 0;
@@ -256,15 +264,20 @@ bool jointsFigure(const std::string& path) {
                    box ? "fill:#fff;stroke:#333;stroke-width:1.5" : "fill:#333;stroke:none");
     }
     char caption[200];
-    std::snprintf(caption, sizeof caption, "two ragdolls on a 3-row pyramid: %d moving bodies, %zu contacts in %zu colours, %zu joints",
-                  static_cast<int>(bodies.states.size()) - bodies.firstDynamic, scratch.contactOrder.size(), counts.size(), world.joints.size());
+    std::snprintf(caption, sizeof caption,
+                  "two ragdolls on a 3-row pyramid: %d moving bodies, %zu contacts in %zu colours, %zu joints in %d lane groups",
+                  static_cast<int>(bodies.states.size()) - bodies.firstDynamic, scratch.contactOrder.size(), counts.size(),
+                  world.joints.size(), pass.packed.groupCount);
     svg.textAt({10, 24}, caption, "fill:#333");
     double y = 80;
     y = drawColourLegend(svg, 700, y, 26, counts);
     y += 34;
-    svg.textAt({700, y}, "- - -  a joint: swept one at a", "fill:#222");
-    svg.textAt({700, y + 20}, "time, before the colours, in", "fill:#555");
-    svg.textAt({700, y + 40}, "every pass of every substep", "fill:#555");
+    svg.textAt({700, y}, "- - -  a joint, numbered by its", "fill:#222");
+    svg.textAt({700, y + 20}, "lane group: a group's joints", "fill:#555");
+    svg.textAt({700, y + 40}, "share no moving body and are", "fill:#555");
+    svg.textAt({700, y + 60}, "swept side by side, the groups", "fill:#555");
+    svg.textAt({700, y + 80}, "in order, before the colours", "fill:#555");
+    y += 40;
     svg.textAt({700, y + 70}, "open circles: boxes; dots:", "fill:#555");
     svg.textAt({700, y + 90}, "the ragdolls' limbs", "fill:#555");
     return svg.save(path);
