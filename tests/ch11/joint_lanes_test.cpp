@@ -3,6 +3,7 @@
 // order. The sweep over the groups must then give the same bits as the sweep joint after joint,
 // which this file writes out with Eigen, the rows read back one lane at a time; and the feedback a
 // kept joint's rows make again, a group at a time, must be chapter 8's rule row by row.
+#include "08_joints/builders.h"
 #include "08_joints/scenes.h"
 #include "11_wide_solve/joint_pass.h"
 #include "11_wide_solve/scenes.h"
@@ -240,3 +241,28 @@ TEST_CASE("the joints' lane groups sweep with the same bits as one joint after a
         }
     }
 }
+
+/// The lane groups the frame's first substep lays out for a world's joints.
+int lanesTestGroups(const World& world) {
+    SolverBodies bodies;
+    prepareBodies(world, bodies);
+    JointPass pass;
+    prepareJointPass(world, bodies, 1, pass);
+    buildJointRows(world, bodies, Real(1) / Real(600), /*firstSubstep=*/true, pass);
+    return pass.packed.groupCount;
+}
+
+TEST_CASE("joints pack into as few lane groups as their shared bodies allow", "[ch11][joints]") {
+    // A chain's joints each share a body with the next: one group each.
+    World chain = emptyWorld("chain");
+    ChainSpec spec;
+    spec.direction = Vec3(1, 0, 0);
+    addChain(chain, spec);
+    CHECK(lanesTestGroups(chain) == static_cast<int>(chain.joints.size()));
+    // A ragdoll's chest holds four joints, so no layout has fewer than four groups; the sweep's
+    // order of joints asks for five. A hundred ragdolls fill 125 groups of eight (exercise 9).
+    CHECK(lanesTestGroups(buildRagdollField(1, 0)) == 5);
+    CHECK(lanesTestGroups(buildRagdollField(2, 0)) == 5);
+    CHECK(lanesTestGroups(buildRagdollField(100, 0)) == 125);
+}
+
