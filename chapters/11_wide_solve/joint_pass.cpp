@@ -126,13 +126,6 @@ bool bodiesTurnedLittle(const SolverBodies& bodies, const JointPass& pass, std::
     return turnedAtMost(pass.builtA[i], a, kJointRowsKeptTurn) && turnedAtMost(pass.builtB[i], b, kJointRowsKeptTurn);
 }
 
-// Whether listed joint i may keep last substep's rows.
-bool keepsRows(const SolverBodies& bodies, const JointPass& pass, std::size_t i) {
-    if (pass.packedEntry[i] < 0) return false;  // left out last substep: built again
-    if (!pass.packed.joints[i].keepable) return false;  // its rows turn with the bodies' moves (rowsFollowTurnsAlone)
-    return bodiesTurnedLittle(bodies, pass, i);
-}
-
 // A distance joint's anchors and arms now, from the arms as the piece began turned by the bodies'
 // turns since and the centres moved by their moves: the distance row needs nothing else of the
 // poses. The same numbers as chapter 8's jointRowFrame to rounding.
@@ -274,15 +267,21 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
     pass.poses.resize(pass.bodies.size());
     pass.builtA.resize(pass.joints.size());
     pass.builtB.resize(pass.joints.size());
+    // The point joints that keep last substep's rows, a lane group at a time: those built (not left
+    // out), whose rows follow their bodies' turns alone, and whose bodies have barely turned since.
     pass.keptLanes.assign(static_cast<std::size_t>(pass.packed.groupCount), 0u);
+    for (std::size_t g = 0; g < pass.keptLanes.size() && !firstSubstep; ++g) {
+        const JointLaneGroup& group = pass.packed.groups[g];
+        const unsigned keepable = group.keepableLanes & group.builtLanes;
+        if (keepable) pass.keptLanes[g] = keepable & lanesTurnedAtMost(group, bodies.states.data(), kJointRowsKeptTurn);
+    }
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const bool distance = joint.type == JointType::Distance;
-        if (!firstSubstep && !distance && keepsRows(bodies, pass, i)) {
+        const PackedJoint& packedJoint = pass.packed.joints[i];
+        if (!firstSubstep && (pass.keptLanes[static_cast<std::size_t>(packedJoint.group)] >> packedJoint.lane & 1u)) {
             // Its biases are made again below, with the other kept joints of its group at once.
-            const PackedJoint& kept = pass.packed.joints[i];
-            pass.keptLanes[static_cast<std::size_t>(kept.group)] |= 1u << kept.lane;
-            pass.rowCount += kept.slotCount;
+            pass.rowCount += packedJoint.slotCount;
             ++pass.jointsKept;
             continue;
         }
@@ -297,6 +296,7 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         int slots = 0;
         if (!buildListedJoint(world, h, feedback, firstSubstep, i, frame, pass, slots)) {
             emptyPackedJoint(pass.packed, static_cast<int>(i));
+            markPackedBuilt(pass.packed, static_cast<int>(i), false);
             ++pass.invalidSkipped;  // left out this substep; its impulses wait as they are
             continue;
         }
@@ -304,6 +304,7 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         pass.packedEntry[i] = static_cast<int>(i);
         pass.builtA[i] = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
         pass.builtB[i] = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
+        markPackedBuilt(pass.packed, static_cast<int>(i), true, pass.builtA[i], pass.builtB[i]);
         ++pass.jointsBuilt;
     }
     for (std::size_t g = 0; g < pass.keptLanes.size(); ++g)  // none on the frame's first substep

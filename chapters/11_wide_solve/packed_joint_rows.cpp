@@ -203,6 +203,7 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
         fresh.keepable = false;
         fresh.rowCount = 0;
         fresh.rowsInUse = 0;
+        fresh.keepableLanes = fresh.builtLanes = 0;
         for (int lane = 0; lane < kWideLanes; ++lane) fresh.slotA[lane] = fresh.slotB[lane] = 0;
 
         ++packed.groupCount;
@@ -221,6 +222,7 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
     if (block && !group.blocks) group.block = JointBlockLanes{};  // every lane zero until its joint writes it
     group.blocks = group.blocks || block;
     group.keepable = group.keepable || keepable;
+    if (keepable) group.keepableLanes |= 1u << entry.lane;
     if (rows > group.rowCount) {  // room only: a row is zeroed when a lane first writes it (rowToWrite)
         if (group.rows.size() < static_cast<std::size_t>(rows)) group.rows.resize(static_cast<std::size_t>(rows));
         group.rowCount = rows;
@@ -230,6 +232,22 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
     packed.joints.push_back(entry);
 }
 // [ch11-joint-groups]
+
+void markPackedBuilt(PackedJointRows& packed, int entry, bool built, const Quat& turnA, const Quat& turnB) {
+    const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    JointLaneGroup& group = packed.groups[static_cast<std::size_t>(joint.group)];
+    const unsigned bit = 1u << joint.lane;
+    group.builtLanes = built ? group.builtLanes | bit : group.builtLanes & ~bit;
+    if (!built) return;
+    const auto put = [lane = joint.lane](PackQuat<kWideLanes>& to, const Quat& q) {
+        to.x[lane] = q.x();
+        to.y[lane] = q.y();
+        to.z[lane] = q.z();
+        to.w[lane] = q.w();
+    };
+    put(group.builtA, turnA);
+    put(group.builtB, turnB);
+}
 
 PackedJointRow packedRowOf(const PackedJointRows& packed, int entry, int k) {
     const PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];

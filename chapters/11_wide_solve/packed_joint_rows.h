@@ -95,6 +95,10 @@ struct JointLaneGroup {
     int rowsInUse = 0;   // rows the sweeps take: the most any lane's joint has written this frame
     JointBlockLanes block;
     std::vector<JointRowLanes> rows;
+    // Whether a lane's joint may keep its rows to the next substep (joint_pass.h, kJointRowsKeptTurn):
+    PackQuat<kWideLanes> builtA, builtB;  // its bodies' turns since the piece began, when its rows were built
+    unsigned keepableLanes = 0;  // bit per lane: its rows follow its bodies' turns alone
+    unsigned builtLanes = 0;     // bit per lane: its rows are in use (built, not left out)
 };
 // [ch11-joint-lanes]
 
@@ -134,6 +138,17 @@ struct PackedJointRows {
 /// them be.
 void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable, int slotA = 0,
                         int slotB = 0);
+
+/// Joint `entry`'s rows were built where its bodies had turned by `turnA` and `turnB` since the
+/// piece began (`built`), or left out (not `built`).
+void markPackedBuilt(PackedJointRows& packed, int entry, bool built, const Quat& turnA = Quat::Identity(),
+                     const Quat& turnB = Quat::Identity());
+
+/// The lanes of `group` (bit i: lane i) whose two bodies have each turned at most `most` (rad)
+/// since the lane's rows were built, by the body states' turns since the piece began, in the
+/// small-angle form 1 - w^2 <= most^2 / 4 (w: the dot product of the two turns, as Eigen sums four
+/// products: (x + z) + (y + w)).
+unsigned lanesTurnedAtMost(const JointLaneGroup& group, const SolverBodyState* states, Real most);
 
 /// Row k of joint `entry` as one row (what the sweeps read of it).
 PackedJointRow packedRowOf(const PackedJointRows& packed, int entry, int k);

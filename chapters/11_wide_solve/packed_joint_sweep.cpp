@@ -360,6 +360,29 @@ void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
     }
 }
 
+// [ch11-lanes-turned]
+unsigned lanesTurnedAtMost(const JointLaneGroup& group, const SolverBodyState* states, Real most) {
+    PackQuat<N> turnA, turnB;  // each lane's bodies' turns since the piece began (slot 0: none)
+    for (int lane = 0; lane < N; ++lane) {
+        const Real* a = states[group.slotA[lane]].deltaRotation;
+        const Real* b = states[group.slotB[lane]].deltaRotation;
+        turnA.x[lane] = a[0], turnA.y[lane] = a[1], turnA.z[lane] = a[2], turnA.w[lane] = a[3];
+        turnB.x[lane] = b[0], turnB.y[lane] = b[1], turnB.z[lane] = b[2], turnB.w[lane] = b[3];
+    }
+    const Lanes limit = Lanes::splat(most * most / 4), one = Lanes::splat(1);
+    // The quotient's w is the dot product of two unit quaternions; |v|^2 = 1 - w^2.
+    const auto little = [&](const PackQuat<N>& built, const PackQuat<N>& now) {
+        const Lanes w = (built.x * now.x + built.z * now.z) + (built.y * now.y + built.w * now.w);
+        return limit - (one - w * w);  // >= 0 where the turn is at most `most`
+    };
+    const Lanes slackA = little(group.builtA, turnA), slackB = little(group.builtB, turnB);
+    unsigned lanes = 0;
+    for (int lane = 0; lane < group.lanes; ++lane)
+        if (slackA[lane] >= 0 && slackB[lane] >= 0) lanes |= 1u << lane;
+    return lanes;
+}
+// [ch11-lanes-turned]
+
 // [ch11-lane-feedback]
 // Chapter 8's jointRowFeedback for the soft step, in lanes: the same rule and the same arithmetic,
 // each lane's kind picking its case. Lanes outside `lanes` keep what they hold.
