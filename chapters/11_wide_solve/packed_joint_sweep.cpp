@@ -47,7 +47,7 @@ struct WideBodies {
 #if defined(__AVX2__) && !defined(STEPWISE_DOUBLE) && STEPWISE_WIDE_BYTES == 32
 // Eight states' first rows (v, w, two floats of the delta position) loaded whole and transposed,
 // as the contacts gather theirs (body_pack_avx2.h).
-WideBodies gatherAll(const SolverBodyState* states, const int* slots) {
+STEPWISE_LANE_INLINE WideBodies gatherAll(const SolverBodyState* states, const int* slots) {
     __m256 row[8];
     for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
     transpose8(row);
@@ -59,7 +59,7 @@ WideBodies gatherAll(const SolverBodyState* states, const int* slots) {
 }
 
 // Slot 0 is never written: its lanes pushed nothing, and several lanes may read it.
-void scatterAll(SolverBodyState* states, const int* slots, const WideBodies& body) {
+STEPWISE_LANE_INLINE void scatterAll(SolverBodyState* states, const int* slots, const WideBodies& body) {
     __m256 row[8] = {_mm256_load_ps(body.side.linear.x.data()),  _mm256_load_ps(body.side.linear.y.data()),
                      _mm256_load_ps(body.side.linear.z.data()),  _mm256_load_ps(body.side.angular.x.data()),
                      _mm256_load_ps(body.side.angular.y.data()), _mm256_load_ps(body.side.angular.z.data()),
@@ -69,7 +69,7 @@ void scatterAll(SolverBodyState* states, const int* slots, const WideBodies& bod
         if (slots[i] != 0) _mm256_store_ps(reinterpret_cast<float*>(&states[slots[i]]), row[i]);
 }
 #else
-WideBodies gatherAll(const SolverBodyState* states, const int* slots) {
+STEPWISE_LANE_INLINE WideBodies gatherAll(const SolverBodyState* states, const int* slots) {
     WideBodies body;
     for (int i = 0; i < N; ++i) {
         const SolverBodyState& s = states[slots[i]];
@@ -84,7 +84,7 @@ WideBodies gatherAll(const SolverBodyState* states, const int* slots) {
 }
 
 // Slot 0 is never written: its lanes pushed nothing, and several lanes may read it.
-void scatterAll(SolverBodyState* states, const int* slots, const WideBodies& body) {
+STEPWISE_LANE_INLINE void scatterAll(SolverBodyState* states, const int* slots, const WideBodies& body) {
     for (int i = 0; i < N; ++i) {
         if (slots[i] == 0) continue;
         SolverBodyState& s = states[slots[i]];
