@@ -126,6 +126,12 @@ bool bodiesTurnedLittle(const SolverBodies& bodies, const JointPass& pass, std::
     return turnedAtMost(pass.builtA[i], a, kJointRowsKeptTurn) && turnedAtMost(pass.builtB[i], b, kJointRowsKeptTurn);
 }
 
+// Whether listed joint i's lane keeps its rows this substep (JointPass::keptLanes).
+bool keptLane(const JointPass& pass, std::size_t i) {
+    const PackedJoint& joint = pass.packed.joints[i];
+    return (pass.keptLanes[static_cast<std::size_t>(joint.group)] >> joint.lane & 1u) != 0;
+}
+
 // A distance joint's anchors and arms now, from the arms as the piece began turned by the bodies'
 // turns since and the centres moved by their moves: the distance row needs nothing else of the
 // poses. The same numbers as chapter 8's jointRowFrame to rounding.
@@ -278,10 +284,9 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const bool distance = joint.type == JointType::Distance;
-        const PackedJoint& packedJoint = pass.packed.joints[i];
-        if (!firstSubstep && (pass.keptLanes[static_cast<std::size_t>(packedJoint.group)] >> packedJoint.lane & 1u)) {
+        if (!firstSubstep && keptLane(pass, i)) {
             // Its biases are made again below, with the other kept joints of its group at once.
-            pass.rowCount += packedJoint.slotCount;
+            pass.rowCount += pass.packed.joints[i].slotCount;
             ++pass.jointsKept;
             continue;
         }
