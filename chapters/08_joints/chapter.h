@@ -21,11 +21,8 @@ Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options);
 /// The same on a chapter 7 pipeline made with other options.
 Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options, Pipeline chapter7);
 
-/// The pairs (lower body first, sorted) that a joint holds together without collide_connected:
+/// Removes from World::candidatePairs the pairs a joint holds together without collide_connected:
 /// they overlap at their joints by design, and never collide.
-std::vector<BodyPair> jointedPairs(const World& world);
-
-/// Removes the jointed pairs from World::candidatePairs.
 void dropJointedPairs(World& world);
 
 /// Chapter 3's deepest overlap, over the pairs that can collide: the run report's max_penetration.

@@ -15,23 +15,6 @@ Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options) 
     return makeChapter08Pipeline(world, options, makeChapter07Pipeline(world));
 }
 
-std::vector<BodyPair> jointedPairs(const World& world) {
-    std::vector<BodyPair> jointed;
-    for (const JointDesc& joint : world.joints)
-        if (!joint.collideConnected)
-            jointed.push_back({std::min(joint.bodyA, joint.bodyB), std::max(joint.bodyA, joint.bodyB)});
-    std::sort(jointed.begin(), jointed.end());
-    return jointed;
-}
-
-Real measureDeepestCollidingPenetration(const World& world) {
-    const std::vector<BodyPair> jointed = jointedPairs(world);
-    if (jointed.empty()) return measureDeepestPenetration(world);
-    return measureDeepestPenetrationAmong(world, [&](int bodyA, int bodyB) {
-        return !std::binary_search(jointed.begin(), jointed.end(), BodyPair{bodyA, bodyB});
-    });
-}
-
 namespace {
 
 // Per body, the bodies its joints hold it to without collision (CSR: partners of body b are
@@ -65,7 +48,10 @@ struct JointedPartners {
 
     int degree(int body) const { return start[static_cast<std::size_t>(body) + 1] - start[static_cast<std::size_t>(body)]; }
 
+    /// Whether a joint holds bodies a and b together (false for any index outside the World).
     bool joined(int a, int b) const {
+        const auto bodies = static_cast<int>(start.size()) - 1;
+        if (a < 0 || b < 0 || a >= bodies || b >= bodies) return false;
         if (degree(b) < degree(a)) std::swap(a, b);
         const auto first = partner.begin() + start[static_cast<std::size_t>(a)];
         return std::find(first, first + degree(a), b) != first + degree(a);
@@ -74,17 +60,19 @@ struct JointedPartners {
 
 }  // namespace
 
+Real measureDeepestCollidingPenetration(const World& world) {
+    const JointedPartners jointed(world);
+    if (jointed.partner.empty()) return measureDeepestPenetration(world);
+    return measureDeepestPenetrationAmong(world, [&](int bodyA, int bodyB) { return !jointed.joined(bodyA, bodyB); });
+}
+
 void dropJointedPairs(World& world) {
     if (world.joints.empty()) return;
     const JointedPartners jointed(world);
     if (jointed.partner.empty()) return;
-    const auto count = static_cast<int>(world.bodies.size());
     std::vector<BodyPair>& pairs = world.candidatePairs;
     pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
-                               [&](const BodyPair& pair) {
-                                   return pair.bodyA >= 0 && pair.bodyB >= 0 && pair.bodyA < count && pair.bodyB < count &&
-                                          jointed.joined(pair.bodyA, pair.bodyB);
-                               }),
+                               [&](const BodyPair& pair) { return jointed.joined(pair.bodyA, pair.bodyB); }),
                 pairs.end());
 }
 

@@ -10,18 +10,6 @@ namespace {
 constexpr int N = kWideLanes;
 using Lanes = Pack<N>;
 
-// Negation that flips the sign of zero too, as the scalar rule's unary minus does (lanes.h's
-// operator- is 0 - a).
-Lanes negated(const Lanes& a) {
-#if defined(STEPWISE_VECTOR_PACKS)
-    return Lanes{-a.v};
-#else
-    Lanes result;
-    for (int i = 0; i < N; ++i) result[i] = -a[i];
-    return result;
-#endif
-}
-
 }  // namespace
 
 // [ch11-lanes-turned]

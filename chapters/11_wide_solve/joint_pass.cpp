@@ -120,10 +120,16 @@ Quat turnOf(const SolverBodies& bodies, int slot) {
 
 // Whether neither body of listed joint i has turned more than kJointRowsKeptTurn since its rows
 // were built. Both turns are measured from the piece's start, so their quotient is the turn since.
+// The turns the rows were built at are the joint's lane's (JointLaneGroup::builtA, builtB).
 bool bodiesTurnedLittle(const SolverBodies& bodies, const JointPass& pass, std::size_t i) {
     const Quat a = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
     const Quat b = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
-    return turnedAtMost(pass.builtA[i], a, kJointRowsKeptTurn) && turnedAtMost(pass.builtB[i], b, kJointRowsKeptTurn);
+    const PackedJoint& joint = pass.packed.joints[i];
+    const JointLaneGroup& group = pass.packed.groups[static_cast<std::size_t>(joint.group)];
+    const auto built = [lane = joint.lane](const PackQuat<kWideLanes>& q) {
+        return Quat(q.w[lane], q.x[lane], q.y[lane], q.z[lane]);
+    };
+    return turnedAtMost(built(group.builtA), a, kJointRowsKeptTurn) && turnedAtMost(built(group.builtB), b, kJointRowsKeptTurn);
 }
 
 // Whether listed joint i's lane keeps its rows this substep (JointPass::keptLanes).
@@ -271,8 +277,6 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
     const JointFeedback feedback = fastJointFeedback(world.settings, h);
     ++pass.substepStamp;  // the poses made last substep are stale
     pass.poses.resize(pass.bodies.size());
-    pass.builtA.resize(pass.joints.size());
-    pass.builtB.resize(pass.joints.size());
     // The point joints that keep last substep's rows, a lane group at a time: those built (not left
     // out), whose rows follow their bodies' turns alone, and whose bodies have barely turned since.
     pass.keptLanes.assign(static_cast<std::size_t>(pass.packed.groupCount), 0u);
@@ -307,9 +311,9 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         }
         pass.rowCount += slots;
         pass.packedEntry[i] = static_cast<int>(i);
-        pass.builtA[i] = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]);
-        pass.builtB[i] = turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]);
-        markPackedBuilt(pass.packed, static_cast<int>(i), true, pass.builtA[i], pass.builtB[i]);
+        markPackedBuilt(pass.packed, static_cast<int>(i), true,
+                        turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]),
+                        turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]));
         ++pass.jointsBuilt;
     }
     for (std::size_t g = 0; g < pass.keptLanes.size(); ++g)  // none on the frame's first substep

@@ -62,7 +62,6 @@ struct JointPass {
     JointRowBatch batch;               // one joint's rows, as chapter 8 builds them
     PackedJointRows packed;            // this substep's rows, as the sweeps take them (listed joint i is entry i)
     std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out this substep)
-    std::vector<Quat> builtA, builtB;  // per listed joint: its bodies' turns since the piece began, when its rows were built
     std::vector<unsigned> keptLanes;   // per lane group: the lanes whose point joint keeps its rows this substep
     int rowCount = 0;                  // this substep's rows, used slots or not (the run report's)
     int jointsBuilt = 0, jointsKept = 0;  // this frame's substeps: joints whose rows were built, kept

@@ -110,6 +110,18 @@ STEPWISE_PACK_BINARY(/)
 
 template <int N>
 inline Pack<N> operator-(const Pack<N>& a) { return Pack<N>::splat(0) - a; }
+/// Negation that flips the sign of zero too, as a scalar unary minus does (operator- above is
+/// 0 - a, which turns -0 into +0): code that must give a scalar rule's bits uses this one.
+template <int N>
+inline Pack<N> negated(const Pack<N>& a) {
+#if defined(STEPWISE_VECTOR_PACKS)
+    return Pack<N>{-a.v};
+#else
+    Pack<N> result;
+    for (int i = 0; i < N; ++i) result.v[i] = -a.v[i];
+    return result;
+#endif
+}
 template <int N>
 inline Pack<N> operator*(Real s, const Pack<N>& a) { return Pack<N>::splat(s) * a; }
 

@@ -93,7 +93,6 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
         JointLaneGroup& fresh = packed.groups[static_cast<std::size_t>(g)];
         fresh.lanes = 0;
         fresh.blocks = false;
-        fresh.keepable = false;
         fresh.rowCount = 0;
         fresh.rowsInUse = 0;
         fresh.keepableLanes = fresh.builtLanes = 0;
@@ -114,7 +113,6 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
     group.entry[entry.lane] = static_cast<int>(packed.joints.size());
     if (block && !group.blocks) group.block = JointBlockLanes{};  // every lane zero until its joint writes it
     group.blocks = group.blocks || block;
-    group.keepable = group.keepable || keepable;
     if (keepable) group.keepableLanes |= 1u << entry.lane;
     if (rows > group.rowCount) {  // room only: a row is zeroed when a lane first writes it (rowToWrite)
         if (group.rows.size() < static_cast<std::size_t>(rows)) group.rows.resize(static_cast<std::size_t>(rows));

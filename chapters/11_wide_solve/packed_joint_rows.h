@@ -90,14 +90,13 @@ struct JointLaneGroup {
     int entry[kWideLanes] = {};  // each lane's joint (PackedJointRows::joints)
     int lanes = 0;       // lanes holding a joint
     bool blocks = false;  // some lane has a point block
-    bool keepable = false;  // some lane's joint may keep its rows (advancePackedErrors moves their errors)
     int rowCount = 0;    // rows with room: the most any lane's joint reserved
     int rowsInUse = 0;   // rows the sweeps take: the most any lane's joint has written this frame
     JointBlockLanes block;
     std::vector<JointRowLanes> rows;
     // Whether a lane's joint may keep its rows to the next substep (joint_pass.h, kJointRowsKeptTurn):
     PackQuat<kWideLanes> builtA, builtB;  // its bodies' turns since the piece began, when its rows were built
-    unsigned keepableLanes = 0;  // bit per lane: its rows follow its bodies' turns alone
+    unsigned keepableLanes = 0;  // bit per lane: its rows follow its bodies' turns alone (the substeps move their errors)
     unsigned builtLanes = 0;     // bit per lane: its rows are in use (built, not left out)
 };
 // [ch11-joint-lanes]

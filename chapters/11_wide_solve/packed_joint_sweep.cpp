@@ -117,17 +117,9 @@ struct OneLane {
 // [ch11-lane-view]
 
 // Negation that flips the sign of zero too, as the scalar code's unary minus does (lanes.h's
-// operator- is 0 - a).
+// negated for packs).
 STEPWISE_LANE_INLINE Real negated(Real a) { return -a; }
-STEPWISE_LANE_INLINE Lanes negated(const Lanes& a) {
-#if defined(STEPWISE_VECTOR_PACKS)
-    return Lanes{-a.v};
-#else
-    Lanes result;
-    for (int i = 0; i < N; ++i) result[i] = -a[i];
-    return result;
-#endif
-}
+using stepwise::negated;
 template <class T>
 STEPWISE_LANE_INLINE Vec<T> negated(const Vec<T>& v) { return {negated(v.x), negated(v.y), negated(v.z)}; }
 
@@ -315,8 +307,8 @@ void advanceGroup(const View& view, JointLaneGroup& group, const Bodies<T>& a, c
     }
 }
 
-// Runs `work(view, a, b)` on a group's bodies, gathered and scattered back (`write`): a group of
-// one joint as plain numbers, any other all lanes at once.
+// Runs `work(view, a, b)` on a group's bodies, gathered from `in` and scattered back into `out`
+// (none: read only): a group of one joint as plain numbers, any other all lanes at once.
 template <class Work>
 STEPWISE_LANE_INLINE void onGroup(const SolverBodyState* in, SolverBodyState* out, const JointLaneGroup& group, Work&& work) {
     if (group.lanes == 1) {
@@ -364,7 +356,7 @@ void solvePacked(PackedJointRows& packed, SolverBodyState* states, bool relax) {
 void advancePackedErrors(PackedJointRows& packed, const SolverBodyState* states, Real h) {
     for (int g = 0; g < packed.groupCount; ++g) {
         JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
-        if (!group.keepable) continue;  // rows built every substep: their errors are measured
+        if (group.keepableLanes == 0) continue;  // rows built every substep: their errors are measured
         onGroup(states, nullptr, group, [&](const auto& view, auto& a, auto& b) { advanceGroup(view, group, a, b, h); });
     }
 }
