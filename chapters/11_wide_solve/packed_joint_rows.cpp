@@ -75,19 +75,23 @@ void packBlock(const JointRowBatch& batch, const std::vector<SolverBody>& bodies
 
 // [ch11-joint-groups]
 void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable, int slotA, int slotB) {
-    const auto last = [&](int slot) -> int& {
-        if (packed.lastGroupOfSlot.size() <= static_cast<std::size_t>(slot))
-            packed.lastGroupOfSlot.resize(static_cast<std::size_t>(slot) + 1, -1);
-        return packed.lastGroupOfSlot[static_cast<std::size_t>(slot)];
-    };
-    // After every group holding an earlier joint of either moving body (slot 0 does not move, and
-    // any number of lanes may read it), in the first such group with a free lane.
+    // The first open group that holds neither moving body (slot 0 does not move, and any number of
+    // lanes may read it): greedy colouring, as Box2D v3 colours its constraint graph.
     const auto full = [&](int group) { return packed.groups[static_cast<std::size_t>(group)].lanes == kWideLanes; };
+    const auto holds = [&](int group) {
+        const JointLaneGroup& held = packed.groups[static_cast<std::size_t>(group)];
+        for (int lane = 0; lane < held.lanes; ++lane)
+            for (const int slot : {slotA, slotB})
+                if (slot != 0 && (held.slotA[lane] == slot || held.slotB[lane] == slot)) return true;
+        return false;
+    };
     while (packed.firstOpenGroup < packed.groupCount && full(packed.firstOpenGroup)) ++packed.firstOpenGroup;
     int g = packed.firstOpenGroup;
-    if (slotA != 0) g = std::max(g, last(slotA) + 1);
-    if (slotB != 0) g = std::max(g, last(slotB) + 1);
-    while (g < packed.groupCount && full(g)) ++g;
+    for (int scanned = 0; g < packed.groupCount; ++g) {
+        if (full(g)) continue;
+        if (!holds(g)) break;
+        if (++scanned == kOpenGroupsScanned) g = packed.groupCount - 1;  // a body of many joints: a group of its own
+    }
     if (g == packed.groupCount) {
         if (packed.groups.size() <= static_cast<std::size_t>(g)) packed.groups.emplace_back();
         JointLaneGroup& fresh = packed.groups[static_cast<std::size_t>(g)];
@@ -118,8 +122,6 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
         if (group.rows.size() < static_cast<std::size_t>(rows)) group.rows.resize(static_cast<std::size_t>(rows));
         group.rowCount = rows;
     }
-    if (slotA != 0) last(slotA) = g;
-    if (slotB != 0) last(slotB) = g;
     packed.joints.push_back(entry);
 }
 // [ch11-joint-groups]

@@ -81,10 +81,11 @@ struct JointBlockLanes {
 };
 
 // [ch11-joint-lanes]
-/// Up to kWideLanes joints that share no moving body, swept side by side. Groups are laid out in
-/// the sweep's order of joints so that every body meets its joints in that order (a joint goes
-/// into the first group after every group that holds one of its bodies' earlier joints): the
-/// sweep over the groups then gives the same numbers as the sweep joint after joint.
+/// Up to kWideLanes joints that share no moving body, swept side by side: a colour of the graph
+/// whose nodes are the bodies and whose edges are the joints. A joint goes into the first open
+/// group that holds neither of its moving bodies. The joints of a group touch different bodies, so
+/// sweeping them side by side gives the same numbers as sweeping them one after another: the sweep
+/// over the groups is Gauss-Seidel joint after joint, in the groups' order.
 struct JointLaneGroup {
     int slotA[kWideLanes] = {}, slotB[kWideLanes] = {};  // the bodies' solver slots (0: an empty lane)
     int entry[kWideLanes] = {};  // each lane's joint (PackedJointRows::joints)
@@ -121,18 +122,22 @@ struct PackedJointRows {
         joints.clear();
         groupCount = 0;
         firstOpenGroup = 0;
-        lastGroupOfSlot.clear();
     }
     std::vector<PackedJoint> joints;
     std::vector<JointLaneGroup> groups;  // the first groupCount are this frame's
     int groupCount = 0;
     int firstOpenGroup = 0;              // every group before it is full
-    std::vector<int> lastGroupOfSlot;    // per solver slot: the last group holding one of its joints
 };
+
+/// How many open groups a joint is tried against before it opens a group of its own. A body
+/// with many joints (a hub, a rope's anchor) fills a group per joint, and trying each new joint
+/// against every one of them would cost the square of their number; past this many the joint
+/// opens a group: a part-empty group swept, where the scan would cost more than the sweep saves.
+constexpr int kOpenGroupsScanned = 32;
 
 /// Reserves room for one more joint (`joint`, the caller's index of it) between the solver slots
 /// `slotA` and `slotB`: `rows` rows and, with `block`, a point block, empty until writePackedJoint
-/// fills them, in the first group after every group holding a joint of either body. Its entry is
+/// fills them, in the first open group holding neither moving body (JointLaneGroup). Its entry is
 /// the next one. `keepable` false: its rows are built every substep, so advancePackedErrors leaves
 /// them be.
 void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable, int slotA = 0,

@@ -2,7 +2,7 @@
 // of joints at a time, one joint per lane (packed_joint_rows.h). Built for the wide solve's
 // instruction set (chapters/CMakeLists.txt). Every lane does chapter 8's arithmetic in the order
 // the scalar rows did it, sums of three products as Eigen rounds them (ch11-eigen-order below), so
-// the groups give the same numbers as a sweep joint after joint.
+// the groups give the same numbers as a sweep joint after joint in the groups' order.
 #include "11_wide_solve/packed_joint_rows.h"
 
 #include "11_wide_solve/body_pack.h"
@@ -332,7 +332,7 @@ STEPWISE_LANE_INLINE void onGroup(const SolverBodyState* in, SolverBodyState* ou
 
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
     // Every block first, then every row, each group in order: every body meets its joints' blocks
-    // and then their rows in the sweep's order of joints.
+    // and then their rows in the groups' order, as chapter 8's warm start pushes them.
     for (int g = 0; g < packed.groupCount; ++g) {
         const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
         if (!group.blocks) continue;

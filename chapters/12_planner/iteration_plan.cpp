@@ -17,6 +17,15 @@ int supportDepth(const World& world, const std::vector<int>& contactOrder, Stack
     if (contactOrder.empty() && (!withJoints || world.joints.empty())) return 0;
     const std::size_t bodyCount = world.bodies.size();
     const auto isDynamic = [&](int body) { return isDynamicBody(world, body); };
+    if (contactOrder.empty()) {
+        // Joints alone carry from a support only where one holds a body that does not move (a
+        // chain's anchor); ragdolls in the air hang from nothing, and the search finds no layer.
+        const auto anchored = [&](const JointDesc& joint) { return !isDynamic(joint.bodyA) || !isDynamic(joint.bodyB); };
+        if (std::none_of(world.joints.begin(), world.joints.end(), anchored)) {
+            search.depth.assign(bodyCount, 0);
+            return 0;
+        }
+    }
     // The contact graph as adjacency lists in two flat arrays (compressed rows).
     std::vector<int>& start = search.start;
     start.assign(bodyCount + 1, 0);

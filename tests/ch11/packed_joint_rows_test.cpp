@@ -84,13 +84,20 @@ TEST_CASE("packed joint rows sweep as chapter 8's rows do", "[ch11][joints]") {
             }
             for (const ConstraintRow& row : rows.rows)
                 if (row.impulse != 0) applyRowImpulse(row, row.impulse, reference);
-            for (const JointRowSet& set : rows.joints) solveJointRows(rows, set, reference);
+            // Joint after joint in the order the packed sweep takes them: its groups' (the joints of
+            // a group touch different bodies, so within one the order does not matter).
+            std::vector<int> order;
+            for (int g = 0; g < pass.packed.groupCount; ++g)
+                for (int lane = 0; lane < pass.packed.groups[static_cast<std::size_t>(g)].lanes; ++lane)
+                    order.push_back(pass.packed.groups[static_cast<std::size_t>(g)].entry[lane]);
+            REQUIRE(order.size() == rows.joints.size());
+            for (const int e : order) solveJointRows(rows, rows.joints[static_cast<std::size_t>(e)], reference);
             for (std::size_t i = 0; i < rows.rows.size(); ++i)
                 if (rows.fedBack[i]) {
                     rows.rows[i].bias = 0;
                     rows.softness[i] = Softness{};
                 }
-            for (const JointRowSet& set : rows.joints) solveJointRows(rows, set, reference);
+            for (const int e : order) solveJointRows(rows, rows.joints[static_cast<std::size_t>(e)], reference);
 
             // The packed sweep.
             SolverBodyState* states = bodies.states.data();
