@@ -30,6 +30,15 @@ enum class ContactSearch { EverySubstep, OncePerFrame };
 /// margin within which a pair becomes a contact before it touches. Zero for zero substeps.
 Real speculativeMargin(const World& world, int bodyA, int bodyB, int substepsAhead);
 
+/// An upper bound on how fast any point of the body moves, m/s: the centre of mass's speed plus the
+/// turn times the farthest a point lies from the centre of mass (maxLeverArm: the radius about the
+/// shape's origin plus the centre's offset from it). Zero for a body without motion.
+Real speedBound(const World& world, int bodyIndex);
+
+/// speculativeMargin from the two bodies' speedBound, for a stage that asks it of many pairs and
+/// bounds each body once.
+Real speculativeMarginOf(const World& world, Real speedA, Real speedB, int substepsAhead);
+
 /// How many substeps a search of this kind must look ahead: 0 every substep, substeps - 1 once
 /// per frame.
 int substepsAhead(const World& world, ContactSearch search);

@@ -24,9 +24,8 @@ std::vector<Aabb> bodyBounds(const World& world) {
     return bounds;
 }
 
-/// An upper bound on how fast any point of the body moves, m/s: the centre of mass's speed plus the
-/// turn times the farthest a point lies from the centre of mass (maxLeverArm: the radius about the
-/// shape's origin plus the centre's offset from it).
+}  // namespace
+
 Real speedBound(const World& world, int bodyIndex) {
     const Motion* motion = world.motionOf(bodyIndex);
     if (!motion) return 0;
@@ -34,18 +33,19 @@ Real speedBound(const World& world, int bodyIndex) {
     return motion->linearVelocity.norm() + motion->angularVelocity.norm() * arm;
 }
 
-}  // namespace
-
 // [ch03-speculative-margin]
 // A search once per frame is not repeated in the later substeps, so a pair must be found already
 // when it could close during them: at the speed the bodies have plus what gravity adds over the
 // frame. A search every substep looks ahead zero substeps and takes only overlapping pairs.
 Real speculativeMargin(const World& world, int bodyA, int bodyB, int lookAhead) {
+    return speculativeMarginOf(world, speedBound(world, bodyA), speedBound(world, bodyB), lookAhead);
+}
+
+Real speculativeMarginOf(const World& world, Real speedA, Real speedB, int lookAhead) {
     if (lookAhead <= 0) return 0;
     const Real substep = world.settings.dt / static_cast<Real>(std::max(1, world.settings.substeps));
     const Real gravityGain = world.settings.gravity.norm() * world.settings.dt;
-    return static_cast<Real>(lookAhead) * substep *
-           (speedBound(world, bodyA) + speedBound(world, bodyB) + 2 * gravityGain);
+    return static_cast<Real>(lookAhead) * substep * (speedA + speedB + 2 * gravityGain);
 }
 // [ch03-speculative-margin]
 

@@ -15,8 +15,12 @@
 namespace stepwise {
 
 Real manifoldMargin(const World& world, int bodyA, int bodyB, Real lookAhead) {
+    return manifoldMarginOf(world, speedBound(world, bodyA), speedBound(world, bodyB), lookAhead);
+}
+
+Real manifoldMarginOf(const World& world, Real speedA, Real speedB, Real lookAhead) {
     if (!(lookAhead > 0)) return 0;
-    return lookAhead * speculativeMargin(world, bodyA, bodyB, 1);
+    return lookAhead * speculativeMarginOf(world, speedA, speedB, 1);
 }
 
 Real pointSlack(const World& world) { return std::max(Real(0), world.settings.slop); }

@@ -74,6 +74,9 @@ bool collideManifold(const Shape& a, const Transform& ta, const Shape& b, const 
 /// which is linear in the substeps, so fractions are allowed). 0 for lookAhead <= 0.
 Real manifoldMargin(const World& world, int bodyA, int bodyB, Real lookAhead);
 
+/// The same from the two bodies' speedBound (chapter 3), for a stage that bounds each body once.
+Real manifoldMarginOf(const World& world, Real speedA, Real speedB, Real lookAhead);
+
 /// How far apart a pair still makes a contact, and a point of it is kept above the reference face,
 /// beyond the pair's margin: one slop. A box rocking on one corner keeps its other corners as speculative points, whose rows
 /// only act if they close faster than the gap allows (Box2D keeps 4 slops, its "speculative

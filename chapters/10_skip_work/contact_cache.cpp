@@ -155,6 +155,17 @@ bool anchorsReproduce(const Contact& contact, const Body& bodyA, const Body& bod
 
 namespace {
 
+/// Chapter 6's manifoldMargin of a pair, each body's speed bound made once a frame, when a pair of
+/// it first asks (a body has a dozen candidate pairs; pairs of sleeping bodies never ask).
+Real pairMargin(const World& world, const BodyPair& pair, Real lookAhead, ContactCacheScratch& scratch) {
+    const auto bound = [&](int body) {
+        Real& speed = scratch.speedBounds[static_cast<std::size_t>(body)];
+        if (!(speed >= 0)) speed = speedBound(world, body);
+        return speed;
+    };
+    return manifoldMarginOf(world, bound(pair.bodyA), bound(pair.bodyB), lookAhead);
+}
+
 /// A pair without a record: apart (or new). Known apart and unable to have closed the gap: nothing
 /// to do. Otherwise its distance is measured as chapter 6 would, and the pair goes to chapter 6
 /// (true) only if it is close enough for a contact; else its gap is recorded.
@@ -166,7 +177,7 @@ bool measureApartPair(World& world, const BodyPair& pair, Real lookAhead, const 
     while (nextGap < world.pairGaps.size() && world.pairGaps[nextGap].pair < pair) ++nextGap;
     const PairGap* known =
         nextGap < world.pairGaps.size() && world.pairGaps[nextGap].pair == pair ? &world.pairGaps[nextGap] : nullptr;
-    const Real keepDistance = manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead) + pointSlack(world);
+    const Real keepDistance = pairMargin(world, pair, lookAhead, scratch) + pointSlack(world);
     if (known && stillApart(*known, bodyA.transform, bodyB.transform, keepDistance)) {
         scratch.gaps.push_back(*known);
         ++stats.apart;
@@ -198,7 +209,7 @@ bool measureApartPair(World& world, const BodyPair& pair, Real lookAhead, const 
 /// what is in reach. Returns whether it was carried; a record not carried goes to chapter 6 with
 /// its points where they now are (its feature ids and impulses are what chapter 6 matches).
 bool carryRecord(World& world, const BodyPair& pair, Contact& record, const ContactCacheRule& rule, Real lookAhead,
-                 ContactCacheStats& stats) {
+                 ContactCacheScratch& scratch, ContactCacheStats& stats) {
     const Body& bodyA = world.bodies[static_cast<std::size_t>(pair.bodyA)];
     const Body& bodyB = world.bodies[static_cast<std::size_t>(pair.bodyB)];
     const bool still = manifoldStillValid(record, bodyA.transform, bodyB.transform, rule);
@@ -212,7 +223,7 @@ bool carryRecord(World& world, const BodyPair& pair, Contact& record, const Cont
         refreshFromAnchors(record, bodyA, bodyB);
     Real shallowest = 0;  // the margin is asked for only where a point lies apart (most carry none)
     for (int i = 0; i < record.pointCount; ++i) shallowest = std::min(shallowest, record.points[i].depth);
-    if (shallowest < 0 && -shallowest > manifoldMargin(world, pair.bodyA, pair.bodyB, lookAhead) + pointSlack(world))
+    if (shallowest < 0 && -shallowest > pairMargin(world, pair, lookAhead, scratch) + pointSlack(world))
         return false;
     for (int i = 0; i < record.pointCount; ++i) record.points[i].persisted = true;
     stats.slid += slides ? 1 : 0;
@@ -275,6 +286,7 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
     scratch.misses.clear();
     scratch.missedRecords.clear();
     scratch.gaps.clear();
+    scratch.speedBounds.assign(world.bodies.size(), Real(-1));  // none made yet this frame
     std::size_t next = 0, nextGap = 0;
     const int bodyCount = static_cast<int>(world.bodies.size());
     for (const BodyPair& pair : candidates) {
@@ -290,7 +302,7 @@ ContactCacheStats updateManifoldsCached(World& world, Real lookAhead, const Mani
             if (measureApartPair(world, pair, lookAhead, options, nextGap, scratch, stats)) scratch.misses.push_back(pair);
             continue;
         } else if (!rule.enabled || !valid || !old || !old->builtPoseKnown || old->pointCount <= 0 ||
-                   old->missedSteps > 0 || !carryRecord(world, pair, *old, rule, lookAhead, stats)) {
+                   old->missedSteps > 0 || !carryRecord(world, pair, *old, rule, lookAhead, scratch, stats)) {
             scratch.misses.push_back(pair);
             if (old) scratch.missedRecords.push_back(*old);
             continue;

@@ -43,6 +43,7 @@ struct ContactCacheScratch {
     std::vector<Contact> previous, missedRecords, merged;
     std::vector<PairGap> gaps;
     std::vector<BodyPair> keptPairs, mergedPairs;
+    std::vector<Real> speedBounds;  // per body, this frame (chapter 3's speedBound; -1: not made yet)
 };
 
 /// Whether B's pose in A's frame is within the rule of the pose the manifold was built at.

@@ -331,17 +331,15 @@ STEPWISE_LANE_INLINE void onGroup(const SolverBodyState* in, SolverBodyState* ou
 }  // namespace
 
 void warmStartPacked(const PackedJointRows& packed, SolverBodyState* states) {
-    // Every block first, then every row, each group in order: every body meets its joints' blocks
-    // and then their rows in the groups' order, as chapter 8's warm start pushes them.
+    // A group at a time, its blocks and then its rows, as the sweeps take it: every body meets its
+    // joints' impulses in the groups' order, with one gather and one scatter a group.
     for (int g = 0; g < packed.groupCount; ++g) {
         const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
-        if (!group.blocks) continue;
-        onGroup(states, states, group, [&](const auto& view, auto& a, auto& b) { warmBlock(view, group, a, b); });
-    }
-    for (int g = 0; g < packed.groupCount; ++g) {
-        const JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
-        if (group.rowsInUse == 0) continue;
-        onGroup(states, states, group, [&](const auto& view, auto& a, auto& b) { warmRows(view, group, a, b); });
+        if (!group.blocks && group.rowsInUse == 0) continue;
+        onGroup(states, states, group, [&](const auto& view, auto& a, auto& b) {
+            if (group.blocks) warmBlock(view, group, a, b);
+            warmRows(view, group, a, b);
+        });
     }
 }
 

@@ -82,11 +82,11 @@ std::vector<LanesTestJoint> lanesTestRead(const PackedJointRows& packed) {
 
 // The sweeps joint after joint, in the groups' order, written out with Eigen.
 void lanesTestWarmStart(const std::vector<LanesTestJoint>& joints, std::vector<SolverBodyState>& states) {
-    for (const LanesTestJoint& joint : joints)
+    for (const LanesTestJoint& joint : joints) {
         if (joint.hasBlock) lanesTestPushBlock(joint.block, joint.block.impulse, states);
-    for (const LanesTestJoint& joint : joints)
         for (const PackedJointRow& row : joint.rows)
             if (row.impulse != 0) lanesTestPushRow(row, row.impulse, states);
+    }
 }
 
 void lanesTestSweep(std::vector<LanesTestJoint>& joints, std::vector<SolverBodyState>& states, bool relax) {
