@@ -162,19 +162,49 @@ JointFrame distanceFrame(const SolverBodies& bodies, const JointPass& pass, std:
 
 int slotOfListed(const JointPass& pass, int entry) { return pass.slot[static_cast<std::size_t>(entry)]; }
 
+// The slots of a joint of `type` (JointImpulses::slot, used or not): a joint's slots depend on its
+// description alone, and its room in the lanes holds them all.
+int slotCountOf(JointType type) {
+    switch (type) {
+        case JointType::Distance: return 1;
+        case JointType::BallSocket: return 3;
+        case JointType::Fixed: return 6;
+        case JointType::Hinge:
+        case JointType::Slider: return 8;
+        case JointType::ConeTwist: return 9;
+    }
+    return JointRowBatch::kMaxRows;
+}
+
+// The frame's first substep lays every listed joint out in the lanes, by colour (layOutPackedJoints),
+// each with room for all its slots; later substeps write a joint built again over its own rows and
+// leave a kept one where it is.
+void layOutJoints(const World& world, JointPass& pass) {
+    pass.packedEntry.assign(pass.joints.size(), -1);
+    pass.rooms.resize(pass.joints.size());
+    for (std::size_t i = 0; i < pass.joints.size(); ++i) {
+        const JointType type = world.joints[static_cast<std::size_t>(pass.joints[i])].type;
+        JointRoom& room = pass.rooms[i];
+        room.joint = static_cast<int>(i);
+        room.rows = slotCountOf(type);
+        room.block = type != JointType::Distance && type != JointType::Slider;
+        room.keepable = rowsFollowTurnsAlone(type);
+        room.slotA = slotOfListed(pass, pass.entryA[i]);
+        room.slotB = slotOfListed(pass, pass.entryB[i]);
+    }
+    layOutPackedJoints(pass.packed, pass.rooms);
+}
+
 // Builds listed joint i's rows where its bodies stand now into its entry, which the frame's first
 // substep lays out; its slot count into `slots`. False (the entry left empty) if a row came out
 // non-finite. A joint of one row skips chapter 8's batch and is written straight into its room
 // (writeDistanceJoint): the same rule, a tenth of the room.
-bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback, bool firstSubstep, std::size_t i,
+bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback, std::size_t i,
                       const JointFrame& frame, JointPass& pass, int& slots) {
     const int entry = static_cast<int>(i);
     const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
     JointImpulses& carried = pass.carried[i];
     if (joint.type == JointType::Distance) {  // one row
-        if (firstSubstep)
-            reservePackedJoint(pass.packed, entry, 1, /*block=*/false, /*keepable=*/false, slotOfListed(pass, pass.entryA[i]),
-                               slotOfListed(pass, pass.entryB[i]));
         if (!writeDistanceJoint(joint, frame, pass.entryA[i], pass.entryB[i], h, feedback, carried.slot[0], pass.bodies,
                                 pass.slot, pass.packed, entry))
             return false;
@@ -184,14 +214,6 @@ bool buildListedJoint(const World& world, Real h, const JointFeedback& feedback,
     JointRowBatch& batch = pass.batch;
     const bool built = buildJointRowBatch(batch, joint, pass.joints[i], frame, pass.entryA[i], pass.entryB[i],
                                           pass.bodies, h, feedback, &carried, kPackedNeeds);
-    if (firstSubstep) {
-        const bool pointBlock = joint.type != JointType::Distance && joint.type != JointType::Slider;
-        // A joint's slots depend on its description alone; one not built yet gets them all (a
-        // point block whose K is singular goes as three rows: room for every slot).
-        reservePackedJoint(pass.packed, entry, built ? batch.count : JointRowBatch::kMaxRows, pointBlock,
-                           rowsFollowTurnsAlone(joint.type), slotOfListed(pass, pass.entryA[i]),
-                           slotOfListed(pass, pass.entryB[i]));
-    }
     if (!built || !writePackedJoint(batch, pass.bodies, pass.slot, pass.packed, entry)) return false;
     // Every slot carries its impulse clamped to this substep's bounds; the sweeps' own rows
     // overwrite theirs when the piece ends or the joint is built again (keepJointImpulses).
@@ -269,10 +291,7 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
     pass.invalidSkipped = 0;
     // The frame's first substep lays the joints out, each with room for all its slots; later
     // substeps write a joint built again over its own rows and leave a kept one where it is.
-    if (firstSubstep) {
-        pass.packed.clear();
-        pass.packedEntry.assign(pass.joints.size(), -1);
-    }
+    if (firstSubstep) layOutJoints(world, pass);
     if (pass.joints.empty()) return;
     const JointFeedback feedback = fastJointFeedback(world.settings, h);
     ++pass.substepStamp;  // the poses made last substep are stale
@@ -303,7 +322,7 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         if (!firstSubstep) keepPackedImpulsesOf(pass.packed, static_cast<int>(i), pass.carried);
         pass.packedEntry[i] = -1;
         int slots = 0;
-        if (!buildListedJoint(world, h, feedback, firstSubstep, i, frame, pass, slots)) {
+        if (!buildListedJoint(world, h, feedback, i, frame, pass, slots)) {
             emptyPackedJoint(pass.packed, static_cast<int>(i));
             markPackedBuilt(pass.packed, static_cast<int>(i), false);
             ++pass.invalidSkipped;  // left out this substep; its impulses wait as they are

@@ -6,6 +6,7 @@
 #include "11_wide_solve/lanes.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 
 namespace stepwise {
@@ -73,58 +74,106 @@ void packBlock(const JointRowBatch& batch, const std::vector<SolverBody>& bodies
 
 }  // namespace
 
-// [ch11-joint-groups]
-void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable, int slotA, int slotB) {
-    // The first open group that holds neither moving body (slot 0 does not move, and any number of
-    // lanes may read it): greedy colouring, as Box2D v3 colours its constraint graph.
-    const auto full = [&](int group) { return packed.groups[static_cast<std::size_t>(group)].lanes == kWideLanes; };
-    const auto holds = [&](int group) {
-        const JointLaneGroup& held = packed.groups[static_cast<std::size_t>(group)];
-        for (int lane = 0; lane < held.lanes; ++lane)
-            for (const int slot : {slotA, slotB})
-                if (slot != 0 && (held.slotA[lane] == slot || held.slotB[lane] == slot)) return true;
-        return false;
-    };
-    while (packed.firstOpenGroup < packed.groupCount && full(packed.firstOpenGroup)) ++packed.firstOpenGroup;
-    int g = packed.firstOpenGroup;
-    for (int scanned = 0; g < packed.groupCount; ++g) {
-        if (full(g)) continue;
-        if (!holds(g)) break;
-        if (++scanned == kOpenGroupsScanned) g = packed.groupCount - 1;  // a body of many joints: a group of its own
-    }
-    if (g == packed.groupCount) {
-        if (packed.groups.size() <= static_cast<std::size_t>(g)) packed.groups.emplace_back();
-        JointLaneGroup& fresh = packed.groups[static_cast<std::size_t>(g)];
-        fresh.lanes = 0;
-        fresh.blocks = false;
-        fresh.rowCount = 0;
-        fresh.rowsInUse = 0;
-        fresh.keepableLanes = fresh.builtLanes = 0;
-        for (int lane = 0; lane < kWideLanes; ++lane) fresh.slotA[lane] = fresh.slotB[lane] = 0;
+namespace {
 
-        ++packed.groupCount;
-    }
+// A fresh, empty group after the frame's last.
+int openGroup(PackedJointRows& packed) {
+    const int g = packed.groupCount++;
+    if (packed.groups.size() <= static_cast<std::size_t>(g)) packed.groups.emplace_back();
+    JointLaneGroup& fresh = packed.groups[static_cast<std::size_t>(g)];
+    fresh.lanes = 0;
+    fresh.blocks = false;
+    fresh.rowCount = 0;
+    fresh.rowsInUse = 0;
+    fresh.keepableLanes = fresh.builtLanes = 0;
+    for (int lane = 0; lane < kWideLanes; ++lane) fresh.slotA[lane] = fresh.slotB[lane] = 0;
+    return g;
+}
+
+// Joint `entry` into the next lane of group g, with the room it asks for.
+void placeJoint(PackedJointRows& packed, int g, int entry, const JointRoom& room) {
     JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
-    PackedJoint entry;
-    entry.joint = joint;
-    entry.keepable = keepable;
-    entry.group = g;
-    entry.lane = group.lanes++;
-    entry.rowRoom = rows;
-    entry.blockRoom = block;
-    group.slotA[entry.lane] = slotA;
-    group.slotB[entry.lane] = slotB;
-    group.entry[entry.lane] = static_cast<int>(packed.joints.size());
-    if (block && !group.blocks) group.block = JointBlockLanes{};  // every lane zero until its joint writes it
-    group.blocks = group.blocks || block;
-    if (keepable) group.keepableLanes |= 1u << entry.lane;
-    if (rows > group.rowCount) {  // room only: a row is zeroed when a lane first writes it (rowToWrite)
-        if (group.rows.size() < static_cast<std::size_t>(rows)) group.rows.resize(static_cast<std::size_t>(rows));
-        group.rowCount = rows;
+    PackedJoint& joint = packed.joints[static_cast<std::size_t>(entry)];
+    joint = PackedJoint{};
+    joint.joint = room.joint;
+    joint.keepable = room.keepable;
+    joint.group = g;
+    joint.lane = group.lanes++;
+    joint.rowRoom = room.rows;
+    joint.blockRoom = room.block;
+    group.slotA[joint.lane] = room.slotA;
+    group.slotB[joint.lane] = room.slotB;
+    group.entry[joint.lane] = entry;
+    if (room.block && !group.blocks) group.block = JointBlockLanes{};  // every lane zero until its joint writes it
+    group.blocks = group.blocks || room.block;
+    if (room.keepable) group.keepableLanes |= 1u << joint.lane;
+    if (room.rows > group.rowCount) {  // room only: a row is zeroed when a lane first writes it (rowToWrite)
+        if (group.rows.size() < static_cast<std::size_t>(room.rows)) group.rows.resize(static_cast<std::size_t>(room.rows));
+        group.rowCount = room.rows;
     }
-    packed.joints.push_back(entry);
+}
+
+}  // namespace
+
+// [ch11-joint-groups]
+void layOutPackedJoints(PackedJointRows& packed, const std::vector<JointRoom>& rooms) {
+    packed.clear();
+    const std::size_t count = rooms.size();
+    packed.joints.resize(count);
+    // Each joint's colour: the first that holds neither of its moving bodies (slot 0 does not
+    // move, and any number of joints may read it), a bit per colour per body. A joint of a body
+    // whose 64 colours are all taken (a hub) gets a colour of its own.
+    int slots = 1;
+    for (const JointRoom& room : rooms) slots = std::max({slots, room.slotA + 1, room.slotB + 1});
+    std::vector<std::uint64_t>& taken = packed.coloursOfSlot;
+    taken.assign(static_cast<std::size_t>(slots), 0);
+    std::vector<int>& colour = packed.colourOfJoint;
+    colour.resize(count);
+    int colours = 0, overflow = kMaskedColours;
+    for (std::size_t i = 0; i < count; ++i) {
+        const JointRoom& room = rooms[i];
+        const std::uint64_t held = (room.slotA ? taken[static_cast<std::size_t>(room.slotA)] : 0) |
+                                   (room.slotB ? taken[static_cast<std::size_t>(room.slotB)] : 0);
+        int c = overflow;
+        if (~held != 0) {
+            c = 0;
+            while (held >> c & 1u) ++c;
+            for (const int slot : {room.slotA, room.slotB})
+                if (slot != 0) taken[static_cast<std::size_t>(slot)] |= std::uint64_t(1) << c;
+        } else {
+            ++overflow;
+        }
+        colour[i] = c;
+        colours = std::max(colours, c + 1);
+    }
+    // The groups: each colour's joints in their order, kWideLanes to a group, colour after colour.
+    // The joints of a colour touch different bodies, so however a width cuts a colour into groups
+    // the sweep gives the same numbers: the layout's answer does not depend on the lanes.
+    std::vector<int>& start = packed.colourStart;
+    start.assign(static_cast<std::size_t>(colours) + 1, 0);
+    for (const int c : colour) ++start[static_cast<std::size_t>(c) + 1];
+    for (int c = 0; c < colours; ++c) start[static_cast<std::size_t>(c) + 1] += start[static_cast<std::size_t>(c)];
+    std::vector<int>& order = packed.colourOrder;
+    order.resize(count);
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < count; ++i) order[static_cast<std::size_t>(fill[static_cast<std::size_t>(colour[i])]++)] = static_cast<int>(i);
+    int group = -1, groupColour = -1;
+    for (const int entry : order) {
+        const int c = colour[static_cast<std::size_t>(entry)];
+        if (group < 0 || c != groupColour || packed.groups[static_cast<std::size_t>(group)].lanes == kWideLanes) {
+            group = openGroup(packed);
+            groupColour = c;
+        }
+        placeJoint(packed, group, entry, rooms[static_cast<std::size_t>(entry)]);
+    }
 }
 // [ch11-joint-groups]
+
+void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable, int slotA, int slotB) {
+    const int entry = static_cast<int>(packed.joints.size());
+    packed.joints.emplace_back();
+    placeJoint(packed, openGroup(packed), entry, JointRoom{joint, rows, block, keepable, slotA, slotB});
+}
 
 namespace {
 

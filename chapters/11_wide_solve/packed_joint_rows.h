@@ -17,6 +17,7 @@
 #include "08_joints/joint_rows.h"
 #include "11_wide_solve/solver_data.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace stepwise {
@@ -81,11 +82,11 @@ struct JointBlockLanes {
 };
 
 // [ch11-joint-lanes]
-/// Up to kWideLanes joints that share no moving body, swept side by side: a colour of the graph
-/// whose nodes are the bodies and whose edges are the joints. A joint goes into the first open
-/// group that holds neither of its moving bodies. The joints of a group touch different bodies, so
-/// sweeping them side by side gives the same numbers as sweeping them one after another: the sweep
-/// over the groups is Gauss-Seidel joint after joint, in the groups' order.
+/// Up to kWideLanes joints that share no moving body, swept side by side: part of a colour of the
+/// graph whose nodes are the bodies and whose edges are the joints (layOutPackedJoints). The joints
+/// of a group touch different bodies, so sweeping them side by side gives the same numbers as
+/// sweeping them one after another: the sweep over the groups is Gauss-Seidel joint after joint,
+/// in the groups' order.
 struct JointLaneGroup {
     int slotA[kWideLanes] = {}, slotB[kWideLanes] = {};  // the bodies' solver slots (0: an empty lane)
     int entry[kWideLanes] = {};  // each lane's joint (PackedJointRows::joints)
@@ -121,25 +122,41 @@ struct PackedJointRows {
     void clear() {
         joints.clear();
         groupCount = 0;
-        firstOpenGroup = 0;
     }
     std::vector<PackedJoint> joints;
     std::vector<JointLaneGroup> groups;  // the first groupCount are this frame's
     int groupCount = 0;
-    int firstOpenGroup = 0;              // every group before it is full
+    // The layout's buffers (layOutPackedJoints), kept for their room:
+    std::vector<std::uint64_t> coloursOfSlot;  // per solver slot: a bit per colour holding one of its joints
+    std::vector<int> colourOfJoint, colourStart, colourOrder;
 };
 
-/// How many open groups a joint is tried against before it opens a group of its own. A body
-/// with many joints (a hub, a rope's anchor) fills a group per joint, and trying each new joint
-/// against every one of them would cost the square of their number; past this many the joint
-/// opens a group: a part-empty group swept, where the scan would cost more than the sweep saves.
-constexpr int kOpenGroupsScanned = 32;
+/// What one joint asks of the layout: room for `rows` rows and, with `block`, a point block;
+/// `keepable`: its rows may be kept to the next substep (else built every substep, and
+/// advancePackedErrors leaves them be); its bodies' solver slots (0: does not move); `joint`, the
+/// caller's index of it.
+struct JointRoom {
+    int joint = 0;
+    int rows = 0;
+    bool block = false;
+    bool keepable = false;
+    int slotA = 0, slotB = 0;
+};
 
-/// Reserves room for one more joint (`joint`, the caller's index of it) between the solver slots
-/// `slotA` and `slotB`: `rows` rows and, with `block`, a point block, empty until writePackedJoint
-/// fills them, in the first open group holding neither moving body (JointLaneGroup). Its entry is
-/// the next one. `keepable` false: its rows are built every substep, so advancePackedErrors leaves
-/// them be.
+/// Colours one bit each of a body's mask stands for; past them a joint of that body takes a
+/// colour of its own. A body with more joints than this is a hub (a rope's anchor, a wheel's
+/// spokes), whose joints each cost a part-empty group's sweep and nothing else.
+constexpr int kMaskedColours = 64;
+
+/// Lays out a frame's joints, entry i for rooms[i], empty until written (writePackedJoint,
+/// writeDistanceJoint): each joint's colour is the first that holds neither of its moving bodies
+/// (greedy colouring, as Box2D v3 colours its constraint graph), and the groups are the colours in
+/// order, each cut into groups of kWideLanes joints. Within a colour no two joints share a moving
+/// body, so the sweep's numbers are the same at every width.
+void layOutPackedJoints(PackedJointRows& packed, const std::vector<JointRoom>& rooms);
+
+/// One more joint (entry: the next) in a group of its own: a layout of single joints, for tests of
+/// one joint's rows.
 void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block, bool keepable, int slotA = 0,
                         int slotB = 0);
 

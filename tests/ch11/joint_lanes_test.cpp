@@ -252,14 +252,41 @@ TEST_CASE("the joints' lane groups sweep with the same bits as one joint after a
     }
 }
 
-/// The lane groups the frame's first substep lays out for a world's joints.
-int lanesTestGroups(const World& world) {
+/// The lane groups and colours the frame's first substep lays out for a world's joints.
+struct LanesTestLayout {
+    int groups = 0;
+    std::vector<int> colourSizes;  // joints per colour
+};
+
+LanesTestLayout lanesTestLayout(const World& world) {
     SolverBodies bodies;
     prepareBodies(world, bodies);
     JointPass pass;
     prepareJointPass(world, bodies, 1, pass);
     buildJointRows(world, bodies, Real(1) / Real(600), /*firstSubstep=*/true, pass);
-    return pass.packed.groupCount;
+    LanesTestLayout layout;
+    layout.groups = pass.packed.groupCount;
+    const std::vector<int>& start = pass.packed.colourStart;
+    for (std::size_t c = 0; c + 1 < start.size(); ++c) layout.colourSizes.push_back(start[c + 1] - start[c]);
+    // Every group inside one colour, and no group holds a moving body twice.
+    for (int g = 0; g < pass.packed.groupCount; ++g) {
+        const JointLaneGroup& group = pass.packed.groups[static_cast<std::size_t>(g)];
+        for (int lane = 0; lane < group.lanes; ++lane) {
+            const int colour = pass.packed.colourOfJoint[static_cast<std::size_t>(group.entry[lane])];
+            CHECK(colour == pass.packed.colourOfJoint[static_cast<std::size_t>(group.entry[0])]);
+            for (int other = 0; other < lane; ++other)
+                for (const int slot : {group.slotA[lane], group.slotB[lane]})
+                    CHECK((slot == 0 || (slot != group.slotA[other] && slot != group.slotB[other])));
+        }
+    }
+    return layout;
+}
+
+/// The groups a layout of these colours takes at `lanes` lanes: each colour cut into full groups.
+int lanesTestGroupsOf(const std::vector<int>& colourSizes, int lanes) {
+    int groups = 0;
+    for (const int size : colourSizes) groups += (size + lanes - 1) / lanes;
+    return groups;
 }
 
 TEST_CASE("joints pack into as few lane groups as their shared bodies allow", "[ch11][joints]") {
@@ -268,24 +295,23 @@ TEST_CASE("joints pack into as few lane groups as their shared bodies allow", "[
     spec.direction = Vec3(1, 0, 0);
     addChain(chain, spec);
     // A chain's joints each share a body with the next, so two colours hold it: every other link's
-    // joint, side by side (20 joints: the evens fill a group of eight, the odds another, and the
-    // last four take two more).
-    const int perColour = static_cast<int>(chain.joints.size()) / 2;
-    CHECK(lanesTestGroups(chain) == 2 * ((perColour + kWideLanes - 1) / kWideLanes));
-    // A ragdoll's chest holds four joints, so no layout has fewer than four groups, and the greedy
-    // colouring in the sweep's order of joints finds four. A hundred ragdolls fill their groups:
-    // 125 of eight lanes (the float build's, exercise 9), 250 of four (doubles).
-    CHECK(lanesTestGroups(buildRagdollField(1, 0)) == 4);
-    const int two = lanesTestGroups(buildRagdollField(2, 0));
-    CHECK(two >= std::max(4, (20 + kWideLanes - 1) / kWideLanes));
-    if (kWideLanes == 8) CHECK(two == 4);
-    const int fullGroups = (1000 + kWideLanes - 1) / kWideLanes;
-    const int hundred = lanesTestGroups(buildRagdollField(100, 0));
-    CHECK(hundred >= fullGroups);
-    CHECK(hundred <= fullGroups + 4);  // at most the last few part full
-    if (kWideLanes <= 8) CHECK(hundred == fullGroups);
+    // joint (20 joints: ten and ten; at eight lanes, four groups).
+    const LanesTestLayout chainLayout = lanesTestLayout(chain);
+    CHECK(chainLayout.colourSizes == std::vector<int>{10, 10});
+    CHECK(chainLayout.groups == lanesTestGroupsOf(chainLayout.colourSizes, kWideLanes));
+    // A ragdoll's chest holds four joints, so no layout has fewer than four colours, and the greedy
+    // colouring in the sweep's order of joints finds four; at eight lanes one ragdoll takes four
+    // groups, two take five and a hundred 126 (exercise 9).
+    for (const int ragdolls : {1, 2, 100}) {
+        const LanesTestLayout layout = lanesTestLayout(buildRagdollField(ragdolls, 0));
+        CHECK(layout.colourSizes.size() == 4);
+        CHECK(layout.groups == lanesTestGroupsOf(layout.colourSizes, kWideLanes));
+        const int fullGroups = (10 * ragdolls + kWideLanes - 1) / kWideLanes;
+        CHECK(layout.groups >= fullGroups);
+        CHECK(layout.groups <= fullGroups + 3);  // each colour's last group part full
+        if (kWideLanes == 8) CHECK(layout.groups == (ragdolls == 1 ? 4 : ragdolls == 2 ? 5 : 126));
+    }
 }
-
 
 TEST_CASE("a lane group keeps a joint's rows exactly when the scalar turn test would", "[ch11][joints]") {
     // Turns near the bound kJointRowsKeptTurn, where the last bit of the quaternions' dot product
