@@ -38,6 +38,7 @@ Real speedBound(const World& world, int bodyIndex) {
 // when it could close during them: at the speed the bodies have plus what gravity adds over the
 // frame. A search every substep looks ahead zero substeps and takes only overlapping pairs.
 Real speculativeMargin(const World& world, int bodyA, int bodyB, int lookAhead) {
+    if (lookAhead <= 0) return 0;  // a search every substep: no bound to make
     return speculativeMarginOf(world, speedBound(world, bodyA), speedBound(world, bodyB), lookAhead);
 }
 

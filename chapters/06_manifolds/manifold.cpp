@@ -15,6 +15,7 @@
 namespace stepwise {
 
 Real manifoldMargin(const World& world, int bodyA, int bodyB, Real lookAhead) {
+    if (!(lookAhead > 0)) return 0;
     return manifoldMarginOf(world, speedBound(world, bodyA), speedBound(world, bodyB), lookAhead);
 }
 

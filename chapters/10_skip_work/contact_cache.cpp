@@ -158,6 +158,7 @@ namespace {
 /// Chapter 6's manifoldMargin of a pair, each body's speed bound made once a frame, when a pair of
 /// it first asks (a body has a dozen candidate pairs; pairs of sleeping bodies never ask).
 Real pairMargin(const World& world, const BodyPair& pair, Real lookAhead, ContactCacheScratch& scratch) {
+    if (!(lookAhead > 0)) return 0;
     const auto bound = [&](int body) {
         Real& speed = scratch.speedBounds[static_cast<std::size_t>(body)];
         if (!(speed >= 0)) speed = speedBound(world, body);

@@ -155,7 +155,8 @@ void layOutPackedJoints(PackedJointRows& packed, const std::vector<JointRoom>& r
     for (int c = 0; c < colours; ++c) start[static_cast<std::size_t>(c) + 1] += start[static_cast<std::size_t>(c)];
     std::vector<int>& order = packed.colourOrder;
     order.resize(count);
-    std::vector<int> fill(start.begin(), start.end() - 1);
+    std::vector<int>& fill = packed.colourFill;
+    fill.assign(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < count; ++i) order[static_cast<std::size_t>(fill[static_cast<std::size_t>(colour[i])]++)] = static_cast<int>(i);
     int group = -1, groupColour = -1;
     for (const int entry : order) {

@@ -128,7 +128,7 @@ struct PackedJointRows {
     int groupCount = 0;
     // The layout's buffers (layOutPackedJoints), kept for their room:
     std::vector<std::uint64_t> coloursOfSlot;  // per solver slot: a bit per colour holding one of its joints
-    std::vector<int> colourOfJoint, colourStart, colourOrder;
+    std::vector<int> colourOfJoint, colourStart, colourOrder, colourFill;
 };
 
 /// What one joint asks of the layout: room for `rows` rows and, with `block`, a point block;
