@@ -56,8 +56,9 @@ struct Settings {
     // quarter at 20 substeps of a 60 Hz frame: as stiff as any planned count up to 20 allows
     // (Box2D v3 defaults to 60 Hz and ratio 2). A higher ratio keeps more of a row's impulse each
     // sweep (impulse scale 5% against 10% at 150 Hz): a limb pinned between contacts yields less
-    // to them, and every seed of the 100-ragdoll field settles within 2 degrees at 5
-    // (bench/results/ragdoll-field-seeds.txt).
+    // to them, and every seed of the 100-ragdoll field settles within 2 degrees at 5. Its price:
+    // half the bias rate, so a fast-swinging chain's joints part further while it swings hardest
+    // (bench/results/joint-damping.txt).
     Real jointHertz = Real(300);                      // Hz
     Real jointDampingRatio = Real(5);                 // 1: critically damped
     Real maxPushOutSpeed = Real(3);                   // m/s: the fastest a penetration is pushed out (chapter 6)
