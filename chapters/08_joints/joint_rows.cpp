@@ -333,7 +333,7 @@ bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointI
     JointRowSet& set = batch.set;
     set = JointRowSet{};
     set.joint = jointIndex;
-    if (joint.type != JointType::Distance && joint.type != JointType::Slider)
+    if (hasPointBlock(joint.type))
         setPointBlock(set, frame, bodies[static_cast<std::size_t>(rowBodyA)], bodies[static_cast<std::size_t>(rowBodyB)]);
     RowBuilder builder(batch, feedback, h);
     // A block made from non-finite arms is not invertible, so its rows are built whole and the

@@ -106,6 +106,24 @@ struct JointBatchNeeds {
     bool effectiveMasses = true;  // false: every row's effectiveMass is left 0
 };
 
+/// The slots the rules below fill for a joint of `type`, used or not (JointImpulses::slot): a
+/// hinge's three point rows, two across its axis, two limits and a motor; a cone twist's three
+/// point rows, the swing, two twist limits and three friction rows. They depend on the type alone.
+constexpr int jointSlotCount(JointType type) {
+    switch (type) {
+        case JointType::Distance: return 1;
+        case JointType::BallSocket: return 3;
+        case JointType::Fixed: return 6;
+        case JointType::Hinge:
+        case JointType::Slider: return 8;
+        case JointType::ConeTwist: return 9;
+    }
+    return JointRowBatch::kMaxRows;
+}
+
+/// Whether a joint of `type` solves slots 0-2 (its anchors together) as one 3x3 block.
+constexpr bool hasPointBlock(JointType type) { return type != JointType::Distance && type != JointType::Slider; }
+
 /// Builds the rows of `joint` at `frame` into `batch` (appendJointRows' rules, the same numbers):
 /// false, with nothing to solve, if any row came out non-finite.
 bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointIndex, const JointFrame& frame,

@@ -162,20 +162,6 @@ JointFrame distanceFrame(const SolverBodies& bodies, const JointPass& pass, std:
 
 int slotOfListed(const JointPass& pass, int entry) { return pass.slot[static_cast<std::size_t>(entry)]; }
 
-// The slots of a joint of `type` (JointImpulses::slot, used or not): a joint's slots depend on its
-// description alone, and its room in the lanes holds them all.
-int slotCountOf(JointType type) {
-    switch (type) {
-        case JointType::Distance: return 1;
-        case JointType::BallSocket: return 3;
-        case JointType::Fixed: return 6;
-        case JointType::Hinge:
-        case JointType::Slider: return 8;
-        case JointType::ConeTwist: return 9;
-    }
-    return JointRowBatch::kMaxRows;
-}
-
 // The frame's first substep lays every listed joint out in the lanes, by colour (layOutPackedJoints),
 // each with room for all its slots; later substeps write a joint built again over its own rows and
 // leave a kept one where it is.
@@ -186,8 +172,8 @@ void layOutJoints(const World& world, JointPass& pass) {
         const JointType type = world.joints[static_cast<std::size_t>(pass.joints[i])].type;
         JointRoom& room = pass.rooms[i];
         room.joint = static_cast<int>(i);
-        room.rows = slotCountOf(type);
-        room.block = type != JointType::Distance && type != JointType::Slider;
+        room.rows = jointSlotCount(type);  // every slot, used or not: a joint's room holds them all
+        room.block = hasPointBlock(type);
         room.keepable = rowsFollowTurnsAlone(type);
         room.slotA = slotOfListed(pass, pass.entryA[i]);
         room.slotB = slotOfListed(pass, pass.entryB[i]);

@@ -3,7 +3,10 @@
 // turns a joint red past 1 cm; the gallery file loads, runs without warnings and survives a save
 // and a load; bad joint input is rejected at its JSON path.
 #include "08_joints/chapter.h"
+#include "04_pgs/solver.h"
 #include "08_joints/joint_frame.h"
+#include "08_joints/joint_rows.h"
+#include "08_joints/joint_solver.h"
 #include "08_joints/joint_view.h"
 #include "08_joints/kinematic.h"
 #include "08_joints/scenes.h"
@@ -381,4 +384,21 @@ TEST_CASE("every shipped scene file still loads", "[ch08][scenes]") {
         ++files;
     }
     CHECK(files >= 5);
+}
+
+TEST_CASE("every joint of the gallery fills the slots jointSlotCount gives its type", "[ch08][joints]") {
+    // A later solve lays out room for a joint before building it (chapter 11's lanes): the count
+    // must be the rules' own, whatever a row comes out as this step.
+    const World world = buildJointGallery();
+    const std::vector<SolverBody> bodies = gatherSolverBodies(world);
+    const JointFeedback feedback = jointFeedback(world.settings, world.settings.dt);
+    JointRows rows;
+    for (std::size_t j = 0; j < world.joints.size(); ++j) {
+        const std::size_t before = rows.joints.size();
+        appendJointRows(rows, world, static_cast<int>(j), bodies, world.settings.dt, feedback, /*carryImpulses=*/false);
+        REQUIRE(rows.joints.size() == before + 1);
+        INFO("joint " << j << ", type " << static_cast<int>(world.joints[j].type));
+        CHECK(rows.joints.back().rowCount == jointSlotCount(world.joints[j].type));
+        CHECK(rows.joints.back().pointBlock == hasPointBlock(world.joints[j].type));
+    }
 }
