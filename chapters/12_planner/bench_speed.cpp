@@ -65,6 +65,7 @@ struct Measurement {
     Real beyondTrue = -1;      // m, most a contact read deeper than its shapes overlap (contact_truth.h); -1: not checked
     Real shortOfTrue = -1;     // m, most a pair's shapes overlapped beyond its contact's deepest point; -1: not checked
     JointErrorSummary jointError;  // largest over the last second (scenes with joints)
+    Real jointGapMean = -1;        // m, each second's largest anchor gap, averaged over the run; -1: no joints
     int sleeping = 0;
     FastSolveStats solvePhases;  // ms per timed frame in each phase of the fast solve
     long jointsBuilt = 0, jointsKept = 0;  // timed frames' substeps: joints whose rows were built, kept
@@ -86,6 +87,8 @@ void measurePoses(const World& start, const std::vector<Transform>& poses, Measu
 
 /// Frames after which a scene counts as landed: five seconds.
 constexpr long kSettledFrom = 300;
+/// The bench's scenes step at 60 Hz.
+constexpr long kFramesASecond = 60;
 
 /// Chapter 10 stepping a copy of `start` one frame at a time (so that the peer's frames can
 /// alternate with its own, runBeside), measuring as it goes.
@@ -104,10 +107,17 @@ public:
         if (frame == timedFrom_ && options_.profile) *options_.profile = FastSolveStats{};
         pipeline_.step(world_);
         ++frames_;
-        if (!world_.joints.empty() && frame + 60 >= lastFrame_) {  // the last second: settled joints
+        if (!world_.joints.empty()) {
             const JointErrorSummary error = largestJointError(world_, allJoints_);
-            measured_.jointError.position = std::max(measured_.jointError.position, error.position);
-            measured_.jointError.angle = std::max(measured_.jointError.angle, error.angle);
+            // Each second's largest gap: a swinging chain parts most while it swings hardest, and
+            // its last second alone is one draw of a chaotic swing (bench/results/joint-damping.txt).
+            const auto second = static_cast<std::size_t>(frame / kFramesASecond);
+            if (secondGaps_.size() <= second) secondGaps_.resize(second + 1, 0);
+            secondGaps_[second] = std::max(secondGaps_[second], error.position);
+            if (frame + kFramesASecond >= lastFrame_) {  // the last second: settled joints
+                measured_.jointError.position = std::max(measured_.jointError.position, error.position);
+                measured_.jointError.angle = std::max(measured_.jointError.angle, error.angle);
+            }
         }
         // The deepest contact from the fifth second on (the last frame of a shorter run): what is
         // left once a pile has landed.
@@ -136,6 +146,11 @@ public:
         for (const Body& body : world_.bodies) poses.push_back(body.transform);
         measurePoses(start_, poses, measured_);
         for (const Motion& motion : world_.motions) measured_.sleeping += motion.asleep ? 1 : 0;
+        if (!secondGaps_.empty()) {
+            Real sum = 0;
+            for (const Real gap : secondGaps_) sum += gap;
+            measured_.jointGapMean = sum / static_cast<Real>(secondGaps_.size());
+        }
         return measured_;
     }
 
@@ -154,6 +169,7 @@ private:
     long frames_ = 0;
     long stageTimedFrames_ = 0;
     std::vector<double> stepMs_;
+    std::vector<Real> secondGaps_;  // m, the largest anchor gap in each second of the run so far
     Measurement measured_;
 };
 
@@ -277,7 +293,8 @@ void measureScenes(BenchRun& bench, const std::vector<BenchScene>& scenes, const
                           scene.joints && !configuration->peer ? formatNumber(m.jointError.angle) : "",
                           peerMs > 0 ? formatNumber(peerMs / m.stepMs.median, 3) : "",
                           m.beyondTrue >= 0 ? formatNumber(m.beyondTrue) : "",
-                          m.shortOfTrue >= 0 ? formatNumber(m.shortOfTrue) : ""});
+                          m.shortOfTrue >= 0 ? formatNumber(m.shortOfTrue) : "",
+                          m.jointGapMean >= 0 ? formatNumber(m.jointGapMean) : ""});
         }
     }
     bench.progress().endStage();
@@ -410,7 +427,7 @@ void measureSpeed(BenchRun& bench) {
     CsvTable table({"scene", "bodies", "configuration", "frames", "ms_median", "ms_q1", "ms_q3", "broadphase_ms",
                     "narrowphase_ms", "solve_ms", "ns_per_body", "max_sideways_m", "lowest_m", "max_penetration_m",
                     "joint_error_m", "joint_error_rad", "x_faster_than_peer", "depth_beyond_true_m",
-                    "overlap_unseen_m"});
+                    "overlap_unseen_m", "joint_gap_mean_m"});
     // Where the fast solve's time goes, phase by phase (chapter 10's configuration).
     CsvTable profile({"scene", "manifolds", "points", "prepare_ms", "integrate_ms", "warm_start_ms", "solve_ms",
                       "relax_ms", "store_ms", "joint_rows_kept"});

@@ -14,11 +14,12 @@ Real loadPathMassRatio(const World& world, const std::vector<int>& contactOrder,
     const Real g = world.settings.gravity.norm();
     if (!(g > 0)) return touchingRatio;
     const Vec3 up = -world.settings.gravity / g;
-    const auto height = [&](int body) { return world.bodies[static_cast<std::size_t>(body)].transform.position.dot(up); };
     // Higher first; at one height the lower index counts as the higher, the same rule in both places
-    // below, so a body is always handled after everything resting on it.
+    // below, so a body is always handled after everything resting on it. The heights are read
+    // once, below: the sort compares each body many times.
+    const std::vector<Real>& heights = search.height;
     const auto higher = [&](int a, int b) {
-        const Real ha = height(a), hb = height(b);
+        const Real ha = heights[static_cast<std::size_t>(a)], hb = heights[static_cast<std::size_t>(b)];
         return ha != hb ? ha > hb : a < b;
     };
     // Bodies of one mass hand on only that mass, whatever rests on what: the ratio is 1 without
@@ -35,6 +36,8 @@ Real loadPathMassRatio(const World& world, const std::vector<int>& contactOrder,
     }
     if (!(heaviest > lightest)) return 1;
     const std::size_t bodyCount = world.bodies.size();
+    search.height.resize(bodyCount);
+    for (std::size_t body = 0; body < bodyCount; ++body) search.height[body] = world.bodies[body].transform.position.dot(up);
     // Which body rests on which: a contact between two dynamic bodies whose normal is near the
     // vertical; the higher centre is the one on top.
     std::vector<int>& start = search.start;

@@ -18,6 +18,7 @@ struct LoadPathSearch {
     std::vector<int> start, below;    // per body, the bodies it rests on (compressed rows)
     std::vector<int> fill;            // where each body's next row goes while they are filled
     std::vector<Real> heaviestAbove;  // per body, the heaviest body resting on it through any path
+    std::vector<Real> height;         // per body, its centre's height (along -gravity)
 };
 
 /// Contact normals within this angle of gravity carry weight (cos 60 degrees): a box resting on a

@@ -20,7 +20,7 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
     const test::QuickBench run = test::runQuickBench(
         speedBench(), "ch10_bench_test",
         "scene,bodies,configuration,frames,ms_median,ms_q1,ms_q3,broadphase_ms,narrowphase_ms,solve_ms,ns_per_body,"
-        "max_sideways_m,lowest_m,max_penetration_m,joint_error_m,joint_error_rad,x_faster_than_peer,depth_beyond_true_m,overlap_unseen_m");
+        "max_sideways_m,lowest_m,max_penetration_m,joint_error_m,joint_error_rad,x_faster_than_peer,depth_beyond_true_m,overlap_unseen_m,joint_gap_mean_m");
     // 6 contact scenes x 6 configurations, 4 joint scenes x 3 (the fast step, its scalar solve,
     // chapter 8's solve), no peer here.
     REQUIRE(run.rows.size() == 48);
@@ -72,7 +72,16 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
         // Joints in the fast solve: faster than chapter 8's solve (the chain at the 18 substeps its
         // sag asks for, chapter 8's at ten, about even), the same outcome on the scalar path.
         if (scene != "20-link chain") CHECK(ms[scene]["fast step"] < ms[scene]["chapter 8's solve"]);
-        for (std::size_t column : {11u, 12u, 13u, 14u, 15u}) CHECK(rowOf[scene]["fast step"][column] == rowOf[scene]["scalar solve"][column]);
+        for (std::size_t column : {11u, 12u, 13u, 14u, 15u, 19u}) CHECK(rowOf[scene]["fast step"][column] == rowOf[scene]["scalar solve"][column]);
+        // Each second's largest anchor gap, averaged over the run: a joint scene's every solve has
+        // one. The quick run's two seconds are mostly the landing, in which a falling ragdoll's
+        // joints part by up to 3 cm on either solve (a second's largest gap).
+        for (const auto& [configuration, cells] : rowOf[scene]) {
+            INFO(configuration);
+            REQUIRE(cells.size() == 20);
+            CHECK(std::stod(cells[19]) > 0);
+            CHECK(std::stod(cells[19]) < 0.05);
+        }
     }
     // The profile's last column: the share of joint row builds a joint kept its last substep's rows
     // (chapter 11). A falling pile keeps most, and so does a swinging chain of distance joints.
