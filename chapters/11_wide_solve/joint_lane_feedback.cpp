@@ -3,12 +3,26 @@
 // instruction set (chapters/CMakeLists.txt); the same arithmetic as the scalar rules, lane by lane.
 #include "11_wide_solve/packed_joint_rows.h"
 
+#include "11_wide_solve/lane_vec.h"
+
+#include <algorithm>
+
 namespace stepwise {
 
 namespace {
 
 constexpr int N = kWideLanes;
 using Lanes = Pack<N>;
+using namespace lane_vec;
+
+Vec<Lanes> load(const PackVec3<N>& v) { return {v.x, v.y, v.z}; }
+
+// Where `take` is positive the new value, elsewhere the old.
+void put(PackVec3<N>& to, const Lanes& take, const Vec<Lanes>& v) {
+    to.x = selectPositive(take, v.x, to.x);
+    to.y = selectPositive(take, v.y, to.y);
+    to.z = selectPositive(take, v.z, to.z);
+}
 
 }  // namespace
 
@@ -90,5 +104,39 @@ void refreshPackedFeedbackLanes(PackedJointRows& packed, int g, unsigned lanes, 
     }
 }
 // [ch11-lane-feedback]
+
+}  // namespace stepwise
+
+namespace stepwise {
+
+// [ch11-lane-moves]
+// writePackedJoint's setMoves for a group's rows at once: M^-1 J^T and 1 / (J M^-1 J^T), in the
+// order Eigen sums them (lane_vec.h), so each lane holds the number the joint alone would.
+void makeLaneMoves(JointLaneGroup& group, unsigned lanes, const int* rows, const LaneMasses& masses) {
+    int most = 0;
+    for (int lane = 0; lane < N; ++lane)
+        if (lanes >> lane & 1u) most = std::max(most, rows[lane]);
+    const Lanes zero = Lanes::splat(0), one = Lanes::splat(1);
+    for (int k = 0; k < most; ++k) {
+        Lanes take = zero;  // 1 in the lanes whose row k is new
+        for (int lane = 0; lane < N; ++lane) take[lane] = (lanes >> lane & 1u) && k < rows[lane] ? 1 : 0;
+        JointRowLanes& row = group.rows[static_cast<std::size_t>(k)];
+        const Vec<Lanes> linearA = load(row.linearA), angularA = load(row.angularA);
+        const Vec<Lanes> linearB = load(row.linearB), angularB = load(row.angularB);
+        const Vec<Lanes> moveAngularA = times(masses.inverseInertiaA, angularA);
+        const Vec<Lanes> moveAngularB = times(masses.inverseInertiaB, angularB);
+        const Lanes inverse = ((masses.inverseMassA * dot3(linearA, linearA) + dot3(angularA, moveAngularA)) +
+                               masses.inverseMassB * dot3(linearB, linearB)) +
+                              dot3(angularB, moveAngularB);
+        put(row.moveLinearA, take, masses.inverseMassA * linearA);
+        put(row.moveAngularA, take, moveAngularA);
+        put(row.moveLinearB, take, masses.inverseMassB * linearB);
+        put(row.moveAngularB, take, moveAngularB);
+        // Only a positive sum is divided (the rest take 0, as the scalar rule's 'inverse > 0 ? 1 / inverse : 0').
+        const Lanes mass = selectPositive(inverse, one / selectPositive(inverse, inverse, one), zero);
+        row.effectiveMass = selectPositive(take, mass, row.effectiveMass);
+    }
+}
+// [ch11-lane-moves]
 
 }  // namespace stepwise

@@ -18,6 +18,10 @@ PackedJointRow loadRow(const JointRowLanes& from, int lane);
 /// A point block into lane `lane`.
 void storeBlock(JointBlockLanes& to, int lane, const PackedPointBlock& block);
 
+/// Row k of the group, for a lane to write: the rows past those in use hold the last frame's, so
+/// the sweeps' reach grows over zeroed rows.
+JointRowLanes& rowToWrite(JointLaneGroup& group, int k);
+
 /// Every field of the lane zero: no mass, no Jacobian, no impulse; the sweeps change nothing by it.
 void zeroRow(JointRowLanes& to, int lane);
 void zeroBlock(JointBlockLanes& to, int lane);

@@ -269,6 +269,69 @@ void keepJoint(JointPass& pass, std::size_t i, const JointFeedback& feedback, Re
     ++pass.jointsKept;
 }
 
+// Listed joint i built (or left out) into its entry: the bookkeeping of a build.
+void finishBuild(const SolverBodies& bodies, JointPass& pass, std::size_t i, bool built, int slots) {
+    if (!built) {
+        emptyPackedJoint(pass.packed, static_cast<int>(i));
+        markPackedBuilt(pass.packed, static_cast<int>(i), false);
+        ++pass.invalidSkipped;  // left out this substep; its impulses wait as they are
+        return;
+    }
+    pass.rowCount += slots;
+    pass.packedEntry[i] = static_cast<int>(i);
+    markPackedBuilt(pass.packed, static_cast<int>(i), true, turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]),
+                    turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]));
+    ++pass.jointsBuilt;
+}
+
+// Listed joint i built alone, by chapter 8's batch (or a distance joint's own row).
+void buildOne(const World& world, const SolverBodies& bodies, Real h, const JointFeedback& feedback, std::size_t i,
+              const JointFrame& frame, JointPass& pass) {
+    int slots = 0;
+    const bool built = buildListedJoint(world, h, feedback, i, frame, pass, slots);
+    finishBuild(bodies, pass, i, built, slots);
+}
+
+// Listed joint i waits in its lane for the group's build (buildQueuedLanes).
+void queueLaneBuild(JointPass& pass, std::size_t i, const JointDesc& joint, const JointFrame& frame) {
+    const PackedJoint& packed = pass.packed.joints[i];
+    const auto g = static_cast<std::size_t>(packed.group);
+    if (pass.lanesToBuild.size() < static_cast<std::size_t>(pass.packed.groupCount)) {
+        pass.lanesToBuild.assign(static_cast<std::size_t>(pass.packed.groupCount), 0u);
+        pass.laneJoints.resize(static_cast<std::size_t>(pass.packed.groupCount) * kWideLanes);
+    }
+    pass.lanesToBuild[g] |= 1u << packed.lane;
+    LaneJoint& input = pass.laneJoints[g * kWideLanes + static_cast<std::size_t>(packed.lane)];
+    input.joint = &joint;
+    input.frame = frame;
+    input.bodyA = &pass.bodies[static_cast<std::size_t>(pass.entryA[i])];
+    input.bodyB = &pass.bodies[static_cast<std::size_t>(pass.entryB[i])];
+    input.carried = &pass.carried[i];
+}
+
+// The queued lanes, a group at a time; a lane the group's build leaves is built alone.
+void buildQueuedLanes(const World& world, const SolverBodies& bodies, Real h, const JointFeedback& feedback, JointPass& pass) {
+    for (std::size_t g = 0; g < pass.lanesToBuild.size(); ++g) {
+        const unsigned lanes = pass.lanesToBuild[g];
+        if (lanes == 0) continue;
+        pass.lanesToBuild[g] = 0;
+        LaneJoint* inputs = &pass.laneJoints[g * kWideLanes];
+        const unsigned left = buildJointLanes(pass.packed, static_cast<int>(g), inputs, lanes, feedback, h);
+        const JointLaneGroup& group = pass.packed.groups[g];
+        for (int lane = 0; lane < kWideLanes; ++lane) {
+            if (!(lanes >> lane & 1u)) continue;
+            const auto i = static_cast<std::size_t>(group.entry[lane]);
+            if (left >> lane & 1u) {
+                buildOne(world, bodies, h, feedback, i, inputs[lane].frame, pass);
+                continue;
+            }
+            const LaneJoint& input = inputs[lane];
+            for (int slot = 0; slot < input.slots; ++slot) pass.carried[i].slot[slot] = input.seated.slot[slot];
+            finishBuild(bodies, pass, i, true, input.slots);
+        }
+    }
+}
+
 }  // namespace
 
 // [ch11-joint-rows]
@@ -307,20 +370,13 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         // Built again from the impulses its rows ended the last substep with.
         if (!firstSubstep) keepPackedImpulsesOf(pass.packed, static_cast<int>(i), pass.carried);
         pass.packedEntry[i] = -1;
-        int slots = 0;
-        if (!buildListedJoint(world, h, feedback, i, frame, pass, slots)) {
-            emptyPackedJoint(pass.packed, static_cast<int>(i));
-            markPackedBuilt(pass.packed, static_cast<int>(i), false);
-            ++pass.invalidSkipped;  // left out this substep; its impulses wait as they are
+        if (pass.laneBuild && buildsInLanes(joint.type)) {  // with its group's others, below
+            queueLaneBuild(pass, i, joint, frame);
             continue;
         }
-        pass.rowCount += slots;
-        pass.packedEntry[i] = static_cast<int>(i);
-        markPackedBuilt(pass.packed, static_cast<int>(i), true,
-                        turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryA[i])]),
-                        turnOf(bodies, pass.slot[static_cast<std::size_t>(pass.entryB[i])]));
-        ++pass.jointsBuilt;
+        buildOne(world, bodies, h, feedback, i, frame, pass);
     }
+    buildQueuedLanes(world, bodies, h, feedback, pass);
     for (std::size_t g = 0; g < pass.keptLanes.size(); ++g)  // none on the frame's first substep
         if (pass.keptLanes[g] != 0)
             refreshPackedFeedbackLanes(pass.packed, static_cast<int>(g), pass.keptLanes[g], feedback, h);

@@ -60,6 +60,9 @@ struct JointPass {
     int substepStamp = 0;              // counts the substeps buildJointRows has run
     std::vector<Vec3> startArmA, startArmB;  // per listed joint: centre to anchor as the piece began, world axes
     JointRowBatch batch;               // one joint's rows, as chapter 8 builds them
+    bool laneBuild = true;             // point joints built a lane group at a time (buildJointLanes); false: one by one
+    std::vector<unsigned> lanesToBuild;  // per lane group: the lanes buildJointLanes takes this substep
+    std::vector<LaneJoint> laneJoints;   // kWideLanes per lane group: what it reads of each
     std::vector<JointRoom> rooms;      // what each listed joint asks of the lanes' layout
     PackedJointRows packed;            // this substep's rows, as the sweeps take them (listed joint i is entry i)
     std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out this substep)

@@ -176,14 +176,12 @@ void reservePackedJoint(PackedJointRows& packed, int joint, int rows, bool block
     placeJoint(packed, openGroup(packed), entry, JointRoom{joint, rows, block, keepable, slotA, slotB});
 }
 
-namespace {
-
-// Row k of the group, for a lane to write: the rows past those in use hold the last frame's, so the
-// sweeps' reach grows over zeroed rows.
 JointRowLanes& rowToWrite(JointLaneGroup& group, int k) {
     for (; group.rowsInUse <= k; ++group.rowsInUse) group.rows[static_cast<std::size_t>(group.rowsInUse)] = JointRowLanes{};
     return group.rows[static_cast<std::size_t>(k)];
 }
+
+namespace {
 
 // Joint `entry`'s rows from `from` on, and its block unless `keepBlock`, zero: what a joint built
 // again with fewer rows, or left out, leaves behind.

@@ -193,6 +193,38 @@ bool writeDistanceJoint(const JointDesc& joint, const JointFrame& frame, int ent
                         const JointFeedback& feedback, Real& carried, const std::vector<SolverBody>& bodies,
                         const std::vector<int>& slotOfEntry, PackedJointRows& packed, int entry);
 
+/// One joint for buildJointLanes: what chapter 8's rules read of it, and where its impulses go.
+struct LaneJoint {
+    const JointDesc* joint = nullptr;
+    JointFrame frame;                  // chapter 8's jointRowFrame where its bodies stand
+    const SolverBody* bodyA = nullptr;  // its bodies' masses (JointPass::bodies)
+    const SolverBody* bodyB = nullptr;
+    const JointImpulses* carried = nullptr;  // the impulses it carries in
+    JointImpulses seated;              // out: each slot's impulse clamped to its bounds (buildJointRowBatch's)
+    int slots = 0;                     // out: its slots, used or not
+};
+
+/// Whether buildJointLanes takes joints of `type`: those solved with a point block.
+constexpr bool buildsInLanes(JointType type) { return hasPointBlock(type); }
+
+/// The joints of group `g` in `lanes` (bit i: lane i, joint `joints[i]`), built at once: chapter
+/// 8's rules (joint_row_rules.h) write each joint's rows straight into its lane, then the feedback,
+/// M^-1 J^T and the effective masses are made for all of them side by side. The same numbers as
+/// buildJointRowBatch and writePackedJoint give joint by joint. Returns the lanes it leaves to them,
+/// untouched: a joint whose K is singular, or with a row that is not finite or has no mass.
+unsigned buildJointLanes(PackedJointRows& packed, int g, LaneJoint* joints, unsigned lanes, const JointFeedback& feedback,
+                         Real h);
+
+/// Each body's inverse mass and inertia (row by row) for the lanes of a group, sides A and B.
+struct LaneMasses {
+    Pack<kWideLanes> inverseMassA, inverseMassB;
+    Pack<kWideLanes> inverseInertiaA[9], inverseInertiaB[9];
+};
+
+/// M^-1 J^T and the effective mass of rows 0 to rows[lane] - 1 of the lanes in `lanes`, as
+/// writePackedJoint makes them (the rest keep what they hold).
+void makeLaneMoves(JointLaneGroup& group, unsigned lanes, const int* rows, const LaneMasses& masses);
+
 /// Leaves joint `entry` out of the sweeps (no block, no rows) until it is written again.
 void emptyPackedJoint(PackedJointRows& packed, int entry);
 

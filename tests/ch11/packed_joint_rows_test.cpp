@@ -11,8 +11,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
+#include <utility>
 
 using namespace stepwise;
 
@@ -202,4 +204,99 @@ TEST_CASE("a distance joint's row is written straight into its room with chapter
                                        nullptr, JointBatchNeeds{false, false}));
     }
     CHECK(checked >= 8);
+}
+
+namespace {
+
+bool sameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof(Real)) == 0; }
+bool sameBits(const Vec3& a, const Vec3& b) { return sameBits(a.x(), b.x()) && sameBits(a.y(), b.y()) && sameBits(a.z(), b.z()); }
+bool sameBits(const Mat3& a, const Mat3& b) { return std::memcmp(a.data(), b.data(), sizeof(Real) * 9) == 0; }
+
+void packedTestSameRows(const JointPass& lanes, const JointPass& single) {
+    REQUIRE(lanes.packed.joints.size() == single.packed.joints.size());
+    CHECK(lanes.rowCount == single.rowCount);
+    CHECK(lanes.jointsBuilt == single.jointsBuilt);
+    CHECK(lanes.invalidSkipped == single.invalidSkipped);
+    for (std::size_t e = 0; e < lanes.packed.joints.size(); ++e) {
+        INFO("joint " << e);
+        const PackedJoint& a = lanes.packed.joints[e];
+        const PackedJoint& b = single.packed.joints[e];
+        REQUIRE(a.rowCount == b.rowCount);
+        CHECK(a.slotCount == b.slotCount);
+        CHECK(a.hasBlock == b.hasBlock);
+        for (int slot = 0; slot < JointImpulses::kSlots; ++slot)
+            CHECK(sameBits(lanes.carried[e].slot[slot], single.carried[e].slot[slot]));
+        for (int k = 0; k < a.rowCount; ++k) {
+            const PackedJointRow x = packedRowOf(lanes.packed, static_cast<int>(e), k);
+            const PackedJointRow y = packedRowOf(single.packed, static_cast<int>(e), k);
+            CHECK(x.slot == y.slot);
+            CHECK(x.kind == y.kind);
+            CHECK(x.fedBack == y.fedBack);
+            CHECK(x.turnOnly == y.turnOnly);
+            for (const auto& [u, v] : {std::pair{x.linearA, y.linearA}, {x.angularA, y.angularA}, {x.linearB, y.linearB},
+                                       {x.angularB, y.angularB}, {x.moveLinearA, y.moveLinearA},
+                                       {x.moveAngularA, y.moveAngularA}, {x.moveLinearB, y.moveLinearB},
+                                       {x.moveAngularB, y.moveAngularB}})
+                CHECK(sameBits(u, v));
+            for (const auto& [u, v] : {std::pair{x.effectiveMass, y.effectiveMass}, {x.bias, y.bias}, {x.lower, y.lower},
+                                       {x.upper, y.upper}, {x.impulse, y.impulse}, {x.error, y.error},
+                                       {x.soft.biasRate, y.soft.biasRate}, {x.soft.massScale, y.soft.massScale},
+                                       {x.soft.impulseScale, y.soft.impulseScale}})
+                CHECK(sameBits(u, v));
+        }
+        if (!a.hasBlock) continue;
+        const PackedPointBlock x = packedBlockOf(lanes.packed, static_cast<int>(e));
+        const PackedPointBlock y = packedBlockOf(single.packed, static_cast<int>(e));
+        CHECK(sameBits(x.mass, y.mass));
+        CHECK(sameBits(x.inverseInertiaA, y.inverseInertiaA));
+        CHECK(sameBits(x.inverseInertiaB, y.inverseInertiaB));
+        for (const auto& [u, v] : {std::pair{x.armA, y.armA}, {x.armB, y.armB}, {x.bias, y.bias}, {x.impulse, y.impulse},
+                                   {x.error, y.error}})
+            CHECK(sameBits(u, v));
+        for (const auto& [u, v] : {std::pair{x.inverseMassA, y.inverseMassA}, {x.inverseMassB, y.inverseMassB},
+                                   {x.soft.biasRate, y.soft.biasRate}, {x.soft.massScale, y.soft.massScale},
+                                   {x.soft.impulseScale, y.soft.impulseScale}})
+            CHECK(sameBits(u, v));
+        for (int axis = 0; axis < 3; ++axis) CHECK(x.fedBack[axis] == y.fedBack[axis]);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("a lane group's point joints built at once have the bits of one joint after another", "[ch11][joints]") {
+    const Real h = Real(1) / Real(600);
+    World friction = buildRagdollPile(3);  // joint friction: the cone twists' three motor rows
+    for (JointDesc& joint : friction.joints) joint.frictionTorque = Real(0.5);
+    for (const World& start : {buildJointGallery(), buildRagdollPile(3), friction, buildJointsSandbox()}) {
+        for (unsigned seed = 1; seed <= 3; ++seed) {
+            INFO(start.name << ", seed " << seed);
+            const World world = packedTestStirred(start, seed);
+            SolverBodies bodies;
+            prepareBodies(world, bodies);
+            JointPass lanes, single;
+            single.laneBuild = false;
+            for (JointPass* pass : {&lanes, &single}) {
+                prepareJointPass(world, bodies, 1, *pass);
+                buildJointRows(world, bodies, h, /*firstSubstep=*/true, *pass);
+            }
+            REQUIRE(lanes.jointsBuilt > 0);
+            packedTestSameRows(lanes, single);
+            // A later substep, the bodies turned: the joints that turned far are built again over
+            // their kept lanes, the rest keep theirs.
+            SolverBodies moved = bodies;
+            std::mt19937 rng(seed);
+            for (std::size_t slot = 1; slot < moved.states.size(); ++slot) {
+                const Quat turn(angleAxis(std::uniform_real_distribution<Real>(0, Real(0.03))(rng),
+                                          packedTestRandomVector(rng, 1).normalized()));
+                Real* q = moved.states[slot].deltaRotation;
+                q[0] = turn.x(), q[1] = turn.y(), q[2] = turn.z(), q[3] = turn.w();
+            }
+            const int builtFirst = lanes.jointsBuilt;
+            for (JointPass* pass : {&lanes, &single}) buildJointRows(world, moved, h, /*firstSubstep=*/false, *pass);
+            CHECK(lanes.jointsKept == single.jointsKept);
+            CHECK(lanes.jointsKept > 0);               // some barely turned,
+            CHECK(lanes.jointsBuilt > builtFirst);     // some turned far enough to be built again
+            packedTestSameRows(lanes, single);
+        }
+    }
 }
