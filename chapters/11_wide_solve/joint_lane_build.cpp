@@ -66,21 +66,30 @@ private:
             blockImpulse_[slot] = impulse;
             return;
         }
-        PackedJointRow packed;  // storeRow's fields; the masses and feedback follow for the group
-        packed.slot = slot;
-        packed.turnOnly = row.linearA.isZero(0) && row.linearB.isZero(0);
-        packed.kind = kind;
-        packed.error = error;
-        packed.linearA = row.linearA;
-        packed.angularA = row.angularA;
-        packed.linearB = row.linearB;
-        packed.angularB = row.angularB;
-        packed.bias = row.bias;
-        packed.lower = row.lower;
-        packed.upper = row.upper;
-        packed.impulse = impulse;
-        packed.soft = soft;
-        storeRow(rowToWrite(group_, rows_++), lane_, packed, keepable_);
+        // storeRow's fields but the masses (makeLaneMoves) and the feedback's (the group's, after).
+        JointRowLanes& to = rowToWrite(group_, rows_++);
+        const int lane = lane_;
+        const auto put = [lane](PackVec3<N>& field, const Vec3& v) {
+            field.x[lane] = v.x();
+            field.y[lane] = v.y();
+            field.z[lane] = v.z();
+        };
+        put(to.linearA, row.linearA);
+        put(to.angularA, row.angularA);
+        put(to.linearB, row.linearB);
+        put(to.angularB, row.angularB);
+        const bool turnOnly = row.linearA.isZero(0) && row.linearB.isZero(0);
+        to.bias[lane] = row.bias;
+        to.lower[lane] = row.lower;
+        to.upper[lane] = row.upper;
+        to.impulse[lane] = impulse;
+        to.error[lane] = error;
+        to.biasRate[lane] = soft.biasRate;
+        to.massScale[lane] = soft.massScale;
+        to.impulseScale[lane] = soft.impulseScale;
+        to.fedBack[lane] = 0;
+        to.slot[lane] = slot;
+        storeRowKind(to, lane, kind, turnOnly, keepable_);
     }
 
     JointLaneGroup& group_;

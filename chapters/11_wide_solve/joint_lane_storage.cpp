@@ -48,14 +48,18 @@ void storeRow(JointRowLanes& to, int lane, const PackedJointRow& row, bool keepa
     to.massScale[lane] = row.soft.massScale;
     to.impulseScale[lane] = row.soft.impulseScale;
     to.fedBack[lane] = row.fedBack ? 1 : 0;
-    to.advances[lane] = keepable && row.kind != JointRowKind::Free ? 1 : 0;  // a motor's bias is a speed
-    to.isSpring[lane] = row.kind == JointRowKind::Spring ? 1 : 0;
-    to.isLimit[lane] = row.kind == JointRowKind::Limit ? 1 : 0;
-    to.isEquality[lane] = row.kind == JointRowKind::Equality ? 1 : 0;
-    to.pushCap[lane] = row.turnOnly ? kMaxJointPushOutTurn : kMaxJointPushOutSpeed;
     to.slot[lane] = row.slot;
-    to.kind[lane] = row.kind;
-    to.turnOnly[lane] = row.turnOnly;
+    storeRowKind(to, lane, row.kind, row.turnOnly, keepable);
+}
+
+void storeRowKind(JointRowLanes& to, int lane, JointRowKind kind, bool turnOnly, bool keepable) {
+    to.advances[lane] = keepable && kind != JointRowKind::Free ? 1 : 0;  // a motor's bias is a speed
+    to.isSpring[lane] = kind == JointRowKind::Spring ? 1 : 0;
+    to.isLimit[lane] = kind == JointRowKind::Limit ? 1 : 0;
+    to.isEquality[lane] = kind == JointRowKind::Equality ? 1 : 0;
+    to.pushCap[lane] = turnOnly ? kMaxJointPushOutTurn : kMaxJointPushOutSpeed;
+    to.kind[lane] = kind;
+    to.turnOnly[lane] = turnOnly;
 }
 
 PackedJointRow loadRow(const JointRowLanes& from, int lane) {

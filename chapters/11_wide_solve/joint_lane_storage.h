@@ -14,6 +14,9 @@ Real laneComponent(const PackVec3<kWideLanes>& v, int axis, int lane);
 /// Row `row` into lane `lane` (`keepable`: the substeps move its error), and back.
 void storeRow(JointRowLanes& to, int lane, const PackedJointRow& row, bool keepable);
 PackedJointRow loadRow(const JointRowLanes& from, int lane);
+/// A row's kind into lane `lane`, with what its feedback's case and cap read of it: `turnOnly`, no
+/// linear part; `keepable`, the substeps move its error.
+void storeRowKind(JointRowLanes& to, int lane, JointRowKind kind, bool turnOnly, bool keepable);
 
 /// A point block into lane `lane`.
 void storeBlock(JointBlockLanes& to, int lane, const PackedPointBlock& block);

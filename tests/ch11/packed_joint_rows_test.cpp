@@ -265,6 +265,7 @@ void packedTestSameRows(const JointPass& lanes, const JointPass& single) {
 
 TEST_CASE("a lane group's point joints built at once have the bits of one joint after another", "[ch11][joints]") {
     const Real h = Real(1) / Real(600);
+    int kept = 0, builtAgain = 0;
     World friction = buildRagdollPile(3);  // joint friction: the cone twists' three motor rows
     for (JointDesc& joint : friction.joints) joint.frictionTorque = Real(0.5);
     for (const World& start : {buildJointGallery(), buildRagdollPile(3), friction, buildJointsSandbox()}) {
@@ -294,9 +295,11 @@ TEST_CASE("a lane group's point joints built at once have the bits of one joint 
             const int builtFirst = lanes.jointsBuilt;
             for (JointPass* pass : {&lanes, &single}) buildJointRows(world, moved, h, /*firstSubstep=*/false, *pass);
             CHECK(lanes.jointsKept == single.jointsKept);
-            CHECK(lanes.jointsKept > 0);               // some barely turned,
-            CHECK(lanes.jointsBuilt > builtFirst);     // some turned far enough to be built again
+            kept += lanes.jointsKept;               // some barely turned,
+            builtAgain += lanes.jointsBuilt - builtFirst;  // some turned far enough to be built again
             packedTestSameRows(lanes, single);
         }
     }
+    CHECK(kept > 0);
+    CHECK(builtAgain > 0);
 }
