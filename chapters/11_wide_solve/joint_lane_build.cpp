@@ -128,7 +128,6 @@ void clearLane(JointLaneGroup& group, int lane, int rows) {
 
 }  // namespace
 
-// [ch11-lane-build]
 unsigned buildJointLanes(PackedJointRows& packed, int g, LaneJoint* joints, unsigned lanes, const JointFeedback& feedback,
                          Real h) {
     JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
@@ -190,6 +189,5 @@ unsigned buildJointLanes(PackedJointRows& packed, int g, LaneJoint* joints, unsi
     }
     return left;
 }
-// [ch11-lane-build]
 
 }  // namespace stepwise
