@@ -134,14 +134,29 @@ unsigned buildJointLanes(PackedJointRows& packed, int g, LaneJoint* joints, unsi
     int rows[N] = {};
     unsigned left = 0, built = 0;
     LaneMasses masses;
-    // Each lane's rows by chapter 8's rules, written into the lane; the point block by its K^-1.
+    PackVec3<N> armA, armB;
+    for (int lane = 0; lane < N; ++lane) {
+        const bool taken = lanes >> lane & 1u;
+        const LaneJoint& input = joints[lane];
+        const Vec3 a = taken ? input.frame.armA : Vec3::Zero(), b = taken ? input.frame.armB : Vec3::Zero();
+        armA.x[lane] = a.x(), armA.y[lane] = a.y(), armA.z[lane] = a.z();
+        armB.x[lane] = b.x(), armB.y[lane] = b.y(), armB.z[lane] = b.z();
+        if (taken) putMasses(masses, lane, *input.bodyA, *input.bodyB);
+    }
+    // The point blocks' K^-1 side by side; each lane decides as chapter 8's setPointBlock does.
+    Pack<N> inverse[9], scale, determinant;
+    makeLanePointMasses(armA, armB, masses, inverse, scale, determinant);
+    // Each lane's rows by chapter 8's rules, written into the lane.
     for (int lane = 0; lane < N; ++lane) {
         if (!(lanes >> lane & 1u)) continue;
         LaneJoint& input = joints[lane];
         const PackedJoint& joint = packed.joints[static_cast<std::size_t>(group.entry[lane])];
-        JointRowSet set;
-        setPointBlock(set, input.frame, *input.bodyA, *input.bodyB);
-        if (!set.pointBlock || !joint.blockRoom) {  // singular: chapter 8 keeps the point rows scalar
+        const Real size = scale[lane];
+        Mat3 mass;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) mass(i, j) = inverse[3 * i + j][lane];
+        const bool invertible = size > 0 && std::abs(determinant[lane]) > Real(1e-9) * size * size * size;
+        if (!invertible || !mass.allFinite() || !joint.blockRoom) {  // singular: chapter 8 keeps the point rows scalar
             left |= 1u << lane;
             continue;
         }
@@ -150,9 +165,9 @@ unsigned buildJointLanes(PackedJointRows& packed, int g, LaneJoint* joints, unsi
         rows[lane] = recorder.rows();
         input.slots = recorder.slots();
         PackedPointBlock block;
-        block.armA = set.pointArmA;
-        block.armB = set.pointArmB;
-        block.mass = set.pointMass;
+        block.armA = input.frame.armA;
+        block.armB = input.frame.armB;
+        block.mass = mass;
         block.inverseMassA = input.bodyA->inverseMass;
         block.inverseMassB = input.bodyB->inverseMass;
         block.inverseInertiaA = input.bodyA->inverseInertia;
@@ -160,7 +175,6 @@ unsigned buildJointLanes(PackedJointRows& packed, int g, LaneJoint* joints, unsi
         block.impulse = recorder.blockImpulse();
         block.error = recorder.blockError();
         storeBlock(group.block, lane, block);  // its bias, softness and fedBack: the feedback below
-        putMasses(masses, lane, *input.bodyA, *input.bodyB);
         built |= 1u << lane;
     }
     if (built == 0) return left;

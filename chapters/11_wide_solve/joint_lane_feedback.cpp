@@ -6,6 +6,7 @@
 #include "11_wide_solve/lane_vec.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace stepwise {
 
@@ -138,5 +139,68 @@ void makeLaneMoves(JointLaneGroup& group, unsigned lanes, const int* rows, const
     }
 }
 // [ch11-lane-moves]
+
+}  // namespace stepwise
+
+namespace stepwise {
+
+// [ch11-lane-point-mass]
+// Chapter 8's setPointBlock for a group's joints at once: K = (1/mA + 1/mB) 1 - [rA]x IA^-1 [rA]x
+// - [rB]x IB^-1 [rB]x, its norm, its determinant and its inverse, each sum in the order Eigen
+// makes it (tests/ch11/packed_joint_rows_test.cpp compares every lane's bits with chapter 8's).
+void makeLanePointMasses(const PackVec3<N>& armA, const PackVec3<N>& armB, const LaneMasses& masses, Lanes (&inverse)[9],
+                         Lanes& scale, Lanes& determinant) {
+    const Lanes zero = Lanes::splat(0), one = Lanes::splat(1);
+    const auto skew = [&](const PackVec3<N>& v, Lanes (&m)[9]) {  // row by row, as math.h's skew
+        m[0] = zero, m[1] = negated(v.z), m[2] = v.y;
+        m[3] = v.z, m[4] = zero, m[5] = negated(v.x);
+        m[6] = negated(v.y), m[7] = v.x, m[8] = zero;
+    };
+    const auto product = [](const Lanes (&a)[9], const Lanes (&b)[9], Lanes (&c)[9]) {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                c[3 * i + j] = dot3(Vec<Lanes>{a[3 * i], a[3 * i + 1], a[3 * i + 2]}, Vec<Lanes>{b[j], b[3 + j], b[6 + j]});
+    };
+    Lanes skewA[9], skewB[9], half[9], turnA[9], turnB[9];
+    skew(armA, skewA);
+    skew(armB, skewB);
+    product(skewA, masses.inverseInertiaA, half);
+    product(half, skewA, turnA);
+    product(skewB, masses.inverseInertiaB, half);
+    product(half, skewB, turnB);
+    const Lanes linear = masses.inverseMassA + masses.inverseMassB;
+    Lanes k[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) k[3 * i + j] = (linear * (i == j ? one : zero) - turnA[3 * i + j]) - turnB[3 * i + j];
+    // The norm: Eigen sums the nine squares, stored column by column, a register at a time.
+    Lanes square[9];
+    for (int m = 0; m < 9; ++m) square[m] = k[3 * (m % 3) + m / 3] * k[3 * (m % 3) + m / 3];
+#if defined(STEPWISE_DOUBLE)
+    const Lanes sum = (((square[0] + square[2]) + (square[4] + square[6])) + ((square[1] + square[3]) + (square[5] + square[7]))) +
+                      square[8];
+#else
+    const Lanes sum = (((square[0] + square[4]) + (square[2] + square[6])) + ((square[1] + square[5]) + (square[3] + square[7]))) +
+                      square[8];
+#endif
+    scale = sqrt(sum);
+    // The determinant along the first row, and the inverse by cofactors (Eigen's 3x3 rules).
+    const auto at = [&](int i, int j) -> const Lanes& { return k[3 * i + j]; };
+    const auto minor = [&](int a, int b, int c) { return at(0, a) * (at(1, b) * at(2, c) - at(1, c) * at(2, b)); };
+    determinant = (minor(0, 1, 2) - minor(1, 0, 2)) + minor(2, 0, 1);
+    const auto cofactor = [&](int i, int j) {
+        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+        return at(i1, j1) * at(i2, j2) - at(i1, j2) * at(i2, j1);
+    };
+    const Lanes byColumn = dot3(Vec<Lanes>{cofactor(0, 0), cofactor(1, 0), cofactor(2, 0)}, Vec<Lanes>{at(0, 0), at(1, 0), at(2, 0)});
+    // A zero determinant (an empty lane, both bodies fixed) is not divided by: its inverse is NaN,
+    // which chapter 8's 1 / 0 makes of it too, and which no lane keeps.
+    const Lanes nonZero = max(byColumn, negated(byColumn));
+    const Lanes inverseDeterminant = one / selectPositive(nonZero, byColumn, one);
+    const Lanes notANumber = Lanes::splat(std::numeric_limits<Real>::quiet_NaN());
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            inverse[3 * i + j] = selectPositive(nonZero, cofactor(j, i) * inverseDeterminant, notANumber);
+}
+// [ch11-lane-point-mass]
 
 }  // namespace stepwise

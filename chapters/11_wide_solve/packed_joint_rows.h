@@ -225,6 +225,11 @@ struct LaneMasses {
 /// writePackedJoint makes them (the rest keep what they hold).
 void makeLaneMoves(JointLaneGroup& group, unsigned lanes, const int* rows, const LaneMasses& masses);
 
+/// Chapter 8's point block K for each lane's arms and masses: K^-1 row by row, and the norm and
+/// determinant of K by which chapter 8 decides whether K is invertible (setPointBlock).
+void makeLanePointMasses(const PackVec3<kWideLanes>& armA, const PackVec3<kWideLanes>& armB, const LaneMasses& masses,
+                         Pack<kWideLanes> (&inverse)[9], Pack<kWideLanes>& scale, Pack<kWideLanes>& determinant);
+
 /// Leaves joint `entry` out of the sweeps (no block, no rows) until it is written again.
 void emptyPackedJoint(PackedJointRows& packed, int entry);
 
