@@ -113,8 +113,7 @@ void seatRow(ConstraintRow& row, int rowBodyA, int rowBodyB, Real carried) {
     row.impulse = std::isfinite(carried) ? std::clamp(carried, row.lower, row.upper) : Real(0);
 }
 
-}  // namespace
-
+// The point joints' slots 0-2 as one block, at the frame's arms.
 void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& a, const SolverBody& b) {
     // [ch08-point-mass]
     // K = (1/mA + 1/mB) 1 - [rA]x IA^-1 [rA]x - [rB]x IB^-1 [rB]x: how the anchors' relative
@@ -131,8 +130,6 @@ void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& 
     set.pointArmA = frame.armA;
     set.pointArmB = frame.armB;
 }
-
-namespace {
 
 void applyFeedback(ConstraintRow& row, Softness& softness, bool& fedBack, JointRowKind kind, Real error,
                    const JointFeedback& feedback, Real h) {

@@ -124,10 +124,6 @@ constexpr int jointSlotCount(JointType type) {
 /// Whether a joint of `type` solves slots 0-2 (its anchors together) as one 3x3 block.
 constexpr bool hasPointBlock(JointType type) { return type != JointType::Distance && type != JointType::Slider; }
 
-/// The point joints' slots 0-2 as one block at the frame's arms: K^-1 into `set` (pointBlock false,
-/// the rows left scalar, where K is singular: both bodies fixed).
-void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& a, const SolverBody& b);
-
 /// Builds the rows of `joint` at `frame` into `batch` (appendJointRows' rules, the same numbers):
 /// false, with nothing to solve, if any row came out non-finite.
 bool buildJointRowBatch(JointRowBatch& batch, const JointDesc& joint, int jointIndex, const JointFrame& frame,

@@ -27,8 +27,8 @@ Real seated(Real carried, Real lower, Real upper) {
 // impulses go to the block.
 class LaneRecorder {
 public:
-    LaneRecorder(JointLaneGroup& group, int lane, bool keepable, bool block, LaneJoint& joint, Real h)
-        : group_(group), lane_(lane), keepable_(keepable), block_(block), joint_(joint), h_(h) {}
+    LaneRecorder(JointLaneGroup& group, int lane, bool keepable, LaneJoint& joint, Real h)
+        : group_(group), lane_(lane), keepable_(keepable), joint_(joint), h_(h) {}
 
     bool blockWithoutJacobians = true;  // a block's rows: their linear part alone (never read here)
 
@@ -61,7 +61,7 @@ private:
     void add(const ConstraintRow& row, JointRowKind kind, Real error, const Softness& soft) {
         const int slot = slot_;
         const Real impulse = seat(row.lower, row.upper);
-        if (block_ && slot < 3) {
+        if (slot < 3) {  // the point block's (every joint built here has one)
             blockError_[slot] = error;
             blockImpulse_[slot] = impulse;
             return;
@@ -94,7 +94,7 @@ private:
 
     JointLaneGroup& group_;
     int lane_;
-    bool keepable_, block_;
+    bool keepable_;
     LaneJoint& joint_;
     Real h_;
     int slot_ = 0, rows_ = 0;
@@ -160,7 +160,7 @@ unsigned buildJointLanes(PackedJointRows& packed, int g, LaneJoint* joints, unsi
             left |= 1u << lane;
             continue;
         }
-        LaneRecorder recorder(group, lane, joint.keepable, /*block=*/true, input, h);
+        LaneRecorder recorder(group, lane, joint.keepable, input, h);
         joint_rules::addRowsOf(recorder, *input.joint, input.frame, h);
         rows[lane] = recorder.rows();
         input.slots = recorder.slots();

@@ -179,6 +179,9 @@ void layOutJoints(const World& world, JointPass& pass) {
         room.slotB = slotOfListed(pass, pass.entryB[i]);
     }
     layOutPackedJoints(pass.packed, pass.rooms);
+    const auto groups = static_cast<std::size_t>(pass.packed.groupCount);
+    pass.lanesToBuild.assign(groups, 0u);
+    pass.laneJoints.resize(groups * kWideLanes);
 }
 
 // Builds listed joint i's rows where its bodies stand now into its entry, which the frame's first
@@ -296,10 +299,6 @@ void buildOne(const World& world, const SolverBodies& bodies, Real h, const Join
 void queueLaneBuild(JointPass& pass, std::size_t i, const JointDesc& joint, const JointFrame& frame) {
     const PackedJoint& packed = pass.packed.joints[i];
     const auto g = static_cast<std::size_t>(packed.group);
-    if (pass.lanesToBuild.size() < static_cast<std::size_t>(pass.packed.groupCount)) {
-        pass.lanesToBuild.assign(static_cast<std::size_t>(pass.packed.groupCount), 0u);
-        pass.laneJoints.resize(static_cast<std::size_t>(pass.packed.groupCount) * kWideLanes);
-    }
     pass.lanesToBuild[g] |= 1u << packed.lane;
     LaneJoint& input = pass.laneJoints[g * kWideLanes + static_cast<std::size_t>(packed.lane)];
     input.joint = &joint;
