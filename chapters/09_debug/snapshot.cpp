@@ -278,6 +278,8 @@ void saveSnapshot(const World& world, WorldSnapshot& snapshot) {
     saveContacts(world, snapshot);
     savePairs(world, snapshot);
     snapshot.jointImpulses = world.jointImpulses;
+    snapshot.jointRows = world.step.jointRows;
+    snapshot.jointRowsBytes = world.step.jointRowsBytes;
 }
 
 void restoreSnapshot(const WorldSnapshot& snapshot, World& world) {
@@ -322,6 +324,8 @@ void restoreSnapshot(const WorldSnapshot& snapshot, World& world) {
     world.candidatePairs.clear();   // found again by the next step's broadphase
     world.pairGaps.clear();         // a shortcut: a pair without a gap is measured again, same answer
     world.jointImpulses = snapshot.jointImpulses;
+    world.step.jointRows = snapshot.jointRows;
+    world.step.jointRowsBytes = snapshot.jointRowsBytes;
 }
 
 bool sameStructure(const World& a, const World& b) {
@@ -348,7 +352,7 @@ std::size_t snapshotBytes(const WorldSnapshot& snapshot) {
     return sizeof(WorldSnapshot) + capacityBytes(snapshot.poses) + capacityBytes(snapshot.motions) +
            capacityBytes(snapshot.asleep) + capacityBytes(snapshot.pushes) + capacityBytes(snapshot.sweepOrder) +
            capacityBytes(snapshot.contacts) + capacityBytes(snapshot.builtPoses) + capacityBytes(snapshot.points) +
-           capacityBytes(snapshot.pairs) + capacityBytes(snapshot.jointImpulses);
+           capacityBytes(snapshot.pairs) + capacityBytes(snapshot.jointImpulses) + snapshot.jointRowsBytes;
 }
 
 SnapshotSize snapshotSize(const WorldSnapshot& snapshot) {
@@ -360,7 +364,7 @@ SnapshotSize snapshotSize(const WorldSnapshot& snapshot) {
     size.contactBytes = sizeBytes(snapshot.contacts) + sizeBytes(snapshot.builtPoses) + sizeBytes(snapshot.points) +
                         sizeBytes(snapshot.pairs);
     size.fixedBytes = sizeof(WorldSnapshot);
-    size.jointBytes = sizeBytes(snapshot.jointImpulses);
+    size.jointBytes = sizeBytes(snapshot.jointImpulses) + snapshot.jointRowsBytes;
     return size;
 }
 

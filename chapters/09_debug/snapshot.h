@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace stepwise {
@@ -104,6 +105,10 @@ struct WorldSnapshot {
                                              // the others), or all of them when pairsWhole
     bool pairsWhole = false;                 // World::pairs not in the canonical order: kept as it is
     std::vector<JointImpulses> jointImpulses;
+    // The joints' rows the fast solve hands from frame to frame (chapter 11): opaque here, shared
+    // with the world until it steps on (the step copies them then), restored as they are.
+    std::shared_ptr<HandedJointRows> jointRows;
+    std::size_t jointRowsBytes = 0;
 };
 // [ch09-snapshot]
 
@@ -127,7 +132,8 @@ std::size_t snapshotBytes(const WorldSnapshot& snapshot);
 
 /// The snapshot's bytes split the way the budget is stated: per body (poses, motions, sleep
 /// flags, pushes, sweep order) and per contact point (records, built poses, points, pairs); the
-/// fixed part and the joints' impulses apart. Sizes, not capacities.
+/// fixed part and the joints' impulses and handed rows apart. Sizes, not capacities (the handed
+/// rows: what they hold).
 struct SnapshotSize {
     std::size_t bodyBytes = 0, contactBytes = 0, fixedBytes = 0, jointBytes = 0;
     std::size_t bodies = 0, contactPoints = 0;

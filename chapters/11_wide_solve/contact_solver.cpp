@@ -7,6 +7,7 @@
 #include "06_manifolds/stabilisation.h"
 #include "10_skip_work/sleep.h"
 #include "11_wide_solve/contact_kernels.h"
+#include "11_wide_solve/joint_hand_on.h"
 #include "11_wide_solve/joint_pass.h"
 #include "11_wide_solve/solve_steps.h"
 #include "11_wide_solve/turn_pieces.h"
@@ -229,9 +230,9 @@ int runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolveP
         solveAll(scratch.scalarBlocks, states, params, true);
         stats.ms(SolvePhase::Solve) += clock.lap();
         integratePositions(scratch.bodies, h, params.mostSpin, path);
-        // What the move did to the errors of rows the next substep may keep (the frame's last
-        // substep hands none on: the next frame builds every joint).
-        if (joints && substep + 1 < substeps) advanceJointErrors(*joints, states, h);
+        // What the move did to the errors of rows the next substep may keep (after the piece's
+        // last, the next piece: handJointRowsOn).
+        if (joints) advanceJointErrors(*joints, states, h);
         stats.ms(SolvePhase::Integrate) += clock.lap();
         if (joints) solveJoints(*joints, states, /*relax=*/true);
         solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
@@ -337,6 +338,7 @@ int solvePiece(World& world, Real h, Real frameTime, int substeps, bool firstPie
     if (linked) {
         if (!scratch.joints) scratch.joints = std::make_shared<JointPass>();
         prepareJointPass(world, scratch.bodies, params.carryScale, *scratch.joints);
+        takeHandedJointRows(world, h, *scratch.joints);
     }
     stats.ms(SolvePhase::Prepare) += clock.lap();
     // Scenes without restitution (most) have no collisions to sweep.
@@ -358,6 +360,7 @@ int solvePiece(World& world, Real h, Real frameTime, int substeps, bool firstPie
         solverStats.jointsSkipped = scratch.joints->invalidSkipped;
         solverStats.jointsBuilt = scratch.joints->jointsBuilt;
         solverStats.jointsKept = scratch.joints->jointsKept;
+        if (!extended) handJointRowsOn(world, scratch.bodies, h, *scratch.joints);
     }
     stats.ms(SolvePhase::Store) += clock.lap();
     solverStats.contactPoints = stats.points;

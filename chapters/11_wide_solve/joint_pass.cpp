@@ -53,6 +53,30 @@ Vec3 startArm(const World& world, const SolverBodies& bodies, const JointPass& p
     return info.startRotation * (localAnchor - world.motionOf(body)->localCenter);
 }
 
+// Whether a joint's Jacobians depend on its bodies' turns alone: the point joints' rows run
+// along fixed axes through arms that turn with the bodies, their turn rows about axes that turn
+// with them. A distance joint's row runs along the line between the anchors and a slider's
+// through the gap between them, which the bodies' moves turn too: always built.
+bool rowsFollowTurnsAlone(JointType type) {
+    return type == JointType::BallSocket || type == JointType::Hinge || type == JointType::ConeTwist ||
+           type == JointType::Fixed;
+}
+
+// What each listed joint asks of the lanes' layout: room for all its slots, used or not.
+void fillRooms(const World& world, JointPass& pass) {
+    pass.rooms.resize(pass.joints.size());
+    for (std::size_t i = 0; i < pass.joints.size(); ++i) {
+        const JointType type = world.joints[static_cast<std::size_t>(pass.joints[i])].type;
+        JointRoom& room = pass.rooms[i];
+        room.joint = static_cast<int>(i);
+        room.rows = jointSlotCount(type);
+        room.block = hasPointBlock(type);
+        room.keepable = rowsFollowTurnsAlone(type);
+        room.slotA = pass.slot[static_cast<std::size_t>(pass.entryA[i])];
+        room.slotB = pass.slot[static_cast<std::size_t>(pass.entryB[i])];
+    }
+}
+
 }  // namespace
 
 void prepareJointPass(const World& world, const SolverBodies& bodies, Real carryScale, JointPass& pass) {
@@ -67,6 +91,7 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
     pass.startArmB.clear();
     pass.jointsBuilt = 0;
     pass.jointsKept = 0;
+    pass.laidOut = false;
     pass.entryOfBody.assign(world.bodies.size(), -1);
     if (world.joints.empty()) return;
     for (const int jointIndex : pass.sweep.order(world, kDefaultJointOrder)) {
@@ -87,6 +112,7 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
         pass.carried.push_back(carried);
     }
     pass.placedAt.assign(pass.bodies.size(), -1);
+    fillRooms(world, pass);
 }
 
 namespace {
@@ -101,15 +127,6 @@ constexpr JointBatchNeeds kPackedNeeds{/*pointJacobians=*/false, /*effectiveMass
 bool turnedAtMost(const Quat& built, const Quat& now, Real most) {
     const Real w = built.coeffs().dot(now.coeffs());
     return 1 - w * w <= most * most / 4;
-}
-
-// Whether a joint's Jacobians depend on its bodies' turns alone: the point joints' rows run
-// along fixed axes through arms that turn with the bodies, their turn rows about axes that turn
-// with them. A distance joint's row runs along the line between the anchors and a slider's
-// through the gap between them, which the bodies' moves turn too: always built.
-bool rowsFollowTurnsAlone(JointType type) {
-    return type == JointType::BallSocket || type == JointType::Hinge || type == JointType::ConeTwist ||
-           type == JointType::Fixed;
 }
 
 // A slot's turn since the piece began (slot 0 does not turn).
@@ -138,6 +155,19 @@ bool keptLane(const JointPass& pass, std::size_t i) {
     return (pass.keptLanes[static_cast<std::size_t>(joint.group)] >> joint.lane & 1u) != 0;
 }
 
+// Whether listed joint i may keep the rows the last piece handed on (JointPass::handedLanes).
+bool handedJoint(const JointPass& pass, std::size_t i) {
+    const PackedJoint& joint = pass.packed.joints[i];
+    return (pass.handedLanes[static_cast<std::size_t>(joint.group)] >> joint.lane & 1u) != 0;
+}
+
+// The lane build's queue, a group's lanes each, for the piece's layout.
+void sizeLaneQueue(JointPass& pass) {
+    const auto groups = static_cast<std::size_t>(pass.packed.groupCount);
+    pass.lanesToBuild.assign(groups, 0u);
+    pass.laneJoints.resize(groups * kWideLanes);
+}
+
 // A distance joint's anchors and arms now, from the arms as the piece began turned by the bodies'
 // turns since and the centres moved by their moves: the distance row needs nothing else of the
 // poses. The same numbers as chapter 8's jointRowFrame to rounding.
@@ -160,28 +190,12 @@ JointFrame distanceFrame(const SolverBodies& bodies, const JointPass& pass, std:
     return frame;
 }
 
-int slotOfListed(const JointPass& pass, int entry) { return pass.slot[static_cast<std::size_t>(entry)]; }
-
-// The frame's first substep lays every listed joint out in the lanes, by colour (layOutPackedJoints),
-// each with room for all its slots; later substeps write a joint built again over its own rows and
-// leave a kept one where it is.
-void layOutJoints(const World& world, JointPass& pass) {
+// The piece's first substep lays every listed joint out in the lanes, by colour (layOutPackedJoints),
+// each with room for all its slots (unless the last piece's layout stands: takeHandedJointRows);
+// later substeps write a joint built again over its own rows and leave a kept one where it is.
+void layOutJoints(JointPass& pass) {
     pass.packedEntry.assign(pass.joints.size(), -1);
-    pass.rooms.resize(pass.joints.size());
-    for (std::size_t i = 0; i < pass.joints.size(); ++i) {
-        const JointType type = world.joints[static_cast<std::size_t>(pass.joints[i])].type;
-        JointRoom& room = pass.rooms[i];
-        room.joint = static_cast<int>(i);
-        room.rows = jointSlotCount(type);  // every slot, used or not: a joint's room holds them all
-        room.block = hasPointBlock(type);
-        room.keepable = rowsFollowTurnsAlone(type);
-        room.slotA = slotOfListed(pass, pass.entryA[i]);
-        room.slotB = slotOfListed(pass, pass.entryB[i]);
-    }
     layOutPackedJoints(pass.packed, pass.rooms);
-    const auto groups = static_cast<std::size_t>(pass.packed.groupCount);
-    pass.lanesToBuild.assign(groups, 0u);
-    pass.laneJoints.resize(groups * kWideLanes);
 }
 
 // Builds listed joint i's rows where its bodies stand now into its entry, which the frame's first
@@ -337,32 +351,37 @@ void buildQueuedLanes(const World& world, const SolverBodies& bodies, Real h, co
 void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool firstSubstep, JointPass& pass) {
     pass.rowCount = 0;
     pass.invalidSkipped = 0;
-    // The frame's first substep lays the joints out, each with room for all its slots; later
-    // substeps write a joint built again over its own rows and leave a kept one where it is.
-    if (firstSubstep) layOutJoints(world, pass);
+    // The piece's first substep lays the joints out, each with room for all its slots, unless the
+    // last piece's layout stands; later substeps write a joint built again over its own rows and
+    // leave a kept one where it is.
+    if (firstSubstep && !pass.laidOut) layOutJoints(pass);
+    if (firstSubstep) sizeLaneQueue(pass);
     if (pass.joints.empty()) return;
     const JointFeedback feedback = fastJointFeedback(world.settings, h);
     ++pass.substepStamp;  // the poses made last substep are stale
     pass.poses.resize(pass.bodies.size());
     // The point joints that keep last substep's rows, a lane group at a time: those built (not left
-    // out), whose rows follow their bodies' turns alone, and whose bodies have barely turned since.
+    // out), whose rows follow their bodies' turns alone, and whose bodies have barely turned since;
+    // on the piece's first substep, only those the last piece handed on (takeHandedJointRows).
     pass.keptLanes.assign(static_cast<std::size_t>(pass.packed.groupCount), 0u);
-    for (std::size_t g = 0; g < pass.keptLanes.size() && !firstSubstep; ++g) {
+    const bool mayKeep = !firstSubstep || pass.laidOut;
+    for (std::size_t g = 0; g < pass.keptLanes.size() && mayKeep; ++g) {
         const JointLaneGroup& group = pass.packed.groups[g];
-        const unsigned keepable = group.keepableLanes & group.builtLanes;
+        const unsigned handed = firstSubstep ? pass.handedLanes[g] : ~0u;
+        const unsigned keepable = group.keepableLanes & group.builtLanes & handed;
         if (keepable) pass.keptLanes[g] = keepable & lanesTurnedAtMost(group, bodies.states.data(), kJointRowsKeptTurn);
     }
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const bool distance = joint.type == JointType::Distance;
-        if (!firstSubstep && keptLane(pass, i)) {
+        if (mayKeep && keptLane(pass, i)) {
             // Its biases are made again below, with the other kept joints of its group at once.
             pass.rowCount += pass.packed.joints[i].slotCount;
             ++pass.jointsKept;
             continue;
         }
         const JointFrame frame = distance ? distanceFrame(bodies, pass, i) : placedFrame(world, bodies, pass, i, joint);
-        if (!firstSubstep && distance && keepsDistanceRow(bodies, pass, i, joint, frame)) {
+        if (mayKeep && (!firstSubstep || handedJoint(pass, i)) && distance && keepsDistanceRow(bodies, pass, i, joint, frame)) {
             keepJoint(pass, i, feedback, h);
             continue;
         }

@@ -10,7 +10,8 @@
 //
 // A joint's rows are built where its bodies stand in the substep (their moves since the piece
 // began, SolverBodyState), or kept from the last substep while its bodies have barely turned
-// (kJointRowsKeptTurn), with the frame's inverse inertia, as the contacts take it; the relax
+// (kJointRowsKeptTurn), from substep to substep and from frame to frame (joint_hand_on.h),
+// with the inverse inertia of the frame they were built in, as the contacts take it; the relax
 // pass takes the same rows with the feedback taken out. Building them once a frame and moving
 // only their errors to first order does not do: a chain's link swinging 8 cm across its
 // neighbour in a frame stretches by 1.3 cm to first order. Moving the Jacobians and keeping the
@@ -26,6 +27,7 @@
 #include "11_wide_solve/solver_data.h"
 #include "world/world.h"
 
+#include <memory>
 #include <vector>
 
 namespace stepwise {
@@ -42,7 +44,8 @@ constexpr Real kJointHertzPerSubstepRate = Real(0.25);
 JointFeedback fastJointFeedback(const Settings& settings, Real h);
 
 /// What the fast solve keeps for the frame's joints and forces: rebuilt from the World every
-/// frame, carrying nothing between frames (the impulses go back into World::jointImpulses).
+/// piece; what one piece hands the next (the impulses, and the rows a joint may keep) goes back
+/// into the World (World::jointImpulses, StepState::jointRows), so the pass carries nothing.
 struct JointPass {
     std::vector<int> joints;           // into World::joints: those with a moving body, in sweep order
     std::vector<int> entryA, entryB;   // per listed joint: its bodies' entries in `bodies`
@@ -67,6 +70,11 @@ struct JointPass {
     PackedJointRows packed;            // this substep's rows, as the sweeps take them (listed joint i is entry i)
     std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out this substep)
     std::vector<unsigned> keptLanes;   // per lane group: the lanes whose point joint keeps its rows this substep
+    bool laidOut = false;              // the lanes are laid out as the last piece left them (takeHandedJointRows)
+    std::vector<unsigned> handedLanes; // per lane group: the lanes whose joint may keep the last piece's rows
+    std::shared_ptr<HandedJointRows> handOn;  // what the last piece handed on, taken for this one
+    std::vector<char> bodyUnchanged;   // per entry: as the last piece left it (takeHandedJointRows)
+    std::vector<char> descHanded;      // per listed joint: its description is the handed one (when laidOut)
     int rowCount = 0;                  // this substep's rows, used slots or not (the run report's)
     int jointsBuilt = 0, jointsKept = 0;  // this frame's substeps: joints whose rows were built, kept
     int invalidSkipped = 0;            // joints left out this substep: their rows came out non-finite
@@ -88,17 +96,19 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
 /// built (rad): its Jacobians then stand where the arms and axes were, and its errors move to first
 /// order (advanceJointErrors). A frozen arm of length r misplaces its anchor by about
 /// turn^2 r / 2, 50 micrometres for a 1 m arm at this turn (a ragdoll's arms are a fifth of
-/// that), where the joints' own error at rest is a millimetre; the frame's first substep always
-/// builds. Against 5 mrad it saves 4.8% of the instructions of the 100-ragdoll field's first 120
-/// frames; 20 mrad would save 2.9% more for four times the misplacement.
+/// that), where the joints' own error at rest is a millimetre. The same bound holds across the
+/// frame's boundary (joint_hand_on.h). Against 5 mrad it saves 4.8% of the instructions of the
+/// 100-ragdoll field's first 120 frames; 20 mrad would save 2.9% more for four times the
+/// misplacement.
 constexpr Real kJointRowsKeptTurn = Real(0.01);
 // [ch11-kept-turn]
 
-/// The rows for a substep of h, where the bodies stand now, from the carried impulses; after the
-/// frame's first substep, a point joint (ball socket, hinge, cone twist, fixed) whose bodies have
-/// turned at most kJointRowsKeptTurn since its rows were built keeps them, its biases made again
-/// from its moved errors, and so does a distance joint whose line between the anchors has turned
-/// no more either, its error measured.
+/// The rows for a substep of h, where the bodies stand now, from the carried impulses; a point
+/// joint (ball socket, hinge, cone twist, fixed) whose bodies have turned at most
+/// kJointRowsKeptTurn since its rows were built keeps them, its biases made again from its moved
+/// errors, and so does a distance joint whose line between the anchors has turned no more either,
+/// its error measured. On the piece's first substep only the joints the last piece handed on
+/// (takeHandedJointRows) may keep theirs.
 void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool firstSubstep, JointPass& pass);
 
 /// Where entry `entry` of the pass stands this substep: its start moved by the substeps so far
@@ -106,7 +116,8 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
 const JointPass::BodyPose& placeJointBody(const World& world, const SolverBodies& bodies, JointPass& pass, std::size_t entry);
 
 /// Every row's position error moved by the velocities the bodies moved with in this substep
-/// (after the biased pass, before the relax pass).
+/// (after the biased pass, before the relax pass), the piece's last substep too: the next piece
+/// may keep the rows (joint_hand_on.h).
 void advanceJointErrors(JointPass& pass, const SolverBodyState* states, Real h);
 
 /// The carried impulses applied to the bodies (the warm start); without warm starting, every

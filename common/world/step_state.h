@@ -6,9 +6,15 @@
 #include "math/math.h"
 
 #include <array>
+#include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace stepwise {
+
+/// The joints' rows as the fast solve's last piece left them, for the next to keep (chapter 11's
+/// joint_hand_on.h defines it; opaque here).
+struct HandedJointRows;
 
 struct BodyVelocity {
     Vec3 linear = Vec3::Zero();
@@ -103,6 +109,10 @@ struct StepState {
     int manifoldsRebuilt = 0;    // by the last search: pairs the shapes were queried for (chapter 10)
     CcdState ccd;                // continuous collision (chapter 7)
     IterationPlan iterationPlan; // the fast solve's substep count (chapters 11 and 12)
+    /// The joints' rows the fast solve's last piece left (chapter 11), shared by copies of the
+    /// World until one steps on: the step that takes them copies them first when they are shared.
+    std::shared_ptr<HandedJointRows> jointRows;
+    std::size_t jointRowsBytes = 0;  // what they hold (chapter 9's snapshots count it)
 };
 
 }  // namespace stepwise

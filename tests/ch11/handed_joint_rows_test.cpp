@@ -1,0 +1,124 @@
+// The joints' rows handed from frame to frame (joint_hand_on.h): a resting joint keeps its rows
+// across the frame's boundary as it does between substeps, and a joint whose description, bodies,
+// impulses or substep changed between the frames is built again, exactly as if nothing had been
+// handed on. Each check steps the same world twice: once as it is, once with the handed rows
+// dropped (StepState::jointRows), and compares the bits.
+#include "08_joints/scenes.h"
+#include "11_wide_solve/chapter.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <functional>
+
+using namespace stepwise;
+
+namespace {
+
+bool sameBits(const Transform& a, const Transform& b) {
+    return std::memcmp(a.position.data(), b.position.data(), sizeof(Real) * 3) == 0 &&
+           std::memcmp(a.rotation.coeffs().data(), b.rotation.coeffs().data(), sizeof(Real) * 4) == 0;
+}
+
+/// Awake: a sleeping body's joints are not solved at all.
+World awake(World world) {
+    world.settings.sleeping = false;
+    return world;
+}
+
+World stepped(World world, int frames) {
+    Pipeline pipeline = makeChapter11Pipeline(world);
+    for (int frame = 0; frame < frames; ++frame) pipeline.step(world);
+    return world;
+}
+
+/// The world stepped on `frames` frames as it is and with its handed rows dropped.
+std::pair<World, World> keptAndDropped(const World& world, int frames) {
+    World dropped = world;
+    dropped.step.jointRows.reset();
+    return {stepped(world, frames), stepped(dropped, frames)};
+}
+
+int jointOf(const World& world, int body) {
+    for (std::size_t j = 0; j < world.joints.size(); ++j)
+        if (world.joints[j].bodyB == body) return static_cast<int>(j);
+    return -1;
+}
+
+}  // namespace
+
+TEST_CASE("a resting pile's joints keep their rows from frame to frame", "[ch11][joints]") {
+    World world = stepped(awake(buildRagdollPile(4)), 360);
+    REQUIRE(world.step.jointRows);
+    Pipeline pipeline = makeChapter11Pipeline(world);
+    long built = 0, kept = 0;
+    for (int frame = 0; frame < 30; ++frame) {
+        pipeline.step(world);
+        built += world.step.solver.jointsBuilt;
+        kept += world.step.solver.jointsKept;
+    }
+    INFO(built << " built, " << kept << " kept");
+    // Every substep of every frame, the first included: almost every joint keeps its rows.
+    CHECK(kept > 0);
+    CHECK(built * 20 < built + kept);
+}
+
+TEST_CASE("a joint whose bodies, description, impulses or substep changed between frames is built again",
+          "[ch11][joints]") {
+    // The gallery's joints each hold one body under its own post: what one of them does is its own.
+    // The hinge's bar rests on its limit after two seconds.
+    const World rested = stepped(awake(buildJointGallery()), 120);
+    REQUIRE(rested.step.jointRows);
+    const int bar = rested.findBody("hinge-limits-bar");
+    REQUIRE(bar >= 0);
+    const int joint = jointOf(rested, bar);
+    REQUIRE(joint >= 0);
+    const auto barAfter = [&](const std::function<void(World&)>& edit) {
+        World world = rested;
+        edit(world);
+        const auto [kept, dropped] = keptAndDropped(world, 20);
+        return std::pair<Transform, Transform>(kept.bodies[static_cast<std::size_t>(bar)].transform,
+                                               dropped.bodies[static_cast<std::size_t>(bar)].transform);
+    };
+    SECTION("unchanged: its rows are kept, and the bits are not those of a build") {
+        const auto [kept, dropped] = barAfter([](World&) {});
+        CHECK_FALSE(sameBits(kept, dropped));
+    }
+    SECTION("its body moved by a user") {
+        const auto [kept, dropped] = barAfter([&](World& w) { w.bodies[static_cast<std::size_t>(bar)].transform.position.x() += Real(0.005); });
+        CHECK(sameBits(kept, dropped));
+    }
+    SECTION("its body turned by a user") {
+        const auto [kept, dropped] = barAfter([&](World& w) {
+            Quat& rotation = w.bodies[static_cast<std::size_t>(bar)].transform.rotation;
+            rotation = (Quat(Eigen::AngleAxis<Real>(Real(0.02), Vec3::UnitY())) * rotation).normalized();
+        });
+        CHECK(sameBits(kept, dropped));
+    }
+    SECTION("its limits changed") {
+        const auto [kept, dropped] = barAfter([&](World& w) {
+            w.joints[static_cast<std::size_t>(joint)].limits = {{-40 * kDegree, 40 * kDegree}};
+        });
+        CHECK(sameBits(kept, dropped));
+    }
+    SECTION("its body's mass doubled") {
+        const auto [kept, dropped] = barAfter([&](World& w) {
+            Motion& motion = *w.motionOf(bar);
+            motion.mass *= 2;
+            motion.inverseMass /= 2;
+            motion.inertiaLocal *= 2;
+            motion.inverseInertiaLocal /= 2;
+        });
+        CHECK(sameBits(kept, dropped));
+    }
+    SECTION("its impulses reset") {
+        const auto [kept, dropped] = barAfter([&](World& w) { w.jointImpulses[static_cast<std::size_t>(joint)] = JointImpulses{}; });
+        CHECK(sameBits(kept, dropped));
+    }
+    SECTION("the joints' stiffness changed: every joint is built again") {
+        World world = rested;
+        world.settings.jointHertz *= Real(0.5);
+        const auto [kept, dropped] = keptAndDropped(world, 20);
+        for (std::size_t b = 0; b < kept.bodies.size(); ++b) CHECK(sameBits(kept.bodies[b].transform, dropped.bodies[b].transform));
+    }
+}
