@@ -103,8 +103,10 @@ void prepareJointPass(const World& world, const SolverBodies& bodies, Real carry
         pass.joints.push_back(jointIndex);
         pass.entryA.push_back(entryFor(world, bodies, joint.bodyA, pass));
         pass.entryB.push_back(entryFor(world, bodies, joint.bodyB, pass));
-        pass.startArmA.push_back(startArm(world, bodies, pass, pass.entryA.back(), joint.localAnchorA));
-        pass.startArmB.push_back(startArm(world, bodies, pass, pass.entryB.back(), joint.localAnchorB));
+        // Only a distance joint reads its arms from the piece's start (distanceFrame).
+        const bool distance = joint.type == JointType::Distance;
+        pass.startArmA.push_back(distance ? startArm(world, bodies, pass, pass.entryA.back(), joint.localAnchorA) : Vec3::Zero());
+        pass.startArmB.push_back(distance ? startArm(world, bodies, pass, pass.entryB.back(), joint.localAnchorB) : Vec3::Zero());
         JointImpulses carried;
         if (world.settings.warmStarting && static_cast<std::size_t>(jointIndex) < world.jointImpulses.size())
             for (int k = 0; k < JointImpulses::kSlots; ++k)

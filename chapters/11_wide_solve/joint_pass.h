@@ -61,7 +61,7 @@ struct JointPass {
     std::vector<BodyPose> poses;       // per entry: where it stands this substep, once a joint built asks
     std::vector<int> placedAt;         // per entry: the substep its pose was made for (-1: none yet)
     int substepStamp = 0;              // counts the substeps buildJointRows has run
-    std::vector<Vec3> startArmA, startArmB;  // per listed joint: centre to anchor as the piece began, world axes
+    std::vector<Vec3> startArmA, startArmB;  // per listed distance joint: centre to anchor as the piece began, world axes (others zero)
     JointRowBatch batch;               // one joint's rows, as chapter 8 builds them
     bool laneBuild = true;             // point joints built a lane group at a time (buildJointLanes); false: one by one
     std::vector<unsigned> lanesToBuild;  // per lane group: the lanes buildJointLanes takes this substep
