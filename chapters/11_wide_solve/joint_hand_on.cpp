@@ -1,7 +1,5 @@
 #include "11_wide_solve/joint_hand_on.h"
 
-#include "11_wide_solve/lanes.h"
-
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -44,10 +42,14 @@ HandedBody bodyNow(const World& world, int body) {
     return now;
 }
 
-bool sameBody(const HandedBody& a, const HandedBody& b) {
-    return a.body == b.body && sameBits(a.pose.position, b.pose.position) && sameBits(a.pose.rotation, b.pose.rotation) &&
-           std::memcmp(&a.inverseMass, &b.inverseMass, sizeof(Real)) == 0 && sameBits(a.localCenter, b.localCenter) &&
-           sameBits(a.inverseInertiaLocal, b.inverseInertiaLocal);
+// Whether `was` is how the body stands in the World now, bit for bit.
+bool unchangedBody(const World& world, const HandedBody& was) {
+    const Transform& pose = world.bodies[static_cast<std::size_t>(was.body)].transform;
+    if (!sameBits(pose.position, was.pose.position) || !sameBits(pose.rotation, was.pose.rotation)) return false;
+    const Motion* motion = world.motionOf(was.body);
+    if (!motion) return was.inverseMass == 0;
+    return std::memcmp(&motion->inverseMass, &was.inverseMass, sizeof(Real)) == 0 &&
+           sameBits(motion->localCenter, was.localCenter) && sameBits(motion->inverseInertiaLocal, was.inverseInertiaLocal);
 }
 
 bool sameRoom(const JointRoom& a, const JointRoom& b) {
@@ -70,40 +72,6 @@ bool sameLayout(const World& world, Real h, const JointPass& pass, const HandedJ
     return true;
 }
 
-// [ch11-turns-rebased]
-// Each lane's turns at build, from the piece's start to the poses it leaves: a body's pose is its
-// turn since the start after the start's (slotPose), so the turn at build after the new start is
-// the old one after the inverse of the turn since the start, b d*, normalised (a group at once,
-// the same bits in every lane as one at a time; slot 0 and empty lanes do not turn).
-void turnBack(PackQuat<kWideLanes>& built, const int* slots, int lanes, const SolverBodyState* states) {
-    using Lanes = Pack<kWideLanes>;
-    Lanes dx = Lanes::splat(0), dy = dx, dz = dx, dw = Lanes::splat(1), turns = dx;
-    for (int lane = 0; lane < lanes; ++lane) {
-        if (slots[lane] == 0) continue;
-        const Real* d = states[slots[lane]].deltaRotation;
-        dx[lane] = d[0], dy[lane] = d[1], dz[lane] = d[2], dw[lane] = d[3], turns[lane] = 1;
-    }
-    const Lanes &x = built.x, &y = built.y, &z = built.z, &w = built.w;
-    const Lanes rw = ((w * dw + x * dx) + y * dy) + z * dz;
-    const Lanes rx = ((x * dw - w * dx) - y * dz) + z * dy;
-    const Lanes ry = ((y * dw + x * dz) - w * dy) - z * dx;
-    const Lanes rz = ((z * dw - x * dy) + y * dx) - w * dz;
-    const Lanes length = sqrt(((rx * rx + ry * ry) + rz * rz) + rw * rw);
-    const Lanes safe = selectPositive(turns, length, Lanes::splat(1));
-    built.x = selectPositive(turns, rx / safe, x);
-    built.y = selectPositive(turns, ry / safe, y);
-    built.z = selectPositive(turns, rz / safe, z);
-    built.w = selectPositive(turns, rw / safe, w);
-}
-
-void rebaseBuiltTurns(PackedJointRows& packed, const SolverBodyState* states) {
-    for (int g = 0; g < packed.groupCount; ++g) {
-        JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
-        turnBack(group.builtA, group.slotA, group.lanes, states);
-        turnBack(group.builtB, group.slotB, group.lanes, states);
-    }
-}
-// [ch11-turns-rebased]
 
 template <class T>
 std::size_t capacityBytes(const std::vector<T>& v) {
@@ -146,7 +114,7 @@ void takeHandedJointRows(World& world, Real h, JointPass& pass) {
     std::vector<char>& unchanged = pass.bodyUnchanged;
     unchanged.resize(handed.bodies.size());
     for (std::size_t e = 0; e < handed.bodies.size(); ++e)
-        unchanged[e] = sameBody(handed.bodies[e], bodyNow(world, pass.worldBody[e])) ? 1 : 0;
+        unchanged[e] = handed.bodies[e].body == pass.worldBody[e] && unchangedBody(world, handed.bodies[e]) ? 1 : 0;
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         pass.descHanded[i] = sameJoint(joint, handed.descs[i]) ? 1 : 0;
@@ -162,10 +130,12 @@ void takeHandedJointRows(World& world, Real h, JointPass& pass) {
 void handJointRowsOn(World& world, const SolverBodies& bodies, Real h, JointPass& pass) {
     if (!pass.handOn) pass.handOn = std::make_shared<HandedJointRows>();
     HandedJointRows& handed = *pass.handOn;
-    rebaseBuiltTurns(pass.packed, bodies.states.data());
+    rebaseBuiltTurns(pass.packed, bodies.states.data());  // packed_joint_rows.h
     handed.packedEntry = pass.packedEntry;
-    handed.joints = pass.joints;
-    handed.rooms = pass.rooms;
+    if (!pass.laidOut) {  // else the same already (sameLayout)
+        handed.joints = pass.joints;
+        handed.rooms = pass.rooms;
+    }
     handed.descs.resize(pass.joints.size());
     handed.impulses.resize(pass.joints.size());
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
@@ -174,7 +144,12 @@ void handJointRowsOn(World& world, const SolverBodies& bodies, Real h, JointPass
         handed.impulses[i] = j < world.jointImpulses.size() ? world.jointImpulses[j] : JointImpulses{};
     }
     handed.bodies.resize(pass.worldBody.size());
-    for (std::size_t e = 0; e < pass.worldBody.size(); ++e) handed.bodies[e] = bodyNow(world, pass.worldBody[e]);
+    for (std::size_t e = 0; e < pass.worldBody.size(); ++e) {
+        if (pass.laidOut && pass.bodyUnchanged[e])  // its masses the same already: its pose moved
+            handed.bodies[e].pose = world.bodies[static_cast<std::size_t>(pass.worldBody[e])].transform;
+        else
+            handed.bodies[e] = bodyNow(world, pass.worldBody[e]);
+    }
     const Settings& settings = world.settings;
     handed.h = h;
     handed.jointHertz = settings.jointHertz;

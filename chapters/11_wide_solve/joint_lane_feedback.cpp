@@ -203,4 +203,38 @@ void makeLanePointMasses(const PackVec3<N>& armA, const PackVec3<N>& armB, const
 }
 // [ch11-lane-point-mass]
 
+// [ch11-turns-rebased]
+// Each lane's turns at build, from the piece's start to the poses it leaves: a body's pose is its
+// turn since the start after the start's (slotPose), so the turn at build after the new start is
+// the old one after the inverse of the turn since the start, b d*, normalised (a group at once,
+// the same bits in every lane as one at a time; slot 0 and empty lanes do not turn).
+static void turnBack(PackQuat<N>& built, const int* slots, int lanes, const SolverBodyState* states) {
+    Lanes dx = Lanes::splat(0), dy = dx, dz = dx, dw = Lanes::splat(1), turns = dx;
+    for (int lane = 0; lane < lanes; ++lane) {
+        if (slots[lane] == 0) continue;
+        const Real* d = states[slots[lane]].deltaRotation;
+        dx[lane] = d[0], dy[lane] = d[1], dz[lane] = d[2], dw[lane] = d[3], turns[lane] = 1;
+    }
+    const Lanes &x = built.x, &y = built.y, &z = built.z, &w = built.w;
+    const Lanes rw = ((w * dw + x * dx) + y * dy) + z * dz;
+    const Lanes rx = ((x * dw - w * dx) - y * dz) + z * dy;
+    const Lanes ry = ((y * dw + x * dz) - w * dy) - z * dx;
+    const Lanes rz = ((z * dw - x * dy) + y * dx) - w * dz;
+    const Lanes length = sqrt(((rx * rx + ry * ry) + rz * rz) + rw * rw);
+    const Lanes safe = selectPositive(turns, length, Lanes::splat(1));
+    built.x = selectPositive(turns, rx / safe, x);
+    built.y = selectPositive(turns, ry / safe, y);
+    built.z = selectPositive(turns, rz / safe, z);
+    built.w = selectPositive(turns, rw / safe, w);
+}
+
+void rebaseBuiltTurns(PackedJointRows& packed, const SolverBodyState* states) {
+    for (int g = 0; g < packed.groupCount; ++g) {
+        JointLaneGroup& group = packed.groups[static_cast<std::size_t>(g)];
+        turnBack(group.builtA, group.slotA, group.lanes, states);
+        turnBack(group.builtB, group.slotB, group.lanes, states);
+    }
+}
+// [ch11-turns-rebased]
+
 }  // namespace stepwise

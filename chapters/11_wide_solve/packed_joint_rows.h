@@ -171,6 +171,11 @@ void markPackedBuilt(PackedJointRows& packed, int entry, bool built, const Quat&
 /// products: (x + z) + (y + w)).
 unsigned lanesTurnedAtMost(const JointLaneGroup& group, const SolverBodyState* states, Real most);
 
+/// Each lane's turns at build (JointLaneGroup::builtA, builtB) made relative to where its bodies
+/// stand now, `states` holding their turns since the piece began: what a piece hands on
+/// (joint_hand_on.h). Slot 0 and empty lanes keep theirs.
+void rebaseBuiltTurns(PackedJointRows& packed, const SolverBodyState* states);
+
 /// Row k of joint `entry` as one row (what the sweeps read of it).
 PackedJointRow packedRowOf(const PackedJointRows& packed, int entry, int k);
 /// Writes row k of joint `entry`.
