@@ -3,11 +3,14 @@
 // impulses or substep changed between the frames is built again, exactly as if nothing had been
 // handed on. Each check steps the same world twice: once as it is, once with the handed rows
 // dropped (StepState::jointRows), and compares the bits.
+#include "08_joints/joint_frame.h"
 #include "08_joints/scenes.h"
 #include "11_wide_solve/chapter.h"
+#include "11_wide_solve/joint_hand_on.h"
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -37,6 +40,26 @@ std::pair<World, World> keptAndDropped(const World& world, int frames) {
     World dropped = world;
     dropped.step.jointRows.reset();
     return {stepped(world, frames), stepped(dropped, frames)};
+}
+
+/// Chapter 8's rows of `joint` where its bodies stand in the World now.
+JointRowBatch freshRows(const World& world, int jointIndex, Real h) {
+    const JointDesc& joint = world.joints[static_cast<std::size_t>(jointIndex)];
+    std::vector<SolverBody> bodies(2);
+    const int ends[2] = {joint.bodyA, joint.bodyB};
+    for (int k = 0; k < 2; ++k) {
+        bodies[static_cast<std::size_t>(k)].center = worldCenterOfMass(world, ends[k]);
+        if (const Motion* motion = world.motionOf(ends[k])) {
+            bodies[static_cast<std::size_t>(k)].inverseMass = motion->inverseMass;
+            bodies[static_cast<std::size_t>(k)].inverseInertia = worldInverseInertia(world.bodies[static_cast<std::size_t>(ends[k])], *motion);
+        }
+    }
+    const Transform& a = world.bodies[static_cast<std::size_t>(joint.bodyA)].transform;
+    const Transform& b = world.bodies[static_cast<std::size_t>(joint.bodyB)].transform;
+    JointRowBatch batch;
+    buildJointRowBatch(batch, joint, jointIndex, jointRowFrame(joint, a, bodies[0].center, b, bodies[1].center), 0, 1,
+                       bodies, h, fastJointFeedback(world.settings, h), nullptr);
+    return batch;
 }
 
 int jointOf(const World& world, int body) {
@@ -121,4 +144,60 @@ TEST_CASE("a joint whose bodies, description, impulses or substep changed betwee
         const auto [kept, dropped] = keptAndDropped(world, 20);
         for (std::size_t b = 0; b < kept.bodies.size(); ++b) CHECK(sameBits(kept.bodies[b].transform, dropped.bodies[b].transform));
     }
+}
+
+TEST_CASE("rows handed across frames read the errors chapter 8 measures where the bodies stand, to second order",
+          "[ch11][joints]") {
+    // A resting pile keeps most of its rows for many frames; their errors have moved with every
+    // substep since they were built, across every frame's boundary, and their bodies have turned
+    // at most kJointRowsKeptTurn: the frozen Jacobians miss a few micrometres (microradians).
+    World world = stepped(awake(buildRagdollPile(4)), 300);
+    Pipeline pipeline = makeChapter11Pipeline(world);
+    int compared = 0;
+    for (int frame = 0; frame < 60; ++frame) {
+        pipeline.step(world);
+        if (frame % 15 != 14) continue;
+        REQUIRE(world.step.jointRows);
+        const HandedJointRows& handed = *world.step.jointRows;
+        const Real h = handed.h;
+        for (std::size_t i = 0; i < handed.joints.size(); ++i) {
+            const int entry = handed.packedEntry[i];
+            if (entry < 0) continue;
+            const PackedJoint& packed = handed.packed.joints[static_cast<std::size_t>(entry)];
+            const JointLaneGroup& group = handed.packed.groups[static_cast<std::size_t>(packed.group)];
+            if (!(group.keepableLanes & group.builtLanes & (1u << packed.lane))) continue;
+            INFO("frame " << frame << ", joint " << handed.joints[i]);
+            const JointRowBatch fresh = freshRows(world, handed.joints[i], h);
+            // Second order in the turn: half its square, times the arm for a point (a ragdoll's
+            // arms are at most 0.3 m), plus the rounding of many substeps' moves.
+            const Real turn = kJointRowsKeptTurn;
+            const Real tolerance = turn * turn / 2 + Real(5e-6);
+            if (packed.hasBlock) {
+                const Vec3 gap = packedBlockOf(handed.packed, entry).error;
+                for (int axis = 0; axis < 3; ++axis) CHECK(std::abs(gap[axis] - fresh.error[axis]) <= tolerance);
+            }
+            // A hinge's two rows across its axis are compared as a length (keptTest's reason).
+            const bool hinge = world.joints[static_cast<std::size_t>(handed.joints[i])].type == JointType::Hinge;
+            Real keptAcross = 0, freshAcross = 0;
+            for (int k = 0; k < packed.rowCount; ++k) {
+                const PackedJointRow row = packedRowOf(handed.packed, entry, k);
+                if (row.slot < 3 || !fresh.used[row.slot]) continue;
+                if (hinge && row.slot <= 4) {
+                    keptAcross += row.error * row.error;
+                    freshAcross += fresh.error[row.slot] * fresh.error[row.slot];
+                    continue;
+                }
+                INFO("slot " << row.slot << ": kept " << row.error << ", fresh " << fresh.error[row.slot]);
+                // A limit's angle (a swing, a twist) moves at second order with the swing too: within
+                // turn^2 where the limit is near, where the row acts; a milliradian far from it.
+                const bool limit = row.kind == JointRowKind::Limit;
+                const bool near = std::abs(fresh.error[row.slot]) <= turn;
+                const Real allowed = !limit ? tolerance : near ? turn * turn : turn / 10;
+                CHECK(std::abs(row.error - fresh.error[row.slot]) <= allowed);
+            }
+            CHECK(std::abs(std::sqrt(keptAcross) - std::sqrt(freshAcross)) <= tolerance);
+            ++compared;
+        }
+    }
+    CHECK(compared >= 4 * 36);  // four ragdolls' joints, four times
 }
