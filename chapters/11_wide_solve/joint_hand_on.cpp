@@ -72,7 +72,6 @@ bool sameLayout(const World& world, Real h, const JointPass& pass, const HandedJ
     return true;
 }
 
-
 template <class T>
 std::size_t capacityBytes(const std::vector<T>& v) {
     return v.capacity() * sizeof(T);
