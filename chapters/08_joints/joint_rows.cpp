@@ -123,7 +123,7 @@ void setPointBlock(JointRowSet& set, const JointFrame& frame, const SolverBody& 
                    armB * b.inverseInertia * armB;
     // [ch08-point-mass]
     const Real scale = k.norm();
-    const bool invertible = scale > 0 && std::abs(k.determinant()) > Real(1e-9) * scale * scale * scale;
+    const bool invertible = pointBlockInvertible(scale, k.determinant());
     const Mat3 inverse = invertible ? Mat3(k.inverse()) : Mat3::Zero();
     set.pointBlock = invertible && inverse.allFinite();
     set.pointMass = set.pointBlock ? inverse : Mat3::Zero();

@@ -19,6 +19,7 @@
 #include "world/world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace stepwise {
@@ -123,6 +124,16 @@ constexpr int jointSlotCount(JointType type) {
 
 /// Whether a joint of `type` solves slots 0-2 (its anchors together) as one 3x3 block.
 constexpr bool hasPointBlock(JointType type) { return type != JointType::Distance && type != JointType::Slider; }
+
+/// A point block's K counts as singular (both bodies fixed, or nearly) below this determinant,
+/// relative to the cube of its norm: the block's rows then stay scalar.
+constexpr Real kSingularPointBlock = Real(1e-9);
+
+/// Whether a point block with K of this norm and determinant is inverted (setPointBlock; chapter
+/// 11's lane build decides each lane by the same rule).
+inline bool pointBlockInvertible(Real norm, Real determinant) {
+    return norm > 0 && std::abs(determinant) > kSingularPointBlock * norm * norm * norm;
+}
 
 /// Builds the rows of `joint` at `frame` into `batch` (appendJointRows' rules, the same numbers):
 /// false, with nothing to solve, if any row came out non-finite.

@@ -90,7 +90,7 @@ std::size_t handedBytes(const HandedJointRows& handed) {
 
 // [ch11-take-handed]
 void takeHandedJointRows(World& world, Real h, JointPass& pass) {
-    pass.laidOut = false;
+    // pass.laidOut is false from prepareJointPass until the layout is found to stand.
     std::shared_ptr<HandedJointRows>& held = world.step.jointRows;
     if (!held) return;
     const bool layoutStands = sameLayout(world, h, pass, *held);

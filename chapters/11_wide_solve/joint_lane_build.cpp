@@ -151,11 +151,10 @@ unsigned buildJointLanes(PackedJointRows& packed, int g, LaneJoint* joints, unsi
         if (!(lanes >> lane & 1u)) continue;
         LaneJoint& input = joints[lane];
         const PackedJoint& joint = packed.joints[static_cast<std::size_t>(group.entry[lane])];
-        const Real size = scale[lane];
         Mat3 mass;
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) mass(i, j) = inverse[3 * i + j][lane];
-        const bool invertible = size > 0 && std::abs(determinant[lane]) > Real(1e-9) * size * size * size;
+        const bool invertible = pointBlockInvertible(scale[lane], determinant[lane]);
         if (!invertible || !mass.allFinite() || !joint.blockRoom) {  // singular: chapter 8 keeps the point rows scalar
             left |= 1u << lane;
             continue;

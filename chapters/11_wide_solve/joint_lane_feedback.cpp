@@ -140,10 +140,6 @@ void makeLaneMoves(JointLaneGroup& group, unsigned lanes, const int* rows, const
 }
 // [ch11-lane-moves]
 
-}  // namespace stepwise
-
-namespace stepwise {
-
 // [ch11-lane-point-mass]
 // Chapter 8's setPointBlock for a group's joints at once: K = (1/mA + 1/mB) 1 - [rA]x IA^-1 [rA]x
 // - [rB]x IB^-1 [rB]x, its norm, its determinant and its inverse, each sum in the order Eigen
@@ -208,7 +204,9 @@ void makeLanePointMasses(const PackVec3<N>& armA, const PackVec3<N>& armB, const
 // turn since the start after the start's (slotPose), so the turn at build after the new start is
 // the old one after the inverse of the turn since the start, b d*, normalised (a group at once,
 // the same bits in every lane as one at a time; slot 0 and empty lanes do not turn).
-static void turnBack(PackQuat<N>& built, const int* slots, int lanes, const SolverBodyState* states) {
+namespace {
+
+void turnBack(PackQuat<N>& built, const int* slots, int lanes, const SolverBodyState* states) {
     Lanes dx = Lanes::splat(0), dy = dx, dz = dx, dw = Lanes::splat(1), turns = dx;
     for (int lane = 0; lane < lanes; ++lane) {
         if (slots[lane] == 0) continue;
@@ -227,6 +225,8 @@ static void turnBack(PackQuat<N>& built, const int* slots, int lanes, const Solv
     built.z = selectPositive(turns, rz / safe, z);
     built.w = selectPositive(turns, rw / safe, w);
 }
+
+}  // namespace
 
 void rebaseBuiltTurns(PackedJointRows& packed, const SolverBodyState* states) {
     for (int g = 0; g < packed.groupCount; ++g) {
