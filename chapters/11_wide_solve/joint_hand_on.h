@@ -1,9 +1,9 @@
 #pragma once
 // The joints' rows handed from one piece of the fast solve to the next, and so from frame to frame.
 // Within a piece a point joint keeps last substep's rows while its bodies have barely turned
-// since they were built (kJointRowsKeptTurn); at rest that is almost every substep, and the
-// piece's first substep, which built every joint again, was most of the joints' building. A joint
-// now keeps its rows across the boundary too, on the same rule, when everything they were made
+// since they were built (kJointRowsKeptTurn); at rest that is almost every substep, so a piece
+// that built every joint again on its first substep would spend most of its building there. A
+// joint keeps its rows across the boundary too, on the same rule, when everything they were made
 // from is as the last piece left it: its description, its bodies' poses bit for bit (nothing
 // moved them between the solves), their masses, its impulses and the substep. Anything else
 // builds it again, so a body a user moves, a motor a user turns up, a body that falls asleep or
