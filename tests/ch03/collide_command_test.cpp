@@ -1,5 +1,6 @@
 // `stepwise collide`: the narrow-phase query contract, good input and bad.
 #include "03_epa/collide_command.h"
+#include "support/temp_path.h"
 
 #include <CLI/CLI.hpp>
 #include <catch2/catch.hpp>
@@ -17,7 +18,7 @@ using Json = nlohmann::json;
 namespace {
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-    const std::string path = (std::filesystem::temp_directory_path() / ("ch03_collide_" + name)).string();
+    const std::string path = test::tempPath("ch03_collide_" + name).string();
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }
@@ -89,7 +90,7 @@ TEST_CASE("collide answers one result per pair, in order", "[ch03][collide]") {
 }
 
 TEST_CASE("collide writes to --output and times the queries with --time", "[ch03][collide]") {
-    const std::string output = (std::filesystem::temp_directory_path() / "ch03_collide_results.json").string();
+    const std::string output = test::tempPath("ch03_collide_results.json").string();
     std::filesystem::remove(output);
     const Run run = collide(kPairs, true, output);
     REQUIRE(run.code == 0);
@@ -143,7 +144,7 @@ TEST_CASE("collide rejects bad input with the JSON path and exit code 2", "[ch03
 
 TEST_CASE("collide is a stepwise subcommand", "[ch03][collide]") {
     const std::string input = writeTemp("cli.json", kPairs);
-    const std::string output = (std::filesystem::temp_directory_path() / "ch03_collide_cli.json").string();
+    const std::string output = test::tempPath("ch03_collide_cli.json").string();
     CLI::App app{"test"};
     int exitCode = -1;
     installCollideCommand(app, exitCode);

@@ -7,6 +7,7 @@
 #include "app/runner.h"
 #include "support/scene_rejection.h"
 #include "world/scene.h"
+#include "support/temp_path.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,7 +20,7 @@ using namespace stepwise;
 
 namespace {
 
-std::string temporaryPath(const std::string& name) { return (std::filesystem::temp_directory_path() / name).string(); }
+std::string temporaryPath(const std::string& name) { return test::tempPath(name).string(); }
 
 /// Loads scene text through a registry that knows chapter 5's generator.
 World loadWithGenerators(const std::string& text) {

@@ -3,6 +3,7 @@
 // pyramids stand, a settled pile of boxes and hulls costs less asleep.
 #include "12_planner/benches.h"
 #include "support/quick_bench.h"
+#include "support/temp_path.h"
 
 #include <catch2/catch.hpp>
 
@@ -110,7 +111,7 @@ TEST_CASE("bench speed --only prints the chosen scenes and refuses to write file
     std::ostringstream out;
     options.out = &out;
     options.only = "20-link chain";
-    options.csvPath = (std::filesystem::temp_directory_path() / "speed-only-refused.csv").string();
+    options.csvPath = test::tempPath("speed-only-refused.csv").string();
     CHECK(runBench(speedBench(), options) == 2);
     CHECK(!std::filesystem::exists(options.csvPath));
     options.csvPath.clear();

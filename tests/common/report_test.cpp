@@ -4,6 +4,7 @@
 #include "support/json_keys.h"
 #include "world/report.h"
 #include "world/scene.h"
+#include "support/temp_path.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -137,7 +138,7 @@ TEST_CASE("A blown-up body is written as null and warned about", "[common][repor
 TEST_CASE("writeReport writes the text and names the path when it cannot", "[common][report]") {
     const World world = sampleWorld();
     const RunStats stats = sampleStats(world);
-    const auto path = std::filesystem::temp_directory_path() / "stepwise-report-test.json";
+    const auto path = test::tempPath("stepwise-report-test.json");
     writeReport(path.string(), world, stats, "v");
     std::ifstream file(path, std::ios::binary);
     std::ostringstream text;

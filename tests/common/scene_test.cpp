@@ -2,6 +2,7 @@
 // every kind of bad input is rejected with ONE message at the exact JSON path.
 
 #include "world/scene.h"
+#include "support/temp_path.h"
 
 #include <catch2/catch.hpp>
 
@@ -141,7 +142,7 @@ TEST_CASE("Absent keys take the documented defaults", "[common][scene]") {
 
 TEST_CASE("An empty object is an empty world, and a file's name defaults to its stem", "[common][scene]") {
     CHECK(loadSceneFromString("{}").bodies.empty());
-    const auto path = std::filesystem::temp_directory_path() / "stepwise-unnamed-scene.json";
+    const auto path = test::tempPath("stepwise-unnamed-scene.json");
     std::ofstream(path) << sceneWith(kBall);
     CHECK(loadSceneFile(path.string()).name == "stepwise-unnamed-scene");
     std::filesystem::remove(path);

@@ -2,6 +2,7 @@
 // files (inline or OBJ), save back, refuse bad input at its JSON path, and have the mass
 // properties and boxes of their closed forms.
 #include "world/scene.h"
+#include "support/temp_path.h"
 
 #include <catch2/catch.hpp>
 
@@ -112,7 +113,7 @@ TEST_CASE("the new shape kinds load, save and load again", "[common][shapes]") {
 }
 
 TEST_CASE("a mesh loads from an OBJ file named relative to the scene file", "[common][shapes]") {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "stepwise_shape_kinds_test";
+    const std::filesystem::path folder = test::tempPath("stepwise_shape_kinds_test");
     std::filesystem::create_directories(folder / "models");
     std::ofstream(folder / "models" / "quad.obj") << "# a quad\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nvn 0 1 0\nf 1//1 4//1 3//1 2//1\n";
     std::ofstream(folder / "ground.json") << shapeKindsScene(R"({"type": "static", "shape": {"mesh": {"obj": "models/quad.obj"}}})");

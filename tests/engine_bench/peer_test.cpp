@@ -4,6 +4,7 @@
 #include "engine/runs.h"
 #include "app/bench_util.h"
 #include "world/scene.h"
+#include "support/temp_path.h"
 
 #include <catch2/catch.hpp>
 
@@ -32,7 +33,7 @@ TEST_CASE("a scene the peer refuses is listed as refused with its reason", "[eng
     const RunResult refused = runPeer(loadSceneFromString(kRodScene, "rod.json"), 0.5, {});
     CHECK_THAT(refused.failure, Catch::StartsWith("refused: joints[0] (distance"));
 
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "engine_bench_refused";
+    const std::filesystem::path folder = test::tempPath("engine_bench_refused");
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
     std::ofstream(folder / "rod.json") << kRodScene;

@@ -3,6 +3,7 @@
 #include "engine/engine_bench.h"
 #include "engine/suite.h"
 #include "app/bench_util.h"
+#include "support/temp_path.h"
 
 #include <catch2/catch.hpp>
 
@@ -33,7 +34,7 @@ std::string withCheck(const std::string& check) {
 
 /// A folder in the temporary directory holding the given files, removed when the test ends.
 struct Folder {
-    explicit Folder(const std::string& name) : path(std::filesystem::temp_directory_path() / name) {
+    explicit Folder(const std::string& name) : path(test::tempPath(name)) {
         std::filesystem::remove_all(path);
         std::filesystem::create_directories(path);
     }

@@ -9,6 +9,7 @@
 
 #include "app/bench_util.h"
 #include "app/registry.h"
+#include "temp_path.h"
 
 #include <catch2/catch.hpp>
 
@@ -71,7 +72,7 @@ inline void keepForDocs(const BenchEntry& entry, const std::filesystem::path& di
 /// every bench promises: exit code 0, every declared file written, and the table's first line
 /// (when `expectedHeader` is given).
 inline QuickBench runQuickBench(const BenchEntry& entry, const std::string& stem, const std::string& expectedHeader = "") {
-    const std::filesystem::path directory = std::filesystem::temp_directory_path();
+    const std::filesystem::path& directory = tempFolder();
     const auto pathOf = [&](const BenchFile& file) {
         return (directory / (stem + file.suffix + (file.kind == BenchFile::Kind::Csv ? ".csv" : ".svg"))).string();
     };
