@@ -4,6 +4,7 @@
 #include "08_joints/kinematic.h"
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <string>
 
@@ -24,6 +25,7 @@ namespace {
 struct JointedPartners {
     std::vector<int> start, partner;
 
+    JointedPartners() = default;
     explicit JointedPartners(const World& world) {
         const auto count = static_cast<int>(world.bodies.size());
         const auto valid = [count](const JointDesc& joint) {
@@ -66,14 +68,50 @@ Real measureDeepestCollidingPenetration(const World& world) {
     return measureDeepestPenetrationAmong(world, [&](int bodyA, int bodyB) { return !jointed.joined(bodyA, bodyB); });
 }
 
-void dropJointedPairs(World& world) {
-    if (world.joints.empty()) return;
-    const JointedPartners jointed(world);
+namespace {
+
+/// The partners kept from frame to frame by the pipeline's stage: made again only where the
+/// joints' pairs or the body count change, which one pass over the joints tells; making them
+/// costs that pass twice and three allocations every frame of a ragdoll field.
+class JointedPartnersCache {
+public:
+    const JointedPartners& of(const World& world) {
+        if (!matches(world)) {
+            bodyCount_ = world.bodies.size();
+            pairs_.clear();
+            for (const JointDesc& joint : world.joints) pairs_.push_back(keyOf(joint));
+            partners_ = JointedPartners(world);
+        }
+        return partners_;
+    }
+
+private:
+    using Key = std::array<int, 3>;  // the bodies, and whether the joint lets them collide
+    static Key keyOf(const JointDesc& joint) { return {joint.bodyA, joint.bodyB, joint.collideConnected ? 1 : 0}; }
+    bool matches(const World& world) const {
+        if (world.bodies.size() != bodyCount_ || world.joints.size() != pairs_.size()) return false;
+        for (std::size_t i = 0; i < pairs_.size(); ++i)
+            if (keyOf(world.joints[i]) != pairs_[i]) return false;
+        return true;
+    }
+    std::size_t bodyCount_ = 0;
+    std::vector<Key> pairs_;
+    JointedPartners partners_;
+};
+
+void dropPairsOf(World& world, const JointedPartners& jointed) {
     if (jointed.partner.empty()) return;
     std::vector<BodyPair>& pairs = world.candidatePairs;
     pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
                                [&](const BodyPair& pair) { return jointed.joined(pair.bodyA, pair.bodyB); }),
                 pairs.end());
+}
+
+}  // namespace
+
+void dropJointedPairs(World& world) {
+    if (world.joints.empty()) return;
+    dropPairsOf(world, JointedPartners(world));
 }
 
 // [ch08-pipeline]
@@ -88,7 +126,9 @@ Pipeline makeChapter08Pipeline(const World& world, const JointOptions& options, 
         // before the narrowphase sees them.
         Stage connected;
         connected.name = stageName(stage_group::kJoints, "connected_pairs");
-        connected.run = [](World& stepWorld, Real) { dropJointedPairs(stepWorld); };
+        connected.run = [partners = std::make_shared<JointedPartnersCache>()](World& stepWorld, Real) {
+            if (!stepWorld.joints.empty()) dropPairsOf(stepWorld, partners->of(stepWorld));
+        };
         if (const Stage* narrowphase = pipeline.find(stage_group::kNarrowphase)) connected.frequency = narrowphase->frequency;
         pipeline.insertBefore(stage_group::kNarrowphase, std::move(connected));
         // The solve now carries the joints' rows beside the contacts'.

@@ -374,14 +374,14 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         if (keepable) pass.keptLanes[g] = keepable & lanesTurnedAtMost(group, bodies.states.data(), kJointRowsKeptTurn);
     }
     for (std::size_t i = 0; i < pass.joints.size(); ++i) {
-        const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
-        const bool distance = joint.type == JointType::Distance;
-        if (mayKeep && keptLane(pass, i)) {
+        if (mayKeep && keptLane(pass, i)) {  // before its description is read: most joints are kept
             // Its biases are made again below, with the other kept joints of its group at once.
             pass.rowCount += pass.packed.joints[i].slotCount;
             ++pass.jointsKept;
             continue;
         }
+        const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
+        const bool distance = joint.type == JointType::Distance;
         const JointFrame frame = distance ? distanceFrame(bodies, pass, i) : placedFrame(world, bodies, pass, i, joint);
         if (mayKeep && (!firstSubstep || handedJoint(pass, i)) && distance && keepsDistanceRow(bodies, pass, i, joint, frame)) {
             keepJoint(pass, i, feedback, h);

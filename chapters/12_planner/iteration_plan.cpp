@@ -33,11 +33,15 @@ int supportDepth(const World& world, const std::vector<int>& contactOrder, Stack
         return withJoints && joint.bodyA >= 0 && joint.bodyB >= 0 && static_cast<std::size_t>(joint.bodyA) < bodyCount &&
                static_cast<std::size_t>(joint.bodyB) < bodyCount;
     };
+    // A contact is read once: its two bodies go to a short list the links below read again.
+    std::vector<int>& ends = search.ends;
+    ends.clear();
     for (const int index : contactOrder) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
-        ++start[static_cast<std::size_t>(contact.bodyA) + 1];
-        ++start[static_cast<std::size_t>(contact.bodyB) + 1];
+        ends.push_back(contact.bodyA);
+        ends.push_back(contact.bodyB);
     }
+    for (const int body : ends) ++start[static_cast<std::size_t>(body) + 1];
     for (const JointDesc& joint : world.joints) {
         if (!validJoint(joint)) continue;
         ++start[static_cast<std::size_t>(joint.bodyA) + 1];
@@ -50,25 +54,26 @@ int supportDepth(const World& world, const std::vector<int>& contactOrder, Stack
         search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(a)]++)] = b;
         search.neighbours[static_cast<std::size_t>(search.fill[static_cast<std::size_t>(b)]++)] = a;
     };
-    for (const int index : contactOrder) {
-        const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
-        link(contact.bodyA, contact.bodyB);
-    }
+    for (std::size_t k = 0; k < ends.size(); k += 2) link(ends[k], ends[k + 1]);
     for (const JointDesc& joint : world.joints)
         if (validJoint(joint)) link(joint.bodyA, joint.bodyB);
-    // Breadth first from the supports: a body's depth is its layer.
+    // Breadth first from the supports: a body's depth is its layer. Whether a body is dynamic is
+    // read once into a dense list, not once an edge from the large Body.
+    std::vector<unsigned char>& dynamic = search.dynamic;
+    dynamic.resize(bodyCount);
+    for (std::size_t body = 0; body < bodyCount; ++body) dynamic[body] = world.bodies[body].type == BodyType::Dynamic;
     std::vector<int>& depth = search.depth;
     std::vector<int>& queue = search.queue;
     depth.assign(bodyCount, 0);
     queue.clear();
     for (std::size_t body = 0; body < bodyCount; ++body)
-        if (!isDynamic(static_cast<int>(body)) && start[body + 1] > start[body]) queue.push_back(static_cast<int>(body));
+        if (!dynamic[body] && start[body + 1] > start[body]) queue.push_back(static_cast<int>(body));
     int deepest = 0;
     for (std::size_t next = 0; next < queue.size(); ++next) {
         const int body = queue[next];
         for (int k = start[static_cast<std::size_t>(body)]; k < start[static_cast<std::size_t>(body) + 1]; ++k) {
             const int other = search.neighbours[static_cast<std::size_t>(k)];
-            if (!isDynamic(other) || depth[static_cast<std::size_t>(other)] > 0) continue;
+            if (!dynamic[static_cast<std::size_t>(other)] || depth[static_cast<std::size_t>(other)] > 0) continue;
             depth[static_cast<std::size_t>(other)] = depth[static_cast<std::size_t>(body)] + 1;
             deepest = std::max(deepest, depth[static_cast<std::size_t>(other)]);
             queue.push_back(other);

@@ -24,6 +24,8 @@ int substepsFor(Real dt, Real longest);
 /// once it has run: the contact graph in compressed rows, and the breadth-first search.
 struct StackSearch {
     std::vector<int> start, fill, neighbours, depth, queue;
+    std::vector<int> ends;                // the contacts' bodies, two a contact
+    std::vector<unsigned char> dynamic;   // a byte a body: whether it is dynamic
     std::vector<int> downward, layerLanes, layerGroups;  // the shock sweep's cost (shockSweepSubsteps)
     LoadPathSearch loads;                                // the mass ratio along load paths
 };
