@@ -22,6 +22,7 @@
 #include "app/bench_util.h"
 #include "app/registry.h"
 #include "math/random.h"
+#include "world/heap_bytes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,8 +80,7 @@ struct SnapshotCost {
 /// A whole world's bytes split as the snapshot's are: the contact records (and the pair lists
 /// beside them) per contact point, everything else per body.
 void wholeWorldSplit(const World& world, double& perBody, double& perPoint) {
-    const double contactBytes = double(world.contacts.capacity() * sizeof(Contact) + world.pairs.capacity() * sizeof(BodyPair) +
-                                       world.pairGaps.capacity() * sizeof(PairGap));
+    const double contactBytes = double(capacityBytes(world.contacts) + capacityBytes(world.pairs) + capacityBytes(world.pairGaps));
     const double bodyBytes = double(worldBytes(world)) - contactBytes;
     int points = 0;
     for (const Contact& contact : world.contacts) points += contact.pointCount;

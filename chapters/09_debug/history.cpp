@@ -1,4 +1,5 @@
 #include "09_debug/history.h"
+#include "world/heap_bytes.h"
 
 #include <stdexcept>
 #include <string>
@@ -75,15 +76,6 @@ std::size_t History::snapshotBytes() const {
     return total;
 }
 
-namespace {
-
-template <class T>
-std::size_t vectorBytes(const std::vector<T>& values) {
-    return values.capacity() * sizeof(T);
-}
-
-}  // namespace
-
 std::size_t History::baseBytes() const {
     std::size_t total = 0;
     const World* last = nullptr;
@@ -126,21 +118,21 @@ World structureOf(const World& world) {
 
 std::size_t worldBytes(const World& world) {
     std::size_t bytes = sizeof(World);
-    bytes += vectorBytes(world.bodies) + vectorBytes(world.motions) + vectorBytes(world.springs) +
-             vectorBytes(world.dampings) + vectorBytes(world.joints) + vectorBytes(world.jointImpulses) +
-             vectorBytes(world.kinematicPaths) + vectorBytes(world.candidatePairs) + vectorBytes(world.pairs) +
-             vectorBytes(world.contacts) + vectorBytes(world.pairGaps);
+    bytes += capacityBytes(world.bodies) + capacityBytes(world.motions) + capacityBytes(world.springs) +
+             capacityBytes(world.dampings) + capacityBytes(world.joints) + capacityBytes(world.jointImpulses) +
+             capacityBytes(world.kinematicPaths) + capacityBytes(world.candidatePairs) + capacityBytes(world.pairs) +
+             capacityBytes(world.contacts) + capacityBytes(world.pairGaps);
     const StepState& step = world.step;
-    bytes += vectorBytes(step.velocitiesBeforeForces) + vectorBytes(step.ccd.sweepStart) +
-             vectorBytes(step.ccd.ghostBodies) + vectorBytes(step.ccd.ghostPoses) + vectorBytes(step.ccd.sweptBounds);
+    bytes += capacityBytes(step.velocitiesBeforeForces) + capacityBytes(step.ccd.sweepStart) +
+             capacityBytes(step.ccd.ghostBodies) + capacityBytes(step.ccd.ghostPoses) + capacityBytes(step.ccd.sweptBounds);
     const BroadphaseState& broadphase = world.broadphase;
     const SweepColumns& columns = broadphase.buffers.columns;
-    bytes += vectorBytes(broadphase.endpoints) + vectorBytes(broadphase.bounds) + vectorBytes(broadphase.dynamic) +
-             vectorBytes(columns.low) + vectorBytes(columns.high) + vectorBytes(columns.lowA) +
-             vectorBytes(columns.highA) + vectorBytes(columns.lowB) + vectorBytes(columns.highB) +
-             vectorBytes(columns.body) + vectorBytes(columns.dynamic) + vectorBytes(broadphase.buffers.pairs) +
-             vectorBytes(broadphase.buffers.pairStarts) + vectorBytes(broadphase.enlargedBounds) +
-             vectorBytes(broadphase.enlargedDynamic) + vectorBytes(broadphase.enlargedPairs);
+    bytes += capacityBytes(broadphase.endpoints) + capacityBytes(broadphase.bounds) + capacityBytes(broadphase.dynamic) +
+             capacityBytes(columns.low) + capacityBytes(columns.high) + capacityBytes(columns.lowA) +
+             capacityBytes(columns.highA) + capacityBytes(columns.lowB) + capacityBytes(columns.highB) +
+             capacityBytes(columns.body) + capacityBytes(columns.dynamic) + capacityBytes(broadphase.buffers.pairs) +
+             capacityBytes(broadphase.buffers.pairStarts) + capacityBytes(broadphase.enlargedBounds) +
+             capacityBytes(broadphase.enlargedDynamic) + capacityBytes(broadphase.enlargedPairs);
     return bytes;
 }
 

@@ -1,6 +1,7 @@
 #include "09_debug/snapshot.h"
 
 #include "05_sap/sweep_and_prune.h"
+#include "world/heap_bytes.h"
 
 #include <algorithm>
 #include <cstring>
@@ -228,15 +229,6 @@ void restoreBroadphase(const WorldSnapshot& in, World& world) {
     } else {
         computeBroadphaseBounds(world, broadphase.bounds, broadphase.dynamic);
     }
-}
-
-template <class T>
-std::size_t capacityBytes(const std::vector<T>& values) {
-    return values.capacity() * sizeof(T);
-}
-template <class T>
-std::size_t sizeBytes(const std::vector<T>& values) {
-    return values.size() * sizeof(T);
 }
 
 }  // namespace

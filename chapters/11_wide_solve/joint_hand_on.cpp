@@ -1,4 +1,5 @@
 #include "11_wide_solve/joint_hand_on.h"
+#include "world/heap_bytes.h"
 
 #include <cmath>
 #include <cstring>
@@ -72,10 +73,6 @@ bool sameLayout(const World& world, Real h, const JointPass& pass, const HandedJ
     return true;
 }
 
-template <class T>
-std::size_t capacityBytes(const std::vector<T>& v) {
-    return v.capacity() * sizeof(T);
-}
 
 // What the handed rows hold, their vectors' room included.
 std::size_t handedBytes(const HandedJointRows& handed) {

@@ -52,10 +52,10 @@ struct Transform {
     Vec3 position = Vec3::Zero();
     Quat rotation = Quat::Identity();
 
-    Vec3 apply(const Vec3& local) const { return position + turnVector(rotation, local); }
-    Vec3 applyInverse(const Vec3& world) const { return turnVectorBack(rotation, world - position); }
-    Vec3 rotate(const Vec3& local) const { return turnVector(rotation, local); }
-    Vec3 rotateInverse(const Vec3& world) const { return turnVectorBack(rotation, world); }
+    STEPWISE_ALWAYS_INLINE Vec3 apply(const Vec3& local) const { return position + turnVector(rotation, local); }
+    STEPWISE_ALWAYS_INLINE Vec3 applyInverse(const Vec3& world) const { return turnVectorBack(rotation, world - position); }
+    STEPWISE_ALWAYS_INLINE Vec3 rotate(const Vec3& local) const { return turnVector(rotation, local); }
+    STEPWISE_ALWAYS_INLINE Vec3 rotateInverse(const Vec3& world) const { return turnVectorBack(rotation, world); }
 };
 
 /// Axis-aligned bounding box in world space.

@@ -9,7 +9,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 using namespace stepwise;
 
@@ -78,6 +80,33 @@ TEST_CASE("no pair kept apart by the gap cache is one chapter 6 would make a con
         }
     }
     CHECK(keptApart > 0);
+}
+
+TEST_CASE("stillApart answers as the arc cosine's test does, at the edge of the test", "[ch10][cache]") {
+    // The bounds that spare the arc cosine may only decide where the exact test agrees: poses whose
+    // gap left is within a hair of the distance kept, over turns from tiny to a half turn.
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int decidedBothWays[2] = {0, 0};
+    for (int trial = 0; trial < 20000; ++trial) {
+        PairGap gap;
+        gap.gap = Real(0.5);
+        gap.radiusB = Real(0.2 + 0.8 * std::abs(unit(random)));
+        const Transform a{Vec3::Zero(), Quat::Identity()};
+        const Vec3 axis = Vec3(Real(unit(random)), Real(unit(random)), Real(unit(random))).normalized();
+        const double angle = std::pow(10.0, -6 + 6.5 * std::abs(unit(random)));  // 1e-6 to 3 rad
+        const Transform b{Vec3(Real(0.01 * unit(random)), 0, 0), Quat(Eigen::AngleAxis<Real>(Real(std::min(angle, 3.1)), axis))};
+        const Real cosHalf = std::min(Real(1), std::abs(b.rotation.coeffs().dot(gap.builtRelativeRotation.coeffs())));
+        const Real left = gap.gap - ((b.position - gap.builtRelativePosition).norm() + 2 * math::acos(cosHalf) * gap.radiusB) -
+                          Real(0.001);
+        for (const Real keep : {left, std::nextafter(left, Real(1)), std::nextafter(left, Real(-1)), left * Real(1.0001)}) {
+            const bool exact = left >= keep;
+            CHECK(stillApart(gap, a, b, keep) == exact);
+            ++decidedBothWays[exact ? 1 : 0];
+        }
+    }
+    CHECK(decidedBothWays[0] > 0);
+    CHECK(decidedBothWays[1] > 0);
 }
 
 TEST_CASE("a gap shrinks by at most what B moved in A's frame", "[ch10][cache]") {
