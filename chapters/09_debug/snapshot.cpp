@@ -1,10 +1,10 @@
 #include "09_debug/snapshot.h"
 
 #include "05_sap/sweep_and_prune.h"
+#include "math/same_bits.h"
 #include "world/heap_bytes.h"
 
 #include <algorithm>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -23,14 +23,6 @@ void putQuat(const Quat& q, Real out[4]) {
     out[3] = q.w();
 }
 Quat getQuat(const Real in[4]) { return Quat(in[3], in[0], in[1], in[2]); }
-
-/// Bitwise, so a NaN equals itself and -0 differs from +0: "the same bits", not "the same value".
-template <class T>
-bool sameBits(const T& a, const T& b) {
-    return std::memcmp(&a, &b, sizeof(T)) == 0;
-}
-bool sameBits(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.data(), 3 * sizeof(Real)) == 0; }
-bool sameBits(const Mat3& a, const Mat3& b) { return std::memcmp(a.data(), b.data(), 9 * sizeof(Real)) == 0; }
 
 void saveStep(const World& world, StepScalars& out) {
     const StepState& step = world.step;

@@ -1,20 +1,13 @@
 #include "11_wide_solve/joint_hand_on.h"
+#include "math/same_bits.h"
 #include "world/heap_bytes.h"
 
 #include <cmath>
-#include <cstring>
 #include <utility>
 
 namespace stepwise {
 
 namespace {
-
-template <class Matrix>
-bool sameBits(const Matrix& a, const Matrix& b) {
-    return std::memcmp(a.data(), b.data(), sizeof(Real) * static_cast<std::size_t>(a.size())) == 0;
-}
-bool sameBits(const Quat& a, const Quat& b) { return sameBits(a.coeffs(), b.coeffs()); }
-bool sameBits(const JointImpulses& a, const JointImpulses& b) { return std::memcmp(a.slot, b.slot, sizeof(a.slot)) == 0; }
 
 bool sameMotor(const std::optional<JointMotor>& a, const std::optional<JointMotor>& b) {
     if (a.has_value() != b.has_value()) return false;
@@ -49,8 +42,7 @@ bool unchangedBody(const World& world, const HandedBody& was) {
     if (!sameBits(pose.position, was.pose.position) || !sameBits(pose.rotation, was.pose.rotation)) return false;
     const Motion* motion = world.motionOf(was.body);
     if (!motion) return was.inverseMass == 0;
-    return std::memcmp(&motion->inverseMass, &was.inverseMass, sizeof(Real)) == 0 &&
-           sameBits(motion->localCenter, was.localCenter) && sameBits(motion->inverseInertiaLocal, was.inverseInertiaLocal);
+    return sameBits(motion->inverseMass, was.inverseMass) && sameBits(motion->localCenter, was.localCenter) && sameBits(motion->inverseInertiaLocal, was.inverseInertiaLocal);
 }
 
 bool sameRoom(const JointRoom& a, const JointRoom& b) {
@@ -72,7 +64,6 @@ bool sameLayout(const World& world, Real h, const JointPass& pass, const HandedJ
         if (!sameRoom(handed.rooms[i], pass.rooms[i])) return false;
     return true;
 }
-
 
 // What the handed rows hold, their vectors' room included.
 std::size_t handedBytes(const HandedJointRows& handed) {

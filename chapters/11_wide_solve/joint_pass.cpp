@@ -151,17 +151,17 @@ bool bodiesTurnedLittle(const SolverBodies& bodies, const JointPass& pass, std::
     return turnedAtMost(built(group.builtA), a, kJointRowsKeptTurn) && turnedAtMost(built(group.builtB), b, kJointRowsKeptTurn);
 }
 
-// Whether listed joint i's lane keeps its rows this substep (JointPass::keptLanes).
-bool keptLane(const JointPass& pass, std::size_t i) {
+// Whether listed joint i's lane is set in `masks` (a bit per lane, a mask per lane group).
+bool laneSet(const JointPass& pass, const std::vector<unsigned>& masks, std::size_t i) {
     const PackedJoint& joint = pass.packed.joints[i];
-    return (pass.keptLanes[static_cast<std::size_t>(joint.group)] >> joint.lane & 1u) != 0;
+    return (masks[static_cast<std::size_t>(joint.group)] >> joint.lane & 1u) != 0;
 }
 
+// Whether listed joint i's lane keeps its rows this substep (JointPass::keptLanes).
+bool keptLane(const JointPass& pass, std::size_t i) { return laneSet(pass, pass.keptLanes, i); }
+
 // Whether listed joint i may keep the rows the last piece handed on (JointPass::handedLanes).
-bool handedJoint(const JointPass& pass, std::size_t i) {
-    const PackedJoint& joint = pass.packed.joints[i];
-    return (pass.handedLanes[static_cast<std::size_t>(joint.group)] >> joint.lane & 1u) != 0;
-}
+bool handedJoint(const JointPass& pass, std::size_t i) { return laneSet(pass, pass.handedLanes, i); }
 
 // The lane build's queue, a group's lanes each, for the piece's layout.
 void sizeLaneQueue(JointPass& pass) {

@@ -34,11 +34,7 @@
 #define STEPWISE_ISA isa_baseline
 #endif
 // [ch11-isa]
-#if defined(__GNUC__)
-#define STEPWISE_LANE_INLINE __attribute__((always_inline)) inline
-#else
-#define STEPWISE_LANE_INLINE __forceinline
-#endif
+#define STEPWISE_LANE_INLINE STEPWISE_ALWAYS_INLINE  // math/math.h
 
 namespace stepwise {
 
