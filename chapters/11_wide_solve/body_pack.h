@@ -94,12 +94,29 @@ inline PackVec3<N> relativeVelocity(const BodyPack<N>& a, const BodyPack<N>& b, 
 }
 
 // [ch11-integrate-positions]
+/// holdSpin's rule on the lanes where `held` is positive (the dynamic bodies): a spin faster than
+/// `most` keeps its axis at that speed. The scalar rule's arithmetic, lane by lane.
+template <int N>
+inline void holdSpinPack(PackVec3<N>& w, const Pack<N>& held, Real most) {
+    const Pack<N> speedSquared = (w.x * w.x + w.y * w.y) + w.z * w.z;
+    const Pack<N> over = held * (speedSquared - Pack<N>::splat(most * most));  // > 0: too fast
+    if (!anyNegative(-over)) return;
+    const Pack<N> scale = Pack<N>::splat(most) / sqrt(speedSquared);
+    w.x = selectPositive(over, w.x * scale, w.x);
+    w.y = selectPositive(over, w.y * scale, w.y);
+    w.z = selectPositive(over, w.z * scale, w.z);
+}
+
 /// Chapter 1's position step for N bodies at once: the centre moves by h v, the rotation since
 /// the frame began turns by h |w| about w (turnRotation, the same series on every lane; a lane
-/// spinning too fast for the series takes chapter 1's own step).
+/// spinning too fast for the series takes chapter 1's own step). A dynamic body's spin is held
+/// first (holdSpinPack); slots below `firstDynamic` are kinematic and keep theirs.
 template <int N>
-inline void integratePositionsPack(SolverBodyState* states, const int* slots, Real h) {
+inline void integratePositionsPack(SolverBodyState* states, const int* slots, Real h, Real mostSpin, int firstDynamic) {
     BodyPack<N> body = gatherBodies<N>(states, slots);
+    Pack<N> held;
+    for (int lane = 0; lane < N; ++lane) held[lane] = slots[lane] >= firstDynamic ? Real(1) : Real(0);
+    holdSpinPack(body.angularVelocity, held, mostSpin);
     const Pack<N> step = Pack<N>::splat(h), half = Pack<N>::splat(Real(0.5));
     body.deltaPosition = body.deltaPosition + step * body.linearVelocity;
     PackQuat<N>& q = body.deltaRotation;

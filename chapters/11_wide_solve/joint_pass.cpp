@@ -1,5 +1,6 @@
 // Joints, springs and drag in chapter 11's substeps, on the solve's own bodies.
 #include "11_wide_solve/joint_pass.h"
+#include "11_wide_solve/joint_kept_lanes.h"
 
 #include "01_integrators/integrate.h"
 #include "08_joints/joint_frame.h"
@@ -149,25 +150,6 @@ bool bodiesTurnedLittle(const SolverBodies& bodies, const JointPass& pass, std::
         return Quat(q.w[lane], q.x[lane], q.y[lane], q.z[lane]);
     };
     return turnedAtMost(built(group.builtA), a, kJointRowsKeptTurn) && turnedAtMost(built(group.builtB), b, kJointRowsKeptTurn);
-}
-
-// Whether listed joint i's lane is set in `masks` (a bit per lane, a mask per lane group).
-bool laneSet(const JointPass& pass, const std::vector<unsigned>& masks, std::size_t i) {
-    const PackedJoint& joint = pass.packed.joints[i];
-    return (masks[static_cast<std::size_t>(joint.group)] >> joint.lane & 1u) != 0;
-}
-
-// Whether listed joint i's lane keeps its rows this substep (JointPass::keptLanes).
-bool keptLane(const JointPass& pass, std::size_t i) { return laneSet(pass, pass.keptLanes, i); }
-
-// Whether listed joint i may keep the rows the last piece handed on (JointPass::handedLanes).
-bool handedJoint(const JointPass& pass, std::size_t i) { return laneSet(pass, pass.handedLanes, i); }
-
-// The lane build's queue, a group's lanes each, for the piece's layout.
-void sizeLaneQueue(JointPass& pass) {
-    const auto groups = static_cast<std::size_t>(pass.packed.groupCount);
-    pass.lanesToBuild.assign(groups, 0u);
-    pass.laneJoints.resize(groups * kWideLanes);
 }
 
 // A distance joint's anchors and arms now, from the arms as the piece began turned by the bodies'
@@ -373,13 +355,9 @@ void buildJointRows(const World& world, const SolverBodies& bodies, Real h, bool
         const unsigned keepable = group.keepableLanes & group.builtLanes & handed;
         if (keepable) pass.keptLanes[g] = keepable & lanesTurnedAtMost(group, bodies.states.data(), kJointRowsKeptTurn);
     }
-    for (std::size_t i = 0; i < pass.joints.size(); ++i) {
-        if (mayKeep && keptLane(pass, i)) {  // before its description is read: most joints are kept
-            // Its biases are made again below, with the other kept joints of its group at once.
-            pass.rowCount += pass.packed.joints[i].slotCount;
-            ++pass.jointsKept;
-            continue;
-        }
+    listJointsNotKept(pass, mayKeep);
+    for (const int listed : pass.notKept) {
+        const auto i = static_cast<std::size_t>(listed);
         const JointDesc& joint = world.joints[static_cast<std::size_t>(pass.joints[i])];
         const bool distance = joint.type == JointType::Distance;
         const JointFrame frame = distance ? distanceFrame(bodies, pass, i) : placedFrame(world, bodies, pass, i, joint);

@@ -70,6 +70,7 @@ struct JointPass {
     PackedJointRows packed;            // this substep's rows, as the sweeps take them (listed joint i is entry i)
     std::vector<int> packedEntry;      // per listed joint: its entry in `packed`, or -1 (left out this substep)
     std::vector<unsigned> keptLanes;   // per lane group: the lanes whose point joint keeps its rows this substep
+    std::vector<int> notKept;          // the listed joints that do not keep their rows this substep, in list order
     bool laidOut = false;              // the lanes are laid out as the last piece left them (takeHandedJointRows)
     std::vector<unsigned> handedLanes; // per lane group: the lanes whose joint may keep the last piece's rows
     std::shared_ptr<HandedJointRows> handOn;  // what the last piece handed on, taken for this one

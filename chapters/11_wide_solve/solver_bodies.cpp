@@ -100,6 +100,12 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
             for (const GyroscopicBody& body : bodies.gyroscopic) gyroscopicStepPack<1>(bodies.states.data(), &body, h);
         }
     }
+    if (!forces && !firstSubstep) {  // most substeps: gravity alone, the same h g for every body
+        const Real step[3] = {h * gravity[0], h * gravity[1], h * gravity[2]};
+        for (std::size_t slot = static_cast<std::size_t>(bodies.firstDynamic); slot < bodies.states.size(); ++slot)
+            for (int k = 0; k < 3; ++k) bodies.states[slot].linearVelocity[k] += step[k];
+        return;
+    }
     for (std::size_t slot = static_cast<std::size_t>(bodies.firstDynamic); slot < bodies.states.size(); ++slot) {
         SolverBodyState& state = bodies.states[slot];
         const SolverBodyInfo& info = bodies.info[slot];
@@ -135,10 +141,10 @@ void holdSpin(SolverBodies& bodies, Real most) {
 }
 
 void integratePositions(SolverBodies& bodies, Real h, Real mostSpin, SolverPath path) {
-    holdSpin(bodies, mostSpin);
     const int count = static_cast<int>(bodies.states.size());
-    if (path == SolverPath::Wide) return integratePositionsWide(bodies.states.data(), count, h);
-    for (int slot = 1; slot < count; ++slot) integratePositionsPack<1>(bodies.states.data(), &slot, h);
+    if (path == SolverPath::Wide) return integratePositionsWide(bodies.states.data(), count, h, mostSpin, bodies.firstDynamic);
+    for (int slot = 1; slot < count; ++slot)
+        integratePositionsPack<1>(bodies.states.data(), &slot, h, mostSpin, bodies.firstDynamic);
 }
 
 SlotPose slotPose(const SolverBodies& bodies, int slot) {

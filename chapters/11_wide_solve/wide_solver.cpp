@@ -32,14 +32,14 @@ bool collideWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState
     return struck;
 }
 
-void integratePositionsWide(SolverBodyState* states, int count, Real h) {
+void integratePositionsWide(SolverBodyState* states, int count, Real h, Real mostSpin, int firstDynamic) {
     int slot = 1;  // slot 0 never moves
     int slots[kWideLanes];
     for (; slot + kWideLanes <= count; slot += kWideLanes) {
         for (int lane = 0; lane < kWideLanes; ++lane) slots[lane] = slot + lane;
-        integratePositionsPack<kWideLanes>(states, slots, h);
+        integratePositionsPack<kWideLanes>(states, slots, h, mostSpin, firstDynamic);
     }
-    for (; slot < count; ++slot) integratePositionsPack<1>(states, &slot, h);
+    for (; slot < count; ++slot) integratePositionsPack<1>(states, &slot, h, mostSpin, firstDynamic);
 }
 
 void gyroscopicStepWide(SolverBodyState* states, const std::vector<GyroscopicBody>& bodies, Real h) {

@@ -24,8 +24,9 @@ void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyS
 /// One sweep of collideBlock over the blocks; whether any point was struck.
 bool collideWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params);
 
-/// Chapter 1's position step for slots 1 to count - 1, kWideLanes bodies at a time.
-void integratePositionsWide(SolverBodyState* states, int count, Real h);
+/// Chapter 1's position step for slots 1 to count - 1, kWideLanes bodies at a time, each dynamic
+/// body's (from `firstDynamic` on) spin held to `mostSpin` first (holdSpin's rule).
+void integratePositionsWide(SolverBodyState* states, int count, Real h, Real mostSpin, int firstDynamic);
 
 /// Chapter 1's implicit gyroscopic step for these bodies (gyroscopic_pack.h), kWideLanes at a time.
 void gyroscopicStepWide(SolverBodyState* states, const std::vector<GyroscopicBody>& bodies, Real h);

@@ -49,7 +49,8 @@ TEST_CASE("the position step eight at a time is chapter 1's rotation step", "[ch
     // SSE2, would be a second definition of the same template with another calling convention. One
     // body in the first pack spins too fast for the series (10,000 rad/s: 8.3 rad a step): it takes
     // chapter 1's step, and the other lanes of its pack the series.
-    integratePositionsWide(states.data(), static_cast<int>(states.size()), Real(1.0 / 600));
+    const int count = static_cast<int>(states.size());
+    integratePositionsWide(states.data(), count, Real(1.0 / 600), Real(1), /*firstDynamic=*/count);  // none held
     for (std::size_t slot = 1; slot < states.size(); ++slot) {
         const SolverBodyState& state = states[slot];
         const Quat turned(state.deltaRotation[3], state.deltaRotation[0], state.deltaRotation[1], state.deltaRotation[2]);
@@ -58,6 +59,42 @@ TEST_CASE("the position step eight at a time is chapter 1's rotation step", "[ch
         CHECK(state.deltaPosition[0] == Approx(state.linearVelocity[0] / 600).margin(1e-7));
     }
     CHECK(states[0].deltaRotation[3] == 1);  // slot 0 is never moved
+}
+
+TEST_CASE("the position step holds a dynamic body's spin as holdSpin does, bit for bit", "[ch11][solve]") {
+    // Slots 1-3 kinematic, the rest dynamic; some spin faster than the most a substep allows.
+    Random random(5);
+    SolverBodies held;
+    held.states.resize(1 + 21);
+    held.firstDynamic = 4;
+    const Real most = 30;
+    int fast = 0;
+    for (std::size_t slot = 1; slot < held.states.size(); ++slot) {
+        SolverBodyState& state = held.states[slot];
+        const Real speed = slot % 3 == 0 ? Real(80) : Real(10);
+        for (int k = 0; k < 3; ++k) state.angularVelocity[k] = speed * random.uniformReal(-1, 1);
+        state.deltaRotation[3] = 1;
+        fast += slot >= 4 && std::sqrt(state.angularVelocity[0] * state.angularVelocity[0] +
+                                       state.angularVelocity[1] * state.angularVelocity[1] +
+                                       state.angularVelocity[2] * state.angularVelocity[2]) > most;
+    }
+    REQUIRE(fast >= 3);
+    SolverBodies reference = held;
+    const Real h = Real(1.0 / 600);
+    const int count = static_cast<int>(held.states.size());
+    holdSpin(reference, most);  // the scalar rule, then the step holding nothing
+    integratePositionsWide(reference.states.data(), count, h, most, /*firstDynamic=*/count);
+    integratePositionsWide(held.states.data(), count, h, most, held.firstDynamic);
+    for (std::size_t slot = 1; slot < held.states.size(); ++slot) {
+        const SolverBodyState& a = held.states[slot];
+        const SolverBodyState& b = reference.states[slot];
+        for (int k = 0; k < 3; ++k) CHECK(a.angularVelocity[k] == b.angularVelocity[k]);
+        for (int k = 0; k < 4; ++k) CHECK(a.deltaRotation[k] == b.deltaRotation[k]);
+    }
+    // A kinematic body keeps its spin whatever it is.
+    CHECK(held.states[3].angularVelocity[0] == reference.states[3].angularVelocity[0]);
+    const Real* kinematic = held.states[3].angularVelocity;
+    CHECK(kinematic[0] * kinematic[0] + kinematic[1] * kinematic[1] + kinematic[2] * kinematic[2] > most * most);
 }
 
 TEST_CASE("the gyroscopic step sixteen bodies at a time is chapter 1's", "[ch11][solve]") {
