@@ -3,6 +3,7 @@
 #include "03_epa/chapter.h"
 #include "03_epa/narrowphase.h"
 #include "06_manifolds/persistence.h"
+#include "10_skip_work/follow_corners.h"
 
 #include <algorithm>
 #include <cmath>
@@ -239,7 +240,7 @@ bool carryRecord(World& world, const BodyPair& pair, Contact& record, const Cont
     if (slides)
         slideFaceContact(record, bodyA, bodyB);
     else
-        refreshFromAnchors(record, bodyA, bodyB);
+        followCorners(bodyA, bodyB, record);  // chapter 6's refreshFromAnchors, four points at once
     Real shallowest = 0;  // the margin is asked for only where a point lies apart (most carry none)
     for (int i = 0; i < record.pointCount; ++i) shallowest = std::min(shallowest, record.points[i].depth);
     if (shallowest < 0 && -shallowest > pairMargin(world, pair, lookAhead, scratch) + pointSlack(world))

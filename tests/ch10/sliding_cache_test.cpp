@@ -1,10 +1,14 @@
 // Chapter 10's contact cache carries a face contact of two boxes that slid along the face
 // (faceContactSlides): the block sliding down the reference ramp keeps its manifold instead of
 // building it every frame, and ends where it ends when every frame builds it; a block whose corner
-// nears the edge of what it slides on is built again.
+// nears the edge of what it slides on is built again. A carried record's points follow their
+// bodies four at a time with chapter 3's bits.
 #include "03_epa/chapter.h"
 #include "10_skip_work/chapter.h"
 #include "10_skip_work/contact_cache.h"
+#include "10_skip_work/follow_corners.h"
+#include "math/random.h"
+#include "math/same_bits.h"
 #include "world/scene.h"
 
 #include <catch2/catch.hpp>
@@ -113,4 +117,40 @@ TEST_CASE("a record is built again once a corner it may not hold can have swung 
     const ContactCacheStats tipped = searchTurned(Real(0.3));  // 4.5 mm, well within 2 degrees
     CHECK(tipped.reused == 0);
     CHECK(tipped.rebuilt == 1);
+}
+
+TEST_CASE("a carried record's points follow their bodies four at a time as chapter 3 follows them, bit for bit",
+          "[ch10][cache]") {
+    // followCorners (the cache's follow of a box or hull pair) against chapter 3's followContact,
+    // one point at a time: random poses, anchors and normals, one to four points.
+    Random random(17);
+    const auto point = [&](Real size) {
+        return Vec3(random.uniformReal(-size, size), random.uniformReal(-size, size), random.uniformReal(-size, size));
+    };
+    Body a, b;
+    a.shape = Shape::box(Vec3(Real(0.5), Real(0.3), Real(0.7)));
+    b.shape = Shape::box(Vec3(Real(1.5), Real(0.5), Real(1)));
+    int compared = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        a.transform = Transform{point(20), random.rotation()};
+        b.transform = Transform{point(20), random.rotation()};
+        Contact contact;
+        contact.bodyA = 0, contact.bodyB = 1;
+        contact.pointCount = 1 + trial % 4;
+        contact.normal = random.unitVector();
+        for (int i = 0; i < contact.pointCount; ++i) {
+            contact.points[i].localAnchorA = point(1);
+            contact.points[i].localAnchorB = point(2);
+        }
+        Contact expected = contact;
+        followContact(a, b, expected);
+        followCorners(a, b, contact);
+        for (int i = 0; i < contact.pointCount; ++i) {
+            CHECK(sameBits(contact.points[i].pointA, expected.points[i].pointA));
+            CHECK(sameBits(contact.points[i].pointB, expected.points[i].pointB));
+            CHECK(sameBits(contact.points[i].depth, expected.points[i].depth));
+            ++compared;
+        }
+    }
+    CHECK(compared == 5000);
 }
