@@ -81,6 +81,7 @@ struct ContactSolverScratch {
     std::vector<int> contactOrder, slotA, slotB, colours;
     std::vector<int> laneOrder, laneScratch, laneBuckets;  // the wide blocks' fill order (orderLanes)
     std::vector<int> laneClass;                            // per contact-order index: 0 single point, 1 more
+    std::vector<int> laneLoad;                             // per contact-order index: its points' last loads (loadClass)
     std::vector<std::uint64_t> colourBits;
     // Lane groups (an extension's, SolveExtension::groupLanes): the groups' count (0: none this
     // frame), each contact's group (per contact-order index; 0: none) and which of its bodies the

@@ -198,11 +198,22 @@ int pointClass(const World& world, const ContactSolverScratch& scratch, std::siz
     return takesSinglePointRow(world.contacts[static_cast<std::size_t>(scratch.contactOrder[i])].pointCount) ? 0 : 1;
 }
 
+/// How a manifold's points carried last frame (their warm-start impulses): 0 every point (or one
+/// point), 1 none, 2 some but not all. A manifold whose points carry unevenly is the one whose
+/// normal block lets a corner go or fails (two bricks leaning on an edge); laid side by side,
+/// such lanes share the packs that sweep rows one at a time, and the others are spared it.
+int loadClass(const Contact& contact) {
+    int loaded = 0;
+    for (int k = 0; k < contact.pointCount; ++k) loaded += contact.points[k].normalImpulse > 0 ? 1 : 0;
+    return contact.pointCount <= 1 || loaded == contact.pointCount ? 0 : loaded == 0 ? 1 : 2;
+}
+
 /// The coloured contacts in the order their lanes are filled: colour by colour, within a colour by
-/// the shock sweep's group (0 first: not swept), and within a group single points first. A
-/// colour's lanes share no body, so their order changes no bit of the solve; it puts a group's
-/// lanes side by side, and the sweep solves each group over the few blocks that hold it
-/// (solveHeldBlock), and it fills whole blocks of single points. Three stable counting sorts.
+/// the shock sweep's group (0 first: not swept), within a group single points first, and within
+/// those by how their points carried (loadClass). A colour's lanes share no body, so their order
+/// changes no bit of the solve; it puts a group's lanes side by side, and the sweep solves each
+/// group over the few blocks that hold it (solveHeldBlock), it fills whole blocks of single
+/// points, and it gathers the lanes whose blocks fail. Four stable counting sorts.
 void orderLanes(const World& world, ContactSolverScratch& scratch) {
     std::vector<int>& byGroup = scratch.laneScratch;
     std::vector<int>& lanes = scratch.laneOrder;
@@ -216,12 +227,17 @@ void orderLanes(const World& world, ContactSolverScratch& scratch) {
     };
     lanes.clear();
     std::vector<int>& classes = scratch.laneClass;
+    std::vector<int>& loads = scratch.laneLoad;
     classes.resize(scratch.contactOrder.size());
+    loads.resize(scratch.contactOrder.size());
     for (std::size_t i = 0; i < scratch.contactOrder.size(); ++i) {
         if (scratch.colours[i] < 0) continue;
         classes[i] = pointClass(world, scratch, i);
+        loads[i] = loadClass(world.contacts[static_cast<std::size_t>(scratch.contactOrder[i])]);
         lanes.push_back(static_cast<int>(i));
     }
+    countingSort(lanes, byGroup, 3, loads);
+    std::swap(lanes, byGroup);
     countingSort(lanes, byGroup, 2, classes);
     std::swap(lanes, byGroup);
     if (scratch.laneGroups > 0) {
