@@ -49,15 +49,13 @@ void followCorners(const Body& bodyA, const Body& bodyB, Contact& contact) {
         anchorB.x[i] = point.localAnchorB.x(), anchorB.y[i] = point.localAnchorB.y(), anchorB.z[i] = point.localAnchorB.z();
     }
     const LanePoints a = applyToLanes(bodyA.transform, anchorA), b = applyToLanes(bodyB.transform, anchorB);
-    const Real nx = contact.normal.x(), ny = contact.normal.y(), nz = contact.normal.z();
-    // normal . (pointA - pointB) as Eigen sums a 3-vector's products: the first, plus the sum of the other two.
-    Real depth[kLanes];
-    for (int k = 0; k < kLanes; ++k) depth[k] = nx * (a.x[k] - b.x[k]) + (ny * (a.y[k] - b.y[k]) + nz * (a.z[k] - b.z[k]));
     for (int i = 0; i < count; ++i) {
         ContactPoint& point = contact.points[i];
         point.pointA = Vec3(a.x[i], a.y[i], a.z[i]);
         point.pointB = Vec3(b.x[i], b.y[i], b.z[i]);
-        point.depth = depth[i];
+        // Eigen's own dot product: it sums a 3-vector's products in one order for floats and in
+        // another for doubles (two to a register), and the depth must be followContact's.
+        point.depth = contact.normal.dot(point.pointA - point.pointB);
     }
 }
 
