@@ -90,11 +90,20 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
 }
 
 ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt, Real baumgarte) {
+    ContactRows result;
+    buildContactRows(world, bodies, dt, baumgarte, result);
+    return result;
+}
+
+void buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt, Real baumgarte,
+                      ContactRows& result) {
     const std::vector<SolverBody> approachVelocities = approachBodiesOf(world, bodies);
     const std::vector<SolverBody>* approachBodies = approachVelocities.empty() ? nullptr : &approachVelocities;
     const Settings& settings = world.settings;
     const Real inverseDt = dt > 0 ? 1 / dt : 0;
-    ContactRows result;
+    result.rows.clear();  // the buffers are kept: a solve that builds its rows every substep reuses them
+    result.points.clear();
+    result.invalidSkipped = 0;
     for (size_t contactIndex = 0; contactIndex < world.contacts.size(); ++contactIndex) {
         const Contact& contact = world.contacts[contactIndex];
         const int bodyCount = static_cast<int>(bodies.size());
@@ -175,7 +184,6 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
         }
     }
     computeEffectiveMasses(result.rows, bodies);
-    return result;
 }
 
 // [ch04-store-impulses]

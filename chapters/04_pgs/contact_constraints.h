@@ -59,6 +59,11 @@ ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& 
 /// Settings::baumgarte: chapter 6's split impulses and soft step build their velocity rows with
 /// 0 here and correct positions their own way.
 ContactRows buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt, Real baumgarte);
+/// The same into `rows`, whose buffers it keeps: a solve that builds its rows every substep
+/// (chapter 6's) would otherwise allocate and free them twice a substep, and the allocator hands
+/// large freed blocks back to the system, to be faulted in again page by page.
+void buildContactRows(const World& world, const std::vector<SolverBody>& bodies, Real dt, Real baumgarte,
+                      ContactRows& rows);
 
 /// Copies the solved impulses into World::contacts: normalImpulse, tangentImpulse (in
 /// tangentBasis(normal)) and the normal row's effective mass. Points without rows get zeros. It

@@ -206,7 +206,8 @@ void recordResidual(World& world, const ContactRows& contactRows, const std::vec
 
 }  // namespace
 
-SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstraints* extra, Real frame) {
+SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstraints* extra, Real frame,
+                            ContactRows* rowBuffer) {
     const Settings& settings = world.settings;
     SolverStats stats;
     for (const Contact& contact : world.contacts) stats.contactPoints += contact.pointCount;
@@ -215,7 +216,9 @@ SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstrai
     const bool relax = settings.stabilisation == Stabilisation::Relax;
     const bool velocityBias = settings.stabilisation == Stabilisation::Baumgarte || relax;
     const Real feedback = relax ? relaxFeedback(settings, dt, frame) : settings.baumgarte;
-    ContactRows contactRows = buildContactRows(world, bodies, dt, velocityBias ? feedback : Real(0));
+    ContactRows ownRows;
+    ContactRows& contactRows = rowBuffer ? *rowBuffer : ownRows;
+    buildContactRows(world, bodies, dt, velocityBias ? feedback : Real(0), contactRows);
     if (relax) capPushOutSpeed(world, contactRows, dt, feedback);
     if (extra) extra->prepare(world, bodies, dt, /*positionFeedback=*/true);
     if (settings.warmStarting) {
@@ -244,10 +247,12 @@ Real relaxFeedback(const Settings& settings, Real h, Real frame) {
 // [ch06-relax-feedback]
 
 // [ch06-relax]
-void relaxContacts(World& world, Real dt, int iterations, ExtraConstraints* extra) {
+void relaxContacts(World& world, Real dt, int iterations, ExtraConstraints* extra, ContactRows* rowBuffer) {
     followContactAnchors(world);  // the depths after the positions moved
     std::vector<SolverBody> bodies = gatherSolverBodies(world);
-    ContactRows contactRows = buildContactRows(world, bodies, dt, 0);
+    ContactRows ownRows;
+    ContactRows& contactRows = rowBuffer ? *rowBuffer : ownRows;
+    buildContactRows(world, bodies, dt, 0, contactRows);
     // The biased solve's impulses are already in the velocities: they are where the accumulated
     // impulses start, not pushed again. They are loaded exactly as applied: clamped into the
     // cone they would be smaller than what the velocities hold (the rows clamp friction per
@@ -279,6 +284,7 @@ void substeppedSolve(World& world, Real dt, ExtraConstraints* extra) {
         world.step.velocitiesBeforeForces.clear();
         return;
     }
+    ContactRows rows;  // one buffer for the frame's builds, two a substep
     for (int substep = 0; substep < substeps; ++substep) {
         // Restitution reverses the approach speed from before this substep's forces.
         world.step.velocitiesBeforeForces.resize(world.bodies.size());
@@ -288,9 +294,9 @@ void substeppedSolve(World& world, Real dt, ExtraConstraints* extra) {
         applyForces(world);
         integrateVelocities(world, h);
         followContactAnchors(world);  // where the points are now (a no-op right after the search)
-        solveStabilised(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra, dt);
+        solveStabilised(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra, dt, &rows);
         integratePositions(world, h);
-        relaxContacts(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra);
+        relaxContacts(world, h, world.settings.solverIterations > 0 ? 1 : 0, extra, &rows);
     }
     world.step.velocitiesBeforeForces.clear();
 }

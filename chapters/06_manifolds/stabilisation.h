@@ -107,12 +107,15 @@ Real relaxFeedback(const Settings& settings, Real h, Real frame);
 /// (Baumgarte for baumgarte and relax, none for split impulses, soft springs for soft_step), split impulses'
 /// position correction, velocities and impulses written back. Records World::step.solver.
 /// `frame`: the frame a relax substep belongs to (relaxFeedback); 0 when dt is the frame.
-SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstraints* extra = nullptr, Real frame = 0);
+/// `rowBuffer`: where the rows are built, its buffers kept from call to call (none: a fresh one).
+SolverStats solveStabilised(World& world, Real dt, int iterations, ExtraConstraints* extra = nullptr, Real frame = 0,
+                            ContactRows* rowBuffer = nullptr);
 
 /// The relax iteration(s): the same rows with no position bias, starting from the impulses the
 /// biased solve accumulated (already in the velocities), take the push-out speed back out.
 /// Restitution and speculative gaps stay in the target.
-void relaxContacts(World& world, Real dt, int iterations, ExtraConstraints* extra = nullptr);
+void relaxContacts(World& world, Real dt, int iterations, ExtraConstraints* extra = nullptr,
+                   ContactRows* rowBuffer = nullptr);
 
 /// The substepped solve of relax and soft_step, for one (pipeline) step of dt: solverIterations
 /// substeps, each: forces and velocities, contact points moved with their bodies, warm start and one
