@@ -1,16 +1,13 @@
 #pragma once
-// Which listed joints keep last substep's rows: the lane groups' masks (JointPass::keptLanes,
-// JointPass::handedLanes) read joint by joint, and the joints that are not kept listed without
-// visiting the kept ones. joint_pass.cpp's buildJointRows uses them.
+// Which listed joints keep last substep's rows: the joints that are not kept (JointPass::keptLanes)
+// listed without visiting the kept ones, and whether a joint may keep what the last piece handed
+// on (JointPass::handedLanes). joint_pass.cpp's buildJointRows uses them.
 
 #include "11_wide_solve/joint_pass.h"
 
 #include <cstddef>
 
 namespace stepwise {
-
-/// Whether listed joint i's lane keeps its rows this substep (JointPass::keptLanes).
-bool keptLane(const JointPass& pass, std::size_t i);
 
 /// Whether listed joint i may keep the rows the last piece handed on (JointPass::handedLanes).
 bool handedJoint(const JointPass& pass, std::size_t i);

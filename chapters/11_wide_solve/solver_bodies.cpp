@@ -129,14 +129,15 @@ void integrateVelocities(World& world, SolverBodies& bodies, Real h, bool firstS
 
 Real mostSpin(Real h, Real solveTime) { return std::min(kMostTurnPerSubstep / h, kMostTurnPerSolve / solveTime); }
 
-// The same few lines on both paths, before either, so that the wide and the scalar path agree.
+// The position step's rule (holdSpinPack) a body at a time, on both paths, before either, so that
+// the wide and the scalar path agree.
 void holdSpin(SolverBodies& bodies, Real most) {
+    const Pack<1> dynamic = Pack<1>::splat(1);
     for (std::size_t slot = static_cast<std::size_t>(std::max(bodies.firstDynamic, 1)); slot < bodies.states.size(); ++slot) {
         Real* w = bodies.states[slot].angularVelocity;
-        const Real speedSquared = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-        if (!(speedSquared > most * most)) continue;
-        const Real scale = most / std::sqrt(speedSquared);
-        for (int k = 0; k < 3; ++k) w[k] *= scale;
+        PackVec3<1> spin{Pack<1>::splat(w[0]), Pack<1>::splat(w[1]), Pack<1>::splat(w[2])};
+        holdSpinPack(spin, dynamic, most);
+        w[0] = spin.x[0], w[1] = spin.y[0], w[2] = spin.z[0];
     }
 }
 
