@@ -17,8 +17,10 @@ inline void solveRolling(ManifoldBlock<N>& c, const Pack<N>& load, BodyPack<N>& 
     PackVec3<N> total = c.rollingImpulse - c.rollingMass * (b.angularVelocity - a.angularVelocity);
     const Pack<N> limit = c.rollingLength * load;
     const Pack<N> lengthSquared = dot(total, total);
-    total = selectPositive(lengthSquared - limit * limit, limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), one) *
-            total;
+    // No load, no impulse: exactly, also where the length's square underflows.
+    const Pack<N> scale =
+        selectPositive(lengthSquared - limit * limit, limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), one);
+    total = selectPositive(limit, scale, Pack<N>::splat(0)) * total;
     const PackVec3<N> change = total - c.rollingImpulse;
     c.rollingImpulse = total;
     a.angularVelocity = a.angularVelocity - c.inverseInertiaA * change;
@@ -43,8 +45,10 @@ inline void coneImpulses(const ManifoldBlock<N>& c, const BodyPack<N>& a, const 
     total2 = c.tangentImpulse2 - (inverse12 * slide1 + inverse22 * slide2);
     const Pack<N> limit = c.friction * load;
     const Pack<N> lengthSquared = total1 * total1 + total2 * total2;
-    const Pack<N> scale = selectPositive(lengthSquared - limit * limit,
-                                         limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), Pack<N>::splat(1));
+    const Pack<N> clamped = selectPositive(lengthSquared - limit * limit,
+                                           limit / sqrt(max(lengthSquared, Pack<N>::splat(Real(1e-30)))), Pack<N>::splat(1));
+    // No load, no friction: exactly, also where the impulse's square underflows.
+    const Pack<N> scale = selectPositive(limit, clamped, Pack<N>::splat(0));
     total1 = total1 * scale;
     total2 = total2 * scale;
 }

@@ -216,6 +216,25 @@ inline bool anyNegative(const Pack<N>& a) {
     return negative;
 }
 
+/// Whether any lane holds a value other than zero (NaN counts: it is not zero).
+template <int N>
+inline bool anyNonZero(const Pack<N>& a) {
+#if defined(__AVX__) && defined(STEPWISE_VECTOR_PACKS)
+    if constexpr (N * sizeof(Real) == 32) {
+        if constexpr (sizeof(Real) == 4) {
+            const __m256 values = reinterpret_cast<__m256>(a.v);
+            return _mm256_movemask_ps(_mm256_cmp_ps(values, _mm256_setzero_ps(), _CMP_NEQ_UQ)) != 0;
+        } else {
+            const __m256d values = reinterpret_cast<__m256d>(a.v);
+            return _mm256_movemask_pd(_mm256_cmp_pd(values, _mm256_setzero_pd(), _CMP_NEQ_UQ)) != 0;
+        }
+    }
+#endif
+    bool nonZero = false;
+    for (int i = 0; i < N; ++i) nonZero |= !(a[i] == 0);
+    return nonZero;
+}
+
 /// A 3-vector per lane, stored as three packs (structure of arrays).
 }  // namespace STEPWISE_ISA
 template <int N>

@@ -198,14 +198,16 @@ int pointClass(const World& world, const ContactSolverScratch& scratch, std::siz
     return takesSinglePointRow(world.contacts[static_cast<std::size_t>(scratch.contactOrder[i])].pointCount) ? 0 : 1;
 }
 
-/// How a manifold's points carried last frame (their warm-start impulses): 0 every point (or one
-/// point), 1 none, 2 some but not all. A manifold whose points carry unevenly is the one whose
-/// normal block lets a corner go or fails (two bricks leaning on an edge); laid side by side,
-/// such lanes share the packs that sweep rows one at a time, and the others are spared it.
+/// How a manifold's points carried last frame (their warm-start impulses): 0 every point, 1 none,
+/// 2 some but not all. A manifold whose points carry unevenly is the one whose normal block lets a
+/// corner go or fails (two bricks leaning on an edge); laid side by side, such lanes share the
+/// packs that sweep rows one at a time, and the others are spared it. Those that carry nothing
+/// (neighbours in a row of bricks, a ball near another) fill blocks that hold no impulse, which
+/// the sweeps skip (holdsNoImpulse).
 int loadClass(const Contact& contact) {
     int loaded = 0;
     for (int k = 0; k < contact.pointCount; ++k) loaded += contact.points[k].normalImpulse > 0 ? 1 : 0;
-    return contact.pointCount <= 1 || loaded == contact.pointCount ? 0 : loaded == 0 ? 1 : 2;
+    return loaded == contact.pointCount ? 0 : loaded == 0 ? 1 : 2;
 }
 
 /// The coloured contacts in the order their lanes are filled: colour by colour, within a colour by
