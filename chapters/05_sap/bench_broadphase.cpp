@@ -16,6 +16,7 @@
 // wall-clock time would count the other programs' turns.
 #include "05_sap/benches.h"
 
+#include "05_sap/broadphase_runs.h"
 #include "05_sap/chapter.h"
 #include "05_sap/stress_scene.h"
 #include "app/bench_util.h"
@@ -31,154 +32,8 @@
 
 namespace stepwise {
 
+namespace broadphase_bench {
 namespace {
-
-enum class Method { Brute, SapFull, SapIncremental };
-const char* methodName(Method method) {
-    return method == Method::Brute ? "brute" : method == Method::SapFull ? "sap_full" : "sap_incremental";
-}
-const Method kMethods[] = {Method::Brute, Method::SapFull, Method::SapIncremental};
-
-void runBroadphase(World& world, Method method) {
-    if (method == Method::Brute)
-        bruteForceBroadphase(world);
-    else
-        sweepAndPrune(world, method == Method::SapFull ? SortMode::Full : SortMode::Incremental);
-}
-
-/// Time of one broadphase call, ms: the mean of `repetitions` calls timed together (reading the
-/// thread's CPU clock costs about a microsecond, as much as a whole call on a few bodies). The
-/// calls after the first find the ends sorted already; the first one's moves are few in a
-/// small scene. The world's broadphase state is left as `start`.
-double timeBroadphase(World& world, const BroadphaseState& start, Method method, int repetitions) {
-    world.broadphase = start;
-    const ThreadStopwatch watch;
-    for (int repetition = 0; repetition < repetitions; ++repetition) runBroadphase(world, method);
-    const double ms = watch.seconds() * 1e3 / repetitions;
-    world.broadphase = start;
-    return ms;
-}
-
-struct SceneResult {
-    std::map<Method, double> broadphaseMs;   // median per frame
-    std::map<Method, double> stepMs;         // the rest of the step plus this broadphase
-    double narrowphaseMs = 0, solveMs = 0;
-    double candidates = 0, axisOverlaps = 0, contacts = 0;  // mean per measured frame
-};
-
-struct SceneRun {
-    StressParams params;
-    int warmupFrames = 10;
-    int measuredFrames = 10;
-    int repetitions = 1;        // per frame and method (small scenes: many, to beat the clock)
-    bool brute = true;
-    int bruteFrames = 1 << 30;  // brute force on at most this many of the measured frames
-};
-
-/// Wraps every stage so its CPU time adds up in cpuMs[group]: the pipeline's own stage timings
-/// are wall-clock, which on a shared machine also count other programs' turns.
-void timeStagesOnCpu(Pipeline& pipeline, std::map<std::string, double>& cpuMs) {
-    for (Stage& stage : pipeline.stages()) {
-        double* total = &cpuMs[stageGroup(stage.name)];
-        stage.run = [run = stage.run, total](World& world, Real dt) {
-            const ThreadStopwatch watch;
-            run(world, dt);
-            *total += watch.seconds() * 1e3;
-        };
-    }
-}
-
-SceneResult measureScene(const SceneRun& run) {
-    World world = buildStressScene(run.params);
-    world.settings.broadphase = BroadphaseMode::Sap;
-    Pipeline pipeline = makeChapter05Pipeline(world);
-    std::map<std::string, double> cpuMs;
-    timeStagesOnCpu(pipeline, cpuMs);
-    std::map<Method, std::vector<double>> broadphase, step;
-    std::vector<double> narrowphase, solve;
-    SceneResult result;
-    for (int frame = 0; frame < run.warmupFrames + run.measuredFrames; ++frame) {
-        const int measured = frame - run.warmupFrames;
-        std::map<Method, double> sideMs;
-        if (measured >= 0) {
-            // The other broadphases, on the world as the stage will see it (the velocity stage
-            // before it moves nothing the bounds depend on but the growth).
-            const BroadphaseState start = world.broadphase;
-            for (Method method : kMethods) {
-                if (method == Method::SapIncremental) continue;  // the stage itself, below
-                if (method == Method::Brute && (!run.brute || measured >= run.bruteFrames)) continue;
-                sideMs[method] = timeBroadphase(world, start, method, run.repetitions);
-            }
-            if (run.repetitions > 1) sideMs[Method::SapIncremental] = timeBroadphase(world, start, Method::SapIncremental, run.repetitions);
-        }
-        for (auto& entry : cpuMs) entry.second = 0;
-        pipeline.step(world);
-        if (measured < 0) continue;
-        double stepTime = 0;
-        for (const auto& entry : cpuMs) stepTime += entry.second;
-        const double stageTime = cpuMs[stage_group::kBroadphase];
-        if (!sideMs.count(Method::SapIncremental)) sideMs[Method::SapIncremental] = stageTime;
-        const double rest = std::max(0.0, stepTime - stageTime);
-        for (const auto& [method, ms] : sideMs) {
-            broadphase[method].push_back(ms);
-            step[method].push_back(rest + ms);
-        }
-        narrowphase.push_back(cpuMs[stage_group::kNarrowphase]);
-        solve.push_back(cpuMs[stage_group::kSolve]);
-        result.candidates += static_cast<double>(world.candidatePairs.size()) / run.measuredFrames;
-        result.axisOverlaps += static_cast<double>(world.broadphase.axisOverlaps) / run.measuredFrames;
-        result.contacts += static_cast<double>(world.contacts.size()) / run.measuredFrames;
-    }
-    for (const auto& [method, samples] : broadphase) result.broadphaseMs[method] = median(samples);
-    for (const auto& [method, samples] : step) result.stepMs[method] = median(samples);
-    result.narrowphaseMs = median(narrowphase);
-    result.solveMs = median(solve);
-    return result;
-}
-
-struct SettledResult {
-    double insertionSortMs = 0, fullSortMs = 0;           // the sort alone
-    double incrementalMs = 0, fullMs = 0;                 // the whole broadphase
-    double moves = 0;                                     // insertion-sort moves per frame
-};
-
-// [ch05-bench-settled]
-/// Spheres resting on the ground: the sort from last step's order against a full sort, timed
-/// apart from the rest of the broadphase, and the whole broadphase with each.
-SettledResult measureSettled(int count, int settleFrames, int measuredFrames) {
-    StressParams params;
-    params.count = count;
-    params.shape = StressShape::Sphere;
-    params.dropHeight = 0;
-    World world = buildStressScene(params);
-    world.settings.broadphase = BroadphaseMode::Sap;
-    Pipeline pipeline = makeChapter05Pipeline(world);
-    for (int frame = 0; frame < settleFrames; ++frame) pipeline.step(world);
-    std::vector<double> insertion, full, incremental, whole, moves;
-    std::vector<Aabb> bounds;
-    std::vector<char> dynamic;
-    for (int frame = 0; frame < measuredFrames; ++frame) {
-        const BroadphaseState start = world.broadphase;
-        computeBroadphaseBounds(world, bounds, dynamic);
-        std::vector<SweepEndpoint> ends = start.endpoints;
-        ThreadStopwatch watch;
-        refreshEndpointValues(bounds, start.axis, ends);
-        const long moved = insertionSortEndpoints(ends, static_cast<long>(ends.size()) * 64);
-        insertion.push_back(watch.seconds() * 1e3);
-        moves.push_back(static_cast<double>(moved));
-        watch.restart();
-        makeEndpoints(bounds, start.axis, ends);
-        fullSortEndpoints(ends);
-        full.push_back(watch.seconds() * 1e3);
-        whole.push_back(timeBroadphase(world, start, Method::SapFull, 1));
-        incremental.push_back(timeBroadphase(world, start, Method::SapIncremental, 1));
-        pipeline.step(world);
-    }
-    return SettledResult{median(insertion), median(full), median(incremental), median(whole), median(moves)};
-}
-// [ch05-bench-settled]
-
-std::string cell(double value) { return std::isfinite(value) ? formatNumber(value) : ""; }
 
 struct Series {
     std::map<std::string, PlotSeries> byName;
@@ -190,108 +45,24 @@ struct Series {
     }
 };
 
-/// Pairs the sweep looks at, and its time, along each axis: what the variance's choice saves.
-struct AxisComparison {
-    int chosen = -1;
-    long looked[3] = {0, 0, 0};
-    double sweepMs[3] = {0, 0, 0};
+const StressDensity kDensities[] = {StressDensity::Sparse, StressDensity::Dense};
+using Scaling = std::map<std::pair<StressDensity, int>, SceneResult>;
+
+/// What the suite measured, for its summary and its files.
+struct Findings {
+    std::map<StressDensity, int> crossover;
+    Scaling scaling;
+    std::map<int, SettledResult> settled;
+    AxisComparison axes;
+    PhaseCosts phases;
 };
 
-/// A stress scene of `count` bodies dropped from no height, after five frames of sweep and prune:
-/// the broadphase state (bounds, kept order, axis) of a scene that has landed, for timing its parts.
-World landedStressScene(StressDensity density, int count) {
-    StressParams params;
-    params.count = count;
-    params.density = density;
-    params.dropHeight = 0;
-    World world = buildStressScene(params);
-    world.settings.broadphase = BroadphaseMode::Sap;
-    Pipeline pipeline = makeChapter05Pipeline(world);
-    for (int frame = 0; frame < 5; ++frame) pipeline.step(world);
-    return world;
-}
-
-AxisComparison compareAxes(StressDensity density, int count) {
-    World world = landedStressScene(density, count);
-    AxisComparison comparison;
-    comparison.chosen = world.broadphase.axis;
-    std::vector<SweepEndpoint> ends;
-    std::vector<BodyPair> pairs;
-    for (int axis = 0; axis < 3; ++axis) {
-        makeEndpoints(world.broadphase.bounds, axis, ends);
-        fullSortEndpoints(ends);
-        pairs.clear();
-        const ThreadStopwatch watch;
-        comparison.looked[axis] = sweepEndpoints(ends, world.broadphase.bounds, world.broadphase.dynamic, axis, pairs);
-        comparison.sweepMs[axis] = watch.seconds() * 1e3;
-    }
-    return comparison;
-}
-
-/// Where sweep and prune's time goes, per body, ns: each phase of sweepAndPrune timed alone over
-/// `repetitions` runs on a scene that has landed, and brute force's time per pair.
-struct PhaseCosts {
-    double bounds = 0, variance = 0, sort = 0, sweep = 0, pairSort = 0, brutePerPair = 0;
-};
-
-PhaseCosts measurePhases(int count, int repetitions) {
-    World world = landedStressScene(StressParams{}.density, count);
-    std::vector<double> bounds, variance, sort, sweep, pairSort;
-    for (int repetition = 0; repetition < repetitions; ++repetition) {
-        BroadphaseState state = world.broadphase;
-        ThreadStopwatch watch;
-        computeBroadphaseBounds(world, state.bounds, state.dynamic);
-        bounds.push_back(watch.seconds());
-        watch.restart();
-        const Vec3 spread = centreVariance(state.bounds);
-        const int axis = chooseSweepAxis(spread, state.axis);
-        variance.push_back(watch.seconds());
-        watch.restart();
-        refreshEndpointValues(state.bounds, axis, state.endpoints);
-        insertionSortEndpoints(state.endpoints, static_cast<long>(state.endpoints.size()) * 64);
-        sort.push_back(watch.seconds());
-        // As the stage does: into a list that kept its capacity, with the state's working memory.
-        std::vector<BodyPair>& pairs = world.candidatePairs;
-        pairs.clear();
-        watch.restart();
-        sweepEndpoints(state.endpoints, state.bounds, state.dynamic, sweepAxes(spread, axis), pairs, state.buffers.columns);
-        sweep.push_back(watch.seconds());
-        watch.restart();
-        sortPairsCanonical(pairs, static_cast<int>(world.bodies.size()), state.buffers);
-        pairSort.push_back(watch.seconds());
-    }
-    const double perBody = 1e9 / static_cast<double>(world.bodies.size());
-    PhaseCosts costs{median(bounds) * perBody, median(variance) * perBody, median(sort) * perBody,
-                     median(sweep) * perBody, median(pairSort) * perBody, 0};
-    const ThreadStopwatch watch;
-    bruteForceBroadphase(world);
-    const double n = static_cast<double>(world.bodies.size());
-    costs.brutePerPair = watch.seconds() * 1e9 / (n * (n - 1) / 2);
-    return costs;
-}
-
-/// The smallest count from which sweep and prune's broadphase is faster at every measured count.
-int crossoverCount(const std::vector<std::pair<int, double>>& bruteOverSap) {
-    int crossover = -1;
-    for (auto it = bruteOverSap.rbegin(); it != bruteOverSap.rend(); ++it) {
-        if (it->second <= 1) break;
-        crossover = it->first;
-    }
-    return crossover;
-}
-
-void measureBroadphase(BenchRun& bench) {
-    std::ostream& out = bench.out();
+/// Crossover: small scenes, many frames, many repetitions.
+std::map<StressDensity, int> measureCrossover(BenchRun& bench, CsvTable& table) {
     const bool quick = bench.quick();
-    CsvTable table({"part", "density", "shape", "bodies", "method", "broadphase_ms", "step_ms", "sort_ms",
-                    "candidates", "axis_overlaps", "contacts", "narrowphase_ms", "solve_ms"});
-    Series broadphasePlot, stepPlot;
-    const StressDensity densities[] = {StressDensity::Sparse, StressDensity::Dense};
-
-    // Crossover: small scenes, many frames, many repetitions.
     std::map<StressDensity, int> crossover;
     const std::vector<int> smallCounts = {8, 16, 24, 32, 48, 64, 96, 128, 192, 256};
-    for (StressDensity density : densities) {
+    for (StressDensity density : kDensities) {
         bench.progress().stage(std::string("crossover, ") + toString(density), long(smallCounts.size()));
         std::vector<std::pair<int, double>> ratios;
         for (int count : smallCounts) {
@@ -313,11 +84,16 @@ void measureBroadphase(BenchRun& bench) {
         crossover[density] = crossoverCount(ratios);
     }
 
-    // Scaling: 100 to 100,000 bodies.
+    return crossover;
+}
+
+/// Scaling: 100 to 100,000 bodies, into the table and the two plots' series.
+Scaling measureScaling(BenchRun& bench, CsvTable& table, Series& broadphasePlot, Series& stepPlot) {
+    const bool quick = bench.quick();
     const std::vector<int> counts = quick ? std::vector<int>{100, 1000, 10000, 100000}
                                           : std::vector<int>{100, 300, 1000, 3000, 10000, 30000, 100000};
     std::map<std::pair<StressDensity, int>, SceneResult> scaling;
-    for (StressDensity density : densities) {
+    for (StressDensity density : kDensities) {
         bench.progress().stage(std::string("scaling, ") + toString(density), long(counts.size()));
         for (int count : counts) {
             bench.progress().advance();
@@ -353,7 +129,13 @@ void measureBroadphase(BenchRun& bench) {
         }
     }
 
-    // Settled: incremental against full sort.
+    return scaling;
+}
+
+/// Settled: incremental against full sort; then the axis comparison and the phases, in the same
+/// progress stage.
+std::map<int, SettledResult> measureSettledSorts(BenchRun& bench, CsvTable& table) {
+    const bool quick = bench.quick();
     std::map<int, SettledResult> settled;
     const std::vector<int> settledCounts = quick ? std::vector<int>{10000} : std::vector<int>{10000, 100000};
     bench.progress().stage("settled spheres, incremental and full sort", long(settledCounts.size()) + 2);
@@ -367,25 +149,50 @@ void measureBroadphase(BenchRun& bench) {
                       cell(result.fullSortMs), "", "", "", "", ""});
     }
 
-    out << table.toText();
+    return settled;
+}
+
+constexpr const char* kAxisNames[] = {"x", "y", "z"};
+
+const char* verdict(bool met) { return met ? "met" : "MISSED"; }
+
+/// The chapter's targets, read off what was measured.
+struct TargetFigures {
+    double sap10k = 0, speedup10k = 0, sap100k = 0;  // ms, x, ms
+    SettledResult rest;                              // 10,001 settled spheres
+};
+TargetFigures targetFigures(const Findings& found) {
+    const SceneResult& sparse10k = found.scaling.at({StressDensity::Sparse, 10000});
+    TargetFigures figures;
+    figures.sap10k = sparse10k.broadphaseMs.at(Method::SapIncremental);
+    figures.speedup10k = sparse10k.broadphaseMs.at(Method::Brute) / figures.sap10k;
+    figures.sap100k = found.scaling.at({StressDensity::Sparse, 100000}).broadphaseMs.at(Method::SapIncremental);
+    figures.rest = found.settled.at(10000);
+    return figures;
+}
+
+double phasesPerBody(const PhaseCosts& phases) {
+    return phases.bounds + phases.variance + phases.sort + phases.sweep + phases.pairSort;
+}
+
+/// The summary printed after the table: the crossover, the axis choice, the targets, the phases,
+/// dense against sparse.
+std::string summaryText(const Findings& found) {
+    const auto& crossover = found.crossover;
+    const AxisComparison& axes = found.axes;
+    const PhaseCosts& phases = found.phases;
+    const TargetFigures figures = targetFigures(found);
+    const SettledResult& rest = figures.rest;
     std::ostringstream summary;
-    summary << "crossover: sweep and prune's broadphase is faster from " << crossover[StressDensity::Sparse]
-            << " bodies (sparse) and " << crossover[StressDensity::Dense] << " bodies (dense); auto uses "
+    summary << "crossover: sweep and prune's broadphase is faster from " << crossover.at(StressDensity::Sparse)
+            << " bodies (sparse) and " << crossover.at(StressDensity::Dense) << " bodies (dense); auto uses "
             << kAutoSapMinBodies << " (kAutoSapMinBodies)\n";
-    const AxisComparison axes = compareAxes(StressDensity::Sparse, 10000);
-    bench.progress().advance();
-    const char* const axisNames[] = {"x", "y", "z"};
     summary << "axis choice, sparse 10,001 bodies on the ground: pairs the sweep looks at along";
     for (int axis = 0; axis < 3; ++axis)
-        summary << (axis ? "," : "") << " " << axisNames[axis] << " " << axes.looked[axis] << " ("
+        summary << (axis ? "," : "") << " " << kAxisNames[axis] << " " << axes.looked[axis] << " ("
                 << formatNumber(axes.sweepMs[axis], 3) << " ms)";
-    summary << "; the variance picks " << axisNames[axes.chosen] << "\n";
-    const SceneResult& sparse10k = scaling[{StressDensity::Sparse, 10000}];
-    const double sap10k = sparse10k.broadphaseMs.at(Method::SapIncremental);
-    const double speedup10k = sparse10k.broadphaseMs.at(Method::Brute) / sap10k;
-    const double sap100k = scaling[{StressDensity::Sparse, 100000}].broadphaseMs.at(Method::SapIncremental);
-    const SettledResult& rest = settled[10000];
-    auto verdict = [](bool met) { return met ? "met" : "MISSED"; };
+    summary << "; the variance picks " << kAxisNames[axes.chosen] << "\n";
+    const double sap10k = figures.sap10k, speedup10k = figures.speedup10k, sap100k = figures.sap100k;
     summary << "targets (one thread, CPU time):\n"
             << "  sparse 10,001 bodies: SAP " << formatNumber(sap10k, 3) << " ms, " << formatNumber(speedup10k, 3)
             << "x faster than brute force (target: at least 100x, under 2 ms): "
@@ -397,9 +204,7 @@ void measureBroadphase(BenchRun& bench) {
             << formatNumber(rest.fullSortMs / rest.insertionSortMs, 3) << "x (target: at least 3x): "
             << verdict(rest.fullSortMs >= 3 * rest.insertionSortMs) << "; whole broadphase "
             << formatNumber(rest.incrementalMs, 3) << " against " << formatNumber(rest.fullMs, 3) << " ms\n";
-    const PhaseCosts phases = measurePhases(10000, quick ? 30 : 100);
-    bench.progress().endStage();
-    const double perBody = phases.bounds + phases.variance + phases.sort + phases.sweep + phases.pairSort;
+    const double perBody = phasesPerBody(phases);
     summary << "where the time goes, sparse 10,001 bodies, ns per body: bounds " << formatNumber(phases.bounds, 3)
             << ", variance " << formatNumber(phases.variance, 3) << ", sort " << formatNumber(phases.sort, 3)
             << ", sweep " << formatNumber(phases.sweep, 3) << ", pair sort " << formatNumber(phases.pairSort, 3)
@@ -407,8 +212,8 @@ void measureBroadphase(BenchRun& bench) {
             << " ns per pair, so 100x faster would take under "
             << formatNumber(phases.brutePerPair * 10000 / 2 / 100, 3) << " ns per body\n";
     summary << "dense against sparse, 10,001 bodies (SAP incremental; dense measured once it has piled up):\n";
-    for (StressDensity density : densities) {
-        const SceneResult& result = scaling[{density, 10000}];
+    for (StressDensity density : kDensities) {
+        const SceneResult& result = found.scaling.at({density, 10000});
         const double stepTime = result.stepMs.at(Method::SapIncremental);
         const double bruteStep = result.stepMs.at(Method::Brute);
         summary << "  " << toString(density) << ": " << formatNumber(result.candidates / 10001, 3)
@@ -419,8 +224,18 @@ void measureBroadphase(BenchRun& bench) {
                 << formatNumber(stepTime, 3) << " ms against " << formatNumber(bruteStep, 3) << " ms with brute force ("
                 << formatNumber(100 * (bruteStep - stepTime) / bruteStep, 3) << "% saved)\n";
     }
-    out << "\n" << summary.str();
+    return summary.str();
+}
 
+/// The table of targets, the notes and the dense-against-sparse table as a figure, and the two plots.
+void writeFiles(BenchRun& bench, const Findings& found, const CsvTable& table, const Series& broadphasePlot,
+                const Series& stepPlot) {
+    const TargetFigures figures = targetFigures(found);
+    const double sap10k = figures.sap10k, speedup10k = figures.speedup10k, sap100k = figures.sap100k;
+    const SettledResult& rest = figures.rest;
+    const AxisComparison& axes = found.axes;
+    const PhaseCosts& phases = found.phases;
+    const double perBody = phasesPerBody(phases);
     CsvTable targets({"target (one thread, CPU time)", "asked", "measured", ""});
     targets.addRow({"sparse 10,001 bodies: SAP against brute force", "at least 100x",
                     formatNumber(speedup10k, 3) + "x", verdict(speedup10k >= 100)});
@@ -430,13 +245,13 @@ void measureBroadphase(BenchRun& bench) {
                     formatNumber(rest.fullSortMs / rest.insertionSortMs, 3) + "x", verdict(rest.fullSortMs >= 3 * rest.insertionSortMs)});
     const auto ms = [](double value) { return formatNumber(value, 3) + " ms"; };
     std::vector<std::string> notes = {
-        "crossover: sweep and prune's broadphase is faster from " + std::to_string(crossover[StressDensity::Sparse]) +
-            " bodies (sparse) and " + std::to_string(crossover[StressDensity::Dense]) + " (dense); auto uses " +
+        "crossover: sweep and prune's broadphase is faster from " + std::to_string(found.crossover.at(StressDensity::Sparse)) +
+            " bodies (sparse) and " + std::to_string(found.crossover.at(StressDensity::Dense)) + " (dense); auto uses " +
             std::to_string(kAutoSapMinBodies),
         "axis choice, 10,001 bodies on the ground: pairs the sweep looks at along x " + std::to_string(axes.looked[0]) +
             ", y " + std::to_string(axes.looked[1]) + ", z " + std::to_string(axes.looked[2]),
         "    its time along x " + ms(axes.sweepMs[0]) + ", y " + ms(axes.sweepMs[1]) + ", z " + ms(axes.sweepMs[2]) +
-            "; the variance picks " + axisNames[axes.chosen],
+            "; the variance picks " + kAxisNames[axes.chosen],
         "where the time goes, sparse 10,001 bodies, ns per body: bounds " + formatNumber(phases.bounds, 3) +
             ", variance " + formatNumber(phases.variance, 3) + ", sort " + formatNumber(phases.sort, 3) + ", sweep " +
             formatNumber(phases.sweep, 3) + ", pair sort " + formatNumber(phases.pairSort, 3),
@@ -446,7 +261,7 @@ void measureBroadphase(BenchRun& bench) {
     CsvTable denseAgainstSparse({"10,001 bodies", "candidates / body", "looked at / body", "broadphase", "brute force",
                         "narrowphase", "solve", "step", "step, brute force"});
     for (StressDensity density : {StressDensity::Sparse, StressDensity::Dense}) {
-        const SceneResult& result = scaling[{density, 10000}];
+        const SceneResult& result = found.scaling.at({density, 10000});
         denseAgainstSparse.addRow({toString(density), formatNumber(result.candidates / 10001, 3),
                           formatNumber(result.axisOverlaps / 10001, 3), ms(result.broadphaseMs.at(Method::SapIncremental)),
                           ms(result.broadphaseMs.at(Method::Brute)), ms(result.narrowphaseMs), ms(result.solveMs),
@@ -460,13 +275,13 @@ void measureBroadphase(BenchRun& bench) {
                    "dense (a block of 1 m cells, measured once it has piled up). Each point: the median over the measured "
                    "frames of the broadphase's CPU time; every method found the same pairs. Brute force tests all pairs "
                    "against the same grown boxes; SAP full sort sorts the interval ends from scratch every step.";
-    for (auto& [name, series] : broadphasePlot.byName) plot.series.push_back(series);
+    for (const auto& [name, series] : broadphasePlot.byName) plot.series.push_back(series);
     bench.writePlot(plot);
     PlotSpec stepSpec("Whole step against body count: where the time goes", "bodies", "ms per step (median)");
     stepSpec.integerX = true;
     stepSpec.caption = "The whole step with each broadphase (the rest of the step is the same, since every broadphase "
                        "hands the narrowphase the same pairs), and its narrowphase and solve alone (narrow+solve).";
-    for (auto& [name, series] : stepPlot.byName) stepSpec.series.push_back(series);
+    for (const auto& [name, series] : stepPlot.byName) stepSpec.series.push_back(series);
     bench.writePlot(stepSpec, "-step");
     bench.writeTables({FigureTable{notes, &targets},
                        FigureTable{{"dense against sparse: sweep and prune (incremental), dense measured once it has piled up"},
@@ -474,10 +289,29 @@ void measureBroadphase(BenchRun& bench) {
                       "-summary");
 }
 
+
+void measureBroadphase(BenchRun& bench) {
+    const bool quick = bench.quick();
+    CsvTable table({"part", "density", "shape", "bodies", "method", "broadphase_ms", "step_ms", "sort_ms",
+                    "candidates", "axis_overlaps", "contacts", "narrowphase_ms", "solve_ms"});
+    Series broadphasePlot, stepPlot;
+    Findings found;
+    found.crossover = measureCrossover(bench, table);
+    found.scaling = measureScaling(bench, table, broadphasePlot, stepPlot);
+    found.settled = measureSettledSorts(bench, table);
+    found.axes = compareAxes(StressDensity::Sparse, 10000);
+    bench.progress().advance();
+    found.phases = measurePhases(10000, quick ? 30 : 100);
+    bench.progress().endStage();
+    bench.out() << table.toText() << "\n" << summaryText(found);
+    writeFiles(bench, found, table, broadphasePlot, stepPlot);
+}
+
 }  // namespace
+}  // namespace broadphase_bench
 
 BenchEntry broadphaseBench() {
-    return benchEntry(5, measureBroadphase, R"(
+    return benchEntry(5, broadphase_bench::measureBroadphase, R"(
         broadphase: chapter 5: broadphase and step time against body count (100 to 100,000),
             sparse and dense, brute force vs sweep and prune (full sort, incremental); the
             crossover auto uses
