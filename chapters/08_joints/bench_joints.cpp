@@ -213,45 +213,64 @@ void addPoint(PlotSeries& series, double ms, double value) {
 
 std::string percent(double fraction) { return std::isfinite(fraction) ? formatNumber(100 * fraction, 3) + "%" : "not finite"; }
 
-void measureJoints(BenchRun& bench) {
-    const bool quick = bench.quick();
-    const double chainSeconds = quick ? 3 : 10;
-    const double pileSeconds = quick ? 2.5 : 4;
-    const int ragdolls = quick ? 3 : 5;
-    const std::vector<int> iterationCounts = quick ? std::vector<int>{2, 10, 40} : std::vector<int>{2, 4, 6, 10, 20, 40};
-    const std::vector<int> substepCounts = quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4};
-    CsvTable table({"case", "order", "feedback", "warm_starting", "iterations", "substeps", "joint_sweeps", "seconds", "step_ms",
-                    "largest_stretch", "final_stretch", "joint_error_m", "joint_error_rad"});
+/// The suite's sizes: a quick run's or a full run's.
+struct JointBenchPlan {
+    double chainSeconds = 10, pileSeconds = 4;
+    int ragdolls = 5;
+    std::vector<int> iterationCounts, substepCounts;
+};
+
+JointBenchPlan jointBenchPlan(bool quick) {
+    JointBenchPlan plan;
+    plan.chainSeconds = quick ? 3 : 10;
+    plan.pileSeconds = quick ? 2.5 : 4;
+    plan.ragdolls = quick ? 3 : 5;
+    plan.iterationCounts = quick ? std::vector<int>{2, 10, 40} : std::vector<int>{2, 4, 6, 10, 20, 40};
+    plan.substepCounts = quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4};
+    return plan;
+}
+
+/// The plots' series, by line name.
+struct JointPlots {
     std::map<std::string, PlotSeries> stretch, pile, bySubsteps;
+};
+
+/// Every case at every iteration and substep count: the main table and the plots' points; the
+/// outcomes at the default settings, by case.
+std::map<Case, Outcome> measureIterations(BenchRun& bench, const JointBenchPlan& plan, CsvTable& table, JointPlots& plots) {
     std::vector<Case> cases(std::begin(kChains), std::end(kChains));
     cases.push_back(Case::RagdollPile);
 
-    bench.progress().stage("iterations", long(cases.size() * iterationCounts.size() * substepCounts.size()));
+    bench.progress().stage("iterations", long(cases.size() * plan.iterationCounts.size() * plan.substepCounts.size()));
     std::map<Case, Outcome> defaults;
     for (Case which : cases) {
-        for (int substeps : substepCounts) {
-            for (int iterations : iterationCounts) {
+        for (int substeps : plan.substepCounts) {
+            for (int iterations : plan.iterationCounts) {
                 Config config;
                 config.iterations = iterations;
                 config.substeps = substeps;
-                const Outcome m = run(which, config, which == Case::RagdollPile ? pileSeconds : chainSeconds, ragdolls);
+                const Outcome m = run(which, config, which == Case::RagdollPile ? plan.pileSeconds : plan.chainSeconds, plan.ragdolls);
                 addRow(table, which, config, m);
                 if (iterations == Config{}.iterations && substeps == 1) defaults[which] = m;
                 const std::string steps = std::to_string(substeps) + (substeps == 1 ? " substep" : " substeps");
                 if (which == Case::RagdollPile) {
-                    addPoint(pile["position (m), " + steps], m.stepMs, double(m.error.position));
-                    addPoint(pile["angle (rad), " + steps], m.stepMs, double(m.error.angle));
+                    addPoint(plots.pile["position (m), " + steps], m.stepMs, double(m.error.position));
+                    addPoint(plots.pile["angle (rad), " + steps], m.stepMs, double(m.error.angle));
                 } else {
-                    if (substeps == 1) addPoint(stretch[caseName(which)], m.stepMs, m.largestStretch);
-                    if (which == Case::Swinging) addPoint(bySubsteps[steps], m.stepMs, m.largestStretch);
+                    if (substeps == 1) addPoint(plots.stretch[caseName(which)], m.stepMs, m.largestStretch);
+                    if (which == Case::Swinging) addPoint(plots.bySubsteps[steps], m.stepMs, m.largestStretch);
                 }
                 bench.progress().advance();
             }
         }
     }
 
-    // Joint order at the default settings, and without warm starting (each substep's sweep then
-    // starts from no impulse, and the order decides which way along the chain it carries a change).
+    return defaults;
+}
+
+/// Joint order at the default settings, and without warm starting (each substep's sweep then
+/// starts from no impulse, and the order decides which way along the chain it carries a change).
+CsvTable measureOrders(BenchRun& bench, const JointBenchPlan& plan, CsvTable& table) {
     CsvTable orders({"case", "order", "warm starting", "largest stretch", "final stretch", "step (ms)"});
     bench.progress().stage("order and feedback", long(std::size(kChains) * 6 + 2));
     for (Case which : kChains) {
@@ -260,7 +279,7 @@ void measureJoints(BenchRun& bench) {
                 Config config;
                 config.order = order;
                 config.warm = warm;
-                const Outcome m = run(which, config, chainSeconds, ragdolls);
+                const Outcome m = run(which, config, plan.chainSeconds, plan.ragdolls);
                 addRow(table, which, config, m);
                 orders.addRow({caseName(which), toString(order), warm ? "on" : "off", percent(m.largestStretch),
                                percent(m.finalStretch), formatNumber(m.stepMs)});
@@ -268,28 +287,38 @@ void measureJoints(BenchRun& bench) {
             }
         }
     }
+    return orders;
+}
+
+/// The hanging chain with each kind of joint feedback.
+CsvTable measureFeedback(BenchRun& bench, const JointBenchPlan& plan, CsvTable& table, const Outcome& hangingDefault) {
     CsvTable feedback({"case", "feedback", "ran (s)", "largest stretch", "final stretch", "step (ms)"});
     const auto addFeedback = [&](Case which, const Config& config, const Outcome& m) {
         feedback.addRow({caseName(which), feedbackName(config), formatNumber(m.seconds), percent(m.largestStretch),
                          percent(m.finalStretch), formatNumber(m.stepMs)});
     };
-    addFeedback(Case::Hanging, Config{}, defaults[Case::Hanging]);
+    addFeedback(Case::Hanging, Config{}, hangingDefault);
     Config rigid, stiffer;
     rigid.feedback = JointFeedback::Kind::Baumgarte;
     stiffer.hertzPerRate = 2 * kJointHertzPerStepRate;
     for (const Config& config : {rigid, stiffer}) {
-        const Outcome m = run(Case::Hanging, config, chainSeconds, ragdolls);
+        const Outcome m = run(Case::Hanging, config, plan.chainSeconds, plan.ragdolls);
         addRow(table, Case::Hanging, config, m);
         addFeedback(Case::Hanging, config, m);
         bench.progress().advance();
     }
 
-    // What a direct solve would buy: the same chains with their joints (near) converged.
+    return feedback;
+}
+
+/// What a direct solve would buy: the same chains with their joints (near) converged.
+CsvTable measureDirect(BenchRun& bench, const JointBenchPlan& plan, CsvTable& table, const std::map<Case, Outcome>& defaults) {
+    const bool quick = bench.quick();
     CsvTable direct({"case", "solve", "largest stretch", "final stretch", "springs' sag at rest", "step (ms)", "cost"});
     const int sweeps = 50, manyIterations = 200;
     bench.progress().stage("direct", long(std::size(kChains) * (quick ? 1 : 2)));
     for (Case which : kChains) {
-        const Outcome& base = defaults[which];
+        const Outcome& base = defaults.at(which);
         const auto addDirect = [&](const std::string& solve, const Outcome& m) {
             direct.addRow({caseName(which), solve, percent(m.largestStretch), percent(m.finalStretch),
                            std::isnan(m.restingSag) ? "-" : percent(m.restingSag), formatNumber(m.stepMs),
@@ -298,34 +327,40 @@ void measureJoints(BenchRun& bench) {
         addDirect("default (10 iterations)", base);
         Config converged;
         converged.sweeps = sweeps;
-        const Outcome swept = run(which, converged, chainSeconds, ragdolls);
+        const Outcome swept = run(which, converged, plan.chainSeconds, plan.ragdolls);
         addRow(table, which, converged, swept);
         addDirect("joints swept " + std::to_string(sweeps) + "x per iteration", swept);
         bench.progress().advance();
         if (quick) continue;  // 200 iterations: full runs only
         Config many;
         many.iterations = manyIterations;
-        const Outcome deep = run(which, many, chainSeconds, ragdolls);
+        const Outcome deep = run(which, many, plan.chainSeconds, plan.ragdolls);
         addRow(table, which, many, deep);
         addDirect(std::to_string(manyIterations) + " iterations", deep);
         bench.progress().advance();
     }
     bench.progress().endStage();
 
+    return direct;
+}
+
+/// The tables as text and as a figure, the CSV and the three plots.
+void writeJointResults(BenchRun& bench, const JointBenchPlan& plan, const CsvTable& table, const CsvTable& orders,
+                       const CsvTable& feedback, const CsvTable& direct, JointPlots& plots) {
     std::ostream& out = bench.out();
-    const std::string setting = std::string(realTypeName()) + ", 60 Hz, " + formatNumber(chainSeconds) + " s per chain run";
+    const std::string setting = std::string(realTypeName()) + ", 60 Hz, " + formatNumber(plan.chainSeconds) + " s per chain run";
     out << table.toText() << "\njoint order at the default settings (" << setting << "):\n" << orders.toText()
         << "\nfeedback, hanging chain (" << setting << "):\n" << feedback.toText()
         << "\nwhat a direct solve would buy (" << setting << "):\n" << direct.toText();
     bench.writeCsv(table);
 
-    PlotSpec plot("Chain stretch against run time, iterations " + std::to_string(iterationCounts.front()) + " to " +
-                      std::to_string(iterationCounts.back()) + " (" + setting + ")",
+    PlotSpec plot("Chain stretch against run time, iterations " + std::to_string(plan.iterationCounts.front()) + " to " +
+                      std::to_string(plan.iterationCounts.back()) + " (" + setting + ")",
                   "step time (ms, CPU)", "largest stretch (fraction of rest length)");
     plot.caption = "Each point is one run; along a line the solver iterations grow (the relax solve's substeps of one sweep "
                    "each). Chains of 20 links of 1 kg (hanging at rest; released from horizontal) and of 10 links with a "
                    "10 kg end link, 25 cm apart, distance joints, one frame substep.";
-    for (auto& [name, series] : stretch) {
+    for (auto& [name, series] : plots.stretch) {
         series.title = name;
         plot.series.push_back(series);
     }
@@ -334,18 +369,18 @@ void measureJoints(BenchRun& bench) {
                          "largest stretch (fraction of rest length)");
     substepPlot.caption = "The 20-link chain released from horizontal; along each line the iterations grow, one line per "
                           "count of frame substeps (each runs the whole pipeline).";
-    for (auto& [name, series] : bySubsteps) {
+    for (auto& [name, series] : plots.bySubsteps) {
         series.title = name;
         substepPlot.series.push_back(series);
     }
     bench.writePlot(substepPlot, "-substeps");
-    PlotSpec pilePlot("Ragdoll pile: joint error against run time (" + std::to_string(ragdolls) + " ragdolls, " +
+    PlotSpec pilePlot("Ragdoll pile: joint error against run time (" + std::to_string(plan.ragdolls) + " ragdolls, " +
                           realTypeName() + ")",
                       "step time (ms, CPU)", "largest joint error over the last second");
-    pilePlot.caption = "Ragdolls dropped in a pile (chapter 8's builder), " + formatNumber(pileSeconds) +
+    pilePlot.caption = "Ragdolls dropped in a pile (chapter 8's builder), " + formatNumber(plan.pileSeconds) +
                        " s at 60 Hz; the largest anchor gap (m) and angle past a limit or off a locked axis (rad) of any "
                        "joint over the last second. Along a line the iterations grow.";
-    for (auto& [name, series] : pile) {
+    for (auto& [name, series] : plots.pile) {
         series.title = name;
         pilePlot.series.push_back(series);
     }
@@ -354,6 +389,18 @@ void measureJoints(BenchRun& bench) {
                        FigureTable{{"feedback of the joint rows, hanging 20-link chain"}, &feedback},
                        FigureTable{{"what a direct solve would buy: the chains with their joints (near) converged"}, &direct}},
                       "-summary");
+}
+
+void measureJoints(BenchRun& bench) {
+    const JointBenchPlan plan = jointBenchPlan(bench.quick());
+    CsvTable table({"case", "order", "feedback", "warm_starting", "iterations", "substeps", "joint_sweeps", "seconds", "step_ms",
+                    "largest_stretch", "final_stretch", "joint_error_m", "joint_error_rad"});
+    JointPlots plots;
+    const std::map<Case, Outcome> defaults = measureIterations(bench, plan, table, plots);
+    const CsvTable orders = measureOrders(bench, plan, table);
+    const CsvTable feedback = measureFeedback(bench, plan, table, defaults.at(Case::Hanging));
+    const CsvTable direct = measureDirect(bench, plan, table, defaults);
+    writeJointResults(bench, plan, table, orders, feedback, direct, plots);
 }
 
 }  // namespace
