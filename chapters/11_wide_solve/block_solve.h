@@ -9,7 +9,7 @@ inline namespace STEPWISE_ISA {
 // [ch11-idle-block]
 /// Whether no lane of the block holds an impulse: every point's normal impulse, the friction,
 /// twist and rolling impulses all zero. Such a block's warm start pushes by zero, and so does its
-/// sweep where no lane asks for an impulse either (every lane quiet, normalBlockStep): it is
+/// sweep where no lane asks for an impulse either (every lane idle, normalBlockStep): it is
 /// skipped, and its bodies keep their velocities exactly as a sweep adding zeros would leave them.
 /// In a touching 100-row pyramid a fifth of the blocks are such: bricks side by side in a row,
 /// touching and carrying nothing.
@@ -181,8 +181,8 @@ inline Pack<N> normalRowImpulse(const ManifoldPointPack<N>& p, const Pack<N>& sp
 /// for nothing (no change), blockFails 1 where none of the three holds.
 template <int N>
 struct BlockStep {
-    Pack<N> increment[4], dropped[4], useBlock, useDropped, idle, blockFails;
-    Pack<N> quiet;  // 1 where the lane holds no normal impulse and no row asks for one
+    Pack<N> increment[4], dropped[4], useBlock, useDropped, blockFails;
+    Pack<N> idle;  // 1 where the lane holds no normal impulse and no row asks for one
 };
 
 // [ch11-normal-block-step]
@@ -215,17 +215,6 @@ inline void normalBlockStep(ManifoldBlock<N>& c, const BodyPack<N>& a, const Bod
     }
     const Pack<N> rigid = selectPositive(softness, zero, one);
     s.useBlock = selectNonNegative(leastLoad, rigid, zero);
-    // Where one corner would pull, let it go: its impulse becomes zero and the other rows still
-    // meet their targets. With M = K^-1 that is d + s M e_j, s = -(lambda_j + d_j) / M_jj, exact
-    // when s >= 0 (the corner then separates) and the others still push. j is the corner that
-    // pulls hardest. Skipped where every lane takes the whole block (most of a resting stack's).
-    for (Pack<N>& dropped : s.dropped) dropped = zero;
-    s.useDropped = zero;
-    if (anyNegative(s.useBlock - one)) {
-        const Pack<N> impulses[4] = {c.point[0].normalImpulse, c.point[1].normalImpulse, c.point[2].normalImpulse,
-                                     c.point[3].normalImpulse};
-        dropCorner(c.normalBlockInverse, impulses, total, s.increment, s.useBlock, rigid, s.dropped, s.useDropped);
-    }
     // A lane whose rows hold no impulse and whose points all part or keep their distance (every
     // target at least zero) has nothing to do: the rows' answer is no impulse at all (K is
     // positive definite, so it is the only answer), which is what sweeping them one at a time
@@ -233,11 +222,21 @@ inline void normalBlockStep(ManifoldBlock<N>& c, const BodyPack<N>& a, const Bod
     // touching neighbours in a row of bricks: a third of a touching pyramid's manifolds).
     // Such a lane takes exactly no impulse, not the rounding of K^-1's columns that the block or a
     // corner let go would give it (so that a block of such lanes can be skipped, holdsNoImpulse).
-    const Pack<N> quiet = selectNonNegative(leastTarget, one, zero) * selectPositive(mostImpulse, zero, one);
-    s.quiet = quiet;
-    s.useBlock = s.useBlock * (one - quiet);
-    s.useDropped = s.useDropped * (one - quiet);
-    s.idle = quiet;
+    s.idle = selectNonNegative(leastTarget, one, zero) * selectPositive(mostImpulse, zero, one);
+    // Where one corner would pull, let it go: its impulse becomes zero and the other rows still
+    // meet their targets. With M = K^-1 that is d + s M e_j, s = -(lambda_j + d_j) / M_jj, exact
+    // when s >= 0 (the corner then separates) and the others still push. j is the corner that
+    // pulls hardest. Skipped where every lane takes the whole block or is idle (most of a resting
+    // stack's).
+    for (Pack<N>& dropped : s.dropped) dropped = zero;
+    s.useDropped = zero;
+    if (anyNegative(s.useBlock + s.idle - one)) {
+        const Pack<N> impulses[4] = {c.point[0].normalImpulse, c.point[1].normalImpulse, c.point[2].normalImpulse,
+                                     c.point[3].normalImpulse};
+        dropCorner(c.normalBlockInverse, impulses, total, s.increment, s.useBlock, rigid, s.dropped, s.useDropped);
+    }
+    s.useBlock = s.useBlock * (one - s.idle);
+    s.useDropped = s.useDropped * (one - s.idle);
     s.blockFails = one - s.useBlock - s.useDropped - s.idle;
 }
 // [ch11-normal-block-step]
@@ -344,10 +343,8 @@ inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const Conta
     const bool bounces = anyNegative(-c.restitution);  // approachSpeed is read only where a lane bounces
     BlockStep<N> step;
     normalBlockStep(c, a, b, targets, angularA, angularB, bounces, step);
-    // Every lane quiet and nothing held: the block would push by zero (holdsNoImpulse). A quiet
-    // lane's block answer is zero: K^-1 is positive definite, so for targets >= 0, not all zero,
-    // some corner would pull, and its rows one at a time find no impulse either.
-    if (!bounces && !anyNegative(step.quiet - Pack<N>::splat(1)) && holdsNoImpulse(c)) return;
+    // Every lane idle and nothing held: the block would push by zero (holdsNoImpulse).
+    if (!bounces && !anyNegative(step.idle - Pack<N>::splat(1)) && holdsNoImpulse(c)) return;
     applyBlockStep(c, step, bounces, a, b);
     if (anyNegative(-step.blockFails)) sweepNormalRows(c, targets, angularA, angularB, step.blockFails, bounces, a, b);
     solveFriction(c, a, b);

@@ -188,15 +188,22 @@ inline Pack<N> sqrt(const Pack<N>& a) {
     for (int i = 0; i < N; ++i) r[i] = std::sqrt(a[i]);
     return r;
 }
-/// Whether any lane holds a value below zero (a branch over the whole pack).
-template <int N>
-inline bool anyNegative(const Pack<N>& a) {
+/// What anyLane asks of each lane: whether it is below zero, or whether it is not zero (NaN is
+/// not zero).
+enum class ZeroTest { Below, NotEqual };
+
+/// Whether any lane passes `kTest` (a branch over the whole pack).
+template <ZeroTest kTest, int N>
+inline bool anyLane(const Pack<N>& a) {
+#if defined(__AVX__) && defined(STEPWISE_VECTOR_PACKS)
+    constexpr int predicate = kTest == ZeroTest::Below ? _CMP_LT_OQ : _CMP_NEQ_UQ;
+#endif
 #if defined(__AVX512F__) && defined(STEPWISE_VECTOR_PACKS)
     if constexpr (N * sizeof(Real) == 64) {
         if constexpr (sizeof(Real) == 4)
-            return _mm512_cmp_ps_mask(reinterpret_cast<__m512>(a.v), _mm512_setzero_ps(), _CMP_LT_OQ) != 0;
+            return _mm512_cmp_ps_mask(reinterpret_cast<__m512>(a.v), _mm512_setzero_ps(), predicate) != 0;
         else
-            return _mm512_cmp_pd_mask(reinterpret_cast<__m512d>(a.v), _mm512_setzero_pd(), _CMP_LT_OQ) != 0;
+            return _mm512_cmp_pd_mask(reinterpret_cast<__m512d>(a.v), _mm512_setzero_pd(), predicate) != 0;
     }
 #endif
 #if defined(__AVX__) && defined(STEPWISE_VECTOR_PACKS)
@@ -204,35 +211,26 @@ inline bool anyNegative(const Pack<N>& a) {
     if constexpr (N * sizeof(Real) == 32) {
         if constexpr (sizeof(Real) == 4) {
             const __m256 values = reinterpret_cast<__m256>(a.v);
-            return _mm256_movemask_ps(_mm256_cmp_ps(values, _mm256_setzero_ps(), _CMP_LT_OQ)) != 0;
+            return _mm256_movemask_ps(_mm256_cmp_ps(values, _mm256_setzero_ps(), predicate)) != 0;
         } else {
             const __m256d values = reinterpret_cast<__m256d>(a.v);
-            return _mm256_movemask_pd(_mm256_cmp_pd(values, _mm256_setzero_pd(), _CMP_LT_OQ)) != 0;
+            return _mm256_movemask_pd(_mm256_cmp_pd(values, _mm256_setzero_pd(), predicate)) != 0;
         }
     }
 #endif
-    bool negative = false;
-    for (int i = 0; i < N; ++i) negative |= a[i] < 0;
-    return negative;
+    bool any = false;
+    for (int i = 0; i < N; ++i) any |= kTest == ZeroTest::Below ? a[i] < 0 : !(a[i] == 0);
+    return any;
 }
-
+/// Whether any lane holds a value below zero.
+template <int N>
+inline bool anyNegative(const Pack<N>& a) {
+    return anyLane<ZeroTest::Below>(a);
+}
 /// Whether any lane holds a value other than zero (NaN counts: it is not zero).
 template <int N>
 inline bool anyNonZero(const Pack<N>& a) {
-#if defined(__AVX__) && defined(STEPWISE_VECTOR_PACKS)
-    if constexpr (N * sizeof(Real) == 32) {
-        if constexpr (sizeof(Real) == 4) {
-            const __m256 values = reinterpret_cast<__m256>(a.v);
-            return _mm256_movemask_ps(_mm256_cmp_ps(values, _mm256_setzero_ps(), _CMP_NEQ_UQ)) != 0;
-        } else {
-            const __m256d values = reinterpret_cast<__m256d>(a.v);
-            return _mm256_movemask_pd(_mm256_cmp_pd(values, _mm256_setzero_pd(), _CMP_NEQ_UQ)) != 0;
-        }
-    }
-#endif
-    bool nonZero = false;
-    for (int i = 0; i < N; ++i) nonZero |= !(a[i] == 0);
-    return nonZero;
+    return anyLane<ZeroTest::NotEqual>(a);
 }
 
 /// A 3-vector per lane, stored as three packs (structure of arrays).

@@ -66,6 +66,13 @@ IdleCount compareWithFullSweeps(const std::vector<ManifoldBlock<N>>& blocks, con
     return count;
 }
 
+/// One more frame's solve on `path`, its blocks left in `scratch`; the parameters of its substeps.
+ContactSolveParams solveOneFrame(World& world, SolverPath path, ContactSolverScratch& scratch) {
+    solveFast(world, world.settings.dt, path, scratch);
+    const Real substeps = static_cast<Real>(std::max(1, world.step.iterationPlan.iterations));
+    return solveParams(world.settings, world.settings.dt / substeps, world.settings.dt);
+}
+
 }  // namespace
 
 TEST_CASE("a block that holds nothing answers as its full sweep does",
@@ -76,9 +83,7 @@ TEST_CASE("a block that holds nothing answers as its full sweep does",
     for (int frame = 0; frame < 60; ++frame) pipeline.step(world);  // the rows have settled
 
     ContactSolverScratch scratch;
-    solveFast(world, world.settings.dt, SolverPath::Wide, scratch);
-    const Real substeps = static_cast<Real>(std::max(1, world.step.iterationPlan.iterations));
-    const ContactSolveParams params = solveParams(world.settings, world.settings.dt / substeps, world.settings.dt);
+    const ContactSolveParams params = solveOneFrame(world, SolverPath::Wide, scratch);
     const IdleCount count = compareWithFullSweeps(scratch.wideBlocks, scratch.bodies.states, params);
     const int idle = count.idle, held = count.held;
     // Neighbours in a row touch and carry nothing: whole blocks of them have nothing to do, while
@@ -116,9 +121,7 @@ TEST_CASE("a block of single points that holds nothing answers as its full sweep
     for (int frame = 0; frame < 90; ++frame) pipeline.step(world);  // the balls have landed
 
     ContactSolverScratch scratch;
-    solveFast(world, world.settings.dt, SolverPath::Scalar, scratch);
-    const Real substeps = static_cast<Real>(std::max(1, world.step.iterationPlan.iterations));
-    const ContactSolveParams params = solveParams(world.settings, world.settings.dt / substeps, world.settings.dt);
+    const ContactSolveParams params = solveOneFrame(world, SolverPath::Scalar, scratch);
     const IdleCount count = compareWithFullSweeps(scratch.scalarBlocks, scratch.bodies.states, params);
     // Balls resting on one another hold their loads; those only near one another hold nothing.
     CHECK(count.held >= 20);
