@@ -277,11 +277,23 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const int stack = std::min(most, std::max({kFewestStackSubsteps, lengths, wanted}));
         // Unlike masses, and a frame in which something arrives bouncing, keep at least the
         // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
-        const bool keepScene = touches.bouncy || touches.massRatio > kLikeMassRatio;
+        // A shallow heap of unlike masses takes the square-root law on the ratio its loads pass
+        // through (load_paths.h), below kPlainMassRatio too: the towers of section 5 stand at it,
+        // and heaps no deeper than kShallowUnlikeDepth sleep at it (section 9).
+        const bool unlike = touches.massRatio > kLikeMassRatio;
+        const bool shallowUnlike = unlike && !touches.bouncy && plan.stackDepth <= kShallowUnlikeDepth;
+        const bool keepScene = (touches.bouncy || unlike) && !shallowUnlike;
         const PlanReason byDepth = sweepSaves ? PlanReason::ShockSweep : PlanReason::LikeStack;
-        if (!keepScene || stack > iterations) reason = byDepth;
-        else if (reason != PlanReason::MassRatio) reason = touches.bouncy ? PlanReason::Bounce : PlanReason::UnlikeStack;
-        iterations = keepScene ? std::max(iterations, stack) : stack;
+        if (shallowUnlike) {
+            const Real byRatio = Real(scene) * std::sqrt(std::max(Real(1), plan.massRatio) / kPlainMassRatio) * perMeasuredFrame;
+            const int ratioCount = std::min(most, static_cast<int>(std::ceil(byRatio - Real(1e-3))));
+            if (reason != PlanReason::MassRatio) reason = ratioCount > stack ? PlanReason::UnlikeStack : byDepth;
+            iterations = std::max(stack, ratioCount);
+        } else {
+            if (!keepScene || stack > iterations) reason = byDepth;
+            else if (reason != PlanReason::MassRatio) reason = touches.bouncy ? PlanReason::Bounce : PlanReason::UnlikeStack;
+            iterations = keepScene ? std::max(iterations, stack) : stack;
+        }
     }
     if (!settings.planIterations) reason = PlanReason::SceneCount;
     plan.reason = reason;
@@ -386,12 +398,22 @@ int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>&
         if (byRatio > wanted) reason = PlanReason::MassRatio;
         wanted = std::max(wanted, byRatio);
     }
-    // Bodies joined to bodies pass loads through their joints as a stack does, in the air as on
-    // the ground (a ragdoll's limbs swing its trunk): the scene's count.
+    // Bodies joined to bodies pass loads through their joints as a stack does. Resting on the
+    // world, through contacts and joints d bodies deep, their joints give as a chain of that depth
+    // does: the sag law above, at least kFewestJointedSubsteps (section 9). In the air nothing
+    // measures how deep their loads pass (a ragdoll's limbs swing its trunk): the scene's count.
     const int depth = supportDepth(world, contactOrder, search, /*withJoints=*/true);
-    if ((bodyToBody || depth > 1) && scene > wanted) {
-        wanted = scene;
-        reason = PlanReason::JointedBodies;
+    if (bodyToBody || depth > 1) {
+        int jointed = scene;
+        if (depth > 1) {
+            const Real depths = static_cast<Real>(depth) / static_cast<Real>(kPlainChainDepth);
+            const Real substeps = Real(scene) * std::sqrt(depths * kPlainChainSag / kHeldChainSag) * perMeasuredFrame;
+            jointed = std::max(kFewestJointedSubsteps, static_cast<int>(std::ceil(substeps - Real(1e-3))));
+        }
+        if (jointed > wanted) {
+            wanted = jointed;
+            reason = PlanReason::JointedBodies;
+        }
     }
     const int iterations = std::max(contacts, std::min(most, wanted));
     if (std::min(most, wanted) > contacts) plan.reason = reason;

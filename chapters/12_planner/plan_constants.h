@@ -45,6 +45,11 @@ constexpr int kFewestStackSubsteps = 2;
 /// Touching masses within this ratio count as like; stacks of unlike masses keep the scene's count
 /// and no sweep (section 5).
 constexpr Real kLikeMassRatio = 2;
+/// A heap of unlike masses no deeper than this takes the square-root law on its load-path ratio
+/// instead of the scene's count: the heaps measured at that depth (the 600-body unlike pile, the
+/// field of 100 ragdolls) sleep as soon at it, the 2,000-body mixed pile (9 to 13 deep) does not
+/// (sections 5 and 9).
+constexpr int kShallowUnlikeDepth = 6;
 
 /// With the shock sweep the walk goes as depth^2.4 / substeps^2; allowing kHeldWalkPerBody of walk
 /// for each body of depth gives n = kShockStackSubsteps (d / 20)^kShockDepthExponent (section 3).
@@ -68,5 +73,9 @@ constexpr Real kShockLaneBlocks = Real(0.65);
 constexpr int kPlainChainDepth = 20;
 constexpr Real kPlainChainSag = Real(0.000884);
 constexpr Real kHeldChainSag = Real(0.0003);
+/// Bodies joined to bodies and resting on the world take the sag law by their depth, but no fewer
+/// than this: a limb pinned under a body a dozen times its mass (a forearm under a ragdoll's
+/// chest) bends off its joint's axis at eight substeps and holds at nine, as at ten (section 9).
+constexpr int kFewestJointedSubsteps = 9;
 
 }  // namespace stepwise

@@ -125,9 +125,9 @@ const char* planReasonText(PlanReason reason) {
         case PlanReason::MassRatio: return "a body rests on one over 100 times lighter: the square-root law";
         case PlanReason::LikeStack: return "a stack of like masses: the depth law";
         case PlanReason::ShockSweep: return "a stack of like masses: the depth law with a shock sweep";
-        case PlanReason::UnlikeStack: return "a stack of unlike masses: the scene's count";
+        case PlanReason::UnlikeStack: return "a stack of unlike masses: the square-root law on its load-path ratio where shallow, the scene's count where deep";
         case PlanReason::HangingChain: return "bodies hang by joints: the sag law";
-        case PlanReason::JointedBodies: return "bodies joined to bodies: the scene's count";
+        case PlanReason::JointedBodies: return "bodies joined to bodies: the sag law by their depth, the scene's count in the air";
     }
     return "unknown";
 }
@@ -153,15 +153,17 @@ std::string describeIterationPlan(const World& world) {
         return "auto: up to " + most + ", for " + why + " (over 100 to 1, or a deep stack, asks for more)" + shock;
     }
     // Chapter 12's iteration_plan.h: the scene's count where something bounces or masses
-    // differ, a count by depth for a stack of like masses, substeps of 1/60 or 1/120 s where
+    // differ in a deep heap, the square-root law in a shallow one, a count by depth for a stack
+    // of like masses, substeps of 1/60 or 1/120 s where
     // bodies rest or slide on the world alone or nothing touches.
     const std::string plain = std::to_string(plan.plainIterations);
     const std::string range =
         plan.fewestIterations < plan.mostIterations ? std::to_string(plan.fewestIterations) + " to " + most : most;
     return "auto: " + range + " by what touches (" + plain +
-           " where bodies bounce or rest on unlike masses, by depth where like masses carry one another, fewer where they "
-           "rest on the world alone or nothing touches), "
-           "masses resting on lighter ones at most " + std::string(ratio) + " to 1 (up to 100 to 1 solve at " + plain + ")" + shock;
+           " where bodies bounce or rest on unlike masses in a deep heap, by the square root of the mass ratio in a "
+           "shallow one, by depth where like masses carry one another, fewer where they rest on the world alone or "
+           "nothing touches), masses resting on lighter ones at most " + std::string(ratio) +
+           " to 1 (up to 100 to 1 solve at " + plain + " or fewer)" + shock;
 }
 
 std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {

@@ -65,9 +65,9 @@ enum class PlanReason {
     MassRatio,       // a body rests on a much lighter one: the square-root law
     LikeStack,       // a stack of like masses: the depth law without the sweep
     ShockSweep,      // a stack of like masses: the depth law with the shock sweep
-    UnlikeStack,     // a stack of unlike masses (within the law's ratio): the scene's count
+    UnlikeStack,     // a stack of unlike masses: the square-root law where shallow, the scene's count where deep
     HangingChain,    // bodies hang from the world by joints: the sag law
-    JointedBodies,   // dynamic bodies joined to one another: the scene's count
+    JointedBodies,   // dynamic bodies joined to one another: the sag law by depth (in the air, the scene's count)
 };
 constexpr int kPlanReasonCount = static_cast<int>(PlanReason::JointedBodies) + 1;
 

@@ -3,6 +3,7 @@
 // count carries the same forces over.
 #include "12_planner/chapter.h"
 #include "12_planner/iteration_plan.h"
+#include "12_planner/plan_constants.h"
 #include "11_wide_solve/lanes.h"
 #include "world/report.h"
 #include "world/scene.h"
@@ -87,6 +88,35 @@ TEST_CASE("solver_iterations auto keeps ten substeps for masses resting on light
     INFO("drift " << standing.drift << " m, sag " << standing.sag << " m");
     CHECK(standing.drift < Real(0.01));
     CHECK(world.step.iterationPlan.mostIterations == 10);
+}
+
+TEST_CASE("solver_iterations auto: a shallow heap of unlike masses takes the square-root law below 100 to 1, a deep one ten", "[ch12][solve]") {
+    // 10 kg on 5 on 2 on 1: the load paths read 10, and 10 sqrt(10 / 100) = 3.2 asks for four
+    // substeps (planner-fits section 5: such a tower stands from three).
+    World shallow = tower(R"("auto")", {1, 2, 5, 10});
+    const Standing standing = runFiveSeconds(shallow);
+    INFO("drift " << standing.drift << " m, sag " << standing.sag << " m");
+    CHECK(standing.drift < Real(0.01));
+    CHECK(standing.sag < Real(0.04));
+    const IterationPlan& plan = shallow.step.iterationPlan;
+    CHECK(plan.iterations == 4);
+    CHECK(plan.reason == PlanReason::UnlikeStack);
+    CHECK(plan.largestRatio == Approx(10));
+
+    // Eight boxes of 1 and 3 kg in turn, deeper than kShallowUnlikeDepth: the scene's count.
+    std::string boxes;
+    for (int i = 0; i < 8; ++i)
+        boxes += R"(, {"name": "box)" + std::to_string(i) + R"(", "shape": {"box": {"half_extents": [0.5, 0.5, 0.5]}}, "position": [0, )" +
+                 std::to_string(i) + R"(.5, 0], "mass": )" + (i % 2 ? "3" : "1") + "}";
+    World deep = loadSceneFromString(R"({"name": "column", "bodies": [
+        {"name": "ground", "type": "static", "shape": {"box": {"half_extents": [50, 0.5, 50]}}, "position": [0, -0.5, 0]})" +
+                                     boxes + "]}");
+    const Standing column = runFiveSeconds(deep);
+    INFO("column: drift " << column.drift << " m, sag " << column.sag << " m");
+    CHECK(column.drift < Real(0.01));
+    CHECK(deep.step.iterationPlan.stackDepth > kShallowUnlikeDepth);
+    CHECK(deep.step.iterationPlan.iterations == 10);
+    CHECK(deep.step.iterationPlan.reason == PlanReason::UnlikeStack);
 }
 
 namespace {

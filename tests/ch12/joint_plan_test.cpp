@@ -67,6 +67,19 @@ TEST_CASE("a field of forty ragdolls settles with every joint holding, and sleep
     JointErrorSummary largest;
     for (int frame = 0; frame < 600 && asleepAt < 0; ++frame) {
         pipeline.step(world);
+        const IterationPlan& plan = world.step.iterationPlan;
+        if (frame == 0) {  // in the air: nothing measures how deep their loads pass
+            CHECK(plan.reason == PlanReason::JointedBodies);
+            CHECK(plan.iterations == 10);
+        }
+        if (frame == 200) {  // landed: the sag law by the depth contacts and joints carry, at least nine
+            const Real law = 10 * std::sqrt(Real(plan.stackDepth) / kPlainChainDepth * kPlainChainSag / kHeldChainSag);
+            INFO("depth " << plan.stackDepth << ", " << plan.iterations << " substeps");
+            CHECK(plan.reason == PlanReason::JointedBodies);
+            CHECK(plan.iterations == std::max(kFewestJointedSubsteps, static_cast<int>(std::ceil(law - Real(1e-3)))));
+            CHECK(plan.stackDepth <= 5);  // a field, not a pile: the law asks for no more than the floor
+            CHECK(plan.iterations == kFewestJointedSubsteps);
+        }
         int asleep = 0;
         for (const Motion& motion : world.motions) asleep += motion.asleep ? 1 : 0;
         if (asleep == world.dynamicBodyCount()) asleepAt = frame;
