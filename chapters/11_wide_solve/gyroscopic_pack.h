@@ -7,6 +7,7 @@
 // rule in body axes, then the angular momentum rescaled to its old length (both invariants of
 // torque-free motion kept).
 
+#include "11_wide_solve/body_pack.h"
 #include "11_wide_solve/solver_data.h"
 
 #include <limits>
@@ -14,17 +15,68 @@
 namespace stepwise {
 inline namespace STEPWISE_ISA {
 
-/// The bodies' local inertias, one a lane: symmetric, six packs.
+/// What the step reads of N bodies: each one's spin, its turn since the piece began, its rotation
+/// when the piece began, and its inertia in body axes (symmetric, six packs).
 template <int N>
-inline PackSym3<N> gatherLocalInertia(const GyroscopicBody* bodies) {
+struct GyroscopicLanes {
+    PackVec3<N> omega;
+    PackQuat<N> delta, start;
     PackSym3<N> inertia;
+};
+
+template <int N>
+inline GyroscopicLanes<N> gatherGyroscopic(const SolverBodyState* states, const GyroscopicBody* bodies) {
+    GyroscopicLanes<N> in;
     for (int i = 0; i < N; ++i) {
+        const SolverBodyState& s = states[bodies[i].slot];
+        const Real* q = bodies[i].startRotation;
         const Real* m = bodies[i].inertia;
-        inertia.xx[i] = m[0], inertia.yy[i] = m[1], inertia.zz[i] = m[2];
-        inertia.xy[i] = m[3], inertia.xz[i] = m[4], inertia.yz[i] = m[5];
+        in.omega.x[i] = s.angularVelocity[0], in.omega.y[i] = s.angularVelocity[1], in.omega.z[i] = s.angularVelocity[2];
+        in.delta.x[i] = s.deltaRotation[0], in.delta.y[i] = s.deltaRotation[1];
+        in.delta.z[i] = s.deltaRotation[2], in.delta.w[i] = s.deltaRotation[3];
+        in.start.x[i] = q[0], in.start.y[i] = q[1], in.start.z[i] = q[2], in.start.w[i] = q[3];
+        in.inertia.xx[i] = m[0], in.inertia.yy[i] = m[1], in.inertia.zz[i] = m[2];
+        in.inertia.xy[i] = m[3], in.inertia.xz[i] = m[4], in.inertia.yz[i] = m[5];
     }
-    return inertia;
+    return in;
 }
+
+template <int N>
+inline void scatterSpin(SolverBodyState* states, const GyroscopicBody* bodies, const PackVec3<N>& omega) {
+    for (int i = 0; i < N; ++i) {
+        SolverBodyState& s = states[bodies[i].slot];
+        s.angularVelocity[0] = omega.x[i], s.angularVelocity[1] = omega.y[i], s.angularVelocity[2] = omega.z[i];
+    }
+}
+
+#if defined(__AVX2__) && !defined(STEPWISE_DOUBLE)
+// Eight bodies as the contacts gather theirs (body_pack_avx2.h): two rows of eight floats from
+// each state and each GyroscopicBody, transposed, where the loop above makes 8 x 17 scalar loads.
+template <>
+inline GyroscopicLanes<8> gatherGyroscopic<8>(const SolverBodyState* states, const GyroscopicBody* bodies) {
+    static_assert(sizeof(GyroscopicBody) == 64 && alignof(GyroscopicBody) == 32, "two aligned 8-float rows");
+    __m256 spin[8], turn[8], pose[8], rest[8];
+    for (int i = 0; i < 8; ++i) {
+        const float* state = reinterpret_cast<const float*>(&states[bodies[i].slot]);
+        spin[i] = _mm256_load_ps(state);              // v.xyz w.xyz dp.xy
+        turn[i] = _mm256_load_ps(state + 8);          // dp.z dq.xyzw (3 unused)
+        pose[i] = _mm256_load_ps(bodies[i].startRotation);  // q.xyzw I.xx yy zz xy
+        rest[i] = _mm256_load_ps(bodies[i].inertia + 4);    // I.xz yz, the slot and padding (unused)
+    }
+    transpose8(spin);
+    transpose8(turn);
+    transpose8(pose);
+    transpose8(rest);
+    GyroscopicLanes<8> in;
+    const auto put = [](Pack<8>& field, __m256 value) { _mm256_store_ps(field.data(), value); };
+    put(in.omega.x, spin[3]), put(in.omega.y, spin[4]), put(in.omega.z, spin[5]);
+    put(in.delta.x, turn[1]), put(in.delta.y, turn[2]), put(in.delta.z, turn[3]), put(in.delta.w, turn[4]);
+    put(in.start.x, pose[0]), put(in.start.y, pose[1]), put(in.start.z, pose[2]), put(in.start.w, pose[3]);
+    put(in.inertia.xx, pose[4]), put(in.inertia.yy, pose[5]), put(in.inertia.zz, pose[6]);
+    put(in.inertia.xy, pose[7]), put(in.inertia.xz, rest[0]), put(in.inertia.yz, rest[1]);
+    return in;
+}
+#endif
 
 template <int N>
 inline Pack<N> absolute(const Pack<N>& a) {
@@ -43,18 +95,10 @@ inline Pack<N> largestEntry(const PackVec3<N>& a, const PackVec3<N>& b, const Pa
 /// velocities are written.
 template <int N>
 inline void gyroscopicStepPack(SolverBodyState* states, const GyroscopicBody* bodies, Real h) {
-    PackVec3<N> omega;
-    PackQuat<N> delta, start;
-    for (int i = 0; i < N; ++i) {
-        const SolverBodyState& s = states[bodies[i].slot];
-        const Real* q = bodies[i].startRotation;
-        omega.x[i] = s.angularVelocity[0], omega.y[i] = s.angularVelocity[1], omega.z[i] = s.angularVelocity[2];
-        delta.x[i] = s.deltaRotation[0], delta.y[i] = s.deltaRotation[1];
-        delta.z[i] = s.deltaRotation[2], delta.w[i] = s.deltaRotation[3];
-        start.x[i] = q[0], start.y[i] = q[1], start.z[i] = q[2], start.w[i] = q[3];
-    }
-    const PackSym3<N> inertia = gatherLocalInertia<N>(bodies);
-    const PackQuat<N> rotation = normalized(multiply(delta, start));
+    const GyroscopicLanes<N> in = gatherGyroscopic<N>(states, bodies);
+    const PackVec3<N>& omega = in.omega;
+    const PackSym3<N>& inertia = in.inertia;
+    const PackQuat<N> rotation = normalized(multiply(in.delta, in.start));
 
     // Body axes, where the inertia is constant: w0 and the momentum I w0.
     const PackVec3<N> omega0 = rotate(conjugate(rotation), omega);
@@ -87,11 +131,7 @@ inline void gyroscopicStepPack(SolverBodyState* states, const GyroscopicBody* bo
     const Pack<N> tiny = Pack<N>::splat(std::numeric_limits<Real>::min());  // no 0/0 in a lane not taken
     const Pack<N> rescale = selectPositive(length1, length0 / max(length1, tiny), Pack<N>::splat(1));
     omega1 = rescale * omega1;
-    const PackVec3<N> turned = select(solvable, rotate(rotation, omega1), omega);
-    for (int i = 0; i < N; ++i) {
-        SolverBodyState& s = states[bodies[i].slot];
-        s.angularVelocity[0] = turned.x[i], s.angularVelocity[1] = turned.y[i], s.angularVelocity[2] = turned.z[i];
-    }
+    scatterSpin<N>(states, bodies, select(solvable, rotate(rotation, omega1), omega));
 }
 // [ch11-gyroscopic-pack]
 

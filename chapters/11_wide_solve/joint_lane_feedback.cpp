@@ -3,6 +3,7 @@
 // instruction set (chapters/CMakeLists.txt); the same arithmetic as the scalar rules, lane by lane.
 #include "11_wide_solve/packed_joint_rows.h"
 
+#include "11_wide_solve/body_pack.h"
 #include "11_wide_solve/lane_vec.h"
 
 #include <algorithm>
@@ -25,17 +26,37 @@ void put(PackVec3<N>& to, const Lanes& take, const Vec<Lanes>& v) {
     to.z = selectPositive(take, v.z, to.z);
 }
 
+#if defined(__AVX2__) && !defined(STEPWISE_DOUBLE) && STEPWISE_WIDE_BYTES == 32
+// Eight states' second rows (dp.z, the turn, three unused floats) loaded whole and transposed, as
+// the sweeps gather their first rows (packed_joint_sweep.cpp).
+PackQuat<N> gatherTurns(const SolverBodyState* states, const int* slots) {
+    __m256 row[8];
+    for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]) + 8);
+    transpose8(row);
+    PackQuat<N> turn;
+    _mm256_store_ps(turn.x.data(), row[1]);
+    _mm256_store_ps(turn.y.data(), row[2]);
+    _mm256_store_ps(turn.z.data(), row[3]);
+    _mm256_store_ps(turn.w.data(), row[4]);
+    return turn;
+}
+#else
+PackQuat<N> gatherTurns(const SolverBodyState* states, const int* slots) {
+    PackQuat<N> turn;
+    for (int lane = 0; lane < N; ++lane) {
+        const Real* q = states[slots[lane]].deltaRotation;
+        turn.x[lane] = q[0], turn.y[lane] = q[1], turn.z[lane] = q[2], turn.w[lane] = q[3];
+    }
+    return turn;
+}
+#endif
+
 }  // namespace
 
 // [ch11-lanes-turned]
 unsigned lanesTurnedAtMost(const JointLaneGroup& group, const SolverBodyState* states, Real most) {
-    PackQuat<N> turnA, turnB;  // each lane's bodies' turns since the piece began (slot 0: none)
-    for (int lane = 0; lane < N; ++lane) {
-        const Real* a = states[group.slotA[lane]].deltaRotation;
-        const Real* b = states[group.slotB[lane]].deltaRotation;
-        turnA.x[lane] = a[0], turnA.y[lane] = a[1], turnA.z[lane] = a[2], turnA.w[lane] = a[3];
-        turnB.x[lane] = b[0], turnB.y[lane] = b[1], turnB.z[lane] = b[2], turnB.w[lane] = b[3];
-    }
+    // Each lane's bodies' turns since the piece began (slot 0: none).
+    const PackQuat<N> turnA = gatherTurns(states, group.slotA), turnB = gatherTurns(states, group.slotB);
     const Lanes limit = Lanes::splat(most * most / 4), one = Lanes::splat(1);
     // The quotient's w is the dot product of two unit quaternions; |v|^2 = 1 - w^2.
     const auto little = [&](const PackQuat<N>& built, const PackQuat<N>& now) {

@@ -39,9 +39,9 @@ void addSlot(const World& world, const Motion& motion, SolverBodies& bodies) {
     if (dynamic && !(inertia - Mat3::Identity() * inertia(0, 0)).isZero(0)) {
         const Quat& start = info.startRotation;
         bodies.gyroscopic.push_back(GyroscopicBody{
-            static_cast<int>(bodies.info.size()),
             {start.x(), start.y(), start.z(), start.w()},
-            {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)}});
+            {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)},
+            static_cast<int>(bodies.info.size())});
     }
     bodies.info.push_back(info);
 }

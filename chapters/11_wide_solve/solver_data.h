@@ -41,10 +41,12 @@ struct SolverBodyInfo {
 /// w x I w can be non-zero; the others skip the step). Plain
 /// Reals: the wide file reads it, and an Eigen member's alignment (a Quat of doubles) depends on
 /// the instruction set a file is built for, so a struct holding one is laid out differently there.
-struct GyroscopicBody {
-    int slot = 0;
+/// The rotation first and the inertia after, 32-byte aligned: in the AVX2 float build eight of them
+/// are two rows of eight floats each, gathered by a transpose (gyroscopic_pack.h).
+struct alignas(32) GyroscopicBody {
     Real startRotation[4] = {0, 0, 0, 1};  // x y z w, as SolverBodyInfo::startRotation
     Real inertia[6] = {0, 0, 0, 0, 0, 0};  // body axes: xx yy zz xy xz yz
+    int slot = 0;
 };
 
 /// The solver's bodies. Slot 0 is every static (and sleeping) body at once: zero velocity, zero
