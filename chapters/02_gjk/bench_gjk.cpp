@@ -139,6 +139,46 @@ std::string withQuartiles(const Spread& spread) {
     return ns(spread.median) + " (" + ns(spread.lower) + "-" + ns(spread.upper) + ")";
 }
 
+/// One query kind's rows: its timing (CSV and figure), its iteration histogram and plot series.
+void addCaseRows(const QueryCase& queryCase, const CaseMeasurement& m, int pairCount, CsvTable& timing,
+                 CsvTable& timingFigure, CsvTable& iterations, PlotSpec& plot) {
+    const Spread intersect = spreadOf(m.intersectNs), distance = spreadOf(m.distanceNs);
+    timing.addRow({queryCase.name, queryCase.support, formatNumber(intersect.median, 3), formatNumber(distance.median, 3),
+                   formatNumber(m.meanIterations, 3), std::to_string(m.maxIterations),
+                   formatNumber(m.meanDistanceIterations, 3), formatNumber(m.intersectingFraction, 3),
+                   formatNumber(intersect.lower, 3), formatNumber(intersect.upper, 3),
+                   formatNumber(distance.lower, 3), formatNumber(distance.upper, 3)});
+    timingFigure.addRow({queryCase.name, queryCase.support, withQuartiles(intersect), withQuartiles(distance),
+                         formatNumber(m.meanIterations, 3), std::to_string(m.maxIterations),
+                         formatNumber(m.meanDistanceIterations, 3), formatNumber(m.intersectingFraction, 3)});
+    PlotSeries series(queryCase.name + " " + queryCase.support);
+    for (const auto& [count, queries] : m.iterationCounts) {
+        const double fraction = double(queries) / double(pairCount);
+        iterations.addRow({queryCase.name, queryCase.support, std::to_string(count), formatNumber(fraction, 4)});
+        series.x.push_back(count);
+        series.y.push_back(fraction);
+    }
+    plot.series.push_back(series);
+}
+
+/// Near-contact pairs at known gaps. Columns per variant: wrong answers, exits other than
+/// intersect/separated, and queries in which the newest support point was dropped (a region the
+/// "skip" shortcut never tests).
+CsvTable classifyTable(int pairsPerGap) {
+    std::vector<std::string> columns = {"gap_m", "pairs", "touching_m"};
+    for (const char* what : {"wrong", "unclean", "dropped"})
+        for (const char* variant : {"ext", "vert", "ext_sum"}) columns.push_back(std::string(what) + "_" + variant);
+    CsvTable classification(columns);
+    for (const GapClassification& row : classifyNearContact(0x5EED02u, nearContactGaps(), pairsPerGap)) {
+        std::vector<std::string> cells = {formatNumber(row.gap, 2), std::to_string(row.pairs),
+                                          formatNumber(row.touchingTolerance, 2)};
+        for (const int* counts : {row.wrong, row.nonCleanExits, row.newestDropped})
+            for (int variant = 0; variant < kVariantCount; ++variant) cells.push_back(std::to_string(counts[variant]));
+        classification.addRow(cells);
+    }
+    return classification;
+}
+
 void measureGjk(BenchRun& run) {
     const int pairCount = run.quick() ? 2000 : 20000;
     const int repetitions = run.quick() ? 15 : 41;
@@ -171,27 +211,8 @@ void measureGjk(BenchRun& run) {
         run.progress().advance();
     }
     if (sink == 42) run.out() << "";  // a use of the results the optimiser cannot prove away
-    for (size_t c = 0; c < cases.size(); ++c) {
-        const QueryCase& queryCase = cases[c];
-        const CaseMeasurement& m = measurements[c];
-        const Spread intersect = spreadOf(m.intersectNs), distance = spreadOf(m.distanceNs);
-        timing.addRow({queryCase.name, queryCase.support, formatNumber(intersect.median, 3), formatNumber(distance.median, 3),
-                       formatNumber(m.meanIterations, 3), std::to_string(m.maxIterations),
-                       formatNumber(m.meanDistanceIterations, 3), formatNumber(m.intersectingFraction, 3),
-                       formatNumber(intersect.lower, 3), formatNumber(intersect.upper, 3),
-                       formatNumber(distance.lower, 3), formatNumber(distance.upper, 3)});
-        timingFigure.addRow({queryCase.name, queryCase.support, withQuartiles(intersect), withQuartiles(distance),
-                             formatNumber(m.meanIterations, 3), std::to_string(m.maxIterations),
-                             formatNumber(m.meanDistanceIterations, 3), formatNumber(m.intersectingFraction, 3)});
-        PlotSeries series(queryCase.name + " " + queryCase.support);
-        for (const auto& [count, queries] : m.iterationCounts) {
-            const double fraction = double(queries) / double(pairCount);
-            iterations.addRow({queryCase.name, queryCase.support, std::to_string(count), formatNumber(fraction, 4)});
-            series.x.push_back(count);
-            series.y.push_back(fraction);
-        }
-        plot.series.push_back(series);
-    }
+    for (size_t c = 0; c < cases.size(); ++c)
+        addCaseRows(cases[c], measurements[c], pairCount, timing, timingFigure, iterations, plot);
     // One distance-query distribution for comparison: it cannot stop at a separating plane.
     PlotSeries distanceSeries("box-box extents, distance");
     for (const auto& [count, queries] : measurements[0].distanceIterationCounts) {
@@ -199,21 +220,8 @@ void measureGjk(BenchRun& run) {
         distanceSeries.y.push_back(double(queries) / double(pairCount));
     }
     plot.series.push_back(distanceSeries);
-
-    // Columns per variant: wrong answers, exits other than intersect/separated, and queries in
-    // which the newest support point was dropped (a region the "skip" shortcut never tests).
     run.progress().stage("near-contact pairs at known gaps", 1);
-    std::vector<std::string> columns = {"gap_m", "pairs", "touching_m"};
-    for (const char* what : {"wrong", "unclean", "dropped"})
-        for (const char* variant : {"ext", "vert", "ext_sum"}) columns.push_back(std::string(what) + "_" + variant);
-    CsvTable classification(columns);
-    for (const GapClassification& row : classifyNearContact(0x5EED02u, nearContactGaps(), pairsPerGap)) {
-        std::vector<std::string> cells = {formatNumber(row.gap, 2), std::to_string(row.pairs),
-                                          formatNumber(row.touchingTolerance, 2)};
-        for (const int* counts : {row.wrong, row.nonCleanExits, row.newestDropped})
-            for (int variant = 0; variant < kVariantCount; ++variant) cells.push_back(std::to_string(counts[variant]));
-        classification.addRow(cells);
-    }
+    const CsvTable classification = classifyTable(pairsPerGap);
     run.progress().endStage();
 
     const std::string precision = realTypeName();

@@ -169,22 +169,17 @@ std::string peerStatus() {
     return status + ". Only Stepwise is measured.\n";
 }
 
-void measureEpa(BenchRun& run) {
-    const int pairCount = run.quick() ? 1000 : 5000;
-    const std::size_t chunkSize = 100;
-    const int rounds = run.quick() ? 60 : 200;  // every pair timed 6 (quick) or 4 times
+/// One line of the plot: a set and support map's rows as one setting varies.
+struct Sweep {
+    std::string label;
+    std::size_t first = 0, end = 0;   // its rows
+};
+
+/// The sweeps: per set and support map, the tolerance, then (extents only) the iteration cap; and
+/// the closed form the sphere-box pairs normally take, for scale.
+void buildSweeps(const PairSet (&sets)[2], std::vector<Row>& rows, std::vector<Sweep>& sweeps) {
     const std::vector<double> tolerances = {1e-1, 3e-2, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
     const std::vector<int> caps = {1, 2, 4, 8, 16, 32, 50, 100};
-    run.progress().stage("drawing pairs with exact depths", 1);
-    const PairSet sets[2] = {makeBoxPairs(pairCount), makeSphereBoxPairs(pairCount)};
-
-    // The sweeps: per set and support map, the tolerance, then (extents only) the iteration cap.
-    struct Sweep {
-        std::string label;
-        std::size_t first = 0, end = 0;   // its rows
-    };
-    std::vector<Row> rows;
-    std::vector<Sweep> sweeps;
     for (const PairSet& set : sets) {
         const std::vector<SupportMode> modes = set.name == "boxes" ? std::vector<SupportMode>{SupportMode::Extents, SupportMode::Vertices}
                                                                    : std::vector<SupportMode>{SupportMode::Extents};
@@ -210,10 +205,50 @@ void measureEpa(BenchRun& run) {
             sweeps.back().end = rows.size();
         }
     }
-    // The closed form the sphere-box pairs normally take, for scale.
     sweeps.push_back({"sphere-box: closed form", rows.size(), rows.size() + 1});
     rows.push_back(makeRow(sets[1], CollideOptions{}, "closed_form"));
     rows.back().support = "closed_form";
+}
+
+/// Each sweep a line: the 95th percentile error against the median time, quartiles as whiskers.
+void plotSweeps(const std::vector<Row>& rows, const std::vector<Sweep>& sweeps, PlotSpec& plot) {
+    for (const Sweep& sweep : sweeps) {
+        PlotSeries series(sweep.label, sweep.end - sweep.first == 1);
+        for (std::size_t i = sweep.first; i < sweep.end; ++i) {
+            const Spread ns = spreadOf(rows[i].nsSamples);
+            series.x.push_back(ns.median);
+            series.xLow.push_back(ns.lower);
+            series.xHigh.push_back(ns.upper);
+            series.y.push_back(rows[i].p95Error);
+        }
+        plot.series.push_back(series);
+    }
+}
+
+CsvTable epaTable(const std::vector<Row>& rows) {
+    CsvTable table({"pairs", "support", "sweep", "relative_tolerance", "max_iterations", "ns_per_query",
+                    "median_rel_error", "p95_rel_error", "max_rel_error", "mean_epa_iterations", "failures",
+                    "ns_q1", "ns_q3"});
+    for (const Row& row : rows) {
+        const Spread ns = spreadOf(row.nsSamples);
+        table.addRow({row.set->name, row.support, row.sweep, formatNumber(double(row.options.epa.relativeTolerance)),
+                      std::to_string(row.options.epa.maxIterations), formatNumber(ns.median),
+                      formatNumber(row.medianError), formatNumber(row.p95Error), formatNumber(row.maxError),
+                      formatNumber(row.meanEpaIterations, 3), std::to_string(row.failures), formatNumber(ns.lower),
+                      formatNumber(ns.upper)});
+    }
+    return table;
+}
+
+void measureEpa(BenchRun& run) {
+    const int pairCount = run.quick() ? 1000 : 5000;
+    const std::size_t chunkSize = 100;
+    const int rounds = run.quick() ? 60 : 200;  // every pair timed 6 (quick) or 4 times
+    run.progress().stage("drawing pairs with exact depths", 1);
+    const PairSet sets[2] = {makeBoxPairs(pairCount), makeSphereBoxPairs(pairCount)};
+    std::vector<Row> rows;
+    std::vector<Sweep> sweeps;
+    buildSweeps(sets, rows, sweeps);
 
     run.progress().stage("depth errors of " + std::to_string(rows.size()) + " configurations", long(rows.size()));
     for (Row& row : rows) {
@@ -235,29 +270,8 @@ void measureEpa(BenchRun& run) {
                    "the time per query (median of " + std::to_string(rounds) + " rounds of " +
                    std::to_string(chunkSize) + " pairs, all settings timed in turns on the same pairs; whiskers "
                    "span the middle half of the rounds). Lower left is better.";
-    for (const Sweep& sweep : sweeps) {
-        PlotSeries series(sweep.label, sweep.end - sweep.first == 1);
-        for (std::size_t i = sweep.first; i < sweep.end; ++i) {
-            const Spread ns = spreadOf(rows[i].nsSamples);
-            series.x.push_back(ns.median);
-            series.xLow.push_back(ns.lower);
-            series.xHigh.push_back(ns.upper);
-            series.y.push_back(rows[i].p95Error);
-        }
-        plot.series.push_back(series);
-    }
-
-    CsvTable table({"pairs", "support", "sweep", "relative_tolerance", "max_iterations", "ns_per_query",
-                    "median_rel_error", "p95_rel_error", "max_rel_error", "mean_epa_iterations", "failures",
-                    "ns_q1", "ns_q3"});
-    for (const Row& row : rows) {
-        const Spread ns = spreadOf(row.nsSamples);
-        table.addRow({row.set->name, row.support, row.sweep, formatNumber(double(row.options.epa.relativeTolerance)),
-                      std::to_string(row.options.epa.maxIterations), formatNumber(ns.median),
-                      formatNumber(row.medianError), formatNumber(row.p95Error), formatNumber(row.maxError),
-                      formatNumber(row.meanEpaIterations, 3), std::to_string(row.failures), formatNumber(ns.lower),
-                      formatNumber(ns.upper)});
-    }
+    plotSweeps(rows, sweeps, plot);
+    const CsvTable table = epaTable(rows);
     run.out() << "EPA bench: " << pairCount << " overlapping pairs per set, Real = " << precision
               << ", default tolerance " << formatNumber(double(kEpaDefaultRelativeTolerance)) << ", cap "
               << EpaSettings{}.maxIterations << "; ns: median of " << rounds << " rounds (ns_q1, ns_q3: quartiles)\n"

@@ -144,9 +144,9 @@ RayHit reference(const Ray& ray, const RayTarget& target) {
     return castRay(ray, target.shape, target.pose);
 }
 
-void measureDebug(BenchRun& bench) {
-    const bool quick = bench.quick();
-    const std::vector<int> rows = quick ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8, 16, 24, 32};
+/// Pyramids of growing size: the step, a frame's record and its memory, a rewind and resume.
+CsvTable measureHistoryCosts(BenchRun& bench, PlotSpec& plot) {
+    const std::vector<int> rows = bench.quick() ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8, 16, 24, 32};
     CsvTable history({"bodies", "step (ms)", "record (ms)", "record / step", "bytes per frame", "120 frames (MB)",
                       "rewind 60 + 60 steps + resume (ms)"});
     PlotSeries stepSeries, recordSeries;
@@ -164,9 +164,16 @@ void measureDebug(BenchRun& bench) {
         recordSeries.y.push_back(cost.recordMs);
         bench.progress().advance();
     }
+    plot.series = {stepSeries, recordSeries};
+    plot.caption = "Pyramids of boxes through chapter 8's pipeline; recording saves a compact snapshot into the "
+                   "120-frame ring (slots reused).";
+    return history;
+}
 
+/// The big scene's frame kept whole against kept as a snapshot.
+CsvTable measureSnapshots(BenchRun& bench) {
     bench.progress().stage("snapshot", 1);
-    const SnapshotCost snap = measureSnapshot(quick);
+    const SnapshotCost snap = measureSnapshot(bench.quick());
     bench.progress().advance();
     CsvTable snapshots({"scene", "kept as", "bodies", "contact points", "bytes per frame", "bytes per body",
                         "bytes per contact point", "120 frames (MB)", "record (ms)", "restore (ms)"});
@@ -176,15 +183,42 @@ void measureDebug(BenchRun& bench) {
     snapshots.addRow({snap.scene, "snapshot", std::to_string(snap.bodies), std::to_string(snap.contactPoints),
                       formatNumber(snap.compactBytes), formatNumber(snap.compactPerBody), formatNumber(snap.compactPerPoint),
                       formatNumber(snap.historyCompactMb, 3), formatNumber(snap.saveMs), formatNumber(snap.restoreMs)});
+    return snapshots;
+}
 
-    const int rayCount = quick ? 2000 : 20000;
-    const std::vector<int> caps{1, 2, 3, 4, 6, 8, 16, 64};
+/// One shape's rays through GJK at each iteration cap: a table row and a plot point per cap.
+void measureRayCaps(const RayTarget& target, const std::vector<Ray>& aimed, const std::vector<RayHit>& exact,
+                    CsvTable& rays, PlotSeries& series) {
+    static const std::vector<int> caps{1, 2, 3, 4, 6, 8, 16, 64};
+    const ConvexProxy proxy{&target.shape, target.pose};
+    for (int cap : caps) {
+        std::vector<RayHit> cast(aimed.size());
+        ThreadStopwatch clock;
+        for (std::size_t i = 0; i < aimed.size(); ++i) cast[i] = rayConvex(aimed[i], proxy, cap);
+        const double ns = clock.seconds() * 1e9 / double(aimed.size());
+        double deviation = 0;
+        long hits = 0, otherwise = 0;
+        for (std::size_t i = 0; i < aimed.size(); ++i) {
+            hits += cast[i].hit ? 1 : 0;
+            // A hit one method calls a miss: a graze along an edge or a rim, or a cast
+            // stopped by its cap before it reached the shape.
+            if (cast[i].hit != exact[i].hit) ++otherwise;
+            else if (cast[i].hit)   // across the surface: along a grazing ray the same error is longer
+                deviation = std::max(deviation, double(std::abs(cast[i].distance - exact[i].distance)) *
+                                                    std::abs(double(exact[i].normal.dot(aimed[i].direction))));
+        }
+        rays.addRow({target.name, "GJK", std::to_string(cap), formatNumber(ns), std::to_string(hits),
+                     std::to_string(otherwise), formatNumber(deviation)});
+        // The plot's error: the deviation, or 1 m while any ray is still called otherwise.
+        series.x.push_back(ns);
+        series.y.push_back(std::max(otherwise > 0 ? 1.0 : deviation, 1e-12));
+    }
+}
+
+/// Random rays at each target: the closed form (or the hull's planes), then GJK's cast.
+CsvTable measureRays(BenchRun& bench, int rayCount, PlotSpec& rayPlot) {
     CsvTable rays({"shape", "method", "iteration cap", "ns per cast", "hits", "called otherwise",
                    "largest deviation across the surface (m)"});
-    PlotSpec rayPlot("GJK ray cast: deviation from the closed form against time per cast (" + std::string(realTypeName()) + ")",
-                     "time per cast (ns, CPU)", "largest deviation across the surface (m)");
-    rayPlot.caption = std::to_string(rayCount) + " rays per shape from 3 m; along each line the iteration cap grows " +
-                      "1 to 64; drawn at 1 m while a ray is still called otherwise, a deviation of 0 at 1e-12 m.";
     bench.progress().stage("ray casts", long(rayTargets().size()));
     for (const RayTarget& target : rayTargets()) {
         Random random(9);
@@ -199,33 +233,25 @@ void measureDebug(BenchRun& bench) {
                      formatNumber(exactNs), std::to_string(exactHits), "-", "0 (reference)"});
         PlotSeries series;
         series.title = target.name;
-        const ConvexProxy proxy{&target.shape, target.pose};
-        for (int cap : caps) {
-            std::vector<RayHit> cast(aimed.size());
-            clock.restart();
-            for (std::size_t i = 0; i < aimed.size(); ++i) cast[i] = rayConvex(aimed[i], proxy, cap);
-            const double ns = clock.seconds() * 1e9 / double(aimed.size());
-            double deviation = 0;
-            long hits = 0, otherwise = 0;
-            for (std::size_t i = 0; i < aimed.size(); ++i) {
-                hits += cast[i].hit ? 1 : 0;
-                // A hit one method calls a miss: a graze along an edge or a rim, or a cast
-                // stopped by its cap before it reached the shape.
-                if (cast[i].hit != exact[i].hit) ++otherwise;
-                else if (cast[i].hit)   // across the surface: along a grazing ray the same error is longer
-                    deviation = std::max(deviation, double(std::abs(cast[i].distance - exact[i].distance)) *
-                                                        std::abs(double(exact[i].normal.dot(aimed[i].direction))));
-            }
-            rays.addRow({target.name, "GJK", std::to_string(cap), formatNumber(ns), std::to_string(hits),
-                         std::to_string(otherwise), formatNumber(deviation)});
-            // The plot's error: the deviation, or 1 m while any ray is still called otherwise.
-            series.x.push_back(ns);
-            series.y.push_back(std::max(otherwise > 0 ? 1.0 : deviation, 1e-12));
-        }
+        measureRayCaps(target, aimed, exact, rays, series);
         rayPlot.series.push_back(series);
         bench.progress().advance();
     }
     bench.progress().endStage();
+    return rays;
+}
+
+void measureDebug(BenchRun& bench) {
+    PlotSpec historyPlot("History: recording a frame beside stepping it (" + std::string(realTypeName()) + ")",
+                         "bodies", "ms per frame (CPU, median)");
+    const CsvTable history = measureHistoryCosts(bench, historyPlot);
+    const CsvTable snapshots = measureSnapshots(bench);
+    const int rayCount = bench.quick() ? 2000 : 20000;
+    PlotSpec rayPlot("GJK ray cast: deviation from the closed form against time per cast (" + std::string(realTypeName()) + ")",
+                     "time per cast (ns, CPU)", "largest deviation across the surface (m)");
+    rayPlot.caption = std::to_string(rayCount) + " rays per shape from 3 m; along each line the iteration cap grows " +
+                      "1 to 64; drawn at 1 m while a ray is still called otherwise, a deviation of 0 at 1e-12 m.";
+    const CsvTable rays = measureRays(bench, rayCount, rayPlot);
 
     std::ostream& out = bench.out();
     out << "history (" << realTypeName() << ", pyramids through chapter 8's pipeline, medians of " << 2 * kHistoryFrames
@@ -238,11 +264,6 @@ void measureDebug(BenchRun& bench) {
     bench.writeCsv(history);
     bench.writeCsv(rays, "-rays");
     bench.writeCsv(snapshots, "-snapshot");
-    PlotSpec historyPlot("History: recording a frame beside stepping it (" + std::string(realTypeName()) + ")",
-                         "bodies", "ms per frame (CPU, median)");
-    historyPlot.series = {stepSeries, recordSeries};
-    historyPlot.caption = "Pyramids of boxes through chapter 8's pipeline; recording saves a compact snapshot into the "
-                          "120-frame ring (slots reused).";
     bench.writePlot(historyPlot);
     bench.writePlot(rayPlot, "-rays");
 }
