@@ -166,33 +166,10 @@ Json parseStrictJson(const std::string& text, const std::string& source) {
     return Json::parse(text);  // well-formed, no duplicate keys, bounded: the checker saw to it
 }
 
-BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors, const std::string& baseDirectory) {
-    cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
-                         "density", "friction", "restitution", "rolling_resistance", "bullet", "integrator", "path"},
-                        &errors);
-    BodyDef def;
-    def.name = "body" + std::to_string(index);
-    errors.attempt([&] {
-        if (auto v = cursor.optional("name")) def.name = v->nonEmptyString();
-    });
-    errors.attempt([&] {
-        if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypeNames);
-    });
-    // A placeholder keeps the body, so joints and forces that name it can still be checked.
-    if (!errors.attempt([&] { def.shape = readShape(cursor.child("shape"), baseDirectory); })) def.shape = Shape::sphere(1);
-    // The ground of chapter 13 never moves: a mesh or a height field is static.
-    if (!canMove(def.shape) && def.type != BodyType::Static)
-        errors.attempt([&] {
-            cursor.child("shape").fail(std::string("a ") + toString(def.shape.type) +
-                                       " is static only: give its body \"type\": \"static\"");
-        });
-    errors.attempt([&] {
-        if (auto v = cursor.optional("position")) def.transform.position = v->vec3Within(kMaxCoordinate);
-    });
-    errors.attempt([&] {
-        if (auto v = cursor.optional("orientation")) def.transform.rotation = v->unitQuaternion();
-    });
-    // What a body's type rules out: motion on a static body, mass on one that is not dynamic.
+namespace {
+
+/// What a body's type rules out: motion on a static body, mass on one that is not dynamic.
+void checkTypeRules(const JsonCursor& cursor, const BodyDef& def, ErrorList& errors) {
     if (def.type == BodyType::Static)
         for (const char* key : {"velocity", "angular_velocity", "integrator"})
             if (cursor.has(key))
@@ -206,6 +183,10 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
                 });
     if (cursor.has("mass") && cursor.has("density"))
         errors.attempt([&] { cursor.child("density").fail("give mass or density, not both"); });
+}
+
+/// The velocities of a body that moves, and the mass or density of a dynamic one.
+void readMotion(const JsonCursor& cursor, BodyDef& def, ErrorList& errors) {
     if (def.type != BodyType::Static) {
         errors.attempt([&] {
             if (auto v = cursor.optional("velocity")) def.linearVelocity = v->vec3Within(kMaxSpeed);
@@ -222,6 +203,10 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
             if (auto v = cursor.optional("density")) def.density = v->positiveBetween(kMinDensity, kMaxDensity);
         });
     }
+}
+
+/// The surface, the bullet flag, the integrator and a kinematic body's path.
+void readMaterialAndPath(const JsonCursor& cursor, BodyDef& def, ErrorList& errors) {
     errors.attempt([&] {
         if (auto v = cursor.optional("friction")) def.material.friction = v->nonNegative();
     });
@@ -249,6 +234,39 @@ BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& erro
             def.path = path;
         }
     });
+}
+
+}  // namespace
+
+BodyDef readBodyDef(const JsonCursor& cursor, std::size_t index, ErrorList& errors, const std::string& baseDirectory) {
+    cursor.expectObject({"name", "type", "shape", "position", "orientation", "velocity", "angular_velocity", "mass",
+                         "density", "friction", "restitution", "rolling_resistance", "bullet", "integrator", "path"},
+                        &errors);
+    BodyDef def;
+    def.name = "body" + std::to_string(index);
+    errors.attempt([&] {
+        if (auto v = cursor.optional("name")) def.name = v->nonEmptyString();
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("type")) def.type = v->choice(kBodyTypeNames);
+    });
+    // A placeholder keeps the body, so joints and forces that name it can still be checked.
+    if (!errors.attempt([&] { def.shape = readShape(cursor.child("shape"), baseDirectory); })) def.shape = Shape::sphere(1);
+    // The ground of chapter 13 never moves: a mesh or a height field is static.
+    if (!canMove(def.shape) && def.type != BodyType::Static)
+        errors.attempt([&] {
+            cursor.child("shape").fail(std::string("a ") + toString(def.shape.type) +
+                                       " is static only: give its body \"type\": \"static\"");
+        });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("position")) def.transform.position = v->vec3Within(kMaxCoordinate);
+    });
+    errors.attempt([&] {
+        if (auto v = cursor.optional("orientation")) def.transform.rotation = v->unitQuaternion();
+    });
+    checkTypeRules(cursor, def, errors);
+    readMotion(cursor, def, errors);
+    readMaterialAndPath(cursor, def, errors);
     return def;
 }
 

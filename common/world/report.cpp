@@ -166,16 +166,9 @@ std::string describeIterationPlan(const World& world) {
            " to 1 (up to 100 to 1 solve at " + plain + " or fewer)" + shock;
 }
 
-std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {
-    Json report;
-    report["format"] = "stepwise-report";
-    report["version"] = 1;
-    report["scene"] = world.name;
-    report["engine"] = engineVersion;
-    report["frames"] = stats.frames;
-    report["dt"] = number(world.settings.dt);
-    report["pipeline"] = stats.pipeline;
+namespace {
 
+Json timingJson(const RunStats& stats) {
     double sum = 0;
     double slowest = 0;
     for (double ms : stats.stepMs) sum += ms, slowest = std::max(slowest, ms);
@@ -185,18 +178,34 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
     timing["step_max"] = milliseconds(slowest);
     timing["stages"] = Json::object();
     for (const auto& [group, ms] : stats.stageMeanMs) timing["stages"][group] = milliseconds(ms);
-    report["timing_ms"] = timing;
+    return timing;
+}
 
-    report["max_penetration"] = statistic(stats.maxPenetration);
-    report["penetration_measured"] = stats.penetrationMeasured;
-    report["max_contacts"] = stats.maxContacts;
-    // Extension: which broadphase found the candidate pairs and why (chapter 5 on).
+/// The fast solve's substep count and why, with a tally per rule (chapter 10 on).
+Json solverIterationsJson(const World& world) {
+    Json out = {{"most", world.step.iterationPlan.mostIterations}, {"plan", describeIterationPlan(world)}};
+    Json counts = Json::array();
+    for (int k = 0; k < kPlanReasonCount; ++k) {
+        const PlanReasonTally& tally = world.step.iterationPlan.reasons[static_cast<std::size_t>(k)];
+        if (tally.frames == 0) continue;
+        counts.push_back({{"why", planReasonText(static_cast<PlanReason>(k))},
+                          {"frames", tally.frames},
+                          {"fewest", tally.fewest},
+                          {"most", tally.most}});
+    }
+    if (!counts.empty()) out["counts"] = counts;
+    return out;
+}
+
+/// The extensions a later chapter's pipeline adds: the broadphase and why (chapter 5 on), what
+/// continuous collision did (chapter 7 on), the substep plan (chapter 10 on), and the bodies
+/// asleep at the end where the pipeline planned sleeping.
+void addExtensions(const World& world, const RunStats& stats, Json& report) {
     if (world.broadphase.used != BroadphaseMode::Auto) {
         report["broadphase"] = {{"used", toString(world.broadphase.used)},
                                 {"reason", world.broadphase.reason},
                                 {"candidate_pairs", world.candidatePairs.size()}};
     }
-    // Extension: whether continuous collision ran and why (chapter 7 on), and what it did.
     const CcdState& ccd = world.step.ccd;
     const auto ccdNote = stats.planNotes.find(stage_group::kCcd);
     if (ccdNote != stats.planNotes.end()) {
@@ -205,32 +214,35 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
                          {"toi_events", ccd.totalToiEvents},
                          {"steps_event_bound_hit", ccd.stepsBoundHit}};
     }
-    // Extension: the fast solve's substep count and why (chapter 10 on).
-    if (world.step.iterationPlan.mostIterations > 0) {
-        report["solver_iterations"] = {{"most", world.step.iterationPlan.mostIterations},
-                                       {"plan", describeIterationPlan(world)}};
-        Json counts = Json::array();
-        for (int k = 0; k < kPlanReasonCount; ++k) {
-            const PlanReasonTally& tally = world.step.iterationPlan.reasons[static_cast<std::size_t>(k)];
-            if (tally.frames == 0) continue;
-            counts.push_back({{"why", planReasonText(static_cast<PlanReason>(k))},
-                              {"frames", tally.frames},
-                              {"fewest", tally.fewest},
-                              {"most", tally.most}});
-        }
-        if (!counts.empty()) report["solver_iterations"]["counts"] = counts;
-    }
-    // Extension: how many dynamic bodies sleep at the end, when the pipeline planned sleeping
-    // (chapter 10 on, whether the scene turns it on or off).
+    if (world.step.iterationPlan.mostIterations > 0) report["solver_iterations"] = solverIterationsJson(world);
     if (stats.planNotes.count(stage_group::kSleep) > 0) {
         int sleeping = 0;
         for (const Motion& motion : world.motions)
             if (motion.asleep && world.bodies[std::size_t(motion.bodyIndex)].type == BodyType::Dynamic) ++sleeping;
         report["sleeping_bodies"] = sleeping;
     }
+}
+
+}  // namespace
+
+std::string reportToJson(const World& world, const RunStats& stats, const std::string& engineVersion) {
+    Json report;
+    report["format"] = "stepwise-report";
+    report["version"] = 1;
+    report["scene"] = world.name;
+    report["engine"] = engineVersion;
+    report["frames"] = stats.frames;
+    report["dt"] = number(world.settings.dt);
+    report["pipeline"] = stats.pipeline;
+    report["timing_ms"] = timingJson(stats);
+    report["max_penetration"] = statistic(stats.maxPenetration);
+    report["penetration_measured"] = stats.penetrationMeasured;
+    report["max_contacts"] = stats.maxContacts;
+    addExtensions(world, stats, report);
     report["energy"] = energyJson(stats.initialEnergy, stats.finalEnergy);
 
     std::vector<std::string> warnings = stats.warnings;
+    const CcdState& ccd = world.step.ccd;
     if (ccd.stepsBoundHit > 0)
         warnings.push_back("ccd: the bound on time-of-impact events was hit in " + std::to_string(ccd.stepsBoundHit) +
                            " step(s); the bodies it stopped wait at their last time of impact");

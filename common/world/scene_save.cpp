@@ -58,88 +58,86 @@ const std::string& bodyName(const World& world, int index) {
     return world.bodies[std::size_t(index)].name;
 }
 
-}  // namespace
+Json settingsToJson(const Settings& s) {
+    return {{"gravity", toJson(s.gravity)},
+            {"dt", tidyNumber(s.dt)},
+            {"substeps", s.substeps},
+            {"solver_iterations", s.planIterations && s.solverIterations == Settings{}.solverIterations
+                                      ? Json("auto") : Json(s.solverIterations)},
+            {"plan_iterations", s.planIterations},
+            {"baumgarte", tidyNumber(s.baumgarte)},
+            {"slop", tidyNumber(s.slop)},
+            {"warm_starting", s.warmStarting},
+            {"broadphase", toString(s.broadphase)},
+            {"ccd", toString(s.ccd)},
+            {"integrator", toString(s.integrator)},
+            {"gyroscopic", toString(s.gyroscopic)},
+            {"solver", toString(s.solver)},
+            {"restitution_threshold", tidyNumber(s.restitutionThreshold)},
+            {"stabilisation", toString(s.stabilisation)},
+            {"contact_points", s.manifoldContacts ? "manifold" : "one_point"},
+            {"sleeping", s.sleeping},
+            {"sleep_speed", tidyNumber(s.sleepSpeed)},
+            {"time_to_sleep", tidyNumber(s.timeToSleep)},
+            {"contact_hertz", tidyNumber(s.contactHertz)},
+            {"contact_damping_ratio", tidyNumber(s.contactDampingRatio)},
+            {"joint_hertz", tidyNumber(s.jointHertz)},
+            {"joint_damping_ratio", tidyNumber(s.jointDampingRatio)},
+            {"max_push_out_speed", tidyNumber(s.maxPushOutSpeed)},
+            {"bounds_margin", tidyNumber(s.boundsMargin)},
+            {"active_edges", s.activeEdges}};
+}
 
-std::string saveSceneToString(const World& world) {
-    const Settings& s = world.settings;
-    Json scene = {{"format", "stepwise-scene"}, {"version", 1}, {"name", world.name}};
-    scene["settings"] = {{"gravity", toJson(s.gravity)},
-                         {"dt", tidyNumber(s.dt)},
-                         {"substeps", s.substeps},
-                         {"solver_iterations", s.planIterations && s.solverIterations == Settings{}.solverIterations
-                                                   ? Json("auto") : Json(s.solverIterations)},
-                         {"plan_iterations", s.planIterations},
-                         {"baumgarte", tidyNumber(s.baumgarte)},
-                         {"slop", tidyNumber(s.slop)},
-                         {"warm_starting", s.warmStarting},
-                         {"broadphase", toString(s.broadphase)},
-                         {"ccd", toString(s.ccd)},
-                         {"integrator", toString(s.integrator)},
-                         {"gyroscopic", toString(s.gyroscopic)},
-                         {"solver", toString(s.solver)},
-                         {"restitution_threshold", tidyNumber(s.restitutionThreshold)},
-                         {"stabilisation", toString(s.stabilisation)},
-                         {"contact_points", s.manifoldContacts ? "manifold" : "one_point"},
-                         {"sleeping", s.sleeping},
-                         {"sleep_speed", tidyNumber(s.sleepSpeed)},
-                         {"time_to_sleep", tidyNumber(s.timeToSleep)},
-                         {"contact_hertz", tidyNumber(s.contactHertz)},
-                         {"contact_damping_ratio", tidyNumber(s.contactDampingRatio)},
-                         {"joint_hertz", tidyNumber(s.jointHertz)},
-                         {"joint_damping_ratio", tidyNumber(s.jointDampingRatio)},
-                         {"max_push_out_speed", tidyNumber(s.maxPushOutSpeed)},
-                         {"bounds_margin", tidyNumber(s.boundsMargin)},
-                         {"active_edges", s.activeEdges}};
-    Json bodies = Json::array();
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        const Body& body = world.bodies[i];
-        Json out = {{"name", body.name}, {"type", toString(body.type)}, {"shape", shapeToJson(body.shape)},
-                    {"position", toJson(body.transform.position)}, {"orientation", toJson(body.transform.rotation)}};
-        if (const Motion* motion = world.motionOf(int(i))) {
-            out["velocity"] = toJson(motion->linearVelocity);
-            out["angular_velocity"] = toJson(motion->angularVelocity);
-            if (body.type == BodyType::Dynamic) out["mass"] = tidyNumber(motion->mass);
-            if (motion->integrator) out["integrator"] = toString(*motion->integrator);
-        }
-        out["friction"] = tidyNumber(body.material.friction);
-        out["restitution"] = tidyNumber(body.material.restitution);
-        if (body.material.rollingResistance > 0) out["rolling_resistance"] = tidyNumber(body.material.rollingResistance);
-        if (body.bullet) out["bullet"] = true;
-        for (const KinematicPath& path : world.kinematicPaths)
-            if (path.body == int(i))
-                out["path"] = {{"amplitude", toJson(path.amplitude)}, {"period", tidyNumber(path.period)},
-                               {"phase", tidyNumber(std::fmod(path.phase + 2 * kPi * Real(world.time) / path.period, 2 * kPi))}};
-        bodies.push_back(out);
+Json bodyToJson(const World& world, std::size_t i) {
+    const Body& body = world.bodies[i];
+    Json out = {{"name", body.name}, {"type", toString(body.type)}, {"shape", shapeToJson(body.shape)},
+                {"position", toJson(body.transform.position)}, {"orientation", toJson(body.transform.rotation)}};
+    if (const Motion* motion = world.motionOf(int(i))) {
+        out["velocity"] = toJson(motion->linearVelocity);
+        out["angular_velocity"] = toJson(motion->angularVelocity);
+        if (body.type == BodyType::Dynamic) out["mass"] = tidyNumber(motion->mass);
+        if (motion->integrator) out["integrator"] = toString(*motion->integrator);
     }
-    scene["bodies"] = bodies;
-    Json joints = Json::array();
-    for (const JointDesc& joint : world.joints) {
-        const auto pair = [](const std::pair<Real, Real>& v) { return Json{tidyNumber(v.first), tidyNumber(v.second)}; };
-        Json out = {{"type", toString(joint.type)}, {"a", bodyName(world, joint.bodyA)}, {"b", bodyName(world, joint.bodyB)},
-                    {"anchor_a", toJson(joint.localAnchorA)}, {"anchor_b", toJson(joint.localAnchorB)}};
-        if (joint.collideConnected) out["collide_connected"] = true;
-        const JointType type = joint.type;
-        if (type == JointType::Distance && joint.length) out["length"] = tidyNumber(*joint.length);
-        if (type == JointType::Distance && joint.springHertz > 0) {
-            out["spring_hertz"] = tidyNumber(joint.springHertz);
-            out["spring_damping_ratio"] = tidyNumber(joint.springDampingRatio);
-        }
-        const bool hasAxis = type == JointType::Hinge || type == JointType::ConeTwist || type == JointType::Slider;
-        if (hasAxis) out["axis"] = toJson(joint.axis);
-        if (hasAxis || type == JointType::Fixed) out["reference_rotation"] = toJson(joint.referenceRotation);
-        if ((type == JointType::Hinge || type == JointType::Slider) && joint.limits) out["limits"] = pair(*joint.limits);
-        if ((type == JointType::Hinge || type == JointType::Slider) && joint.motor)
-            out["motor"] = {{"speed", tidyNumber(joint.motor->speed)},
-                            {type == JointType::Hinge ? "max_torque" : "max_force", tidyNumber(joint.motor->maxForce)}};
-        if (type == JointType::ConeTwist) {
-            out["cone_angle"] = tidyNumber(joint.coneAngle);
-            if (joint.twistLimits) out["twist_limits"] = pair(*joint.twistLimits);
-        }
-        if ((type == JointType::ConeTwist || type == JointType::Hinge) && joint.frictionTorque > 0)
-            out["friction_torque"] = tidyNumber(joint.frictionTorque);
-        joints.push_back(out);
+    out["friction"] = tidyNumber(body.material.friction);
+    out["restitution"] = tidyNumber(body.material.restitution);
+    if (body.material.rollingResistance > 0) out["rolling_resistance"] = tidyNumber(body.material.rollingResistance);
+    if (body.bullet) out["bullet"] = true;
+    for (const KinematicPath& path : world.kinematicPaths)
+        if (path.body == int(i))
+            out["path"] = {{"amplitude", toJson(path.amplitude)}, {"period", tidyNumber(path.period)},
+                           {"phase", tidyNumber(std::fmod(path.phase + 2 * kPi * Real(world.time) / path.period, 2 * kPi))}};
+    return out;
+}
+
+Json jointToJson(const World& world, const JointDesc& joint) {
+    const auto pair = [](const std::pair<Real, Real>& v) { return Json{tidyNumber(v.first), tidyNumber(v.second)}; };
+    Json out = {{"type", toString(joint.type)}, {"a", bodyName(world, joint.bodyA)}, {"b", bodyName(world, joint.bodyB)},
+                {"anchor_a", toJson(joint.localAnchorA)}, {"anchor_b", toJson(joint.localAnchorB)}};
+    if (joint.collideConnected) out["collide_connected"] = true;
+    const JointType type = joint.type;
+    if (type == JointType::Distance && joint.length) out["length"] = tidyNumber(*joint.length);
+    if (type == JointType::Distance && joint.springHertz > 0) {
+        out["spring_hertz"] = tidyNumber(joint.springHertz);
+        out["spring_damping_ratio"] = tidyNumber(joint.springDampingRatio);
     }
-    if (!joints.empty()) scene["joints"] = joints;
+    const bool hasAxis = type == JointType::Hinge || type == JointType::ConeTwist || type == JointType::Slider;
+    if (hasAxis) out["axis"] = toJson(joint.axis);
+    if (hasAxis || type == JointType::Fixed) out["reference_rotation"] = toJson(joint.referenceRotation);
+    if ((type == JointType::Hinge || type == JointType::Slider) && joint.limits) out["limits"] = pair(*joint.limits);
+    if ((type == JointType::Hinge || type == JointType::Slider) && joint.motor)
+        out["motor"] = {{"speed", tidyNumber(joint.motor->speed)},
+                        {type == JointType::Hinge ? "max_torque" : "max_force", tidyNumber(joint.motor->maxForce)}};
+    if (type == JointType::ConeTwist) {
+        out["cone_angle"] = tidyNumber(joint.coneAngle);
+        if (joint.twistLimits) out["twist_limits"] = pair(*joint.twistLimits);
+    }
+    if ((type == JointType::ConeTwist || type == JointType::Hinge) && joint.frictionTorque > 0)
+        out["friction_torque"] = tidyNumber(joint.frictionTorque);
+    return out;
+}
+
+/// The springs, then the dampings.
+Json forcesToJson(const World& world) {
     Json forces = Json::array();
     for (const Spring& spring : world.springs) {
         Json out = {{"type", "spring"}, {"a", bodyName(world, spring.bodyA)}};
@@ -158,6 +156,21 @@ std::string saveSceneToString(const World& world) {
         out["angular"] = tidyNumber(damping.angular);
         forces.push_back(out);
     }
+    return forces;
+}
+
+}  // namespace
+
+std::string saveSceneToString(const World& world) {
+    Json scene = {{"format", "stepwise-scene"}, {"version", 1}, {"name", world.name}};
+    scene["settings"] = settingsToJson(world.settings);
+    Json bodies = Json::array();
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) bodies.push_back(bodyToJson(world, i));
+    scene["bodies"] = bodies;
+    Json joints = Json::array();
+    for (const JointDesc& joint : world.joints) joints.push_back(jointToJson(world, joint));
+    if (!joints.empty()) scene["joints"] = joints;
+    const Json forces = forcesToJson(world);
     if (!forces.empty()) scene["forces"] = forces;
     return scene.dump(2) + "\n";
 }
