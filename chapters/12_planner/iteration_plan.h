@@ -20,6 +20,16 @@ namespace stepwise {
 /// Substeps that keep each no longer than `longest` (at least one).
 int substepsFor(Real dt, Real longest);
 
+/// What the planner reads off a frame's touching contacts: whether any pair bounces, and the
+/// touching dynamic bodies' mass ratio (heaviest over lightest; 1 when no two dynamic bodies touch).
+struct TouchSummary {
+    bool bouncy = false;   // a pair with restitution closes faster than the restitution threshold
+    bool sliding = false;  // a touching body moves along the surface under friction (accelerates)
+    Real massRatio = 1;
+};
+
+TouchSummary summarizeTouches(const World& world, const std::vector<int>& contacts);
+
 /// Working memory of supportDepth, kept from frame to frame so that the search allocates nothing
 /// once it has run: the contact graph in compressed rows, and the breadth-first search.
 struct StackSearch {
