@@ -75,7 +75,9 @@ constexpr Real kPlainChainSag = Real(0.000884);
 constexpr Real kHeldChainSag = Real(0.0003);
 /// Bodies joined to bodies and resting on the world take the sag law by their depth, but no fewer
 /// than this: a limb pinned under a body a dozen times its mass (a forearm under a ragdoll's
-/// chest) bends off its joint's axis at eight substeps and holds at nine, as at ten (section 9).
+/// chest) bends off its hinge at eight substeps and holds at nine, as at ten; and a count that
+/// follows the depth from frame to frame below nine pumps a pinned elbow off its axis (sections 8
+/// and 9).
 constexpr int kFewestJointedSubsteps = 9;
 
 }  // namespace stepwise
