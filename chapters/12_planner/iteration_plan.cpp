@@ -195,9 +195,24 @@ Real shockSweepSubsteps(const World& world, const std::vector<int>& contactOrder
     return kShockBlockSubsteps * shockBlocks / frameBlocks;
 }
 
-int substepsFor(Real dt, Real longest) {
-    // A hair under the quotient: 1/60 over 1/600 is 10.000001 in float, and means ten.
-    return std::max(1, static_cast<int>(std::ceil(dt / longest - Real(1e-3))));
+int countOf(Real substeps) {
+    // A hair under the value: 1/60 over 1/600 is 10.000001 in float, and means ten.
+    return static_cast<int>(std::ceil(substeps - Real(1e-3)));
+}
+
+int substepsFor(Real dt, Real longest) { return std::max(1, countOf(dt / longest)); }
+
+int mostSubsteps(int scene, Real perMeasuredFrame) {
+    return countOf(Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame));
+}
+
+int squareRootLawCount(int scene, Real ratio, Real perMeasuredFrame) {
+    return countOf(Real(scene) * std::sqrt(ratio / kPlainMassRatio) * perMeasuredFrame);
+}
+
+int sagLawCount(int scene, int depth, Real perMeasuredFrame) {
+    const Real depths = static_cast<Real>(depth) / static_cast<Real>(kPlainChainDepth);
+    return countOf(Real(scene) * std::sqrt(depths * kPlainChainSag / kHeldChainSag) * perMeasuredFrame);
 }
 
 // [ch12-iteration-plan]
@@ -217,8 +232,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     PlanReason reason = touches.bouncy ? PlanReason::Bounce : PlanReason::SceneCount;
     // The laws below hold a substep's length (kMeasuredFrame), and so does their ceiling.
     const Real perMeasuredFrame = dt / kMeasuredFrame;
-    const Real mostAtThisDt = Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame);
-    const int most = static_cast<int>(std::ceil(mostAtThisDt - Real(1e-3)));
+    const int most = mostSubsteps(scene, perMeasuredFrame);
     if (settings.planIterations && contactOrder.empty()) {
         iterations = std::min(scene, substepsFor(dt, kFreeFlightSubstep));
         reason = PlanReason::NothingTouches;
@@ -228,8 +242,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
     }
     if (settings.planIterations && plan.massRatio > kPlainMassRatio) {
         // The square-root law (plan_constants.h, kPlainMassRatio).
-        const Real wanted = Real(scene) * std::sqrt(plan.massRatio / kPlainMassRatio) * perMeasuredFrame;
-        const int byRatio = std::min(most, static_cast<int>(std::ceil(wanted - Real(1e-3))));
+        const int byRatio = std::min(most, squareRootLawCount(scene, plan.massRatio, perMeasuredFrame));
         if (byRatio > iterations) reason = PlanReason::MassRatio;
         iterations = std::max(iterations, byRatio);
     }
@@ -242,7 +255,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // frame where the walk law with it, plus the sweep's own cost, asks for fewer substeps
         // than the law without it (a pyramid from about 20 rows; never a column of single boxes).
         const auto count = [](Real substeps) {
-            return std::max(kFewestStackSubsteps, static_cast<int>(std::ceil(substeps - Real(1e-3))));
+            return std::max(kFewestStackSubsteps, countOf(substeps));
         };
         const Real plainLaw = Real(scene) * rows * rows * perMeasuredFrame;  // walks kPlainStackDrift
         const int plain = count(plainLaw * std::sqrt(kPlainStackDrift / kHeldStackDrift));
@@ -278,8 +291,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         const bool keepScene = (touches.bouncy || unlike) && !shallowUnlike;
         const PlanReason byDepth = sweepSaves ? PlanReason::ShockSweep : PlanReason::LikeStack;
         if (shallowUnlike) {
-            const Real byRatio = Real(scene) * std::sqrt(std::max(Real(1), plan.massRatio) / kPlainMassRatio) * perMeasuredFrame;
-            const int ratioCount = std::min(most, static_cast<int>(std::ceil(byRatio - Real(1e-3))));
+            const int ratioCount = std::min(most, squareRootLawCount(scene, std::max(Real(1), plan.massRatio), perMeasuredFrame));
             if (reason != PlanReason::MassRatio) reason = ratioCount > stack ? PlanReason::UnlikeStack : byDepth;
             iterations = std::max(stack, ratioCount);
         } else {

@@ -17,8 +17,23 @@
 
 namespace stepwise {
 
+/// A law's real-valued count as a whole one: rounded up, but a hair over a whole number is that
+/// number (float rounding makes 10.000001 of ten).
+int countOf(Real substeps);
+
 /// Substeps that keep each no longer than `longest` (at least one).
 int substepsFor(Real dt, Real longest);
+
+/// The most substeps the planner takes: kMostIterationFactor times the scene's count, at least
+/// at the measured frame's substep length.
+int mostSubsteps(int scene, Real perMeasuredFrame);
+
+/// The square-root law (kPlainMassRatio): scene sqrt(ratio / kPlainMassRatio) substeps.
+int squareRootLawCount(int scene, Real ratio, Real perMeasuredFrame);
+
+/// The sag law (kPlainChainSag, kHeldChainSag): the count that holds a chain `depth` links deep
+/// to kHeldChainSag.
+int sagLawCount(int scene, int depth, Real perMeasuredFrame);
 
 /// What the planner reads off a frame's touching contacts: whether any pair bounces, and the
 /// touching dynamic bodies' mass ratio (heaviest over lightest; 1 when no two dynamic bodies touch).

@@ -62,7 +62,7 @@ int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>&
     if (!linked || !settings.planIterations) return contacts;
     const int scene = std::max(1, settings.solverIterations);
     const Real perMeasuredFrame = dt / kMeasuredFrame;
-    const int most = static_cast<int>(std::ceil(Real(scene * kMostIterationFactor) * std::max(Real(1), perMeasuredFrame) - Real(1e-3)));
+    const int most = mostSubsteps(scene, perMeasuredFrame);
     // What hangs from the world by joints sags by its springs' give, which goes as the substep's
     // square (the spring is at most a quarter of the substep rate) and as the chain's depth: the
     // count that holds a chain of that depth to kHeldChainSag.
@@ -70,11 +70,7 @@ int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>&
     PlanReason reason = PlanReason::HangingChain;
     static const std::vector<int> noContacts;
     const int hanging = supportDepth(world, noContacts, search, /*withJoints=*/true);
-    if (hanging > 0) {
-        const Real depths = static_cast<Real>(hanging) / static_cast<Real>(kPlainChainDepth);
-        const Real substeps = Real(scene) * std::sqrt(depths * kPlainChainSag / kHeldChainSag) * perMeasuredFrame;
-        wanted = static_cast<int>(std::ceil(substeps - Real(1e-3)));
-    }
+    if (hanging > 0) wanted = sagLawCount(scene, hanging, perMeasuredFrame);
     Real ratio = 1;
     bool bodyToBody = false;  // a joint between two dynamic bodies
     for (const JointDesc& joint : world.joints) {
@@ -88,7 +84,7 @@ int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>&
         ratio = std::max(ratio, std::max(a->mass, b->mass) / std::min(a->mass, b->mass));
     }
     if (ratio > kPlainMassRatio) {
-        const int byRatio = static_cast<int>(std::ceil(Real(scene) * std::sqrt(ratio / kPlainMassRatio) * perMeasuredFrame - Real(1e-3)));
+        const int byRatio = squareRootLawCount(scene, ratio, perMeasuredFrame);
         if (byRatio > wanted) reason = PlanReason::MassRatio;
         wanted = std::max(wanted, byRatio);
     }
@@ -98,12 +94,7 @@ int plannedLinkedIterations(const World& world, Real dt, const std::vector<int>&
     // measures how deep their loads pass (a ragdoll's limbs swing its trunk): the scene's count.
     const int depth = supportDepth(world, contactOrder, search, /*withJoints=*/true);
     if (bodyToBody || depth > 1) {
-        int jointed = scene;
-        if (depth > 1) {
-            const Real depths = static_cast<Real>(depth) / static_cast<Real>(kPlainChainDepth);
-            const Real substeps = Real(scene) * std::sqrt(depths * kPlainChainSag / kHeldChainSag) * perMeasuredFrame;
-            jointed = std::max(kFewestJointedSubsteps, static_cast<int>(std::ceil(substeps - Real(1e-3))));
-        }
+        const int jointed = depth > 1 ? std::max(kFewestJointedSubsteps, sagLawCount(scene, depth, perMeasuredFrame)) : scene;
         if (jointed > wanted) {
             wanted = jointed;
             reason = PlanReason::JointedBodies;
