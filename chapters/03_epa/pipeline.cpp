@@ -122,7 +122,9 @@ ContactSearchStart beginContactSearch(World& world, const std::vector<BodyPair>&
     if (!std::is_sorted(start.pairs.begin(), start.pairs.end())) std::sort(start.pairs.begin(), start.pairs.end());
     start.pairs.erase(std::unique(start.pairs.begin(), start.pairs.end()), start.pairs.end());
     start.previous.swap(world.contacts);
-    world.contacts.reserve(start.previous.size());  // about as many again: one allocation, not a doubling series
+    // At most a record a pair (and a missed record kept a few searches more): one allocation,
+    // not a doubling series of copies.
+    world.contacts.reserve(std::max(start.previous.size(), start.pairs.size()));
     world.step.contactsFoundAtSubstep = world.step.substep;
     world.pairs.clear();
     return start;
