@@ -81,6 +81,66 @@ void growToTetrahedron(const RelativePair& pair, Simplex& simplex, Real scale) {
     }
 }
 
+/// The walk towards the origin, from startWalk's first point until one of the exits; the
+/// iterations it takes are added to `iterations`.
+GjkExit walkTowardsOrigin(const RelativePair& pair, const GjkTolerances& tolerances, int maxIterations,
+                          FacePoint facePoint, Walk& walk, int& iterations) {
+    const Real touchingSquared = tolerances.touching * tolerances.touching;
+    // [ch02-gjk-loop]
+    if (walk.v.dot(walk.firstDirection) < 0) return GjkExit::Separated;  // the first support plane separates
+    if (walk.v.squaredNorm() <= touchingSquared) return GjkExit::Intersect;  // that point is the origin
+    while (iterations < maxIterations) {
+        // Search towards the origin from the closest point v found so far.
+        const Vec3 direction = -walk.v;
+        const SupportPoint point = minkowskiSupport(pair.a, pair.b, direction);
+        ++iterations;
+
+        // The support plane {x : x.d = w.d} bounds A - B. If the origin (x.d = 0) lies beyond
+        // it, that plane separates the origin from A - B: no overlap, done.
+        if (point.w.dot(direction) < 0) return GjkExit::Separated;
+        // A support point the simplex already holds cannot bring it closer. In exact
+        // arithmetic that only happens when v is already the origin.
+        if (alreadyInSimplex(walk.simplex, point.w, tolerances.touching)) return GjkExit::RepeatedSupport;
+        const Real previousSquared = walk.v.squaredNorm();
+        addAndReduce(walk, point, tolerances.scale, facePoint);
+        const Real distanceSquared = walk.v.squaredNorm();
+        if (!std::isfinite(distanceSquared)) return GjkExit::Degenerate;
+        // The simplex holds the origin (a tetrahedron around it, or a face through it).
+        if (walk.inside || distanceSquared <= touchingSquared) return GjkExit::Intersect;
+        // Exact GJK shrinks |v| strictly every step; when rounding stops that, stop too.
+        if (distanceSquared >= previousSquared) return walk.degenerate ? GjkExit::Degenerate : GjkExit::NoProgress;
+    }
+    return GjkExit::IterationCap;
+    // [ch02-gjk-loop]
+}
+
+/// Whether the pair overlaps, given how the walk ended.
+bool overlapsAfterWalk(const ConvexProxy& a, const ConvexProxy& b, const RelativePair& pair,
+                       const GjkTolerances& tolerances, int maxIterations, GjkExit exit, const Walk& walk,
+                       int& iterations) {
+    // [ch02-gjk-verdict]
+    // A clean exit answers directly. The others (rounding floors, the cap) prove nothing by
+    // themselves: "separated" needs a plane. At the closest point the support plane towards the
+    // origin passes through it, so a pair that is apart shows its gap there; a walk that stalled
+    // short of the closest point (a sliver of A - B, a needle against a small box) finds no such
+    // plane, and the origin may well be inside. Without a plane leaving the origin outside by
+    // more than the touching tolerance the pair counts as touching, and EPA, which grows the
+    // simplex into a tetrahedron around the origin, says how deep.
+    if (exit == GjkExit::Intersect || exit == GjkExit::Separated) return exit == GjkExit::Intersect;
+    if (walk.v.squaredNorm() <= tolerances.touching * tolerances.touching) return true;
+    const Vec3 towardsOrigin = -walk.v.normalized();
+    const SupportPoint point = minkowskiSupport(pair.a, pair.b, towardsOrigin);
+    ++iterations;
+    if (point.w.dot(towardsOrigin) < -tolerances.touching) return false;
+    // A float walk stalled on a sliver of A - B (a 1.2 mm box at a 56 m hull's face) points its
+    // one plane centimetres off the gap; the distance walk, which walks again with the sums that
+    // cancel in double where it stalls too, finds the gap if there is one.
+    const GjkDistanceResult distance = gjkDistance(a, b, maxIterations);
+    iterations += distance.iterations;
+    return !distance.separated;
+    // [ch02-gjk-verdict]
+}
+
 }  // namespace
 
 GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterations, FacePoint facePoint) {
@@ -91,83 +151,10 @@ GjkResult gjkIntersect(const ConvexProxy& a, const ConvexProxy& b, int maxIterat
     }
     const RelativePair pair = seenFromA(a, b);
     const GjkTolerances tolerances = gjkTolerances(a, b);
-    const Real touchingSquared = tolerances.touching * tolerances.touching;
-
     Walk walk = startWalk(pair, tolerances);
     result.iterations = 1;
-    GjkExit exit = GjkExit::IterationCap;
-    // [ch02-gjk-loop]
-    if (walk.v.dot(walk.firstDirection) < 0) {
-        exit = GjkExit::Separated;  // the very first support plane already separates
-    } else if (walk.v.squaredNorm() <= touchingSquared) {
-        exit = GjkExit::Intersect;  // that point is the origin: touching at a vertex
-    }
-    while (exit == GjkExit::IterationCap && result.iterations < maxIterations) {
-        // Search towards the origin from the closest point v found so far.
-        const Vec3 direction = -walk.v;
-        const SupportPoint point = minkowskiSupport(pair.a, pair.b, direction);
-        ++result.iterations;
-
-        // The support plane {x : x.d = w.d} bounds A - B. If the origin (x.d = 0) lies beyond
-        // it, that plane separates the origin from A - B: no overlap, done.
-        if (point.w.dot(direction) < 0) {
-            exit = GjkExit::Separated;
-            break;
-        }
-        // A support point the simplex already holds cannot bring it closer. In exact
-        // arithmetic that only happens when v is already the origin.
-        if (alreadyInSimplex(walk.simplex, point.w, tolerances.touching)) {
-            exit = GjkExit::RepeatedSupport;
-            break;
-        }
-        const Real previousSquared = walk.v.squaredNorm();
-        addAndReduce(walk, point, tolerances.scale, facePoint);
-        const Real distanceSquared = walk.v.squaredNorm();
-        if (!std::isfinite(distanceSquared)) {
-            exit = GjkExit::Degenerate;
-            break;
-        }
-        // The simplex holds the origin (a tetrahedron around it, or a face through it).
-        if (walk.inside || distanceSquared <= touchingSquared) {
-            exit = GjkExit::Intersect;
-            break;
-        }
-        // Exact GJK shrinks |v| strictly every step; when rounding stops that, stop too.
-        if (distanceSquared >= previousSquared) {
-            exit = walk.degenerate ? GjkExit::Degenerate : GjkExit::NoProgress;
-            break;
-        }
-    }
-    // [ch02-gjk-loop]
-
-    // [ch02-gjk-verdict]
-    // A clean exit answers directly. The others (rounding floors, the cap) prove nothing by
-    // themselves: "separated" needs a plane. At the closest point the support plane towards the
-    // origin passes through it, so a pair that is apart shows its gap there; a walk that stalled
-    // short of the closest point (a sliver of A - B, a needle against a small box) finds no such
-    // plane, and the origin may well be inside. Without a plane leaving the origin outside by
-    // more than the touching tolerance the pair counts as touching, and EPA, which grows the
-    // simplex into a tetrahedron around the origin, says how deep.
-    if (exit == GjkExit::Intersect || exit == GjkExit::Separated) {
-        result.intersect = exit == GjkExit::Intersect;
-    } else if (walk.v.squaredNorm() <= touchingSquared) {
-        result.intersect = true;
-    } else {
-        const Vec3 towardsOrigin = -walk.v.normalized();
-        const SupportPoint point = minkowskiSupport(pair.a, pair.b, towardsOrigin);
-        ++result.iterations;
-        result.intersect = !(point.w.dot(towardsOrigin) < -tolerances.touching);
-        // A float walk stalled on a sliver of A - B (a 1.2 mm box at a 56 m hull's face) points
-        // its one plane centimetres off the gap; the distance walk, which walks again with the
-        // sums that cancel in double where it stalls too, finds the gap if there is one.
-        if (result.intersect) {
-            const GjkDistanceResult distance = gjkDistance(a, b, maxIterations);
-            result.iterations += distance.iterations;
-            result.intersect = !distance.separated;
-        }
-    }
-    // [ch02-gjk-verdict]
-    result.exit = exit;
+    result.exit = walkTowardsOrigin(pair, tolerances, maxIterations, facePoint, walk, result.iterations);
+    result.intersect = overlapsAfterWalk(a, b, pair, tolerances, maxIterations, result.exit, walk, result.iterations);
     result.newestDropped = walk.newestDropped;
     if (result.intersect) growToTetrahedron(pair, walk.simplex, tolerances.scale);
     result.simplex = walk.simplex;

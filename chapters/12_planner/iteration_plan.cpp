@@ -284,14 +284,16 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         // Unlike masses, and a frame in which something arrives bouncing, keep at least the
         // scene's count (and the mass-ratio rule above); a deep stack more, whatever bounces on it.
         // A shallow heap of unlike masses takes the square-root law on the ratio its loads pass
-        // through (load_paths.h), below kPlainMassRatio too: the towers of section 5 stand at it,
-        // and heaps no deeper than kShallowUnlikeDepth sleep at it (section 9).
+        // through (load_paths.h), below kPlainMassRatio too, and at least kFewestUnlikeSubsteps:
+        // the towers of sections 1 and 5 stand at it, and heaps no deeper than kShallowUnlikeDepth
+        // sleep at it (section 9).
         const bool unlike = touches.massRatio > kLikeMassRatio;
         const bool shallowUnlike = unlike && !touches.bouncy && plan.stackDepth <= kShallowUnlikeDepth;
         const bool keepScene = (touches.bouncy || unlike) && !shallowUnlike;
         const PlanReason byDepth = sweepSaves ? PlanReason::ShockSweep : PlanReason::LikeStack;
         if (shallowUnlike) {
-            const int ratioCount = std::min(most, squareRootLawCount(scene, std::max(Real(1), plan.massRatio), perMeasuredFrame));
+            const int ratioCount = std::min(
+                most, std::max(kFewestUnlikeSubsteps, squareRootLawCount(scene, std::max(Real(1), plan.massRatio), perMeasuredFrame)));
             if (reason != PlanReason::MassRatio) reason = ratioCount > stack ? PlanReason::UnlikeStack : byDepth;
             iterations = std::max(stack, ratioCount);
         } else {

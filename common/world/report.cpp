@@ -122,7 +122,7 @@ const char* planReasonText(PlanReason reason) {
         case PlanReason::RestsOnWorld: return "bodies rest on the world alone";
         case PlanReason::SlidesOnWorld: return "bodies slide on the world alone";
         case PlanReason::Bounce: return "something arrives bouncing: the scene's count";
-        case PlanReason::MassRatio: return "a body rests on one over 100 times lighter: the square-root law";
+        case PlanReason::MassRatio: return "a body rests on one over 200 times lighter: the square-root law";
         case PlanReason::LikeStack: return "a stack of like masses: the depth law";
         case PlanReason::ShockSweep: return "a stack of like masses: the depth law with a shock sweep";
         case PlanReason::UnlikeStack: return "a stack of unlike masses: the square-root law on its load-path ratio where shallow, the scene's count where deep";
@@ -144,13 +144,13 @@ std::string describeIterationPlan(const World& world) {
                                                          " deep) ended " + std::to_string(plan.shockFrames) + " frame(s)"
                                                    : "";
     if (plan.mostIterations > std::max(1, plan.plainIterations)) {
-        // What asked for more: a body resting on one over 100 times lighter (through the bodies
+        // What asked for more: a body resting on one over 200 times lighter (through the bodies
         // between: chapter 12's load paths), a stack over 20 bodies deep, or both.
         const bool deep = plan.deepestStack > 20;
-        const bool heavy = plan.largestRatio > 100 || !deep;
+        const bool heavy = plan.largestRatio > 200 || !deep;
         std::string why = heavy ? "masses resting on lighter ones up to " + std::string(ratio) + " to 1" : "";
         if (deep) why += std::string(heavy ? " and " : "") + "a stack " + std::to_string(plan.deepestStack) + " bodies deep";
-        return "auto: up to " + most + ", for " + why + " (over 100 to 1, or a deep stack, asks for more)" + shock;
+        return "auto: up to " + most + ", for " + why + " (over 200 to 1, or a deep stack, asks for more)" + shock;
     }
     // Chapter 12's iteration_plan.h: the scene's count where something bounces or masses
     // differ in a deep heap, the square-root law in a shallow one, a count by depth for a stack
@@ -163,7 +163,7 @@ std::string describeIterationPlan(const World& world) {
            " where bodies bounce or rest on unlike masses in a deep heap, by the square root of the mass ratio in a "
            "shallow one, by depth where like masses carry one another, fewer where they rest on the world alone or "
            "nothing touches), masses resting on lighter ones at most " + std::string(ratio) +
-           " to 1 (up to 100 to 1 solve at " + plain + " or fewer)" + shock;
+           " to 1 (up to 200 to 1 solve at " + plain + " or fewer)" + shock;
 }
 
 namespace {
