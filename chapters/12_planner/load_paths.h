@@ -3,8 +3,8 @@
 // a heavier one rests on it: each sweep moves a load across a contact in proportion to the masses
 // on its two sides, and a 1 kg box under 1000 kg passes the load on a thousandth at a time. Two
 // unlike bodies side by side in a pile, or a small one lying on a large one, carry nothing of the
-// kind: counting them buys substeps that change nothing (bench speed's unlike pile: 13 substeps
-// and 6.6 mm deepest contact by every touching pair's ratio, 10 and 5.9 mm by load paths).
+// kind: counting them buys substeps that change nothing (bench speed's unlike pile: its touching
+// pairs read about 150 to 1, its load paths 47 to 65 once it has landed; planner-fits section 9).
 
 #include "world/world.h"
 
