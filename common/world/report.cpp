@@ -125,7 +125,7 @@ const char* planReasonText(PlanReason reason) {
         case PlanReason::MassRatio: return "a body rests on one over 200 times lighter: the square-root law";
         case PlanReason::LikeStack: return "a stack of like masses: the depth law";
         case PlanReason::ShockSweep: return "a stack of like masses: the depth law with a shock sweep";
-        case PlanReason::UnlikeStack: return "a stack of unlike masses: the square-root law on its load-path ratio where shallow, the scene's count where deep";
+        case PlanReason::UnlikeStack: return "a stack of unlike masses: the square-root law on its load-path ratio where shallow (at least 3), the scene's count where deep";
         case PlanReason::HangingChain: return "bodies hang by joints: the sag law";
         case PlanReason::JointedBodies: return "bodies joined to bodies: the sag law by their depth, the scene's count in the air";
     }
