@@ -315,6 +315,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
 // [ch12-iteration-plan]
 
 void tallyPlanReason(IterationPlan& plan) {
+    plan.thresholds = {kPlainMassRatio, kPlainStackDepth, kFewestUnlikeSubsteps};
     PlanReasonTally& tally = plan.reasons[static_cast<std::size_t>(plan.reason)];
     tally.fewest = tally.frames > 0 ? std::min(tally.fewest, plan.iterations) : plan.iterations;
     tally.most = std::max(tally.most, plan.iterations);

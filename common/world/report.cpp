@@ -115,17 +115,30 @@ double percentile(std::vector<double> values, double p) {
     return values[index];
 }
 
-const char* planReasonText(PlanReason reason) {
+namespace {
+
+std::string numberText(Real value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", double(value));
+    return text;
+}
+
+}  // namespace
+
+std::string planReasonText(PlanReason reason, const PlanThresholds& thresholds) {
+    const std::string ratio = numberText(thresholds.plainMassRatio);
     switch (reason) {
         case PlanReason::SceneCount: return "the scene's solver_iterations";
         case PlanReason::NothingTouches: return "nothing touches: substeps of free flight";
         case PlanReason::RestsOnWorld: return "bodies rest on the world alone";
         case PlanReason::SlidesOnWorld: return "bodies slide on the world alone";
         case PlanReason::Bounce: return "something arrives bouncing: the scene's count";
-        case PlanReason::MassRatio: return "a body rests on one over 200 times lighter: the square-root law";
+        case PlanReason::MassRatio: return "a body rests on one over " + ratio + " times lighter: the square-root law";
         case PlanReason::LikeStack: return "a stack of like masses: the depth law";
         case PlanReason::ShockSweep: return "a stack of like masses: the depth law with a shock sweep";
-        case PlanReason::UnlikeStack: return "a stack of unlike masses: the square-root law on its load-path ratio where shallow (at least 3), the scene's count where deep";
+        case PlanReason::UnlikeStack:
+            return "a stack of unlike masses: the square-root law on its load-path ratio where shallow (at least " +
+                   std::to_string(thresholds.fewestUnlikeSubsteps) + "), the scene's count where deep";
         case PlanReason::HangingChain: return "bodies hang by joints: the sag law";
         case PlanReason::JointedBodies: return "bodies joined to bodies: the sag law by their depth, the scene's count in the air";
     }
@@ -136,21 +149,21 @@ std::string describeIterationPlan(const World& world) {
     const IterationPlan& plan = world.step.iterationPlan;
     if (plan.mostIterations <= 0) return "";
     const std::string most = std::to_string(plan.mostIterations);
-    char ratio[32];
-    std::snprintf(ratio, sizeof ratio, "%.4g", double(plan.largestRatio));
+    const std::string ratio = numberText(plan.largestRatio);
+    const std::string plainRatio = numberText(plan.thresholds.plainMassRatio);
     if (!world.settings.planIterations) return most + ": the scene's solver_iterations";
     // Chapter 10's shock sweep (a stack of like masses with nothing bouncing into it).
     const std::string shock = plan.shockFrames > 0 ? "; a shock sweep up the stack (" + std::to_string(plan.deepestStack) +
                                                          " deep) ended " + std::to_string(plan.shockFrames) + " frame(s)"
                                                    : "";
     if (plan.mostIterations > std::max(1, plan.plainIterations)) {
-        // What asked for more: a body resting on one over 200 times lighter (through the bodies
-        // between: chapter 12's load paths), a stack over 20 bodies deep, or both.
-        const bool deep = plan.deepestStack > 20;
-        const bool heavy = plan.largestRatio > 200 || !deep;
-        std::string why = heavy ? "masses resting on lighter ones up to " + std::string(ratio) + " to 1" : "";
+        // What asked for more: a body resting on a much lighter one (through the bodies between:
+        // chapter 12's load paths), a deep stack, or both.
+        const bool deep = plan.deepestStack > plan.thresholds.plainStackDepth;
+        const bool heavy = plan.largestRatio > plan.thresholds.plainMassRatio || !deep;
+        std::string why = heavy ? "masses resting on lighter ones up to " + ratio + " to 1" : "";
         if (deep) why += std::string(heavy ? " and " : "") + "a stack " + std::to_string(plan.deepestStack) + " bodies deep";
-        return "auto: up to " + most + ", for " + why + " (over 200 to 1, or a deep stack, asks for more)" + shock;
+        return "auto: up to " + most + ", for " + why + " (over " + plainRatio + " to 1, or a deep stack, asks for more)" + shock;
     }
     // Chapter 12's iteration_plan.h: the scene's count where something bounces or masses
     // differ in a deep heap, the square-root law in a shallow one, a count by depth for a stack
@@ -162,8 +175,8 @@ std::string describeIterationPlan(const World& world) {
     return "auto: " + range + " by what touches (" + plain +
            " where bodies bounce or rest on unlike masses in a deep heap, by the square root of the mass ratio in a "
            "shallow one, by depth where like masses carry one another, fewer where they rest on the world alone or "
-           "nothing touches), masses resting on lighter ones at most " + std::string(ratio) +
-           " to 1 (up to 200 to 1 solve at " + plain + " or fewer)" + shock;
+           "nothing touches), masses resting on lighter ones at most " + ratio + " to 1 (up to " + plainRatio +
+           " to 1 solve at " + plain + " or fewer)" + shock;
 }
 
 namespace {
@@ -188,7 +201,7 @@ Json solverIterationsJson(const World& world) {
     for (int k = 0; k < kPlanReasonCount; ++k) {
         const PlanReasonTally& tally = world.step.iterationPlan.reasons[static_cast<std::size_t>(k)];
         if (tally.frames == 0) continue;
-        counts.push_back({{"why", planReasonText(static_cast<PlanReason>(k))},
+        counts.push_back({{"why", planReasonText(static_cast<PlanReason>(k), world.step.iterationPlan.thresholds)},
                           {"frames", tally.frames},
                           {"fewest", tally.fewest},
                           {"most", tally.most}});

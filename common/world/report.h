@@ -49,7 +49,7 @@ std::string reportToJson(const World& world, const RunStats& stats, const std::s
 std::string describeIterationPlan(const World& world);
 
 /// The rule behind a frame's substep count, in words (the report's solver_iterations "counts").
-const char* planReasonText(PlanReason reason);
+std::string planReasonText(PlanReason reason, const PlanThresholds& thresholds);
 
 /// Writes the report; throws std::runtime_error naming the path when the file cannot be written.
 void writeReport(const std::string& path, const World& world, const RunStats& stats,

@@ -79,6 +79,14 @@ struct PlanReasonTally {
 };
 
 /// What chapter 12's planner for solver_iterations "auto" saw and chose (iteration_plan.h).
+/// The planner's thresholds (chapter 12's plan_constants.h), as the report quotes them: the
+/// planner writes them every frame it plans (common code includes no chapter). Zero: no planner.
+struct PlanThresholds {
+    Real plainMassRatio = 0;       // load-path mass ratios up to it solve at the scene's count
+    int plainStackDepth = 0;       // a stack deeper than it walks more than the held drift
+    int fewestUnlikeSubsteps = 0;  // a shallow heap of unlike masses takes at least these
+};
+
 struct IterationPlan {
     int iterations = 0;       // substeps of this frame's solve (the plan stage writes them before the solve)
     int previousIterations = 0;  // of the frame planned before (0 before the first)
@@ -93,6 +101,7 @@ struct IterationPlan {
     int shockFrames = 0;            // frames that did, so far
     PlanReason reason = PlanReason::SceneCount;  // what decided the last frame's count
     std::array<PlanReasonTally, kPlanReasonCount> reasons{};  // per rule, over every frame so far
+    PlanThresholds thresholds;  // the rules' constants, for the report
 };
 
 struct StepState {

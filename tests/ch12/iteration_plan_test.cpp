@@ -66,6 +66,15 @@ TEST_CASE("solver_iterations auto: a 1:1000 tower stands, where the scene's ten 
     CHECK(automatic.step.iterationPlan.shockFrames == 0);
     CHECK(automatic.step.iterationPlan.largestRatio == Approx(1000));
     CHECK(describeIterationPlan(automatic).find("auto: up to 23") == 0);
+    // The report quotes the planner's own thresholds (plan_constants.h), which the plan carries.
+    const PlanThresholds& quoted = automatic.step.iterationPlan.thresholds;
+    CHECK(quoted.plainMassRatio == kPlainMassRatio);
+    CHECK(quoted.fewestUnlikeSubsteps == kFewestUnlikeSubsteps);
+    const std::string ratio = std::to_string(static_cast<int>(kPlainMassRatio));
+    CHECK(describeIterationPlan(automatic).find("over " + ratio + " to 1") != std::string::npos);
+    CHECK(planReasonText(PlanReason::MassRatio, quoted).find("over " + ratio + " times lighter") != std::string::npos);
+    CHECK(planReasonText(PlanReason::UnlikeStack, quoted).find("at least " + std::to_string(kFewestUnlikeSubsteps)) !=
+          std::string::npos);
 
     // 10 written out is the format's default, so it plans as "auto" does; plan_iterations false
     // holds the count at ten.
