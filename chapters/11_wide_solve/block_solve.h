@@ -149,6 +149,22 @@ inline void pointTargets(const ManifoldBlock<N>& c, const BodyPack<N>& a, const 
     for (int k = 0; k < 4; ++k) pointTarget(c, t.separations[k], params, useBias, t.bias[k], t.massScale[k], t.impulseScale[k]);
 }
 
+// [ch11-deeper-than-slop]
+/// Whether a point of the block (a present one: normalMass > 0) lies deeper than the slop: the
+/// points a biased sweep pushes out (pointTarget), whose push the relax sweep takes back. Counted
+/// whether or not the push is applied (a lane separating fast enough takes none): a sweep that
+/// says "none" pushed nothing.
+template <int N>
+inline bool anyPointDeep(const ManifoldBlock<N>& c, const Pack<N>* separations, const ContactSolveParams& params,
+                         int points = 4) {
+    const Pack<N> zero = Pack<N>::splat(0);
+    Pack<N> deepest = zero;  // the most negative excess over the slop
+    for (int k = 0; k < points; ++k)
+        deepest = min(deepest, selectPositive(c.point[k].normalMass, separations[k] + Pack<N>::splat(params.slop), zero));
+    return anyNegative(deepest);
+}
+// [ch11-deeper-than-slop]
+
 /// Restitution's record of a closing gap (the relax sweep looks one substep ahead): restitution
 /// reverses the fastest speed it closed at, not the speed at the frame's start, which the fall has
 /// not finished. The fastest: once stopped, a point stays a rounding error apart and "closes"
@@ -297,11 +313,13 @@ inline void sweepNormalRows(ManifoldBlock<N>& c, const PointTargets<N>& t, const
 /// (deeper than the slop) answers as in any block; for a rigid one the second sweep changes
 /// nothing but round-off.
 /// False, having pushed nothing, where the block holds no impulse and no lane asks for one.
+/// `deep`: with `useBias`, whether a point lies deeper than the slop (anyPointDeep).
 template <int N>
 inline bool solveSinglePoint(ManifoldBlock<N>& c, const ContactSolveParams& params, bool useBias, BodyPack<N>& a,
-                             BodyPack<N>& b) {
+                             BodyPack<N>& b, bool& deep) {
     ManifoldPointPack<N>& p = c.point[0];
     const Pack<N> separation = pointSeparation(p, separationFrame(c, a, b));
+    deep = useBias && anyPointDeep(c, &separation, params, 1);
     Pack<N> bias, massScale, impulseScale;
     pointTarget(c, separation, params, useBias, bias, massScale, impulseScale);
     const PackVec3<N> angularA = cross(p.armA, c.normal), angularB = cross(p.armB, c.normal);
@@ -332,47 +350,51 @@ inline bool solveSinglePoint(ManifoldBlock<N>& c, const ContactSolveParams& para
 /// One sweep over the block's points: the four normal rows as one block (or one at a time where
 /// the block would pull, with position feedback when `useBias`), then friction against the normal
 /// impulses just found. A block of single points takes solveSinglePointBlock instead.
+/// Returns, with `useBias`, whether a point lies deeper than the slop (anyPointDeep).
 template <int N>
-inline void solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
+inline bool solveBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
     BodyPack<N> a = gatherBodies<N>(states, c.slotA);
     BodyPack<N> b = gatherBodies<N>(states, c.slotB);
     PointTargets<N> targets;
     pointTargets(c, a, b, params, useBias, targets);
+    const bool deep = useBias && anyPointDeep(c, targets.separations, params);
     PackVec3<N> angularA[4], angularB[4];
     normalAngulars(c, angularA, angularB);
     const bool bounces = anyNegative(-c.restitution);  // approachSpeed is read only where a lane bounces
     BlockStep<N> step;
     normalBlockStep(c, a, b, targets, angularA, angularB, bounces, step);
     // Every lane idle and nothing held: the block would push by zero (holdsNoImpulse).
-    if (!bounces && !anyNegative(step.idle - Pack<N>::splat(1)) && holdsNoImpulse(c)) return;
+    if (!bounces && !anyNegative(step.idle - Pack<N>::splat(1)) && holdsNoImpulse(c)) return deep;
     applyBlockStep(c, step, bounces, a, b);
     if (anyNegative(-step.blockFails)) sweepNormalRows(c, targets, angularA, angularB, step.blockFails, bounces, a, b);
     solveFriction(c, a, b);
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
+    return deep;
 }
 // [ch11-solve-block]
 
 /// solveBlock for a block of single points (ManifoldBlock::singlePoint).
 template <int N>
-inline void solveSinglePointBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params,
+inline bool solveSinglePointBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params,
                                   bool useBias) {
     BodyPack<N> a = gatherBodies<N>(states, c.slotA);
     BodyPack<N> b = gatherBodies<N>(states, c.slotB);
-    if (!solveSinglePoint(c, params, useBias, a, b)) return;
+    bool deep = false;
+    if (!solveSinglePoint(c, params, useBias, a, b, deep)) return deep;
     solveFriction(c, a, b);
     scatterVelocities(states, c.slotA, a);
     scatterVelocities(states, c.slotB, b);
+    return deep;
 }
 
 /// A sweep of any block: single points one row a lane, others as one block. Two kernels, not one
 /// with a branch inside: the four-row kernel compiles as lean as without the other.
+/// Returns, with `useBias`, whether a point lies deeper than the slop (anyPointDeep).
 template <int N>
-inline void solveAnyBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
-    if (c.singlePoint)
-        solveSinglePointBlock(c, states, params, useBias);
-    else
-        solveBlock(c, states, params, useBias);
+inline bool solveAnyBlock(ManifoldBlock<N>& c, SolverBodyState* states, const ContactSolveParams& params, bool useBias) {
+    if (c.singlePoint) return solveSinglePointBlock(c, states, params, useBias);
+    return solveBlock(c, states, params, useBias);
 }
 }  // namespace STEPWISE_ISA
 }  // namespace stepwise

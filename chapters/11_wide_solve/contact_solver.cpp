@@ -92,6 +92,7 @@ void planSceneCount(World& world) {
     plan.iterations = std::max(1, world.settings.solverIterations);
     plan.plainIterations = plan.iterations;
     plan.shockPropagation = false;
+    plan.relaxOnlyAfterPush = false;
 }
 // [ch11-plan-scene-count]
 
@@ -102,9 +103,11 @@ void warmStartAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states
     for (ManifoldBlock<N>& block : blocks) warmStartBlock(block, states);
 }
 template <int N>
-void solveAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
+bool solveAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
               bool useBias) {
-    for (ManifoldBlock<N>& block : blocks) solveAnyBlock(block, states, params, useBias);
+    bool deep = false;
+    for (ManifoldBlock<N>& block : blocks) deep = solveAnyBlock(block, states, params, useBias) || deep;
+    return deep;
 }
 template <int N>
 void restitutionAll(std::vector<ManifoldBlock<N>>& blocks, SolverBodyState* states, Real threshold) {
@@ -188,9 +191,21 @@ SolverStats gatherContacts(const World& world, ContactSolverScratch& scratch) {
     return solverStats;
 }
 
+// [ch11-relax-after-push]
+/// Whether a substep ends with its relax sweep. The relax sweep takes back the velocity that the
+/// biased sweep's push out of points deeper than the slop added. Where no point lay that deep,
+/// the two sweeps solve every row alike (a gap's speculative allowance is in both) and the relax is
+/// one more Gauss-Seidel sweep, which a substep buys more cheaply (chapter 12's planner, where it
+/// asks for such substeps: IterationPlan::relaxOnlyAfterPush). The last substep always relaxes, as
+/// do substeps with restitution (the relax keeps the approach speeds it reverses) or joints.
+bool relaxSweepNeeded(const World& world, bool lastSubstep, bool pushed, bool collisions, bool joints) {
+    return !world.step.iterationPlan.relaxOnlyAfterPush || lastSubstep || pushed || collisions || joints;
+}
+// [ch11-relax-after-push]
+
 // [ch11-substeps]
 /// The frame's substeps: integrate the velocities, collide, warm start, one biased sweep, move the
-/// bodies, one relax sweep. Scalar and wide blocks take each pass in turn.
+/// bodies, one relax sweep (relaxSweepNeeded). Scalar and wide blocks take each pass in turn.
 int runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolveParams& params, int substeps,
                 SolverPath path, bool collisions, PhaseClock& clock) {
     FastSolveStats& stats = scratch.stats;
@@ -226,17 +241,20 @@ int runSubsteps(World& world, ContactSolverScratch& scratch, const ContactSolveP
         }
         stats.ms(SolvePhase::WarmStart) += clock.lap();
         if (joints) solveJoints(*joints, states, /*relax=*/false);
-        solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
-        solveAll(scratch.scalarBlocks, states, params, true);
+        const bool deepWide = solveWide(scratch.wideBlocks, states, params, /*useBias=*/true);
+        const bool deepScalar = solveAll(scratch.scalarBlocks, states, params, true);
         stats.ms(SolvePhase::Solve) += clock.lap();
         integratePositions(scratch.bodies, h, params.mostSpin, path);
         // What the move did to the errors of rows the next substep may keep (after the piece's
         // last, the next piece: handJointRowsOn).
         if (joints) advanceJointErrors(*joints, states, h);
         stats.ms(SolvePhase::Integrate) += clock.lap();
-        if (joints) solveJoints(*joints, states, /*relax=*/true);
-        solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
-        solveAll(scratch.scalarBlocks, states, params, false);
+        if (relaxSweepNeeded(world, substep + 1 == substeps, deepWide || deepScalar, collisions, joints != nullptr)) {
+            if (joints) solveJoints(*joints, states, /*relax=*/true);
+            solveWide(scratch.wideBlocks, states, params, /*useBias=*/false);  // relax
+            solveAll(scratch.scalarBlocks, states, params, false);
+            ++stats.relaxSweeps;
+        }
         stats.ms(SolvePhase::Relax) += clock.lap();
         if (substep + 1 < substeps && turnedFar(states, scratch.touched, h)) {
             ran = substep + 1;
@@ -275,6 +293,7 @@ void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame) {
     total.wideBlocks = frame.wideBlocks;
     total.overflow = frame.overflow;
     total.pieces += frame.pieces;
+    total.relaxSweeps += frame.relaxSweeps;
     for (std::size_t phase = 0; phase < kSolvePhaseCount; ++phase) total.phaseMs[phase] += frame.phaseMs[phase];
 }
 
@@ -288,10 +307,11 @@ int solvePiece(World& world, Real h, Real frameTime, int substeps, bool firstPie
                ContactSolverScratch& scratch) {
     FastSolveStats& stats = scratch.stats;
     const std::array<double, kSolvePhaseCount> phaseMs = stats.phaseMs;  // the frame's so far
-    const int pieces = stats.pieces + 1;
+    const int pieces = stats.pieces + 1, relaxSweeps = stats.relaxSweeps;
     stats = FastSolveStats{};
     stats.phaseMs = phaseMs;
     stats.pieces = pieces;
+    stats.relaxSweeps = relaxSweeps;
     PhaseClock clock(scratch.timePhases);
     scratch.contactOrder.clear();
     scratch.slotA.clear();

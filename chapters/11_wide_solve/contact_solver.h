@@ -44,13 +44,14 @@ struct FastSolveStats {
     int wideBlocks = 0;      // blocks of kWideLanes lanes (their fill: manifolds in them / lanes)
     int overflow = 0;        // manifolds past the last colour, solved one at a time
     int pieces = 0;          // solves the frame took (more than one where a touched body turned far)
+    int relaxSweeps = 0;     // relax sweeps the frame ran (one a substep, or fewer: relaxSweepNeeded)
     // Where the solve's time went, ms per phase (the bench's profile of the solve stage).
     std::array<double, kSolvePhaseCount> phaseMs{};
     double& ms(SolvePhase phase) { return phaseMs[static_cast<std::size_t>(phase)]; }
     double ms(SolvePhase phase) const { return phaseMs[static_cast<std::size_t>(phase)]; }
 };
 
-/// total's phase times and pieces += frame's; the other counts become frame's.
+/// total's phase times, pieces and relax sweeps += frame's; the other counts become frame's.
 void addPhaseTimes(FastSolveStats& total, const FastSolveStats& frame);
 
 struct ContactSolverScratch;

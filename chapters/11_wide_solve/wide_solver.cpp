@@ -17,9 +17,11 @@ void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodySta
     for (ManifoldBlock<kWideLanes>& block : blocks) warmStartBlock(block, states);
 }
 
-void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
+bool solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
                bool useBias) {
-    for (ManifoldBlock<kWideLanes>& block : blocks) solveAnyBlock(block, states, params, useBias);
+    bool deep = false;
+    for (ManifoldBlock<kWideLanes>& block : blocks) deep = solveAnyBlock(block, states, params, useBias) || deep;
+    return deep;
 }
 
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold) {

@@ -18,7 +18,8 @@ void fillWide(ManifoldBlock<kWideLanes>& block, const LaneInputs<kWideLanes>& in
 /// Once per frame, after the blocks are filled: each block's effective masses (prepareBlock).
 void prepareWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, const SolverBodyState* states);
 void warmStartWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states);
-void solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
+/// One sweep over every block; with `useBias`, whether a point lay deeper than the slop (anyPointDeep).
+bool solveWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, const ContactSolveParams& params,
                bool useBias);
 void restitutionWide(std::vector<ManifoldBlock<kWideLanes>>& blocks, SolverBodyState* states, Real threshold);
 /// One sweep of collideBlock over the blocks; whether any point was struck.

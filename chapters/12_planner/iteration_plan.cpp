@@ -4,6 +4,7 @@
 
 #include "04_pgs/contact_constraints.h"
 #include "11_wide_solve/lanes.h"
+#include "11_wide_solve/joint_pass.h"
 #include "12_planner/shock_propagation.h"
 #include "10_skip_work/sleep.h"
 
@@ -113,10 +114,13 @@ Vec3 velocityAt(const World& world, int body, const Vec3& point) {
 /// Whether a pair with restitution arrives this frame: one of its points closes faster than the
 /// restitution threshold, so the solve reverses that speed. Balls that rest against one another
 /// (a cradle between strikes) or that part after a bounce do not bounce again.
+Real restitutionOf(const World& world, const Contact& contact) {
+    return combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
+                               world.bodies[static_cast<std::size_t>(contact.bodyB)].material);
+}
+
 bool arrivesBouncing(const World& world, const Contact& contact) {
-    const Real restitution = combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
-                                                 world.bodies[static_cast<std::size_t>(contact.bodyB)].material);
-    if (!(restitution > 0)) return false;
+    if (!(restitutionOf(world, contact) > 0)) return false;
     for (int i = 0; i < contact.pointCount; ++i) {
         const Vec3 point = (contact.points[i].pointA + contact.points[i].pointB) * Real(0.5);
         const Real closing =
@@ -134,6 +138,7 @@ TouchSummary summarizeTouches(const World& world, const std::vector<int>& contac
     for (const int index : contacts) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
         summary.bouncy = summary.bouncy || arrivesBouncing(world, contact);
+        summary.restitution = summary.restitution || restitutionOf(world, contact) > 0;
         summary.sliding = summary.sliding || slidesUnderFriction(world, contact);
         const Motion* a = world.motionOf(contact.bodyA);
         const Motion* b = world.motionOf(contact.bodyB);
@@ -247,6 +252,7 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         iterations = std::max(iterations, byRatio);
     }
     plan.shockPropagation = false;
+    plan.relaxOnlyAfterPush = false;
     if (settings.planIterations && plan.stackDepth > 1) {
         // The depth laws (plan_constants.h). The count holds while a stack rests too: changing it
         // changes how deep a resting contact sits, and a stack switched between counts is pumped.
@@ -259,7 +265,8 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
         };
         const Real plainLaw = Real(scene) * rows * rows * perMeasuredFrame;  // walks kPlainStackDrift
         const int plain = count(plainLaw * std::sqrt(kPlainStackDrift / kHeldStackDrift));
-        const int shocked = count(kShockStackSubsteps * math::pow(rows, kShockDepthExponent) * perMeasuredFrame);
+        const Real shockLaw = kShockStackSubsteps * math::pow(rows, kShockDepthExponent) * perMeasuredFrame;
+        const int shocked = count(shockLaw);
         // [ch12-shock-price]
         // The sweep pays where, for the walk its law allows, it and its substeps cost less than
         // the substeps without it.
@@ -277,7 +284,13 @@ int plannedIterations(const World& world, Real dt, const std::vector<int>& conta
             likeAndQuiet && Real(shocked) < plainForHeldWalk && Real(shocked) + sweepCost() < plainForHeldWalk;
         // [ch12-shock-price]
         plan.shockPropagation = sweepSaves && shockAllowed;
-        const int wanted = sweepSaves ? shocked : plain;
+        // [ch12-one-sweep-substeps]
+        // The swept stack's substeps relax only after a push (kOneSweepSubstepFactor), where the
+        // solve lets them: restitution or a joint pass relaxes every substep (relaxSweepNeeded).
+        plan.relaxOnlyAfterPush = sweepSaves && !touches.restitution && !needsJointPass(world);
+        const int oneSweep = count(kOneSweepSubstepFactor * shockLaw);
+        const int wanted = !sweepSaves ? plain : plan.relaxOnlyAfterPush ? oneSweep : shocked;
+        // [ch12-one-sweep-substeps]
         // No fewer than kFewestStackSubsteps, nor than bodies resting on the world alone take.
         const int lengths = substepsFor(dt, touches.sliding ? kSlidingSubstep : kRestingSubstep);
         const int stack = std::min(most, std::max({kFewestStackSubsteps, lengths, wanted}));

@@ -40,6 +40,7 @@ int sagLawCount(int scene, int depth, Real perMeasuredFrame);
 struct TouchSummary {
     bool bouncy = false;   // a pair with restitution closes faster than the restitution threshold
     bool sliding = false;  // a touching body moves along the surface under friction (accelerates)
+    bool restitution = false;  // a touching pair has restitution (its solve relaxes every substep)
     Real massRatio = 1;
 };
 

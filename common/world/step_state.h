@@ -98,6 +98,9 @@ struct IterationPlan {
     Real largestRatio = 1;
     int deepestStack = 0;     // over every frame so far
     bool shockPropagation = false;  // the last frame ended with a shock sweep (chapter 12)
+    /// The last frame's substeps relaxed only after a biased sweep that pushed a point deeper than
+    /// the slop, and in the last substep (chapter 11's relaxSweepNeeded; chapter 12 asks for it).
+    bool relaxOnlyAfterPush = false;
     int shockFrames = 0;            // frames that did, so far
     PlanReason reason = PlanReason::SceneCount;  // what decided the last frame's count
     std::array<PlanReasonTally, kPlanReasonCount> reasons{};  // per rule, over every frame so far

@@ -68,7 +68,7 @@ TEST_CASE("the shock sweep leaves a moving stack alone", "[ch12][solve]") {
 }
 
 TEST_CASE("the shock sweep settles a stack that the same substeps leave swaying", "[ch12][solve]") {
-    // The 20-row pyramid at the planner's four substeps, with and without the sweep, after 2 s
+    // The 20-row pyramid at the planner's five substeps, with and without the sweep, after 2 s
     // awake.
     World shocked = referenceScene("pyramid-20.json");
     shocked.settings.sleeping = false;
