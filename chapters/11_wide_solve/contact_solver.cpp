@@ -1,5 +1,6 @@
 // Chapter 11's solve: the frame's contacts as blocks of lanes, solved colour by colour in substeps
-// of one biased and one relax sweep (chapter 6's relax or soft step), warm started.
+// of one biased and one relax sweep (chapter 6's relax or soft step), warm started. Which worlds
+// and contacts it takes: solvable.cpp.
 #include "11_wide_solve/contact_solver.h"
 
 #include "01_integrators/methods.h"
@@ -30,37 +31,6 @@ SolverPath defaultSolverPath() {
     return path;
 }
 
-bool fastSolveApplies(const World& world, std::string* why) {
-    auto refuse = [&](const char* reason) {
-        if (why) *why = reason;
-        return false;
-    };
-    const Settings& settings = world.settings;
-    if (!isSubstepped(settings.stabilisation)) return refuse("the stabilisation is not relax or soft_step");
-    if (settings.solver != SolverKind::GaussSeidel) return refuse("the solver is Jacobi");
-    if (settings.gyroscopic == GyroscopicMode::Explicit) return refuse("the gyroscopic term is explicit");
-    if (settings.integrator != IntegratorKind::SemiImplicitEuler) return refuse("the integrator is not semi-implicit Euler");
-    for (const Motion& motion : world.motions)
-        if (motion.integrator && *motion.integrator != IntegratorKind::SemiImplicitEuler)
-            return refuse("a body uses another integrator");
-    return true;
-}
-
-bool validContactRecord(const World& world, const Contact& contact) {
-    const int count = static_cast<int>(world.bodies.size());
-    if (contact.bodyA < 0 || contact.bodyB < 0 || contact.bodyA >= count || contact.bodyB >= count) return false;
-    if (contact.pointCount <= 0 || contact.pointCount > 4 || contact.bodyA == contact.bodyB) return false;
-    // x - x is 0 for every finite x and NaN otherwise: one sum says whether all of them are finite
-    // (the planner and the solve both ask, for every contact, every frame).
-    Real probe = (contact.normal - contact.normal).sum();
-    for (int i = 0; i < contact.pointCount; ++i) {
-        const ContactPoint& point = contact.points[i];
-        probe += (point.pointA - point.pointA).sum() + (point.pointB - point.pointB).sum() + (point.depth - point.depth);
-    }
-    if (probe != 0) return false;
-    return std::abs(contact.normal.norm() - 1) <= Real(1e-3);
-}
-
 namespace {
 
 bool noneAsleep(const World& world) {
@@ -68,33 +38,6 @@ bool noneAsleep(const World& world) {
 }
 
 }  // namespace
-
-bool solvableContact(const World& world, const Contact& contact) {
-    return validContactRecord(world, contact) &&
-           (isAwakeDynamic(world, contact.bodyA) || isAwakeDynamic(world, contact.bodyB));
-}
-
-void collectSolvableContacts(const World& world, std::vector<int>& order) {
-    order.clear();
-    for (std::size_t i = 0; i < world.contacts.size(); ++i)
-        if (solvableContact(world, world.contacts[i])) order.push_back(static_cast<int>(i));
-}
-
-bool fastSolvePlans(const World& world, Real dt) {
-    // Something awake moves: a dynamic body, or a kinematic one that the substeps carry.
-    return dt > 0 && std::isfinite(dt) && !everyBodyAsleep(world);
-}
-
-// [ch11-plan-scene-count]
-void planSceneCount(World& world) {
-    IterationPlan& plan = world.step.iterationPlan;
-    plan.previousIterations = plan.iterations;
-    plan.iterations = std::max(1, world.settings.solverIterations);
-    plan.plainIterations = plan.iterations;
-    plan.shockPropagation = false;
-    plan.relaxOnlyAfterPush = false;
-}
-// [ch11-plan-scene-count]
 
 namespace {
 
