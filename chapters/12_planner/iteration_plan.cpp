@@ -113,14 +113,9 @@ Vec3 velocityAt(const World& world, int body, const Vec3& point) {
 
 /// Whether a pair with restitution arrives this frame: one of its points closes faster than the
 /// restitution threshold, so the solve reverses that speed. Balls that rest against one another
-/// (a cradle between strikes) or that part after a bounce do not bounce again.
-Real restitutionOf(const World& world, const Contact& contact) {
-    return combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
-                               world.bodies[static_cast<std::size_t>(contact.bodyB)].material);
-}
-
+/// (a cradle between strikes) or that part after a bounce do not bounce again. Asked only of pairs
+/// with restitution.
 bool arrivesBouncing(const World& world, const Contact& contact) {
-    if (!(restitutionOf(world, contact) > 0)) return false;
     for (int i = 0; i < contact.pointCount; ++i) {
         const Vec3 point = (contact.points[i].pointA + contact.points[i].pointB) * Real(0.5);
         const Real closing =
@@ -137,8 +132,10 @@ TouchSummary summarizeTouches(const World& world, const std::vector<int>& contac
     Real lightest = kRealMax, heaviest = 0;
     for (const int index : contacts) {
         const Contact& contact = world.contacts[static_cast<std::size_t>(index)];
-        summary.bouncy = summary.bouncy || arrivesBouncing(world, contact);
-        summary.restitution = summary.restitution || restitutionOf(world, contact) > 0;
+        const bool restitution = combinedRestitution(world.bodies[static_cast<std::size_t>(contact.bodyA)].material,
+                                                     world.bodies[static_cast<std::size_t>(contact.bodyB)].material) > 0;
+        summary.restitution = summary.restitution || restitution;
+        summary.bouncy = summary.bouncy || (restitution && arrivesBouncing(world, contact));
         summary.sliding = summary.sliding || slidesUnderFriction(world, contact);
         const Motion* a = world.motionOf(contact.bodyA);
         const Motion* b = world.motionOf(contact.bodyB);
