@@ -1,5 +1,5 @@
 // Exercise check for chapter 5 (`ctest -L ch05-exercise`): rewrite sweepEndpoints in
-// chapters/05_sap/sweep_and_prune.cpp from the page (the textbook form will do: one active list
+// chapters/05_sap/sweep_pairs.cpp from the page (the textbook form will do: one active list
 // of body indices, the intervals that ended before the next lower end dropped from it, each
 // opening interval tested against the rest), and run this. On random
 // boxes, with intervals that touch exactly, coincide, or hold static and kinematic bodies, the

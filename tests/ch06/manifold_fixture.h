@@ -7,6 +7,9 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <vector>
+
 namespace stepwise::test {
 
 inline Quat axisAngle(const Vec3& axis, double degrees) {
@@ -18,6 +21,23 @@ inline Transform pose(const Vec3& position, const Quat& rotation = Quat::Identit
 /// A unit cube and a slab twice as wide as it, a quarter as thick: the pairs' usual partners.
 inline const Shape kUnitBox = Shape::box(Vec3(Real(0.5), Real(0.5), Real(0.5)));
 inline const Shape kSlab = Shape::box(Vec3(1, Real(0.25), Real(0.75)));
+
+inline Shape octahedronHull(Real size) {
+    return Shape::convex({Vec3(size, 0, 0), Vec3(-size, 0, 0), Vec3(0, size, 0), Vec3(0, -size, 0), Vec3(0, 0, size),
+                          Vec3(0, 0, -size)});
+}
+
+/// A hull with large faces of several shapes: a hexagonal prism with a slanted top.
+inline Shape prismHull() {
+    std::vector<Vec3> points;
+    for (int k = 0; k < 6; ++k) {
+        const Real angle = static_cast<Real>(k) * Real(3.14159265358979323846 / 3.0);
+        const Real x = Real(0.6) * std::cos(angle), z = Real(0.6) * std::sin(angle);
+        points.emplace_back(x, Real(-0.4), z);
+        points.emplace_back(x, Real(0.4) + Real(0.1) * x, z);
+    }
+    return Shape::convex(points);
+}
 
 /// The depth of a contact's deepest point (-kRealMax when it has none).
 inline Real deepestPoint(const Contact& contact) {

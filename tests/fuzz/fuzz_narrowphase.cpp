@@ -137,7 +137,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!query.intersect && !options.separationDistance) return 0;
     // Through EPA the identity is held along the normal; along the contact plane it is recorded.
     // EPA's fallback for a touching pair returns each shape's own extreme point, apart along the
-    // plane where the touching features are wide (epa.cpp, fallbackContact), and an EPA that
+    // plane where the touching features are wide (epa_fallback.cpp, fallbackContact), and an EPA that
     // stops without progress on a sliver face clamps the origin's projection into that face, so
     // its two points can disagree along the plane (0.6% of the size in the first campaign).
     const Vec3 apart = query.pointA - query.pointB - query.depth * query.normal;
