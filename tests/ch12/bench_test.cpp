@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -100,6 +101,29 @@ TEST_CASE("bench speed writes its tables and plots: every optimisation pays, pyr
     CHECK(kept["ragdoll pile"] > 0.5);
     CHECK(kept["100 ragdolls"] > 0.5);
     CHECK(kept["20-link chain"] > 0.5);  // its links swing less than kJointRowsKeptTurn in most substeps
+    // The unlike pile dropped again (speed-drops.csv): drop 0 is the table's own drop, to the digit;
+    // every drop lands (a finite depth, on the ground's side of a metre).
+    std::vector<std::vector<std::string>> drops;
+    std::istringstream again(run.printed);
+    bool inDrops = false;
+    for (std::string line; std::getline(again, line);) {
+        if (line.rfind("drop ", 0) == 0) inDrops = true;
+        else if (inDrops && (line.empty() || !std::isdigit(static_cast<unsigned char>(line[0])))) inDrops = false;
+        else if (inDrops) {
+            std::istringstream cells(line);
+            std::vector<std::string> row;
+            for (std::string cell; cells >> cell;) row.push_back(cell);
+            drops.push_back(row);
+        }
+    }
+    REQUIRE(drops.size() == 3);
+    CHECK(drops[0][2] == rowOf["unlike pile"]["fast step"][13]);
+    for (const std::vector<std::string>& drop : drops) {
+        REQUIRE(drop.size() == 4);
+        CHECK(std::stod(drop[2]) > 0);
+        CHECK(std::stod(drop[2]) < 1);
+    }
+    CHECK(run.printed.find("deepest contact after 5 s over 3 drops") != std::string::npos);
     CHECK(run.printed.find("Bullet skipped") != std::string::npos);
     CHECK(run.printed.find("angular-pile-300") != std::string::npos);
     CHECK(run.printed.find("ragdoll-field-20") != std::string::npos);  // the ragdolls asleep and awake
