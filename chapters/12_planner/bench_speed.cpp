@@ -180,35 +180,38 @@ void measureSleep(BenchRun& bench, CsvTable& sleepTable) {
 constexpr int kUnlikeDrops = 20;
 constexpr Real kDropNudge = Real(1e-4);  // m along x, times the drop's number
 
-void measureDrops(BenchRun& bench, const World& pile, long frames, CsvTable& drops) {
+/// Each drop's row in `drops`; returns each drop's deepest contact after five seconds, m.
+std::vector<Real> measureDrops(BenchRun& bench, const World& pile, long frames, CsvTable& drops) {
+    std::vector<Real> depths;
+    std::size_t nudged = pile.bodies.size();  // the last dynamic body: the top of the pile as it falls
+    while (nudged > 0 && pile.bodies[nudged - 1].type != BodyType::Dynamic) --nudged;
+    if (nudged == 0) return depths;
     const int count = bench.quick() ? 3 : kUnlikeDrops;
     bench.progress().stage("the unlike pile, dropped again", count);
     SpeedOptions awake;
     awake.sleeping = false;
-    std::size_t nudged = pile.bodies.size();  // the last dynamic body: the top of the pile as it falls
-    while (nudged > 0 && pile.bodies[nudged - 1].type != BodyType::Dynamic) --nudged;
-    for (int drop = 0; drop < count && nudged > 0; ++drop) {
+    for (int drop = 0; drop < count; ++drop) {
         World world = pile;
         const Real moved = kDropNudge * static_cast<Real>(drop);
         world.bodies[nudged - 1].transform.position.x() += moved;
         const Measurement m = runEngine(world, awake, frames, 0);
+        depths.push_back(m.maxPenetration);
         drops.addRow({std::to_string(drop), formatNumber(moved), formatNumber(m.maxPenetration),
                       formatNumber(m.stepMs.median)});
         bench.progress().advance();
     }
     bench.progress().endStage();
+    return depths;
 }
 // [ch12-unlike-drops]
 
 /// One line under the drops' table: the median and the deepest of their deepest contacts after
 /// five seconds, and how many read deeper than twice the slop.
-std::string dropSummary(const CsvTable& drops, const World& world) {
-    std::vector<double> depths;
-    for (const std::vector<std::string>& row : drops.rows()) depths.push_back(std::stod(row[2]));
+std::string dropSummary(std::vector<Real> depths, const World& world) {
     if (depths.empty()) return "";
     std::sort(depths.begin(), depths.end());
-    const double bound = 2 * static_cast<double>(world.settings.slop);
-    const auto deeper = std::count_if(depths.begin(), depths.end(), [&](double depth) { return depth > bound; });
+    const Real bound = 2 * world.settings.slop;
+    const auto deeper = std::count_if(depths.begin(), depths.end(), [&](Real depth) { return depth > bound; });
     return "deepest contact after 5 s over " + std::to_string(depths.size()) + " drops: median " +
            formatNumber(depths[depths.size() / 2]) + " m, deepest " + formatNumber(depths.back()) + " m, " +
            std::to_string(deeper) + " deeper than twice the slop (" + formatNumber(bound) + " m)\n";
@@ -317,10 +320,8 @@ void measureSpeed(BenchRun& bench) {
     CsvTable drops({"drop", "moved_m", "max_penetration_m", "ms_median"});
     std::string dropLine;
     for (const BenchScene& scene : scenes)
-        if (scene.name == "unlike pile") {
-            measureDrops(bench, scene.world, scene.frames, drops);
-            dropLine = dropSummary(drops, scene.world);
-        }
+        if (scene.name == "unlike pile")
+            dropLine = dropSummary(measureDrops(bench, scene.world, scene.frames, drops), scene.world);
     if (!only.empty()) {  // the chosen scenes' tables; the files stay whole runs' only
         out << table.toText() << "\n" << profile.toText();
         if (!drops.rows().empty()) out << "\n" << drops.toText() << dropLine;
